@@ -1,0 +1,19 @@
+//! Statement of the two contact problems (THEORY.md sections 1, 3, 4): exact inputs only.
+//!
+//! Every number here is an exact rational read from its text (a decimal or a ratio), so that it
+//! reaches MPFR rounded once at the working precision and never passes through `f64`.
+//! Validation happens when a problem is built ([`ModelError`] names the parameter, its value and
+//! the valid range); solvers may assume a validated problem.
+
+pub mod error;
+pub mod material;
+pub mod punch;
+pub mod sliding;
+
+pub use error::ModelError;
+pub use material::Material;
+pub use punch::{Period, PunchShape};
+pub use sliding::{SlidingLoad, SlidingProblem};
+
+/// Exact input number (a reduced rational).
+pub type Exact = num_rational::BigRational;

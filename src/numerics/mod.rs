@@ -1,0 +1,1 @@
+//! Numerical methods: quadrature rules, evaluation of exact objects in `f64` and MPFR.
