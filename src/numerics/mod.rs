@@ -1,1 +1,2 @@
 //! Numerical methods: quadrature rules, evaluation of exact objects in `f64` and MPFR.
+pub mod exact;
