@@ -1,1 +1,7 @@
 //! The objects of the asymptotic analysis (THEORY.md section 5) as exact truncated series.
+//!
+//! Order convention (THEORY.md section 5): "order N" keeps every term through lambda^N.
+
+pub mod jacobi_moments;
+pub mod kernel;
+pub mod weight;

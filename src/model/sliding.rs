@@ -52,7 +52,11 @@ impl SlidingProblem {
             return Err(ModelError::new("friction", &friction, "must be >= 0"));
         }
         if adhesive_friction.is_negative() {
-            return Err(ModelError::new("adhesive_friction", &adhesive_friction, "must be >= 0"));
+            return Err(ModelError::new(
+                "adhesive_friction",
+                &adhesive_friction,
+                "must be >= 0",
+            ));
         }
         if wear.is_negative() {
             return Err(ModelError::new("wear", &wear, "must be >= 0"));
@@ -72,7 +76,11 @@ impl SlidingProblem {
             _ => {}
         }
         if let (PunchShape::Sinusoidal { .. }, Period::Infinite) = (&shape, &period) {
-            return Err(ModelError::new("period", "inf", "a sinusoidal punch needs a finite period"));
+            return Err(ModelError::new(
+                "period",
+                "inf",
+                "a sinusoidal punch needs a finite period",
+            ));
         }
         if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, &period) {
             if (l + l) >= *big_l {
@@ -83,7 +91,16 @@ impl SlidingProblem {
                 ));
             }
         }
-        Ok(SlidingProblem { material, period, shape, friction, adhesive_friction, wear, speed, load })
+        Ok(SlidingProblem {
+            material,
+            period,
+            shape,
+            friction,
+            adhesive_friction,
+            wear,
+            speed,
+            load,
+        })
     }
 
     /// kappa = E* cW / 2 - beta mu (THEORY.md section 3, the paper's (2.8)), exact.

@@ -1,2 +1,4 @@
 //! Numerical methods: quadrature rules, evaluation of exact objects in `f64` and MPFR.
+
+pub mod evaluate;
 pub mod exact;

@@ -1,0 +1,320 @@
+//! The field of fractions of [`Poly`]: `num/den`, reduced by a multivariate gcd.
+//!
+//! Canonical form: `gcd(num, den) = 1` and the leading coefficient of `den` (pure lex order,
+//! symbols by name) is 1. The gcd is the recursive primitive pseudo-remainder sequence (Collins /
+//! Brown; Geddes, Czapor, Labahn, "Algorithms for Computer Algebra", 1992, sec. 7.3), adequate for
+//! the small rational functions in eps, B, S that Problem 2 produces.
+
+use crate::poly::Monomial;
+use crate::ring::Q;
+use crate::{Poly, Ring, Symbol};
+use num_traits::Zero;
+use std::cmp::Ordering;
+
+/// Pure lex comparison of monomials: the alphabetically first symbol is the most significant.
+fn lex_cmp(a: &Monomial, b: &Monomial) -> Ordering {
+    let (fa, fb) = (a.factors(), b.factors());
+    let (mut i, mut j) = (0, 0);
+    loop {
+        match (fa.get(i), fb.get(j)) {
+            (None, None) => return Ordering::Equal,
+            (Some(_), None) => return Ordering::Greater,
+            (None, Some(_)) => return Ordering::Less,
+            (Some(&(sa, ea)), Some(&(sb, eb))) => match sa.cmp(&sb) {
+                Ordering::Less => return Ordering::Greater, // a has a more significant symbol
+                Ordering::Greater => return Ordering::Less,
+                Ordering::Equal => match ea.cmp(&eb) {
+                    Ordering::Equal => {
+                        i += 1;
+                        j += 1;
+                    }
+                    o => return o,
+                },
+            },
+        }
+    }
+}
+
+/// The leading term (lex) of a non-zero polynomial.
+fn leading(p: &Poly) -> (Monomial, Q) {
+    let mut best: Option<(&Monomial, Q)> = None;
+    for (m, q) in p.terms() {
+        if best
+            .as_ref()
+            .is_none_or(|(bm, _)| lex_cmp(m, bm) == Ordering::Greater)
+        {
+            best = Some((m, q));
+        }
+    }
+    let (m, q) = best.expect("leading term of a non-zero polynomial");
+    (m.clone(), q)
+}
+
+/// `m / d` when `d` divides `m`.
+fn mono_div(m: &Monomial, d: &Monomial) -> Option<Monomial> {
+    let mut out = Monomial::one();
+    for &(s, e) in m.factors() {
+        let f = d.exponent(s);
+        if f > e {
+            return None;
+        }
+        out = out.mul(&Monomial::power(s, e - f));
+    }
+    d.factors()
+        .iter()
+        .all(|&(s, _)| m.exponent(s) > 0)
+        .then_some(out)
+}
+
+/// Exact division `a / b` in Q[symbols], `None` if `b` does not divide `a`.
+pub(crate) fn div_exact(a: &Poly, b: &Poly) -> Option<Poly> {
+    if b.is_zero() {
+        return None;
+    }
+    let (lm_b, lc_b) = leading(b);
+    let mut r = a.clone();
+    let mut q = Poly::zero();
+    while !r.is_zero() {
+        let (lm_r, lc_r) = leading(&r);
+        let m = mono_div(&lm_r, &lm_b)?;
+        let t = Poly::term(&(lc_r / &lc_b), m);
+        q = q.add(&t);
+        r = r.sub(&t.mul(b));
+    }
+    Some(q)
+}
+
+/// Coefficients of `p` as a polynomial in `x`: `p = sum_k c_k x^k`, `c_k` free of `x`.
+fn coeffs_in(p: &Poly, x: Symbol) -> Vec<Poly> {
+    let d = p.degree_in(x) as usize;
+    let mut parts: Vec<Vec<(Monomial, Q)>> = vec![Vec::new(); d + 1];
+    for (m, q) in p.terms() {
+        let (rest, e) = m.remove(x);
+        parts[e as usize].push((rest, q));
+    }
+    parts.into_iter().map(Poly::from_rational_terms).collect()
+}
+
+/// Content of `p` with respect to `x`: the gcd of its coefficients in `x`.
+fn content_in(p: &Poly, x: Symbol) -> Poly {
+    coeffs_in(p, x)
+        .iter()
+        .filter(|c| !c.is_zero())
+        .fold(Poly::zero(), |g, c| gcd(&g, c))
+}
+
+/// Pseudo-remainder of `a` by `b` in `x` (deg_x b >= 0, b non-zero).
+fn prem(a: &Poly, b: &Poly, x: Symbol) -> Poly {
+    let cb = coeffs_in(b, x);
+    let n = cb.len() - 1;
+    let lcb = cb[n].clone();
+    let mut r = a.clone();
+    while !r.is_zero() && r.degree_in(x) as usize >= n {
+        let cr = coeffs_in(&r, x);
+        let m = cr.len() - 1;
+        let shift = Poly::term(
+            &Q::from_integer(1.into()),
+            Monomial::power(x, (m - n) as u32),
+        );
+        r = r.mul(&lcb).sub(&cr[m].mul(&shift).mul(b));
+    }
+    r
+}
+
+/// Makes the lex-leading coefficient 1 (the canonical associate over Q).
+fn monic(p: &Poly) -> Poly {
+    if p.is_zero() {
+        return p.clone();
+    }
+    let (_, lc) = leading(p);
+    p.scale(&lc.recip())
+}
+
+/// The monic gcd of two polynomials in Q[symbols] (gcd(0, 0) = 0).
+pub fn gcd(a: &Poly, b: &Poly) -> Poly {
+    if a.is_zero() {
+        return monic(b);
+    }
+    if b.is_zero() {
+        return monic(a);
+    }
+    let mut syms = a.symbols();
+    syms.extend(b.symbols());
+    syms.sort();
+    syms.dedup();
+    let Some(&x) = syms.first() else {
+        return Poly::one(); // two non-zero constants
+    };
+    let (da, db) = (a.degree_in(x), b.degree_in(x));
+    if da == 0 {
+        return gcd(a, &content_in(b, x));
+    }
+    if db == 0 {
+        return gcd(&content_in(a, x), b);
+    }
+    let (ca, cb) = (content_in(a, x), content_in(b, x));
+    let g_content = gcd(&ca, &cb);
+    let mut p = div_exact(a, &ca).expect("content divides");
+    let mut q = div_exact(b, &cb).expect("content divides");
+    if p.degree_in(x) < q.degree_in(x) {
+        std::mem::swap(&mut p, &mut q);
+    }
+    while !q.is_zero() && q.degree_in(x) > 0 {
+        let r = prem(&p, &q, x);
+        p = q;
+        q = if r.is_zero() {
+            r
+        } else {
+            div_exact(&r, &content_in(&r, x)).expect("content divides")
+        };
+    }
+    let g_prim = if q.is_zero() { p } else { Poly::one() };
+    monic(&g_content.mul(&g_prim))
+}
+
+/// A rational function `num/den` over Q in named symbols (canonical: reduced, `den` monic).
+///
+/// ```
+/// use exact_series::{Frac, Poly, Ring};
+/// let s = Poly::var("S").unwrap();
+/// let eps = Poly::var("eps").unwrap();
+/// let d = Poly::one().sub(&eps.mul(&s).mul_int(2)); // 1 - 2 eps S
+/// let f = Frac::new(d.mul(&s), d.mul(&eps)).unwrap();
+/// assert_eq!(f.text(), "(S)/(eps)");
+/// assert_eq!(Frac::from_poly(d.clone()).inv().unwrap().text(), "(-1/2)/(S*eps - 1/2)");
+/// ```
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+pub struct Frac {
+    num: Poly,
+    den: Poly,
+}
+
+impl Frac {
+    /// `num/den`, reduced; `None` if `den = 0`.
+    pub fn new(num: Poly, den: Poly) -> Option<Frac> {
+        if den.is_zero() {
+            return None;
+        }
+        if num.is_zero() {
+            return Some(Frac::zero());
+        }
+        let g = gcd(&num, &den);
+        let (n, d) = (div_exact(&num, &g)?, div_exact(&den, &g)?);
+        let (_, lc) = leading(&d);
+        let inv = lc.recip();
+        Some(Frac {
+            num: n.scale(&inv),
+            den: d.scale(&inv),
+        })
+    }
+    /// The polynomial `p` as a fraction `p/1`.
+    pub fn from_poly(p: Poly) -> Frac {
+        Frac {
+            num: p,
+            den: Poly::one(),
+        }
+    }
+    /// Numerator.
+    pub fn numer(&self) -> &Poly {
+        &self.num
+    }
+    /// Denominator (monic).
+    pub fn denom(&self) -> &Poly {
+        &self.den
+    }
+    /// Substitutes a rational for a symbol; `None` if the denominator vanishes there.
+    pub fn subs(&self, s: Symbol, v: &Q) -> Option<Frac> {
+        Frac::new(self.num.subs(s, v), self.den.subs(s, v))
+    }
+}
+
+impl Ring for Frac {
+    fn zero() -> Self {
+        Frac {
+            num: Poly::zero(),
+            den: Poly::one(),
+        }
+    }
+    fn one() -> Self {
+        Frac {
+            num: Poly::one(),
+            den: Poly::one(),
+        }
+    }
+    fn is_zero(&self) -> bool {
+        self.num.is_zero()
+    }
+    fn add(&self, o: &Self) -> Self {
+        if self.den == o.den {
+            return Frac::new(self.num.add(&o.num), self.den.clone()).expect("non-zero den");
+        }
+        Frac::new(
+            self.num.mul(&o.den).add(&o.num.mul(&self.den)),
+            self.den.mul(&o.den),
+        )
+        .expect("non-zero den")
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.add(&o.neg())
+    }
+    fn neg(&self) -> Self {
+        Frac {
+            num: self.num.neg(),
+            den: self.den.clone(),
+        }
+    }
+    fn mul(&self, o: &Self) -> Self {
+        if self.den.is_one() && o.den.is_one() {
+            return Frac {
+                num: self.num.mul(&o.num),
+                den: Poly::one(),
+            };
+        }
+        Frac::new(self.num.mul(&o.num), self.den.mul(&o.den)).expect("non-zero den")
+    }
+    fn from_q(q: &Q) -> Self {
+        Frac {
+            num: Poly::from_q(q),
+            den: Poly::one(),
+        }
+    }
+    fn as_q(&self) -> Option<Q> {
+        if self.den.is_one() {
+            self.num.as_q()
+        } else {
+            None
+        }
+    }
+    fn inv(&self) -> Option<Self> {
+        if self.num.is_zero() {
+            return None;
+        }
+        Frac::new(self.den.clone(), self.num.clone())
+    }
+    fn text(&self) -> String {
+        if self.den.is_one() {
+            self.num.text()
+        } else {
+            format!("({})/({})", self.num.text(), self.den.text())
+        }
+    }
+    fn latex(&self) -> String {
+        if self.den.is_one() {
+            self.num.latex()
+        } else {
+            format!("\\frac{{{}}}{{{}}}", self.num.latex(), self.den.latex())
+        }
+    }
+    fn is_sum(&self) -> bool {
+        !self.den.is_one() || self.num.is_sum()
+    }
+    fn scale(&self, q: &Q) -> Self {
+        if Zero::is_zero(q) {
+            return Frac::zero();
+        }
+        Frac {
+            num: self.num.scale(q),
+            den: self.den.clone(),
+        }
+    }
+}

@@ -1,0 +1,499 @@
+//! Multivariate polynomials over Q in named symbols, in common-denominator form.
+//!
+//! Representation (canonical, checked in debug builds): a list of terms `(monomial, numerator)`
+//! sorted by monomial, numerators non-zero integers, one positive denominator `den`, and
+//! `gcd(den, all numerators) = 1`. The zero polynomial has no terms and `den = 1`. Keeping one
+//! denominator costs one content gcd per operation instead of a gcd per coefficient (FLINT's
+//! `fmpq_poly` does the same).
+
+use crate::ring::{q_latex, q_text, Q};
+use crate::{Ring, Symbol};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::collections::BTreeMap;
+
+/// A monomial: symbols with positive exponents, sorted by symbol name.
+#[derive(Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Debug, Default)]
+pub struct Monomial(Vec<(Symbol, u32)>);
+
+impl Monomial {
+    /// The monomial 1.
+    pub fn one() -> Self {
+        Monomial(Vec::new())
+    }
+    /// `s^e` (the monomial 1 when `e == 0`).
+    pub fn power(s: Symbol, e: u32) -> Self {
+        if e == 0 {
+            Monomial::one()
+        } else {
+            Monomial(vec![(s, e)])
+        }
+    }
+    /// The factors `(symbol, exponent)`, sorted by symbol.
+    pub fn factors(&self) -> &[(Symbol, u32)] {
+        &self.0
+    }
+    /// Total degree.
+    pub fn degree(&self) -> u32 {
+        self.0.iter().map(|&(_, e)| e).sum()
+    }
+    /// Exponent of `s`.
+    pub fn exponent(&self, s: Symbol) -> u32 {
+        self.0.iter().find(|&&(t, _)| t == s).map_or(0, |&(_, e)| e)
+    }
+    /// The product of two monomials.
+    pub fn mul(&self, other: &Monomial) -> Monomial {
+        if self.0.is_empty() {
+            return other.clone();
+        }
+        if other.0.is_empty() {
+            return self.clone();
+        }
+        let mut out = Vec::with_capacity(self.0.len() + other.0.len());
+        let (mut i, mut j) = (0, 0);
+        while i < self.0.len() && j < other.0.len() {
+            let (a, b) = (self.0[i], other.0[j]);
+            match a.0.cmp(&b.0) {
+                std::cmp::Ordering::Less => {
+                    out.push(a);
+                    i += 1;
+                }
+                std::cmp::Ordering::Greater => {
+                    out.push(b);
+                    j += 1;
+                }
+                std::cmp::Ordering::Equal => {
+                    out.push((a.0, a.1 + b.1));
+                    i += 1;
+                    j += 1;
+                }
+            }
+        }
+        out.extend_from_slice(&self.0[i..]);
+        out.extend_from_slice(&other.0[j..]);
+        Monomial(out)
+    }
+    /// This monomial without the symbol `s`, and the exponent `s` had.
+    pub fn remove(&self, s: Symbol) -> (Monomial, u32) {
+        let e = self.exponent(s);
+        (
+            Monomial(self.0.iter().copied().filter(|&(t, _)| t != s).collect()),
+            e,
+        )
+    }
+    fn text(&self) -> String {
+        self.0
+            .iter()
+            .map(|&(s, e)| {
+                if e == 1 {
+                    s.name().to_string()
+                } else {
+                    format!("{}^{e}", s.name())
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("*")
+    }
+    fn latex(&self) -> String {
+        self.0
+            .iter()
+            .map(|&(s, e)| {
+                if e == 1 {
+                    s.latex()
+                } else {
+                    format!("{}^{{{e}}}", s.latex())
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+}
+
+/// A polynomial over Q in named symbols (see the module doc for the canonical form).
+///
+/// ```
+/// use exact_series::{Poly, Ring, Q};
+/// let theta = Poly::var("theta").unwrap();
+/// let alpha = theta.add(&Poly::from_q(&Q::new(1.into(), 2.into()))); // 1/2 + theta
+/// assert_eq!(alpha.mul(&alpha).text(), "theta^2 + theta + 1/4");
+/// ```
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+pub struct Poly {
+    terms: Vec<(Monomial, BigInt)>,
+    den: BigInt,
+}
+
+impl Poly {
+    /// The polynomial consisting of the single symbol `name`.
+    pub fn var(name: &str) -> Result<Poly, crate::SeriesError> {
+        Ok(Poly::symbol(Symbol::new(name)?))
+    }
+    /// The polynomial `s`.
+    pub fn symbol(s: Symbol) -> Poly {
+        Poly {
+            terms: vec![(Monomial::power(s, 1), BigInt::one())],
+            den: BigInt::one(),
+        }
+    }
+    /// `q * m` for a rational `q` and a monomial `m`.
+    pub fn term(q: &Q, m: Monomial) -> Poly {
+        if Zero::is_zero(q) {
+            return <Poly as Ring>::zero();
+        }
+        Poly {
+            terms: vec![(m, q.numer().clone())],
+            den: q.denom().clone(),
+        }
+    }
+    /// The terms as `(monomial, rational coefficient)`, in the internal (sorted) order.
+    pub fn terms(&self) -> impl Iterator<Item = (&Monomial, Q)> + '_ {
+        self.terms
+            .iter()
+            .map(move |(m, n)| (m, Q::new(n.clone(), self.den.clone())))
+    }
+    /// Number of terms.
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+    /// Whether there are no terms (the zero polynomial).
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+    /// The coefficient of the monomial `m` (0 when absent).
+    pub fn coefficient(&self, m: &Monomial) -> Q {
+        match self.terms.binary_search_by(|(t, _)| t.cmp(m)) {
+            Ok(i) => Q::new(self.terms[i].1.clone(), self.den.clone()),
+            Err(_) => <Q as Zero>::zero(),
+        }
+    }
+    /// The symbols that occur, sorted by name.
+    pub fn symbols(&self) -> Vec<Symbol> {
+        let mut v: Vec<Symbol> = self
+            .terms
+            .iter()
+            .flat_map(|(m, _)| m.0.iter().map(|&(s, _)| s))
+            .collect();
+        v.sort();
+        v.dedup();
+        v
+    }
+    /// Degree in the symbol `s`.
+    pub fn degree_in(&self, s: Symbol) -> u32 {
+        self.terms
+            .iter()
+            .map(|(m, _)| m.exponent(s))
+            .max()
+            .unwrap_or(0)
+    }
+    /// Total degree (0 for constants and for zero).
+    pub fn total_degree(&self) -> u32 {
+        self.terms
+            .iter()
+            .map(|(m, _)| m.degree())
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// Substitutes the exact rational `value` for the symbol `s`.
+    ///
+    /// ```
+    /// use exact_series::{Poly, Ring, Symbol, Q};
+    /// let t = Symbol::new("theta").unwrap();
+    /// let p = Poly::symbol(t).mul(&Poly::symbol(t)).add(&Poly::from_int(1)); // theta^2 + 1
+    /// assert_eq!(p.subs(t, &Q::new(1.into(), 3.into())).text(), "10/9");
+    /// ```
+    pub fn subs(&self, s: Symbol, value: &Q) -> Poly {
+        let mut acc: BTreeMap<Monomial, Q> = BTreeMap::new();
+        for (m, c) in self.terms() {
+            let (rest, e) = m.remove(s);
+            let v = c * num_traits::pow(value.clone(), e as usize);
+            let entry = acc.entry(rest).or_insert_with(<Q as Zero>::zero);
+            *entry += v;
+        }
+        Poly::from_rational_terms(acc)
+    }
+
+    /// Builds a polynomial from `(monomial, rational)` pairs (zeros dropped, canonical form).
+    pub fn from_rational_terms(terms: impl IntoIterator<Item = (Monomial, Q)>) -> Poly {
+        let mut map: BTreeMap<Monomial, Q> = BTreeMap::new();
+        for (m, q) in terms {
+            *map.entry(m).or_insert_with(<Q as Zero>::zero) += q;
+        }
+        let mut den = BigInt::one();
+        for q in map.values() {
+            if !Zero::is_zero(q) {
+                den = den.lcm(q.denom());
+            }
+        }
+        let terms = map
+            .into_iter()
+            .filter(|(_, q)| !Zero::is_zero(q))
+            .map(|(m, q)| {
+                let n = q.numer() * (&den / q.denom());
+                (m, n)
+            })
+            .collect();
+        Poly::normalized(terms, den)
+    }
+
+    fn normalized(terms: Vec<(Monomial, BigInt)>, mut den: BigInt) -> Poly {
+        let mut terms: Vec<(Monomial, BigInt)> =
+            terms.into_iter().filter(|(_, n)| !n.is_zero()).collect();
+        if terms.is_empty() {
+            return Poly {
+                terms,
+                den: BigInt::one(),
+            };
+        }
+        if den.is_negative() {
+            den = -den;
+            for t in terms.iter_mut() {
+                t.1 = -std::mem::take(&mut t.1);
+            }
+        }
+        if !den.is_one() {
+            let mut g = den.clone();
+            for (_, n) in &terms {
+                g = g.gcd(n);
+                if g.is_one() {
+                    break;
+                }
+            }
+            if !g.is_one() {
+                den /= &g;
+                for t in terms.iter_mut() {
+                    t.1 /= &g;
+                }
+            }
+        }
+        let p = Poly { terms, den };
+        debug_assert!(p.is_canonical());
+        p
+    }
+
+    fn is_canonical(&self) -> bool {
+        self.den.is_positive()
+            && self.terms.windows(2).all(|w| w[0].0 < w[1].0)
+            && self
+                .terms
+                .iter()
+                .all(|(m, n)| !n.is_zero() && m.0.iter().all(|&(_, e)| e > 0))
+            && (self.terms.is_empty() && self.den.is_one()
+                || self
+                    .terms
+                    .iter()
+                    .fold(self.den.clone(), |g, (_, n)| g.gcd(n))
+                    .is_one())
+    }
+
+    /// Terms in print order: higher total degree first, then reverse internal order.
+    fn print_order(&self) -> Vec<(&Monomial, Q)> {
+        let mut v: Vec<(&Monomial, Q)> = self.terms().collect();
+        v.sort_by(|a, b| b.0.degree().cmp(&a.0.degree()).then_with(|| b.0.cmp(a.0)));
+        v
+    }
+
+    /// Evaluates every symbol through `value` (e.g. into `f64` or MPFR in the main crate):
+    /// returns the list of `(rational coefficient, [(symbol, exponent)])` for the caller to sum.
+    pub fn rational_terms(&self) -> Vec<(Q, Vec<(Symbol, u32)>)> {
+        self.terms().map(|(m, q)| (q, m.0.clone())).collect()
+    }
+
+    fn merge(
+        a: &Poly,
+        sa: &BigInt,
+        b: &Poly,
+        sb: &BigInt,
+        negate_b: bool,
+    ) -> Vec<(Monomial, BigInt)> {
+        let mut out = Vec::with_capacity(a.terms.len() + b.terms.len());
+        let (mut i, mut j) = (0, 0);
+        let fb = |n: &BigInt| if negate_b { -(n * sb) } else { n * sb };
+        while i < a.terms.len() && j < b.terms.len() {
+            match a.terms[i].0.cmp(&b.terms[j].0) {
+                std::cmp::Ordering::Less => {
+                    out.push((a.terms[i].0.clone(), &a.terms[i].1 * sa));
+                    i += 1;
+                }
+                std::cmp::Ordering::Greater => {
+                    out.push((b.terms[j].0.clone(), fb(&b.terms[j].1)));
+                    j += 1;
+                }
+                std::cmp::Ordering::Equal => {
+                    let n = &a.terms[i].1 * sa + fb(&b.terms[j].1);
+                    if !n.is_zero() {
+                        out.push((a.terms[i].0.clone(), n));
+                    }
+                    i += 1;
+                    j += 1;
+                }
+            }
+        }
+        out.extend(a.terms[i..].iter().map(|(m, n)| (m.clone(), n * sa)));
+        out.extend(b.terms[j..].iter().map(|(m, n)| (m.clone(), fb(n))));
+        out
+    }
+
+    fn add_sub(&self, other: &Poly, negate: bool) -> Poly {
+        if other.terms.is_empty() {
+            return self.clone();
+        }
+        if self.terms.is_empty() {
+            return if negate { other.neg() } else { other.clone() };
+        }
+        if self.den == other.den {
+            let one = BigInt::one();
+            let t = Poly::merge(self, &one, other, &one, negate);
+            return Poly::normalized(t, self.den.clone());
+        }
+        let g = self.den.gcd(&other.den);
+        let sa = &other.den / &g;
+        let sb = &self.den / &g;
+        let den = &self.den * &sa;
+        Poly::normalized(Poly::merge(self, &sa, other, &sb, negate), den)
+    }
+}
+
+impl Ring for Poly {
+    fn zero() -> Self {
+        Poly {
+            terms: Vec::new(),
+            den: BigInt::one(),
+        }
+    }
+    fn one() -> Self {
+        Poly {
+            terms: vec![(Monomial::one(), BigInt::one())],
+            den: BigInt::one(),
+        }
+    }
+    fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+    fn add(&self, other: &Self) -> Self {
+        self.add_sub(other, false)
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self.add_sub(other, true)
+    }
+    fn neg(&self) -> Self {
+        Poly {
+            terms: self.terms.iter().map(|(m, n)| (m.clone(), -n)).collect(),
+            den: self.den.clone(),
+        }
+    }
+    fn mul(&self, other: &Self) -> Self {
+        if self.terms.is_empty() || other.terms.is_empty() {
+            return Poly::zero();
+        }
+        // Fast paths: a constant factor scales the other polynomial.
+        if self.terms.len() == 1 && self.terms[0].0 .0.is_empty() {
+            let n = &self.terms[0].1;
+            let t = other
+                .terms
+                .iter()
+                .map(|(m, x)| (m.clone(), x * n))
+                .collect();
+            return Poly::normalized(t, &self.den * &other.den);
+        }
+        if other.terms.len() == 1 && other.terms[0].0 .0.is_empty() {
+            return other.mul(self);
+        }
+        let mut acc: BTreeMap<Monomial, BigInt> = BTreeMap::new();
+        for (ma, na) in &self.terms {
+            for (mb, nb) in &other.terms {
+                let m = ma.mul(mb);
+                let v = na * nb;
+                match acc.entry(m) {
+                    std::collections::btree_map::Entry::Vacant(e) => {
+                        e.insert(v);
+                    }
+                    std::collections::btree_map::Entry::Occupied(mut e) => {
+                        *e.get_mut() += v;
+                    }
+                }
+            }
+        }
+        Poly::normalized(acc.into_iter().collect(), &self.den * &other.den)
+    }
+    fn from_q(q: &Q) -> Self {
+        Poly::term(q, Monomial::one())
+    }
+    fn as_q(&self) -> Option<Q> {
+        match self.terms.as_slice() {
+            [] => Some(<Q as Zero>::zero()),
+            [(m, n)] if m.0.is_empty() => Some(Q::new(n.clone(), self.den.clone())),
+            _ => None,
+        }
+    }
+    fn inv(&self) -> Option<Self> {
+        self.as_q()
+            .filter(|q| !Zero::is_zero(q))
+            .map(|q| Poly::from_q(&q.recip()))
+    }
+    fn text(&self) -> String {
+        if self.terms.is_empty() {
+            return "0".to_string();
+        }
+        let mut s = String::new();
+        for (i, (m, q)) in self.print_order().into_iter().enumerate() {
+            let neg = q.is_negative();
+            let a = q.abs();
+            if i == 0 {
+                if neg {
+                    s.push('-');
+                }
+            } else {
+                s.push_str(if neg { " - " } else { " + " });
+            }
+            if m.0.is_empty() {
+                s.push_str(&q_text(&a));
+            } else if One::is_one(&a) {
+                s.push_str(&m.text());
+            } else {
+                s.push_str(&format!("{}*{}", q_text(&a), m.text()));
+            }
+        }
+        s
+    }
+    fn latex(&self) -> String {
+        if self.terms.is_empty() {
+            return "0".to_string();
+        }
+        let mut s = String::new();
+        for (i, (m, q)) in self.print_order().into_iter().enumerate() {
+            let neg = q.is_negative();
+            let a = q.abs();
+            if i == 0 {
+                if neg {
+                    s.push('-');
+                }
+            } else {
+                s.push_str(if neg { " - " } else { " + " });
+            }
+            if m.0.is_empty() {
+                s.push_str(&q_latex(&a));
+            } else if One::is_one(&a) {
+                s.push_str(&m.latex());
+            } else {
+                s.push_str(&format!("{} {}", q_latex(&a), m.latex()));
+            }
+        }
+        s
+    }
+    fn is_sum(&self) -> bool {
+        self.terms.len() > 1
+    }
+    fn scale(&self, q: &Q) -> Self {
+        if Zero::is_zero(q) || self.terms.is_empty() {
+            return Poly::zero();
+        }
+        let t = self
+            .terms
+            .iter()
+            .map(|(m, n)| (m.clone(), n * q.numer()))
+            .collect();
+        Poly::normalized(t, &self.den * q.denom())
+    }
+}
