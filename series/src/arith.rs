@@ -25,9 +25,10 @@ impl<R: Ring> Series<R> {
                 if b.is_zero() {
                     continue;
                 }
-                out[i + j].add_assign(&a.mul(b));
+                out[i + j].fma_lazy(a, b);
             }
         }
+        out.iter_mut().for_each(R::canonicalize);
         Series { coeffs: out }
     }
 
@@ -54,9 +55,10 @@ impl<R: Ring> Series<R> {
             for k in 1..=n {
                 let ak = &self.coeffs[k];
                 if !ak.is_zero() && !b[n - k].is_zero() {
-                    acc.add_assign(&ak.mul(&b[n - k]));
+                    acc.fma_lazy(ak, &b[n - k]);
                 }
             }
+            acc.canonicalize();
             b.push(acc.mul(&b0).neg());
         }
         Ok(Series { coeffs: b })

@@ -55,9 +55,10 @@ impl<R: Ring> Series<R> {
             let mut acc = R::zero();
             for k in 1..=m {
                 if !kf[k].is_zero() && !g[m - k].is_zero() {
-                    acc.add_assign(&kf[k].mul(&g[m - k]));
+                    acc.fma_lazy(&kf[k], &g[m - k]);
                 }
             }
+            acc.canonicalize();
             g.push(acc.div_int(m as i64));
         }
         Ok(Series { coeffs: g })
@@ -108,8 +109,9 @@ impl<R: Ring> Series<R> {
                 }
                 // ((alpha+1) k - m) f_k = af_k - m f_k
                 let w = af[k].sub(&fk.mul_int(m as i64));
-                acc.add_assign(&w.mul(&g[m - k]));
+                acc.fma_lazy(&w, &g[m - k]);
             }
+            acc.canonicalize();
             g.push(acc.div_int(m as i64));
         }
         Ok(Series { coeffs: g })
@@ -175,12 +177,14 @@ impl<R: Ring> Series<R> {
                     continue;
                 }
                 if !c[m - k].is_zero() {
-                    as_.add_assign(&kf[k].mul(&c[m - k]));
+                    as_.fma_lazy(&kf[k], &c[m - k]);
                 }
                 if !s[m - k].is_zero() {
-                    ac.add_assign(&kf[k].mul(&s[m - k]));
+                    ac.fma_lazy(&kf[k], &s[m - k]);
                 }
             }
+            as_.canonicalize();
+            ac.canonicalize();
             s.push(as_.div_int(m as i64));
             c.push(ac.div_int(m as i64).neg());
         }

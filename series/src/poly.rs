@@ -336,6 +336,13 @@ impl Poly {
     }
 
     fn add_sub(&self, other: &Poly, negate: bool) -> Poly {
+        let mut r = self.add_raw(other, negate);
+        r.canonicalize();
+        r
+    }
+
+    /// `self +- other` without the final content reduction (terms sorted, den > 0).
+    fn add_raw(&self, other: &Poly, negate: bool) -> Poly {
         if other.terms.is_empty() {
             return self.clone();
         }
@@ -345,13 +352,102 @@ impl Poly {
         if self.den == other.den {
             let one = BigInt::one();
             let t = Poly::merge(self, &one, other, &one, negate);
-            return Poly::normalized(t, self.den.clone());
+            return Poly {
+                terms: t,
+                den: self.den.clone(),
+            };
         }
         let g = self.den.gcd(&other.den);
         let sa = &other.den / &g;
         let sb = &self.den / &g;
         let den = &self.den * &sa;
-        Poly::normalized(Poly::merge(self, &sa, other, &sb, negate), den)
+        Poly {
+            terms: Poly::merge(self, &sa, other, &sb, negate),
+            den,
+        }
+    }
+
+    /// The single symbol of a univariate polynomial (`Ok(None)` for a constant), `Err` otherwise.
+    fn univariate_symbol(&self) -> Result<Option<Symbol>, ()> {
+        let mut sym = None;
+        for (m, _) in &self.terms {
+            match m.0.as_slice() {
+                [] => {}
+                [(s, _)] => match sym {
+                    None => sym = Some(*s),
+                    Some(t) if t == *s => {}
+                    Some(_) => return Err(()),
+                },
+                _ => return Err(()),
+            }
+        }
+        Ok(sym)
+    }
+
+    /// The product without content reduction: `(terms, den)` with `den = den_a den_b`.
+    fn mul_raw(&self, other: &Poly) -> (Vec<(Monomial, BigInt)>, BigInt) {
+        let den = &self.den * &other.den;
+        if self.terms.is_empty() || other.terms.is_empty() {
+            return (Vec::new(), BigInt::one());
+        }
+        // A constant factor scales the other polynomial.
+        if self.terms.len() == 1 && self.terms[0].0 .0.is_empty() {
+            let n = &self.terms[0].1;
+            return (
+                other
+                    .terms
+                    .iter()
+                    .map(|(m, x)| (m.clone(), x * n))
+                    .collect(),
+                den,
+            );
+        }
+        if other.terms.len() == 1 && other.terms[0].0 .0.is_empty() {
+            let n = &other.terms[0].1;
+            return (
+                self.terms.iter().map(|(m, x)| (m.clone(), x * n)).collect(),
+                den,
+            );
+        }
+        // Univariate in one common symbol: dense convolution by exponent.
+        if let (Ok(sa), Ok(sb)) = (self.univariate_symbol(), other.univariate_symbol()) {
+            if sa.is_none() || sb.is_none() || sa == sb {
+                let s = sa.or(sb).expect("non-constant: handled above");
+                let exp = |m: &Monomial| m.0.first().map_or(0, |&(_, e)| e as usize);
+                let da = self.terms.iter().map(|(m, _)| exp(m)).max().unwrap_or(0);
+                let db = other.terms.iter().map(|(m, _)| exp(m)).max().unwrap_or(0);
+                let mut acc = vec![BigInt::zero(); da + db + 1];
+                for (ma, na) in &self.terms {
+                    let ea = exp(ma);
+                    for (mb, nb) in &other.terms {
+                        acc[ea + exp(mb)] += na * nb;
+                    }
+                }
+                let terms = acc
+                    .into_iter()
+                    .enumerate()
+                    .filter(|(_, n)| !n.is_zero())
+                    .map(|(e, n)| (Monomial::power(s, e as u32), n))
+                    .collect();
+                return (terms, den);
+            }
+        }
+        let mut acc: BTreeMap<Monomial, BigInt> = BTreeMap::new();
+        for (ma, na) in &self.terms {
+            for (mb, nb) in &other.terms {
+                let m = ma.mul(mb);
+                let v = na * nb;
+                match acc.entry(m) {
+                    std::collections::btree_map::Entry::Vacant(e) => {
+                        e.insert(v);
+                    }
+                    std::collections::btree_map::Entry::Occupied(mut e) => {
+                        *e.get_mut() += v;
+                    }
+                }
+            }
+        }
+        (acc.into_iter().filter(|(_, n)| !n.is_zero()).collect(), den)
     }
 }
 
@@ -384,38 +480,21 @@ impl Ring for Poly {
         }
     }
     fn mul(&self, other: &Self) -> Self {
-        if self.terms.is_empty() || other.terms.is_empty() {
-            return Poly::zero();
+        let (t, d) = self.mul_raw(other);
+        Poly::normalized(t, d)
+    }
+    fn fma_lazy(&mut self, a: &Self, b: &Self) {
+        if a.terms.is_empty() || b.terms.is_empty() {
+            return;
         }
-        // Fast paths: a constant factor scales the other polynomial.
-        if self.terms.len() == 1 && self.terms[0].0 .0.is_empty() {
-            let n = &self.terms[0].1;
-            let t = other
-                .terms
-                .iter()
-                .map(|(m, x)| (m.clone(), x * n))
-                .collect();
-            return Poly::normalized(t, &self.den * &other.den);
-        }
-        if other.terms.len() == 1 && other.terms[0].0 .0.is_empty() {
-            return other.mul(self);
-        }
-        let mut acc: BTreeMap<Monomial, BigInt> = BTreeMap::new();
-        for (ma, na) in &self.terms {
-            for (mb, nb) in &other.terms {
-                let m = ma.mul(mb);
-                let v = na * nb;
-                match acc.entry(m) {
-                    std::collections::btree_map::Entry::Vacant(e) => {
-                        e.insert(v);
-                    }
-                    std::collections::btree_map::Entry::Occupied(mut e) => {
-                        *e.get_mut() += v;
-                    }
-                }
-            }
-        }
-        Poly::normalized(acc.into_iter().collect(), &self.den * &other.den)
+        let (t, d) = a.mul_raw(b);
+        let prod = Poly { terms: t, den: d };
+        *self = self.add_raw(&prod, false);
+    }
+    fn canonicalize(&mut self) {
+        let terms = std::mem::take(&mut self.terms);
+        let den = std::mem::replace(&mut self.den, BigInt::one());
+        *self = Poly::normalized(terms, den);
     }
     fn from_q(q: &Q) -> Self {
         Poly::term(q, Monomial::one())

@@ -73,6 +73,14 @@ pub trait Ring: Clone + PartialEq + Debug + Send + Sync + 'static {
     fn add_assign(&mut self, other: &Self) {
         *self = self.add(other);
     }
+    /// `self += a * b`, possibly leaving `self` in a non-canonical intermediate form (e.g. a
+    /// polynomial whose content is not reduced): a run of these must end with [`Ring::canonicalize`].
+    /// Lets accumulation loops skip a content gcd per step.
+    fn fma_lazy(&mut self, a: &Self, b: &Self) {
+        self.add_assign(&a.mul(b));
+    }
+    /// Restores the canonical form after [`Ring::fma_lazy`].
+    fn canonicalize(&mut self) {}
     /// An exact square root, if one exists in the ring (used for the constant term of sqrt).
     fn sqrt_exact(&self) -> Option<Self> {
         self.as_q()
@@ -155,6 +163,29 @@ impl Ring for Q {
     }
     fn add_assign(&mut self, other: &Self) {
         *self += other;
+    }
+    /// Accumulates `a b` with one gcd (of the denominators) per step and no reduction; the
+    /// reduction happens once in [`Ring::canonicalize`].
+    fn fma_lazy(&mut self, a: &Self, b: &Self) {
+        let n = a.numer() * b.numer();
+        let d = a.denom() * b.denom();
+        if Zero::is_zero(self.numer()) {
+            *self = Q::new_raw(n, d);
+            return;
+        }
+        let (sn, sd) = (self.numer(), self.denom());
+        *self = if *sd == d {
+            Q::new_raw(sn + n, d)
+        } else {
+            let g = num_integer::Integer::gcd(sd, &d);
+            let (fd, fs) = (&d / &g, sd / &g);
+            Q::new_raw(sn * &fd + n * fs, sd * fd)
+        };
+    }
+    fn canonicalize(&mut self) {
+        let v = std::mem::replace(self, <Q as Zero>::zero());
+        let (n, d) = v.into_raw();
+        *self = Q::new(n, d);
     }
 }
 

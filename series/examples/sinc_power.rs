@@ -1,0 +1,67 @@
+//! The peer-benchmark job (shared/peers/series_*.py): f(x) = (sin x / x)^(1/2 + theta) with theta
+//! symbolic (coefficients in Q[theta]) to N coefficients, and the reversion of y = x f(x); also the
+//! same job at theta = 1/3 over Q. Prints one JSON line per N with the best of `--repeat` runs
+//! (seconds) and the x^7 reversion coefficient as a correctness stamp.
+//!
+//! Run: `cargo run --release -p exact-series --example sinc_power -- [--repeat R] 30 60 100`
+
+use exact_series::{Poly, Ring, Series, Q};
+use std::time::Instant;
+
+fn best<T>(repeat: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let mut best = f64::INFINITY;
+    let mut out = None;
+    for _ in 0..repeat.max(1) {
+        let t = Instant::now();
+        let v = f();
+        best = best.min(t.elapsed().as_secs_f64());
+        out = Some(v);
+    }
+    (best, out.expect("at least one run"))
+}
+
+fn main() {
+    let mut repeat = 3;
+    let mut ns = Vec::new();
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        if a == "--repeat" {
+            repeat = args.next().and_then(|r| r.parse().ok()).unwrap_or(3);
+        } else if let Ok(n) = a.parse::<usize>() {
+            ns.push(n);
+        } else {
+            eprintln!("usage: sinc_power [--repeat R] N...");
+            std::process::exit(2);
+        }
+    }
+    if ns.is_empty() {
+        ns = vec![30, 60, 100];
+    }
+    let half = Q::new(1.into(), 2.into());
+    let alpha = Poly::var("theta")
+        .expect("valid symbol")
+        .add(&Poly::from_q(&half));
+    let a_fixed = &half + Q::new(1.into(), 3.into());
+    for n in ns {
+        let (ts, f) = best(repeat, || {
+            Series::<Poly>::sinc_series(n)
+                .pow(&alpha)
+                .expect("sinc(0) = 1")
+        });
+        let (tr, rev) = best(repeat, || {
+            f.shift(1).truncate(n).revert().expect("f(0) = 1")
+        });
+        let (tqs, g) = best(repeat, || {
+            Series::<Q>::sinc_series(n)
+                .pow(&a_fixed)
+                .expect("sinc(0) = 1")
+        });
+        let (tqr, _) = best(repeat, || {
+            g.shift(1).truncate(n).revert().expect("g(0) = 1")
+        });
+        let c7 = rev.coeff(7).map(|c| c.text()).unwrap_or_default();
+        println!(
+            "{{\"N\": {n}, \"symbolic_series_s\": {ts:.6e}, \"symbolic_reversion_s\": {tr:.6e}, \"q_series_s\": {tqs:.6e}, \"q_reversion_s\": {tqr:.6e}, \"rev_x7\": \"{c7}\"}}"
+        );
+    }
+}
