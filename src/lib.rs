@@ -9,7 +9,11 @@
 //! - `series` crate (`exact_series`): the exact power-series engine (no physics, no floats).
 //! - [`asymptotics`]: the objects of THEORY.md section 5 as exact truncated series.
 //! - [`numerics`]: evaluation of exact objects at `f64` and MPFR precision, quadrature.
+//! - [`report`]: data -> Markdown / LaTeX (pure), and the report writer.
+//! - [`cli`]: raw arguments -> validated configuration.
 
 pub mod asymptotics;
+pub mod cli;
 pub mod model;
 pub mod numerics;
+pub mod report;

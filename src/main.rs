@@ -1,1 +1,61 @@
-fn main() {}
+//! `periodic-contact`: parse -> validate -> run. `anyhow` and exit codes live only here:
+//! 0 success, 2 invalid input (clap errors too), 1 no solution, no convergence or I/O failure.
+
+use clap::Parser;
+use periodic_contact::cli::{args::Format, args::RawArgs, config::RunConfig, InvalidInput};
+use std::io::Write;
+use std::process::ExitCode;
+
+fn run(config: RunConfig) -> anyhow::Result<()> {
+    match config {
+        RunConfig::Series {
+            object,
+            order,
+            subs,
+            format,
+        } => {
+            let d = object.derive(order, &subs)?;
+            let text = match format {
+                Format::Text => d.text(),
+                Format::Latex => d.latex(),
+                Format::Json => format!("{}\n", serde_json::to_string_pretty(&d.json())?),
+            };
+            std::io::stdout().write_all(text.as_bytes())?;
+        }
+        RunConfig::Report { out, order } => {
+            let files = periodic_contact::report::write_report(&out, order)?;
+            for f in files.files {
+                eprintln!("wrote {}", f.display());
+            }
+        }
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let args = match RawArgs::try_parse() {
+        Ok(a) => a,
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
+        }
+    };
+    let config = match RunConfig::from_args(args) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    match run(config) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(if e.downcast_ref::<InvalidInput>().is_some() {
+                2
+            } else {
+                1
+            })
+        }
+    }
+}

@@ -1,0 +1,68 @@
+//! Raw command-line arguments (clap). Numbers stay text here: they are read exactly in
+//! [`super::config`].
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// periodic-contact: exact asymptotic series and high-precision solutions of the periodic contact
+/// problem with friction, wear and adhesion (Soldatenkov 2013).
+#[derive(Debug, Parser)]
+#[command(name = "periodic-contact", version, about, long_about = None)]
+pub struct RawArgs {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: RawCommand,
+}
+
+/// Output format of printed objects.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// Plain text, one coefficient per line.
+    Text,
+    /// JSON: {"object", "variable", "order", "symbols", "coefficients": [{"power", "text", "latex"}]}.
+    Json,
+    /// LaTeX align* block.
+    Latex,
+}
+
+/// Series objects the `series` command derives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ObjectName {
+    /// Z(z) = z cot z, the kernel series [3.2].
+    Kernel,
+    /// Y(xh; lambda), the weight series [3.1].
+    Weight,
+    /// j_n(theta), the Jacobi moments [3.5].
+    Jacobi,
+}
+
+/// Subcommands.
+#[derive(Debug, Subcommand)]
+pub enum RawCommand {
+    /// Derive an exact series and print its coefficients.
+    Series {
+        /// The object to derive.
+        object: ObjectName,
+        /// Keep every term through power N (for jacobi: j_0 .. j_N).
+        #[arg(long, value_name = "N")]
+        order: String,
+        /// Substitute an exact rational for theta (e.g. 1/10), |theta| < 1/2.
+        #[arg(long, value_name = "R", allow_hyphen_values = true)]
+        theta: Option<String>,
+        /// Substitute an exact rational for xh (weight only), in [-1, 1].
+        #[arg(long, value_name = "R", allow_hyphen_values = true)]
+        xh: Option<String>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
+    /// Write the report (coefficient tables, Markdown and LaTeX) into a folder: the main job.
+    Report {
+        /// Output folder.
+        #[arg(long, value_name = "DIR", default_value = "report")]
+        out: PathBuf,
+        /// Order of the coefficient tables.
+        #[arg(long, value_name = "N", default_value = "12")]
+        order: String,
+    },
+}

@@ -1,0 +1,120 @@
+//! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
+
+use super::args::{Format, ObjectName, RawArgs, RawCommand};
+use super::InvalidInput;
+use crate::asymptotics::catalog::{SeriesObject, Substitutions};
+use exact_series::{parse_rational, Q};
+use num_traits::Signed;
+use std::path::PathBuf;
+
+/// A validated run.
+#[derive(Debug, Clone)]
+pub enum RunConfig {
+    /// `series OBJECT --order N ...`
+    Series {
+        /// The object.
+        object: SeriesObject,
+        /// Terms through power `order`.
+        order: usize,
+        /// Exact substitutions.
+        subs: Substitutions,
+        /// Output format.
+        format: Format,
+    },
+    /// `report --out DIR`
+    Report {
+        /// Output folder.
+        out: PathBuf,
+        /// Order of the coefficient tables.
+        order: usize,
+    },
+}
+
+/// Largest order accepted per object: beyond it the exact derivation takes minutes (the
+/// coefficients of Y grow like order^2 terms each).
+pub fn max_order(object: SeriesObject) -> usize {
+    match object {
+        SeriesObject::Kernel | SeriesObject::Jacobi => 2000,
+        SeriesObject::Weight => 80,
+    }
+}
+
+/// Parses `--order` (an integer in [0, max]).
+pub fn parse_order(text: &str, max: usize) -> Result<usize, InvalidInput> {
+    text.trim()
+        .parse::<usize>()
+        .ok()
+        .filter(|&n| n <= max)
+        .ok_or_else(|| {
+            InvalidInput::new("--order", text, format!("must be an integer in [0, {max}]"))
+        })
+}
+
+/// Parses an exact rational flag.
+pub fn parse_exact(flag: &str, text: &str) -> Result<Q, InvalidInput> {
+    parse_rational(text).map_err(|_| {
+        InvalidInput::new(
+            flag,
+            text,
+            "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25",
+        )
+    })
+}
+
+impl RunConfig {
+    /// Validates raw arguments.
+    pub fn from_args(args: RawArgs) -> Result<RunConfig, InvalidInput> {
+        match args.command {
+            RawCommand::Series {
+                object,
+                order,
+                theta,
+                xh,
+                format,
+            } => {
+                let object = match object {
+                    ObjectName::Kernel => SeriesObject::Kernel,
+                    ObjectName::Weight => SeriesObject::Weight,
+                    ObjectName::Jacobi => SeriesObject::Jacobi,
+                };
+                let order = parse_order(&order, max_order(object))?;
+                let theta = theta.map(|t| parse_exact("--theta", &t)).transpose()?;
+                if let Some(t) = &theta {
+                    if t.abs() >= Q::new(1.into(), 2.into()) {
+                        return Err(InvalidInput::new(
+                            "--theta",
+                            t,
+                            "must satisfy |theta| < 1/2",
+                        ));
+                    }
+                    if object == SeriesObject::Kernel {
+                        return Err(InvalidInput::new("--theta", t, "the kernel has no theta"));
+                    }
+                }
+                let xh = xh.map(|t| parse_exact("--xh", &t)).transpose()?;
+                if let Some(x) = &xh {
+                    if x.abs() > Q::from_integer(1.into()) {
+                        return Err(InvalidInput::new("--xh", x, "must lie in [-1, 1]"));
+                    }
+                    if object != SeriesObject::Weight {
+                        return Err(InvalidInput::new(
+                            "--xh",
+                            x,
+                            "only the weight series has xh",
+                        ));
+                    }
+                }
+                Ok(RunConfig::Series {
+                    object,
+                    order,
+                    subs: Substitutions { theta, xh },
+                    format,
+                })
+            }
+            RawCommand::Report { out, order } => {
+                let order = parse_order(&order, 40)?;
+                Ok(RunConfig::Report { out, order })
+            }
+        }
+    }
+}
