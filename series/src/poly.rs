@@ -214,6 +214,38 @@ impl Poly {
         Poly::from_rational_terms(acc)
     }
 
+    /// Exact division `self / d`; `None` when `d` does not divide `self` (or `d = 0`).
+    ///
+    /// ```
+    /// use exact_series::{Poly, Ring};
+    /// let t = Poly::var("theta").unwrap();
+    /// let p = t.mul(&t).sub(&Poly::one()); // theta^2 - 1
+    /// assert_eq!(p.div_exact(&t.add(&Poly::one())).unwrap().text(), "theta - 1");
+    /// assert!(p.div_exact(&t).is_none());
+    /// ```
+    pub fn div_exact(&self, d: &Poly) -> Option<Poly> {
+        crate::frac::div_exact(self, d)
+    }
+
+    /// The monic greatest common divisor (lex-leading coefficient 1; gcd(0, 0) = 0).
+    pub fn gcd(&self, other: &Poly) -> Poly {
+        crate::frac::gcd(self, other)
+    }
+
+    /// Substitutes the polynomial `value` for the symbol `s`.
+    pub fn subs_poly(&self, s: Symbol, value: &Poly) -> Poly {
+        let mut out = <Poly as Ring>::zero();
+        for (m, c) in self.terms() {
+            let (rest, e) = m.remove(s);
+            let mut t = Poly::term(&c, rest);
+            for _ in 0..e {
+                t = t.mul(value);
+            }
+            out = out.add(&t);
+        }
+        out
+    }
+
     /// Builds a polynomial from `(monomial, rational)` pairs (zeros dropped, canonical form).
     pub fn from_rational_terms(terms: impl IntoIterator<Item = (Monomial, Q)>) -> Poly {
         let mut map: BTreeMap<Monomial, Q> = BTreeMap::new();

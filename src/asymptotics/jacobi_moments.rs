@@ -9,6 +9,12 @@ use exact_series::{Poly, Ring, Series, SeriesError, Symbol};
 /// coefficients of a "series" in the index (`coeff(n) = j_n`) so that it prints like the others.
 pub fn jacobi_moments(n: usize) -> Result<Series<Poly>, SeriesError> {
     let theta = Poly::symbol(Symbol::new("theta")?);
+    Ok(jacobi_moments_at(n, &theta))
+}
+
+/// j_0 .. j_n with an arbitrary polynomial in place of theta (e.g. `-theta` for the moments of
+/// the weight omega itself: int y^n omega(y) dy = (pi / cos(pi theta)) (j_n(-theta) - j_{n+2}(-theta))).
+pub fn jacobi_moments_at(n: usize, theta: &Poly) -> Series<Poly> {
     let two_theta = theta.mul_int(2);
     let mut j: Vec<Poly> = Vec::with_capacity(n + 1);
     j.push(Poly::one());
@@ -23,7 +29,7 @@ pub fn jacobi_moments(n: usize) -> Result<Series<Poly>, SeriesError> {
             .div_int(m as i64 + 1);
         j.push(next);
     }
-    Ok(Series::from_coeffs(j))
+    Series::from_coeffs(j)
 }
 
 #[cfg(test)]

@@ -5,4 +5,5 @@
 pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;
+pub mod sliding;
 pub mod weight;

@@ -1,0 +1,374 @@
+//! Problem 1 (sliding with friction, adhesive friction and wear): the small-lambda expansions
+//! of THEORY.md section 5 ([3.7]-[3.12]) to any order, exact, coefficients in Q[theta, T].
+//!
+//! Derivation [reconstructed]. In the linear variable xh = (x - c)/l the periodic kernel is
+//! (1/L) cot(pi (x - xi)/L) dxi = (1/pi) Z(lambda (xh - xih)) dxih / (xh - xih), Z(z) = z cot z
+//! = 1 + sum_k z_k z^(2k) [3.2], so the canonical equation [2.8] becomes the single-punch
+//! (Cauchy) equation with a polynomial right-hand side:
+//!
+//!   kappa p + (1/pi) PV int p(xih)/(xh - xih) dxih = F(xh),
+//!   F / (E* k l) = s(rbar + xh) + T/rho - sum_{k>=1} z_k lambda^(2k)
+//!                   sum_{j=0}^{2k-1} C(2k-1, j) (-1)^j xh^(2k-1-j) mt_j,
+//!
+//! where rho = l/l_s, T = beta tau0/(E* k l_s), mt_j = int xih^j p dxih / (pi E* k l), and
+//! s(y) = y for the parabola, s(y) = sin(2 lambda y)/(2 lambda) for the sinusoid (k = 2 pi^2 D/L^2,
+//! the osculating parabola). For a polynomial F = sum F_i xh^i the bounded solution [2.13] is
+//! p = E* k l cos(pi theta) omega(xh) B(xh), B = sum_i F_i sum_{r+s=i-1} xh^r j_s(theta),
+//! with the solvability condition sum_i F_i j_i = 0 [2.14] (J_n = pi j_n / cos(pi theta), [3.5]).
+//! The moments follow from int xh^n omega = (pi/cos(pi theta)) mu_n,
+//! mu_n = j_n(-theta) - j_{n+2}(-theta) = (1/4 - theta^2) nu_n, so
+//! mt_j = (1/4 - theta^2) sum_i F_i sum_{r+s=i-1} j_s nu_{j+r}, and the load
+//! P2 = pi E* k l^2 mt_0 = pi E* k l_s^2 mt_0(single punch) fixes rho = (S_0/2)^(-1/2),
+//! S_0 = mt_0 / (1/4 - theta^2). With lambda = Lambda rho, Lambda = pi l_s/L, the equations are
+//! solved by a fixed-point iteration on truncated series; each sweep fixes one more power of
+//! Lambda^2, and the iteration is run until two sweeps agree exactly.
+//!
+//! Outputs: l/l_s, rbar - rbar_s (rbar_s = 2 theta - T [3.10]), F_def/(pi E* k^2 l_s^3), the
+//! pressure polynomials pi_j(xh) of p = E* k l cos(pi theta) omega(xh) (1 + sum Lambda^(2j) pi_j)
+//! [3.9], and Delta/l_s = l/l_s - 1 [3.11].
+
+use super::jacobi_moments::jacobi_moments_at;
+use super::kernel::kernel_series;
+use exact_series::{Poly, Ring, Series, SeriesError, Symbol, Q};
+
+/// The punch shapes of Problem 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SlidingShape {
+    /// g = k x^2.
+    Parabolic,
+    /// g = D (1 - cos(2 pi x/L)), expanded about its osculating parabola k = 2 pi^2 D/L^2.
+    Sinusoidal,
+}
+
+/// The exact expansions in Lambda = pi l_s / L at fixed load (coefficients in Q[theta, T]).
+#[derive(Debug, Clone)]
+pub struct SlidingExpansion {
+    /// The shape.
+    pub shape: SlidingShape,
+    /// l / l_s.
+    pub l_over_ls: Series<Poly>,
+    /// rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T.
+    pub rbar_minus_rbar_s: Series<Poly>,
+    /// F_def / (pi E* k^2 l_s^3); its Lambda^0 term is the single-punch value.
+    pub f_def_scaled: Series<Poly>,
+    /// pi_1(xh), pi_2(xh), ...: p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)).
+    pub pressure: Vec<Poly>,
+}
+
+/// Polynomials in xh whose coefficients are Lambda-series: `c[i]` multiplies xh^i.
+type XPoly = Vec<Series<Poly>>;
+
+fn xp_add(a: &mut XPoly, i: usize, s: &Series<Poly>) {
+    let prec = s.prec();
+    while a.len() <= i {
+        a.push(Series::zero(prec));
+    }
+    a[i] = a[i].add(s);
+}
+
+fn xp_mul(a: &XPoly, b: &XPoly, prec: usize) -> XPoly {
+    let mut out: XPoly = vec![Series::zero(prec); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] = out[i + j].add(&x.mul(y).truncate(prec));
+        }
+    }
+    out
+}
+
+/// Pure data of the derivation that does not change between sweeps.
+struct Tables {
+    prec: usize,
+    /// j_n(theta).
+    j: Vec<Poly>,
+    /// nu_n = (j_n(-theta) - j_{n+2}(-theta)) / (1/4 - theta^2).
+    nu: Vec<Poly>,
+    /// z_k, Z(z) = 1 + sum_k z_k z^(2k).
+    z: Vec<Q>,
+    /// 1/4 - theta^2.
+    quarter: Poly,
+}
+
+impl Tables {
+    fn new(order: usize, theta: &Poly) -> Result<Tables, SeriesError> {
+        let k_max = order / 2;
+        let deg = 2 * k_max + 2;
+        let j = jacobi_moments_at(2 * deg + 2, theta).coeffs().to_vec();
+        let jm = jacobi_moments_at(4 * deg + 6, &theta.neg())
+            .coeffs()
+            .to_vec();
+        let quarter = Poly::from_q(&Q::new(1.into(), 4.into())).sub(&theta.mul(theta));
+        let nu = (0..4 * deg + 4)
+            .map(|n| {
+                jm[n].sub(&jm[n + 2]).div_exact(&quarter).ok_or_else(|| {
+                    SeriesError::NotInvertible {
+                        operation: "moment of omega divided by 1/4 - theta^2",
+                        value: jm[n].sub(&jm[n + 2]).text(),
+                    }
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let zs = kernel_series(2 * k_max + 2);
+        let z = (0..=k_max + 1)
+            .map(|k| {
+                zs.coeff(2 * k)
+                    .cloned()
+                    .unwrap_or_else(|| Q::from_integer(0.into()))
+            })
+            .collect();
+        Ok(Tables {
+            prec: order + 1,
+            j,
+            nu,
+            z,
+            quarter,
+        })
+    }
+
+    /// sum_i F_i sum_{r+s=i-1} j_s w_{n+r}: the moment functional of the bounded solution.
+    fn moment(&self, f: &XPoly, w: &[Poly], n: usize) -> Series<Poly> {
+        let mut acc = Series::zero(self.prec);
+        for (i, fi) in f.iter().enumerate().skip(1) {
+            let mut c = Poly::zero();
+            for r in 0..i {
+                c = c.add(&self.j[i - 1 - r].mul(&w[n + r]));
+            }
+            if !c.is_zero() {
+                acc = acc.add(&fi.mul_scalar(&c));
+            }
+        }
+        acc
+    }
+}
+
+/// Derives the expansions through Lambda^order (every term through Lambda^order, THEORY.md
+/// section 5), symbolic in theta and T.
+///
+/// ```
+/// use periodic_contact::asymptotics::sliding::{sliding_expansion, SlidingShape};
+/// let e = sliding_expansion(SlidingShape::Parabolic, 2).unwrap();
+/// // Frictionless check (Kuznetsov): a = a0 (1 - Lambda^2/12 + ...) at theta = T = 0.
+/// assert!(e.l_over_ls.coeff(2).unwrap().text().ends_with("- 1/12"));
+/// ```
+pub fn sliding_expansion(
+    shape: SlidingShape,
+    order: usize,
+) -> Result<SlidingExpansion, SeriesError> {
+    let theta = Poly::symbol(Symbol::new("theta")?);
+    let t = Poly::symbol(Symbol::new("T")?);
+    let tab = Tables::new(order, &theta)?;
+    let prec = tab.prec;
+    let k_max = order / 2;
+    let cst = |p: &Poly| Series::constant(p.clone(), prec);
+    let big_lambda = Series::<Poly>::var(prec);
+    let half = Q::new(1.into(), 2.into());
+
+    // Single punch: F = rbar + xh + T, u = rbar + T/rho = -j_1 = 2 theta, rho = 1.
+    let mut rho = Series::<Poly>::one(prec);
+    let mut rbar = cst(&theta.mul_int(2).sub(&t));
+    let mut mt: Vec<Series<Poly>> = {
+        let f: XPoly = vec![Series::zero(prec), Series::one(prec)];
+        let mu: Vec<Poly> = tab.nu.iter().map(|n| n.mul(&tab.quarter)).collect();
+        (0..2 * k_max + 3).map(|n| tab.moment(&f, &mu, n)).collect()
+    };
+    let mut previous: Option<(Series<Poly>, Series<Poly>)> = None;
+    let mut result = None;
+    for _sweep in 0..k_max + 3 {
+        let lambda = big_lambda.mul(&rho).truncate(prec);
+        let lambda2 = lambda.mul(&lambda).truncate(prec);
+        // The shape term s(rbar + xh) as a polynomial in xh.
+        let y: XPoly = vec![rbar.clone(), Series::one(prec)];
+        let mut shape_poly: XPoly = y.clone();
+        if shape == SlidingShape::Sinusoidal {
+            // sin(2 lambda y)/(2 lambda) - y = sum_{n>=1} (-1)^n 4^n lambda^(2n) y^(2n+1)/(2n+1)!
+            let mut y_pow = y.clone();
+            let mut lam_pow = Series::<Poly>::one(prec);
+            let mut fact = Q::from_integer(1.into());
+            for n in 1..=k_max {
+                y_pow = xp_mul(&xp_mul(&y_pow, &y, prec), &y, prec);
+                lam_pow = lam_pow.mul(&lambda2).truncate(prec);
+                fact = fact * Q::from_integer(((2 * n) * (2 * n + 1)).into());
+                let sign = if n % 2 == 0 { 1 } else { -1 };
+                let c = Q::from_integer((sign * 4i64.pow(n as u32)).into()) / &fact;
+                for (i, yi) in y_pow.iter().enumerate() {
+                    xp_add(
+                        &mut shape_poly,
+                        i,
+                        &yi.mul(&lam_pow).truncate(prec).scale(&c),
+                    );
+                }
+            }
+        }
+        // H = s(rbar + xh) - rbar + kernel correction: everything but u = rbar + T/rho.
+        let mut h = shape_poly.clone();
+        h[0] = h[0].sub(&rbar);
+        let mut lam_pow = Series::<Poly>::one(prec);
+        for k in 1..=k_max {
+            lam_pow = lam_pow.mul(&lambda2).truncate(prec);
+            let zk = &tab.z[k];
+            let mut binom = Q::from_integer(1.into()); // C(2k-1, j)
+            for j in 0..2 * k {
+                let sign = if j % 2 == 0 {
+                    Q::from_integer(1.into())
+                } else {
+                    Q::from_integer((-1).into())
+                };
+                let c = -(zk * &binom * sign);
+                xp_add(
+                    &mut h,
+                    2 * k - 1 - j,
+                    &mt[j].mul(&lam_pow).truncate(prec).scale(&c),
+                );
+                binom = binom * Q::new(((2 * k - 1 - j) as i64).into(), ((j + 1) as i64).into());
+            }
+        }
+        // Solvability [2.14]: u + sum_i H_i j_i = 0.
+        let mut u = Series::zero(prec);
+        for (i, hi) in h.iter().enumerate() {
+            u = u.sub(&hi.mul_scalar(&tab.j[i]));
+        }
+        // The full right-hand side F = H + u, its moments, the load and the new rho.
+        let mut f = h.clone();
+        f[0] = f[0].add(&u);
+        let mu: Vec<Poly> = tab.nu.iter().map(|n| n.mul(&tab.quarter)).collect();
+        mt = (0..2 * k_max + 3).map(|n| tab.moment(&f, &mu, n)).collect();
+        let s0_half = tab.moment(&f, &tab.nu, 0).scale(&half);
+        let sqrt_s0_half = s0_half.pow_q(&half)?;
+        rho = sqrt_s0_half.inv()?;
+        rbar = u.sub(&sqrt_s0_half.mul_scalar(&t));
+        let fdef = {
+            let mut acc = Series::zero(prec);
+            for (i, si) in shape_poly.iter().enumerate() {
+                acc = acc.add(&si.mul(&mt[i]).truncate(prec));
+            }
+            acc.mul(&rho.powi(3)?)
+                .truncate(prec)
+                .scale(&Q::from_integer(2.into()))
+        };
+        // Pressure B(xh) = sum_i F_i sum_{r+s=i-1} xh^r j_s.
+        let mut b: XPoly = vec![Series::zero(prec)];
+        for (i, fi) in f.iter().enumerate().skip(1) {
+            for r in 0..i {
+                xp_add(&mut b, r, &fi.mul_scalar(&tab.j[i - 1 - r]));
+            }
+        }
+        let state = (rho.clone(), rbar.clone());
+        if previous.as_ref() == Some(&state) {
+            result = Some((fdef, b));
+            break;
+        }
+        previous = Some(state);
+        result = Some((fdef, b));
+    }
+    let (f_def_scaled, b) = result.expect("at least one sweep");
+    if previous.as_ref() != Some(&(rho.clone(), rbar.clone())) {
+        return Err(SeriesError::NotInvertible {
+            operation: "sliding expansion fixed point",
+            value: "did not settle".into(),
+        });
+    }
+    let xh = Symbol::new("xh")?;
+    let pressure = (1..=k_max)
+        .map(|jj| {
+            b.iter().enumerate().fold(Poly::zero(), |acc, (r, br)| {
+                let c = br.coeff(2 * jj).cloned().unwrap_or_else(Poly::zero);
+                acc.add(&c.mul(&Poly::term(
+                    &Q::from_integer(1.into()),
+                    exact_series::Monomial::power(xh, r as u32),
+                )))
+            })
+        })
+        .collect();
+    let rbar_s = theta.mul_int(2).sub(&t);
+    Ok(SlidingExpansion {
+        shape,
+        l_over_ls: rho,
+        rbar_minus_rbar_s: rbar.sub(&cst(&rbar_s)),
+        f_def_scaled,
+        pressure,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(p: &Poly, theta: Q, t: Q) -> Q {
+        let p = p
+            .subs(Symbol::new("theta").unwrap(), &theta)
+            .subs(Symbol::new("T").unwrap(), &t);
+        p.as_q().expect("no symbols left")
+    }
+
+    fn zero() -> Q {
+        Q::from_integer(0.into())
+    }
+
+    #[test]
+    fn kuznetsov_closed_form_for_the_frictionless_parabola() {
+        // cos(lambda) = exp(-Lambda^2/2) [2.15] with l_s = a0 at theta = 0: 2 sin(lambda/2) = s,
+        // s = sqrt(2 (1 - exp(-Lambda^2/2))), so lambda = 2 arcsin(s/2), l/l_s = lambda/Lambda.
+        let order = 12;
+        let prec = order + 2;
+        let x = Series::<Q>::var(prec + 2);
+        let e = x
+            .mul(&x)
+            .scale(&Q::new((-1).into(), 2.into()))
+            .exp()
+            .unwrap();
+        let two_v = Series::one(prec + 2)
+            .sub(&e)
+            .scale(&Q::from_integer(2.into()));
+        let s = two_v.sqrt().unwrap(); // = Lambda (1 + ...)
+        let arcsin = x.sin().unwrap().revert().unwrap();
+        let lambda = arcsin
+            .compose(&s.scale(&Q::new(1.into(), 2.into())))
+            .unwrap()
+            .scale(&Q::from_integer(2.into()));
+        let expected = lambda.div(&x).unwrap();
+        let got = sliding_expansion(SlidingShape::Parabolic, order).unwrap();
+        for k in 0..=order {
+            assert_eq!(
+                at(got.l_over_ls.coeff(k).unwrap(), zero(), zero()),
+                expected.coeff(k).unwrap().clone(),
+                "Lambda^{k}"
+            );
+            assert_eq!(
+                at(got.rbar_minus_rbar_s.coeff(k).unwrap(), zero(), zero()),
+                zero()
+            );
+        }
+    }
+
+    #[test]
+    fn westergaard_closed_form_for_the_frictionless_sinusoid() {
+        // P2 = pi E* D sin^2(lambda) [2.17] gives sin(lambda) = lambda0: a/a0 = arcsin(lambda0)/lambda0.
+        let order = 12;
+        let x = Series::<Q>::var(order + 3);
+        let expected = x.sin().unwrap().revert().unwrap().div(&x).unwrap();
+        let got = sliding_expansion(SlidingShape::Sinusoidal, order).unwrap();
+        for k in 0..=order {
+            assert_eq!(
+                at(got.l_over_ls.coeff(k).unwrap(), zero(), zero()),
+                expected.coeff(k).unwrap().clone(),
+                "Lambda^{k}"
+            );
+        }
+        // Delta = a - a_s = -pi^2 a0^3/(12 L^2) for both shapes [3.11]: the Lambda^2 term of l/l_s
+        // is 1/6 for the sinusoid, and the single bulge has 1/4: 1/6 - 1/4 = -1/12.
+        assert_eq!(expected.coeff(2).unwrap(), &Q::new(1.into(), 6.into()));
+    }
+
+    #[test]
+    fn single_punch_limit() {
+        let e = sliding_expansion(SlidingShape::Parabolic, 4).unwrap();
+        assert!(e.l_over_ls.coeff(0).unwrap().is_one());
+        assert!(e.rbar_minus_rbar_s.coeff(0).unwrap().is_zero());
+        // F_def,s / (pi E* k^2 l_s^3) = 2 (rbar_s mu_0 + mu_1) = (1/4 - theta^2)(32 theta/3 - 4 T).
+        assert_eq!(
+            e.f_def_scaled.coeff(0).unwrap().text(),
+            "-32/3*theta^3 + 4*T*theta^2 + 8/3*theta - T"
+        );
+        assert!(e.pressure.len() == 2);
+    }
+}
