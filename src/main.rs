@@ -14,11 +14,28 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             subs,
             format,
         } => {
-            let d = object.derive(order, &subs)?;
+            let parts = object.derive(order, &subs)?;
             let text = match format {
-                Format::Text => d.text(),
-                Format::Latex => d.latex(),
-                Format::Json => format!("{}\n", serde_json::to_string_pretty(&d.json())?),
+                Format::Text => parts
+                    .iter()
+                    .map(|d| d.text())
+                    .collect::<Vec<_>>()
+                    .join("\n"),
+                Format::Latex => parts
+                    .iter()
+                    .map(|d| d.latex())
+                    .collect::<Vec<_>>()
+                    .join("\n"),
+                Format::Json => {
+                    let v = match parts.as_slice() {
+                        [one] => one.json(),
+                        many => serde_json::json!({
+                            "object": object.name(),
+                            "parts": many.iter().map(|d| d.json()).collect::<Vec<_>>(),
+                        }),
+                    };
+                    format!("{}\n", serde_json::to_string_pretty(&v)?)
+                }
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }

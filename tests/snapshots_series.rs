@@ -2,16 +2,26 @@
 //! tables, reviewed like code). Snapshot files live in the top-level `snapshots/` folder.
 
 use periodic_contact::asymptotics::catalog::{SeriesObject, Substitutions};
+use periodic_contact::asymptotics::sliding::SlidingShape;
 
 fn snap(name: &str, object: SeriesObject, subs: Substitutions) {
-    let d = object.derive(12, &subs).unwrap();
+    let parts = object.derive(12, &subs).unwrap();
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../snapshots");
     settings.set_prepend_module_to_snapshot(false);
     settings.bind(|| {
-        insta::assert_snapshot!(format!("{name}_text"), d.text());
-        insta::assert_snapshot!(format!("{name}_latex"), d.latex());
-        insta::assert_json_snapshot!(format!("{name}_json"), d.json());
+        if let [d] = parts.as_slice() {
+            insta::assert_snapshot!(format!("{name}_text"), d.text());
+            insta::assert_snapshot!(format!("{name}_latex"), d.latex());
+            insta::assert_json_snapshot!(format!("{name}_json"), d.json());
+        } else {
+            let text: Vec<String> = parts.iter().map(|d| d.text()).collect();
+            let latex: Vec<String> = parts.iter().map(|d| d.latex()).collect();
+            let json: Vec<serde_json::Value> = parts.iter().map(|d| d.json()).collect();
+            insta::assert_snapshot!(format!("{name}_text"), text.join("\n"));
+            insta::assert_snapshot!(format!("{name}_latex"), latex.join("\n"));
+            insta::assert_json_snapshot!(format!("{name}_json"), json);
+        }
     });
 }
 
@@ -38,6 +48,7 @@ fn weight_order12_theta_1_10() {
     let subs = Substitutions {
         theta: Some(exact_series::Q::new(1.into(), 10.into())),
         xh: None,
+        t: None,
     };
     snap("weight_order12_theta_1_10", SeriesObject::Weight, subs);
 }
@@ -47,6 +58,24 @@ fn jacobi_order12() {
     snap(
         "jacobi_order12",
         SeriesObject::Jacobi,
+        Substitutions::default(),
+    );
+}
+
+#[test]
+fn sliding_parabolic_order12() {
+    snap(
+        "sliding_parabolic_order12",
+        SeriesObject::Sliding(SlidingShape::Parabolic),
+        Substitutions::default(),
+    );
+}
+
+#[test]
+fn sliding_sinusoidal_order12() {
+    snap(
+        "sliding_sinusoidal_order12",
+        SeriesObject::Sliding(SlidingShape::Sinusoidal),
         Substitutions::default(),
     );
 }

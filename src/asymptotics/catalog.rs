@@ -1,8 +1,9 @@
 //! The catalogue of derived series objects that the CLI (`periodic-contact series OBJECT`) and
 //! the report print: each with its name, formula, equation number and expansion variable.
 
+use super::sliding::{sliding_expansion, SlidingShape};
 use super::{jacobi_moments::jacobi_moments, kernel::kernel_series, weight::weight_series};
-use exact_series::{Poly, Ring, Series, SeriesError, Symbol, Q};
+use exact_series::{Frac, Poly, Ring, Series, SeriesError, Symbol, Q};
 
 /// A derived object, ready to print.
 #[derive(Debug, Clone)]
@@ -15,8 +16,8 @@ pub struct Derived {
     pub source: &'static str,
     /// Expansion variable (or index, for sequences).
     pub variable: &'static str,
-    /// The exact coefficients, possibly with symbols substituted.
-    pub series: Series<Poly>,
+    /// The exact coefficients (polynomials or rational functions), symbols possibly substituted.
+    pub series: Series<Frac>,
     /// Symbols that may occur in the coefficients.
     pub symbols: Vec<Symbol>,
 }
@@ -30,6 +31,8 @@ pub enum SeriesObject {
     Weight,
     /// j_n(theta).
     Jacobi,
+    /// Problem 1 expansions in Lambda (l/l_s, rbar - rbar_s, F_def/F_def,s, pi_j).
+    Sliding(SlidingShape),
 }
 
 /// Exact values substituted for symbols before printing.
@@ -39,56 +42,112 @@ pub struct Substitutions {
     pub theta: Option<Q>,
     /// xh in [-1, 1].
     pub xh: Option<Q>,
+    /// T = beta tau0 / (E* k l_s) (Problem 1).
+    pub t: Option<Q>,
+}
+
+/// Applies the substitutions to a series and drops the substituted symbols from the list.
+fn substitute(
+    series: Series<Frac>,
+    symbols: &mut Vec<Symbol>,
+    subs: &Substitutions,
+) -> Result<Series<Frac>, SeriesError> {
+    let mut series = series;
+    for (name, value) in [("theta", &subs.theta), ("xh", &subs.xh), ("T", &subs.t)] {
+        if let Some(v) = value {
+            let s = Symbol::new(name)?;
+            let mapped: Option<Vec<Frac>> = series.coeffs().iter().map(|c| c.subs(s, v)).collect();
+            let coeffs = mapped.ok_or_else(|| SeriesError::NotInvertible {
+                operation: "substitution",
+                value: format!(
+                    "a denominator vanishes at {name} = {}",
+                    exact_series::q_text(v)
+                ),
+            })?;
+            series = Series::from_coeffs(coeffs);
+            symbols.retain(|x| *x != s);
+        }
+    }
+    Ok(series)
 }
 
 impl SeriesObject {
-    /// Derives the object through `order` (THEORY.md section 5 order convention).
-    pub fn derive(self, order: usize, subs: &Substitutions) -> Result<Derived, SeriesError> {
+    /// Derives the object through `order` (THEORY.md section 5 order convention): one part for
+    /// the foundation objects, several for the Problem 1 expansions.
+    pub fn derive(self, order: usize, subs: &Substitutions) -> Result<Vec<Derived>, SeriesError> {
         let theta = Symbol::new("theta")?;
         let xh = Symbol::new("xh")?;
-        let (object, formula, source, variable, series, mut symbols) = match self {
-            SeriesObject::Kernel => (
+        let t = Symbol::new("T")?;
+        let frac = |s: Series<Poly>| s.map(|c| Frac::from_poly(c.clone()));
+        let parts: Vec<(&'static str, &'static str, &'static str, &'static str, Series<Frac>, Vec<Symbol>)> = match self {
+            SeriesObject::Kernel => vec![(
                 "kernel",
                 "Z(z) = z cot z; (pi/L) cot(pi (x - xi)/L) = Z(lambda (xh - xih)) / (x - xi)",
                 "THEORY.md section 5, paper [3.2]",
                 "z",
-                kernel_series(order).map(Poly::from_q),
+                frac(kernel_series(order).map(Poly::from_q)),
                 vec![],
-            ),
-            SeriesObject::Weight => (
+            )],
+            SeriesObject::Weight => vec![(
                 "weight",
                 "Y(xh; lambda) = sinc(lambda (1 + xh))^(1/2 + theta) sinc(lambda (1 - xh))^(1/2 - theta)",
                 "THEORY.md section 5, paper [2.29], [3.1]",
                 "lambda",
-                weight_series(order)?,
+                frac(weight_series(order)?),
                 vec![theta, xh],
-            ),
-            SeriesObject::Jacobi => (
+            )],
+            SeriesObject::Jacobi => vec![(
                 "jacobi",
                 "j_n(theta): J_n = int_{-1}^{1} y^n dy / omega(y) = (pi / cos(pi theta)) j_n(theta); coefficient n is j_n",
                 "THEORY.md section 5, paper [3.5]",
                 "n",
-                jacobi_moments(order)?,
+                frac(jacobi_moments(order)?),
                 vec![theta],
-            ),
+            )],
+            SeriesObject::Sliding(shape) => {
+                let e = sliding_expansion(shape, order)?;
+                let f0 = e.f_def_scaled.coeff(0).cloned().unwrap_or_else(Poly::zero);
+                let xh_poly: Vec<Poly> = {
+                    let mut v = vec![Poly::zero(); order + 1];
+                    for (j, pj) in e.pressure.iter().enumerate() {
+                        v[2 * (j + 1)] = pj.clone();
+                    }
+                    v
+                };
+                let pressure = Series::from_coeffs(xh_poly);
+                let src = "THEORY.md section 5, paper [3.7]-[3.12]";
+                let mut parts = vec![
+                    ("l_over_ls", "l/l_s at fixed P2, Lambda = pi l_s/L; l_s = a0/sqrt(1 - 4 theta^2), a0 = sqrt(2 P2/(pi E* k)); Delta/l_s = l/l_s - 1 [3.11]", src, "Lambda", frac(e.l_over_ls), vec![theta, t]),
+                    ("rbar_minus_rbar_s", "rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T, T = beta tau0/(E* k l_s)", src, "Lambda", frac(e.rbar_minus_rbar_s), vec![theta, t]),
+                    ("F_def_scaled", "F_def/(pi E* k^2 l_s^3), F_def = int p g' dx", src, "Lambda", frac(e.f_def_scaled.clone()), vec![theta, t]),
+                    ("pressure_pi", "p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)); coefficient of Lambda^(2j) is pi_j(xh)", src, "Lambda", frac(pressure), vec![theta, t, xh]),
+                ];
+                // F_def/F_def,s, a rational function of theta and T (F_def,s = 0 when 8 theta/3 = T,
+                // e.g. frictionless: then only F_def_scaled is defined).
+                let f0_sub = substitute(Series::constant(Frac::from_poly(f0.clone()), 1), &mut vec![], subs)?;
+                if !f0_sub.coeff(0).is_some_and(|c| c.is_zero()) {
+                    let ratio = Series::from_coeffs(
+                        e.f_def_scaled.coeffs().iter().map(|c| Frac::new(c.clone(), f0.clone()).expect("F_def,s is not the zero polynomial")).collect(),
+                    );
+                    parts.insert(2, ("F_def_over_F_def_s", "F_def/F_def,s (deformation component of the sliding resistance)", src, "Lambda", ratio, vec![theta, t]));
+                }
+                parts
+            }
         };
-        let mut series = series;
-        if let Some(t) = &subs.theta {
-            series = series.map(|c| c.subs(theta, t));
-            symbols.retain(|s| *s != theta);
-        }
-        if let Some(x) = &subs.xh {
-            series = series.map(|c| c.subs(xh, x));
-            symbols.retain(|s| *s != xh);
-        }
-        Ok(Derived {
-            object,
-            formula,
-            source,
-            variable,
-            series,
-            symbols,
-        })
+        parts
+            .into_iter()
+            .map(|(object, formula, source, variable, series, mut symbols)| {
+                let series = substitute(series, &mut symbols, subs)?;
+                Ok(Derived {
+                    object,
+                    formula,
+                    source,
+                    variable,
+                    series,
+                    symbols,
+                })
+            })
+            .collect()
     }
 }
 
@@ -166,7 +225,8 @@ mod tests {
     fn kernel_text_lists_bernoulli_coefficients() {
         let d = SeriesObject::Kernel
             .derive(4, &Substitutions::default())
-            .unwrap();
+            .unwrap()
+            .remove(0);
         assert!(
             d.text().contains("[z^2] -1/3\n[z^4] -1/45\n"),
             "{}",
@@ -179,10 +239,23 @@ mod tests {
         let subs = Substitutions {
             theta: Some(q(1, 10)),
             xh: Some(q(0, 1)),
+            t: None,
         };
-        let d = SeriesObject::Weight.derive(2, &subs).unwrap();
+        let d = SeriesObject::Weight.derive(2, &subs).unwrap().remove(0);
         // At xh = 0: Y = sinc(lambda) = 1 - lambda^2/6 + ..., independent of theta.
         assert_eq!(d.series.coeff(2).unwrap().as_q(), Some(q(-1, 6)));
         assert!(d.symbols.is_empty());
+    }
+}
+
+impl SeriesObject {
+    /// CLI name.
+    pub fn name(self) -> &'static str {
+        match self {
+            SeriesObject::Kernel => "kernel",
+            SeriesObject::Weight => "weight",
+            SeriesObject::Jacobi => "jacobi",
+            SeriesObject::Sliding(_) => "sliding",
+        }
     }
 }

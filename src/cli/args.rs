@@ -34,6 +34,17 @@ pub enum ObjectName {
     Weight,
     /// j_n(theta), the Jacobi moments [3.5].
     Jacobi,
+    /// Problem 1 expansions in Lambda [3.7]-[3.12]: l_over_ls, rbar_minus_rbar_s, F_def, pi_j.
+    Sliding,
+}
+
+/// Punch shapes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ShapeName {
+    /// g = k x^2.
+    Parabolic,
+    /// g = D (1 - cos(2 pi x/L)).
+    Sinusoidal,
 }
 
 /// Subcommands.
@@ -49,9 +60,15 @@ pub enum RawCommand {
         /// Substitute an exact rational for theta (e.g. 1/10), |theta| < 1/2.
         #[arg(long, value_name = "R", allow_hyphen_values = true)]
         theta: Option<String>,
-        /// Substitute an exact rational for xh (weight only), in [-1, 1].
+        /// Substitute an exact rational for xh (weight, sliding), in [-1, 1].
         #[arg(long, value_name = "R", allow_hyphen_values = true)]
         xh: Option<String>,
+        /// Substitute an exact rational for T = beta tau0/(E* k l_s) (sliding), T >= 0.
+        #[arg(long = "T", value_name = "R", allow_hyphen_values = true)]
+        t: Option<String>,
+        /// Punch shape (sliding).
+        #[arg(long, value_enum, default_value_t = ShapeName::Parabolic)]
+        shape: ShapeName,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,

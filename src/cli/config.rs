@@ -1,8 +1,9 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
-use super::args::{Format, ObjectName, RawArgs, RawCommand};
+use super::args::{Format, ObjectName, RawArgs, RawCommand, ShapeName};
 use super::InvalidInput;
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
+use crate::asymptotics::sliding::SlidingShape;
 use exact_series::{parse_rational, Q};
 use num_traits::Signed;
 use std::path::PathBuf;
@@ -36,6 +37,7 @@ pub fn max_order(object: SeriesObject) -> usize {
     match object {
         SeriesObject::Kernel | SeriesObject::Jacobi => 2000,
         SeriesObject::Weight => 80,
+        SeriesObject::Sliding(_) => 24,
     }
 }
 
@@ -70,12 +72,18 @@ impl RunConfig {
                 order,
                 theta,
                 xh,
+                t,
+                shape,
                 format,
             } => {
                 let object = match object {
                     ObjectName::Kernel => SeriesObject::Kernel,
                     ObjectName::Weight => SeriesObject::Weight,
                     ObjectName::Jacobi => SeriesObject::Jacobi,
+                    ObjectName::Sliding => SeriesObject::Sliding(match shape {
+                        ShapeName::Parabolic => SlidingShape::Parabolic,
+                        ShapeName::Sinusoidal => SlidingShape::Sinusoidal,
+                    }),
                 };
                 let order = parse_order(&order, max_order(object))?;
                 let theta = theta.map(|t| parse_exact("--theta", &t)).transpose()?;
@@ -96,18 +104,31 @@ impl RunConfig {
                     if x.abs() > Q::from_integer(1.into()) {
                         return Err(InvalidInput::new("--xh", x, "must lie in [-1, 1]"));
                     }
-                    if object != SeriesObject::Weight {
+                    if !matches!(object, SeriesObject::Weight | SeriesObject::Sliding(_)) {
                         return Err(InvalidInput::new(
                             "--xh",
                             x,
-                            "only the weight series has xh",
+                            "only the weight and sliding series have xh",
                         ));
+                    }
+                }
+                let t = t.map(|v| parse_exact("--T", &v)).transpose()?;
+                if let Some(v) = &t {
+                    if v.is_negative() {
+                        return Err(InvalidInput::new(
+                            "--T",
+                            v,
+                            "must be >= 0 (T = beta tau0/(E* k l_s))",
+                        ));
+                    }
+                    if !matches!(object, SeriesObject::Sliding(_)) {
+                        return Err(InvalidInput::new("--T", v, "only the sliding series has T"));
                     }
                 }
                 Ok(RunConfig::Series {
                     object,
                     order,
-                    subs: Substitutions { theta, xh },
+                    subs: Substitutions { theta, xh, t },
                     format,
                 })
             }

@@ -1,18 +1,22 @@
 //! Coefficient tables of the derived series (report section 1), exact, as Markdown and LaTeX.
 
 use crate::asymptotics::catalog::{Derived, SeriesObject, Substitutions};
+use crate::asymptotics::sliding::SlidingShape;
 use exact_series::{Ring, SeriesError};
 
 /// Derives every catalogued object through `order`.
 pub fn coefficient_tables(order: usize) -> Result<Vec<Derived>, SeriesError> {
-    [
+    let mut out = Vec::new();
+    for o in [
         SeriesObject::Kernel,
         SeriesObject::Weight,
         SeriesObject::Jacobi,
-    ]
-    .into_iter()
-    .map(|o| o.derive(order, &Substitutions::default()))
-    .collect()
+        SeriesObject::Sliding(SlidingShape::Parabolic),
+        SeriesObject::Sliding(SlidingShape::Sinusoidal),
+    ] {
+        out.extend(o.derive(order, &Substitutions::default())?);
+    }
+    Ok(out)
 }
 
 /// The Markdown report text (deterministic: no timings, no paths).
