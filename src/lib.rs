@@ -9,7 +9,9 @@
 //! - `series` crate (`exact_series`): the exact power-series engine (no physics, no floats).
 //! - [`asymptotics`]: the objects of THEORY.md section 5 as exact truncated series.
 //! - [`numerics`]: evaluation of exact objects at `f64` and MPFR precision, quadrature.
+//! - [`sliding`]: Problem 1 solvers (`collocation_f64`: fast f64 Gauss–Jacobi collocation).
 
 pub mod asymptotics;
 pub mod model;
 pub mod numerics;
+pub mod sliding;

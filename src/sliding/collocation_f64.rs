@@ -1,0 +1,1261 @@
+//! Fast `f64` solution of Problem 1 (steady sliding with friction, adhesive friction and wear) by
+//! Gauss–Jacobi collocation of the cot-kernel singular integral equation.
+//!
+//! # Equation (THEORY.md section 3, the paper's [2.8])
+//! On the contact (-a, b), with H the periodic Hilbert operator of THEORY.md section 2,
+//!
+//! ```text
+//! kappa p + H[p] = (E*/2) g' + beta tau0,   kappa = E* cW/2 - beta mu,  theta = atan(kappa)/pi,
+//! ```
+//!
+//! p bounded at both ends. The tangent map t = tan(pi (x - c)/L) = m u, m = tan(lambda), turns H
+//! into the finite Cauchy operator in u plus the constant (THEORY.md section 2)
+//! C0[p] = (1/pi) int_{-1}^{1} p(u') m^2 u'/(1 + m^2 u'^2) du'. For a single punch
+//! (L = infinity) u = (x - c)/l and C0 = 0.
+//!
+//! # Discretisation [reconstructed; independent of the exact reduction of THEORY.md section 3]
+//! p(u) = omega(u) G(u), omega = (1+u)^{1/2+theta} (1-u)^{1/2-theta}, G a polynomial of degree
+//! n - 1 represented by its values G_k at the n nodes t_k of the Gauss–Jacobi rule of omega
+//! (weights W_k). The constant part of the equation is an unknown K:
+//!
+//! ```text
+//! kappa p(u) + (1/pi) PV int p(u')/(u - u') du' + K = F(u),   F = (E*/2) g'(x(u)) (shape part),
+//! ```
+//!
+//! collocated at the n + 1 zeros x_r of P_{n+1}^{(-alpha,-beta)} (alpha = 1/2 - theta,
+//! beta = 1/2 + theta), where the singular Gauss–Jacobi formula is exact for polynomial G of
+//! degree <= 2n and the kappa-term cancels (Erdogan, Gupta & Cook 1973):
+//!
+//! ```text
+//! sum_k W_k G_k / (pi (x_r - t_k)) + K = F(x_r),   r = 0..n.
+//! ```
+//!
+//! The (n+1) x (n+1) matrix depends on (theta, n) only, never on (lambda, c): it is LU-factored
+//! once and cached per thread. The two side conditions are then
+//!
+//! ```text
+//! K = C0[p] - beta tau0      (solvability: the constant of the true equation),
+//! P2 = int p dx = sum_k W_k G_k x'(t_k),   x'(u) = (L/pi) m/(1 + m^2 u^2)  (or l).
+//! ```
+//!
+//! Since F is affine in c for the parabola (F = E* k (c + x(u) - c)) and linear in
+//! (cos 2 pi c/L, sin 2 pi c/L) for the sinusoid, both conditions are solved for c in closed form
+//! at fixed lambda, and only a scalar equation in lambda remains (Brent's method on a bracket);
+//! no 2D Newton iteration is needed. For the parabola lambda does not depend on tau0 and c is
+//! explicit (THEORY.md section 3). For the sinusoid the scalar equation is
+//! X(lambda)^2 + Y(lambda)^2 = 1, (X, Y) = (cos, sin)(2 pi c/L) from the 2x2 linear system of the
+//! side conditions; all its roots are found by a scan and refined, which handles the non-monotone
+//! P2(lambda) for theta != 0.
+//!
+//! # Accuracy
+//! The quadrature error behaves like tan(lambda/2)^{2n} (THEORY.md section 3); the pressure between
+//! nodes is a degree n-1 interpolant, whose error behaves like tan(lambda/2)^n. The number of nodes
+//! is chosen from that rate, and the result carries the difference to a second run with about 1.5x
+//! the nodes ([`AccuracyEstimate`]).
+
+use crate::model::{Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::numerics::exact::to_f64;
+use crate::numerics::gauss_jacobi_f64::{
+    barycentric_eval, barycentric_weights, gauss_jacobi, omega, omega_cauchy_exterior, sliding_rules, GaussRule,
+    QuadratureError,
+};
+use nalgebra::{DMatrix, DVector, Dyn, LU};
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::f64::consts::PI;
+use std::rc::Rc;
+
+/// Tunables of the f64 collocation solver.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolverOptions {
+    /// Target size of the quadrature error used to choose the number of nodes (default 1e-15).
+    pub target: f64,
+    /// Largest number of nodes allowed (default 1200).
+    pub max_nodes: usize,
+    /// Force this number of nodes for the main run (the check run uses ~1.5x); `None`: automatic.
+    pub nodes: Option<usize>,
+    /// Reject a solution whose estimated relative error exceeds this (default 1e-8).
+    pub accept: f64,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        SolverOptions { target: 1e-15, max_nodes: 1200, nodes: None, accept: 1e-8 }
+    }
+}
+
+/// Pressure at one requested point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PressurePoint {
+    /// xh = (x - c)/l in (-1, 1).
+    pub xh: f64,
+    /// x = c + l xh.
+    pub x: f64,
+    /// p(x).
+    pub p: f64,
+}
+
+/// Relative differences between the main run and a check run with more nodes, on the scales of
+/// the issue: l for a, b, c; max p for p(x); P2 for loads; k l P2 for F_def (for the sinusoid
+/// k = 2 pi^2 D/L^2, the curvature of the osculating parabola).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AccuracyEstimate {
+    /// max(|da|, |db|, |dc|)/l.
+    pub geometry: f64,
+    /// max |dp| / max p over the requested points and an interior grid.
+    pub pressure: f64,
+    /// max(|dP1|, |dP2|)/P2.
+    pub load: f64,
+    /// |dF_def|/(k l P2).
+    pub f_def: f64,
+    /// Nodes of the check run.
+    pub check_nodes: usize,
+}
+
+impl AccuracyEstimate {
+    /// The largest of the four relative differences.
+    pub fn max(&self) -> f64 {
+        self.geometry.max(self.pressure).max(self.load).max(self.f_def)
+    }
+}
+
+/// One solution of Problem 1 in f64.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlidingSolutionF64 {
+    /// theta = atan(kappa)/pi.
+    pub theta: f64,
+    /// kappa = E* cW/2 - beta mu.
+    pub kappa: f64,
+    /// lambda = pi l/L (0 for a single punch).
+    pub lambda: f64,
+    /// Half-length l = (a + b)/2.
+    pub l: f64,
+    /// Trailing edge at x = -a.
+    pub a: f64,
+    /// Leading edge at x = b.
+    pub b: f64,
+    /// Centre c = (b - a)/2.
+    pub c: f64,
+    /// Tangential load P1 = mu P2 + 2 l tau0.
+    pub p1: f64,
+    /// Normal load P2 = int p dx.
+    pub p2: f64,
+    /// Deformation component of the sliding resistance F_def = int p g' dx.
+    pub f_def: f64,
+    /// Mean wear per sliding distance cW P2/L (`None` for a single punch).
+    pub wear_per_distance: Option<f64>,
+    /// Mean wear rate cW V P2/L when the speed V is given (and L finite).
+    pub wear_rate: Option<f64>,
+    /// Largest pressure on the contact (sampled).
+    pub max_pressure: f64,
+    /// Most negative gap found outside the contact (0 if none beyond round-off). Nonzero only
+    /// with tau0 > 0, where the model makes it slightly negative just beyond the leading edge b
+    /// (see the module docs); with tau0 = 0 a negative gap rejects the solution.
+    pub min_gap: f64,
+    /// Where `min_gap` occurs (x).
+    pub min_gap_x: f64,
+    /// p at the requested xh.
+    pub pressure: Vec<PressurePoint>,
+    /// Nodes of the main run.
+    pub nodes: usize,
+    /// Difference to the check run.
+    pub accuracy: AccuracyEstimate,
+}
+
+/// All physical solutions, smallest contact first (several only for the sinusoid with theta != 0
+/// or tau0 > 0).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlidingSolutionsF64 {
+    /// Non-empty, sorted by l ascending.
+    pub solutions: Vec<SlidingSolutionF64>,
+}
+
+impl SlidingSolutionsF64 {
+    /// The solution with the smallest contact.
+    pub fn primary(&self) -> &SlidingSolutionF64 {
+        &self.solutions[0]
+    }
+}
+
+/// Why no solution is returned.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SlidingF64Error {
+    /// An exact input is outside the finite f64 range (or rounds to 0).
+    #[error("{parameter} = {value} is not representable in f64 (must round to a finite, nonzero f64)")]
+    NotRepresentable {
+        /// Parameter name.
+        parameter: &'static str,
+        /// Its exact value.
+        value: String,
+    },
+    /// An input outside the range this method supports.
+    #[error("invalid {parameter} = {value}: {expected}")]
+    InvalidParameter {
+        /// Parameter name.
+        parameter: &'static str,
+        /// Value.
+        value: String,
+        /// Valid range.
+        expected: String,
+    },
+    /// A requested output point outside (-1, 1).
+    #[error("invalid point xh = {value}: must lie in (-1, 1)")]
+    InvalidPoint {
+        /// The point.
+        value: f64,
+    },
+    /// The periodic parabola's contact leaves the cell (-L/2, L/2) (its periodic extension has
+    /// kinks at +-L/2; THEORY.md section 3, Validity).
+    #[error("the contact [-a, b] = [{neg_a}, {b}] leaves the cell (-L/2, L/2) = (-{half_period}, {half_period}) of the periodic parabola; reduce normal_load (or half_length)")]
+    ContactLeavesCell {
+        /// -a.
+        neg_a: f64,
+        /// b.
+        b: f64,
+        /// L/2.
+        half_period: f64,
+    },
+    /// The sinusoid cannot carry this load at these friction and wear values.
+    #[error("no solution: normal_load = {load} exceeds the maximum load {max_load} this sinusoid carries at theta = {theta}, tau0 = {tau0} (maximum found for contact fractions 2l/L up to {max_fraction})")]
+    LoadExceedsMaximum {
+        /// Requested P2.
+        load: f64,
+        /// Largest load found (physical or not).
+        max_load: f64,
+        /// theta.
+        theta: f64,
+        /// tau0.
+        tau0: f64,
+        /// Largest contact fraction scanned.
+        max_fraction: f64,
+    },
+    /// Solutions exist but none is physical.
+    #[error("no physical solution: {reason}")]
+    NotPhysical {
+        /// What failed (p < 0 inside or gap < 0 outside, where).
+        reason: String,
+    },
+    /// The iteration or the node refinement did not reach the accuracy.
+    #[error("did not converge: {reason}")]
+    NoConvergence {
+        /// Why.
+        reason: String,
+    },
+    /// The quadrature rule could not be built.
+    #[error(transparent)]
+    Quadrature(#[from] QuadratureError),
+}
+
+type Result<T> = std::result::Result<T, SlidingF64Error>;
+
+// ---------------------------------------------------------------------------------------------
+// Inputs in f64
+// ---------------------------------------------------------------------------------------------
+
+#[derive(Debug, Clone, Copy)]
+enum Shape {
+    Parabolic { k: f64 },
+    Sinusoidal { d: f64 },
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Params {
+    e_star: f64,
+    beta: f64,
+    mu: f64,
+    tau0: f64,
+    cw: f64,
+    speed: Option<f64>,
+    period: Option<f64>,
+    shape: Shape,
+    theta: f64,
+    kappa: f64,
+}
+
+impl Params {
+    /// g'(x) of the periodic extension (THEORY.md section 1, [2.16]).
+    fn slope(&self, x: f64) -> f64 {
+        match (self.shape, self.period) {
+            (Shape::Parabolic { k }, None) => 2.0 * k * x,
+            (Shape::Parabolic { k }, Some(l)) => 2.0 * k * (x - l * (x / l).round()),
+            (Shape::Sinusoidal { d }, Some(l)) => d * 2.0 * PI / l * (2.0 * PI * x / l).sin(),
+            (Shape::Sinusoidal { .. }, None) => f64::NAN, // excluded by SlidingProblem::new
+        }
+    }
+    /// Curvature scale k (sinusoid: osculating parabola k = 2 pi^2 D/L^2).
+    fn k_scale(&self) -> f64 {
+        match (self.shape, self.period) {
+            (Shape::Parabolic { k }, _) => k,
+            (Shape::Sinusoidal { d }, Some(l)) => 2.0 * PI * PI * d / (l * l),
+            _ => 1.0,
+        }
+    }
+}
+
+fn exact_to_f64(q: &crate::model::Exact, name: &'static str, allow_zero: bool) -> Result<f64> {
+    match to_f64(q) {
+        Some(v) if v.is_finite() && (allow_zero || v != 0.0) => Ok(v),
+        _ => Err(SlidingF64Error::NotRepresentable { parameter: name, value: q.to_string() }),
+    }
+}
+
+fn params_of(problem: &SlidingProblem) -> Result<(Params, Target)> {
+    let e_star = exact_to_f64(&problem.material.contact_modulus, "contact_modulus", false)?;
+    let beta = exact_to_f64(&problem.material.beta(), "beta", true)?;
+    let mu = exact_to_f64(&problem.friction, "friction", true)?;
+    let tau0 = exact_to_f64(&problem.adhesive_friction, "adhesive_friction", true)?;
+    let cw = exact_to_f64(&problem.wear, "wear", true)?;
+    let speed = problem.speed.as_ref().map(|v| exact_to_f64(v, "speed", false)).transpose()?;
+    let period = match &problem.period {
+        Period::Finite(l) => Some(exact_to_f64(l, "period", false)?),
+        Period::Infinite => None,
+    };
+    let shape = match &problem.shape {
+        PunchShape::Parabolic { k } => Shape::Parabolic { k: exact_to_f64(k, "k", false)? },
+        PunchShape::Sinusoidal { amplitude } => Shape::Sinusoidal { d: exact_to_f64(amplitude, "amplitude", false)? },
+    };
+    if let (Shape::Sinusoidal { .. }, None) = (shape, period) {
+        return Err(SlidingF64Error::InvalidParameter {
+            parameter: "period",
+            value: "inf".into(),
+            expected: "a sinusoidal punch needs a finite period".into(),
+        });
+    }
+    // kappa from the exact value (one rounding), theta = atan(kappa)/pi.
+    let kappa = exact_to_f64(&problem.kappa(), "kappa", true)?;
+    let theta = kappa.atan() / PI;
+    let target = match &problem.load {
+        SlidingLoad::NormalLoad(p) => Target::Load(exact_to_f64(p, "normal_load", false)?),
+        SlidingLoad::HalfLength(l) => Target::HalfLength(exact_to_f64(l, "half_length", false)?),
+    };
+    if let (Target::HalfLength(l), Some(big_l)) = (target, period) {
+        if 2.0 * l >= big_l {
+            return Err(SlidingF64Error::InvalidParameter {
+                parameter: "half_length",
+                value: l.to_string(),
+                expected: format!("must satisfy 2 l < L = {big_l}"),
+            });
+        }
+    }
+    Ok((Params { e_star, beta, mu, tau0, cw, speed, period, shape, theta, kappa }, target))
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Target {
+    Load(f64),
+    HalfLength(f64),
+}
+
+// ---------------------------------------------------------------------------------------------
+// The collocation operator (depends on theta and n only)
+// ---------------------------------------------------------------------------------------------
+
+/// Gauss–Jacobi rules and the LU-factored collocation matrix for (theta, n).
+struct Collocation {
+    theta: f64,
+    rule: GaussRule,
+    colloc: Vec<f64>,
+    bary: Vec<f64>,
+    lu: LU<f64, Dyn, Dyn>,
+}
+
+impl Collocation {
+    fn new(theta: f64, n: usize) -> Result<Self> {
+        let (rule, conj) = sliding_rules(n, theta)?;
+        let colloc = conj.nodes;
+        let mut m = DMatrix::<f64>::zeros(n + 1, n + 1);
+        for (r, xr) in colloc.iter().enumerate() {
+            for k in 0..n {
+                m[(r, k)] = rule.weights[k] / (PI * (xr - rule.nodes[k]));
+            }
+            m[(r, n)] = 1.0;
+        }
+        let bary = barycentric_weights(&rule);
+        Ok(Collocation { theta, rule, colloc, bary, lu: m.lu() })
+    }
+
+    fn n(&self) -> usize {
+        self.rule.nodes.len()
+    }
+
+    /// Solves sum_k W_k G_k/(pi (x_r - t_k)) + K = rhs_r; returns (G, K).
+    fn solve(&self, rhs: DVector<f64>) -> Result<(Vec<f64>, f64)> {
+        let n = self.n();
+        let sol = self.lu.solve(&rhs).ok_or_else(|| SlidingF64Error::NoConvergence {
+            reason: format!("singular collocation matrix (theta = {}, n = {n})", self.theta),
+        })?;
+        Ok((sol.as_slice()[..n].to_vec(), sol[n]))
+    }
+
+    /// The polynomial G at u (barycentric interpolation in the nodes).
+    fn interpolate(&self, g: &[f64], u: f64) -> f64 {
+        barycentric_eval(&self.rule.nodes, &self.bary, g, u)
+    }
+}
+
+thread_local! {
+    static CACHE: RefCell<HashMap<(u64, usize), Rc<Collocation>>> = RefCell::new(HashMap::new());
+}
+
+/// The collocation operator for (theta, n), cached per thread (at most 64 entries).
+fn collocation(theta: f64, n: usize) -> Result<Rc<Collocation>> {
+    let key = (theta.to_bits(), n);
+    if let Some(c) = CACHE.with(|c| c.borrow().get(&key).cloned()) {
+        return Ok(c);
+    }
+    let c = Rc::new(Collocation::new(theta, n)?);
+    CACHE.with(|cache| {
+        let mut cache = cache.borrow_mut();
+        if cache.len() >= 64 {
+            cache.clear();
+        }
+        cache.insert(key, c.clone());
+    });
+    Ok(c)
+}
+
+/// Nodes for a quadrature error ~ target at relative size lambda: the interpolant converges like
+/// rho^{-n}, rho = cot(lambda/2) (Bernstein ellipse through the singularities u = +-i/m of the
+/// data, THEORY.md section 3), so n = ln(1/target)/ln(rho) + 8 (8: margin for the constant).
+/// Heuristic, checked by the convergence tests below for lambda <= 1.45.
+fn nodes_for(lambda: f64, options: &SolverOptions) -> usize {
+    let rate = -(0.5 * lambda).tan().ln();
+    let n = if rate > 0.0 { (-(options.target.ln()) / rate).ceil() + 8.0 } else { f64::INFINITY };
+    if n.is_finite() { (n as usize).clamp(8, options.max_nodes) } else { options.max_nodes }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Geometry of the tangent map
+// ---------------------------------------------------------------------------------------------
+
+/// u -> x - c and its Jacobian: periodic t = tan(pi (x-c)/L) = m u, or single x - c = l u.
+#[derive(Debug, Clone, Copy)]
+enum Map {
+    Periodic { big_l: f64, lambda: f64, m: f64 },
+    Single { l: f64 },
+}
+
+impl Map {
+    fn periodic(big_l: f64, lambda: f64) -> Self {
+        Map::Periodic { big_l, lambda, m: lambda.tan() }
+    }
+    /// x(u) - c = (L/pi) atan(m u)   (or l u).
+    fn offset(&self, u: f64) -> f64 {
+        match *self {
+            Map::Periodic { big_l, m, .. } => big_l / PI * (m * u).atan(),
+            Map::Single { l } => l * u,
+        }
+    }
+    /// dx/du = (L/pi) m/(1 + m^2 u^2)   (or l).
+    fn jac(&self, u: f64) -> f64 {
+        match *self {
+            Map::Periodic { big_l, m, .. } => big_l / PI * m / (1.0 + m * m * u * u),
+            Map::Single { l } => l,
+        }
+    }
+    /// Weight of C0: (1/pi) m^2 u/(1 + m^2 u^2) (THEORY.md section 2); 0 for a single punch.
+    fn c0_weight(&self, u: f64) -> f64 {
+        match *self {
+            Map::Periodic { m, .. } => m * m * u / (PI * (1.0 + m * m * u * u)),
+            Map::Single { .. } => 0.0,
+        }
+    }
+    /// u of the point x = c + l xh: tan(lambda xh)/tan(lambda)   (or xh).
+    fn u_of_xh(&self, xh: f64) -> f64 {
+        match *self {
+            Map::Periodic { lambda, m, .. } => (lambda * xh).tan() / m,
+            Map::Single { .. } => xh,
+        }
+    }
+    fn half_length(&self) -> f64 {
+        match *self {
+            Map::Periodic { big_l, lambda, .. } => big_l * lambda / PI,
+            Map::Single { l } => l,
+        }
+    }
+    fn lambda(&self) -> f64 {
+        match *self {
+            Map::Periodic { lambda, .. } => lambda,
+            Map::Single { .. } => 0.0,
+        }
+    }
+}
+
+/// Discrete solution for one right-hand side shape F(u) (unit amplitude): G, K and the two
+/// functionals C0[p] - K and P2[p].
+struct Basis {
+    g: Vec<f64>,
+    cond: f64,
+    p2: f64,
+}
+
+fn basis(col: &Collocation, map: &Map, f: impl Fn(f64) -> f64) -> Result<Basis> {
+    let rhs = DVector::from_iterator(col.colloc.len(), col.colloc.iter().map(|&u| f(u)));
+    let (g, k) = col.solve(rhs)?;
+    let mut c0 = 0.0;
+    let mut p2 = 0.0;
+    for ((t, w), gk) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&g) {
+        c0 += w * gk * map.c0_weight(*t);
+        p2 += w * gk * map.jac(*t);
+    }
+    Ok(Basis { g, cond: c0 - k, p2 })
+}
+
+/// A discrete state: the map, the centre c and G in physical units (p(u) = omega(u) G(u)).
+struct State {
+    map: Map,
+    c: f64,
+    g: Vec<f64>,
+    p2: f64,
+}
+
+/// Parabola at fixed lambda (or l): RHS E* k (x(u) - c); the constant E* k c is absorbed in K,
+/// so G does not depend on c, and the solvability condition K_total = C0 - beta tau0 gives
+/// c = C0[G] - K - beta tau0/(E* k) (THEORY.md section 3: lambda does not depend on tau0, c explicit).
+fn parabola_state(col: &Collocation, prm: &Params, k: f64, map: Map) -> Result<State> {
+    let b = basis(col, &map, |u| map.offset(u))?;
+    let s = prm.e_star * k;
+    let c = b.cond - prm.beta * prm.tau0 / s;
+    Ok(State { map, c, g: b.g.iter().map(|v| v * s).collect(), p2: s * b.p2 })
+}
+
+/// Sinusoid at fixed lambda: F = s (X sin 2phi + Y cos 2phi), s = pi E* D/L, phi = atan(m u),
+/// (X, Y) = (cos, sin)(2 pi c/L). Returns the two unit bases (sin 2phi, cos 2phi).
+fn sinusoid_bases(col: &Collocation, map: &Map) -> Result<(Basis, Basis)> {
+    let m = match *map {
+        Map::Periodic { m, .. } => m,
+        Map::Single { .. } => unreachable!("sinusoid needs a period"),
+    };
+    let bx = basis(col, map, |u| 2.0 * m * u / (1.0 + m * m * u * u))?;
+    let by = basis(col, map, |u| (1.0 - m * m * u * u) / (1.0 + m * m * u * u))?;
+    Ok((bx, by))
+}
+
+fn sinusoid_state(map: Map, big_l: f64, s: f64, bx: &Basis, by: &Basis, x: f64, y: f64) -> State {
+    let c = big_l * y.atan2(x) / (2.0 * PI);
+    let g = bx.g.iter().zip(&by.g).map(|(gx, gy)| s * (x * gx + y * gy)).collect();
+    State { map, c, g, p2: s * (x * bx.p2 + y * by.p2) }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Root finding
+// ---------------------------------------------------------------------------------------------
+
+/// Brent's method (Brent 1973, ch. 4; `zbrent` of Numerical Recipes 9.3) on a sign-changing bracket.
+fn brent(mut f: impl FnMut(f64) -> Result<f64>, mut a: f64, mut b: f64, fa0: f64, fb0: f64, xtol: f64) -> Result<f64> {
+    let (mut fa, mut fb) = (fa0, fb0);
+    let (mut c, mut fc) = (b, fb);
+    let (mut d, mut e) = (b - a, b - a);
+    for _ in 0..200 {
+        if (fb > 0.0 && fc > 0.0) || (fb < 0.0 && fc < 0.0) {
+            c = a;
+            fc = fa;
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            a = b;
+            b = c;
+            c = a;
+            fa = fb;
+            fb = fc;
+            fc = fa;
+        }
+        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * xtol;
+        let xm = 0.5 * (c - b);
+        if xm.abs() <= tol1 || fb == 0.0 {
+            return Ok(b);
+        }
+        if e.abs() >= tol1 && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q);
+            if a == c {
+                p = 2.0 * xm * s;
+                q = 1.0 - s;
+            } else {
+                let qq = fa / fc;
+                let r = fb / fc;
+                p = s * (2.0 * xm * qq * (qq - r) - (b - a) * (r - 1.0));
+                q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
+            }
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            let min1 = 3.0 * xm * q - (tol1 * q).abs();
+            let min2 = (e * q).abs();
+            if 2.0 * p < min1.min(min2) {
+                e = d;
+                d = p / q;
+            } else {
+                d = xm;
+                e = d;
+            }
+        } else {
+            d = xm;
+            e = d;
+        }
+        a = b;
+        fa = fb;
+        b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
+        fb = f(b)?;
+    }
+    Err(SlidingF64Error::NoConvergence { reason: "Brent iteration for lambda exceeded 200 steps".into() })
+}
+
+/// Largest lambda considered: contact fraction 2 lambda/pi = 1 - 1e-6.
+const LAMBDA_MAX: f64 = PI / 2.0 * (1.0 - 1e-6);
+
+/// Parabola, given P2, periodic: solve P2(lambda) = P2 (monotone) with Brent; start from the
+/// Kuznetsov relation cos(lambda) = exp(-(pi l_s/L)^2/2) with the single-punch l_s
+/// (THEORY.md sections 3.6, 6).
+fn parabola_lambda(prm: &Params, k: f64, big_l: f64, p2: f64, n: usize) -> Result<f64> {
+    let col = collocation(prm.theta, n)?;
+    let f = |lam: f64| -> Result<f64> {
+        let st = parabola_state(&col, prm, k, Map::periodic(big_l, lam))?;
+        Ok((st.p2 / p2).ln())
+    };
+    let a0sq = 2.0 * p2 / (PI * prm.e_star * k);
+    let ls = (a0sq / (1.0 - 4.0 * prm.theta * prm.theta)).sqrt();
+    let z = 0.5 * (PI * ls / big_l).powi(2);
+    let guess = (2.0 * (0.5 * -(-z).exp_m1()).sqrt().asin()).min(0.5 * (LAMBDA_MAX + PI / 2.0) - 1e-3).max(1e-300);
+    let (mut lo, mut hi) = (guess * 0.95, (guess * 1.05).min(LAMBDA_MAX));
+    let (mut flo, mut fhi) = (f(lo)?, f(hi)?);
+    let mut it = 0;
+    while flo > 0.0 {
+        hi = lo;
+        fhi = flo;
+        lo *= 0.5;
+        flo = f(lo)?;
+        it += 1;
+        if it > 200 {
+            return Err(SlidingF64Error::NoConvergence { reason: "could not bracket lambda from below".into() });
+        }
+    }
+    while fhi < 0.0 {
+        if hi >= LAMBDA_MAX {
+            return Err(SlidingF64Error::NoConvergence {
+                reason: format!("the load P2 = {p2} needs a contact fraction above {}", 2.0 * LAMBDA_MAX / PI),
+            });
+        }
+        lo = hi;
+        flo = fhi;
+        hi = (hi + 0.5 * (LAMBDA_MAX - hi)).max(hi * 1.2).min(LAMBDA_MAX);
+        fhi = f(hi)?;
+    }
+    brent(f, lo, hi, flo, fhi, 1e-16 * hi)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Candidate solutions: (map, c, G) before post-processing
+// ---------------------------------------------------------------------------------------------
+
+/// Candidate contact sizes and centres: (lambda or l) for the main run.
+#[derive(Debug, Clone, Copy)]
+enum Candidate {
+    /// Parabola, periodic: lambda.
+    ParabolaPeriodic(f64),
+    /// Parabola, single punch: l.
+    ParabolaSingle(f64),
+    /// Sinusoid: lambda and (X, Y) branch sign (which intersection of line and circle).
+    Sinusoid { lambda: f64, branch: i8 },
+}
+
+/// Builds the state of a candidate at n nodes (re-solving the scalar equation when P2 is given).
+/// With `resolve` the scalar equation in lambda is solved again at n nodes (check run); without
+/// it the candidate's lambda (already solved at n nodes) is used.
+fn state_of(prm: &Params, target: Target, cand: Candidate, n: usize, resolve: bool) -> Result<State> {
+    let col = collocation(prm.theta, n)?;
+    match (cand, prm.shape) {
+        (Candidate::ParabolaSingle(_), Shape::Parabolic { k }) => {
+            let l = match target {
+                Target::HalfLength(l) => l,
+                Target::Load(p2) => {
+                    // P2 scales as l^2: P2 = E* k l^2 P2_1 (P2_1 at l = 1).
+                    let unit = parabola_state(&col, prm, k, Map::Single { l: 1.0 })?;
+                    (p2 / unit.p2).sqrt()
+                }
+            };
+            parabola_state(&col, prm, k, Map::Single { l })
+        }
+        (Candidate::ParabolaPeriodic(lam0), Shape::Parabolic { k }) => {
+            let big_l = prm.period.unwrap_or(f64::INFINITY);
+            let lam = match target {
+                Target::HalfLength(l) => PI * l / big_l,
+                Target::Load(p2) if resolve => parabola_lambda(prm, k, big_l, p2, n)?,
+                Target::Load(_) => lam0,
+            };
+            parabola_state(&col, prm, k, Map::periodic(big_l, lam))
+        }
+        (Candidate::Sinusoid { lambda, branch }, Shape::Sinusoidal { d }) => {
+            let big_l = prm.period.unwrap_or(f64::INFINITY);
+            let s = PI * prm.e_star * d / big_l;
+            match target {
+                Target::HalfLength(l) => {
+                    let map = Map::periodic(big_l, PI * l / big_l);
+                    let (bx, by) = sinusoid_bases(&col, &map)?;
+                    let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
+                    let (x, y) = pick_branch(&pts, branch).ok_or_else(|| SlidingF64Error::NoConvergence {
+                        reason: "the solution branch disappeared in the check run".into(),
+                    })?;
+                    Ok(sinusoid_state(map, big_l, s, &bx, &by, x, y))
+                }
+                Target::Load(p2) => {
+                    let lam = if resolve { refine_sinusoid_lambda(&col, prm, big_l, s, p2, lambda)? } else { lambda };
+                    let map = Map::periodic(big_l, lam);
+                    let (bx, by) = sinusoid_bases(&col, &map)?;
+                    let (x, y) = sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s)
+                        .ok_or_else(|| SlidingF64Error::NoConvergence { reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into() })?;
+                    let r = x.hypot(y);
+                    Ok(sinusoid_state(map, big_l, s, &bx, &by, x / r, y / r))
+                }
+            }
+        }
+        _ => unreachable!("candidate kind matches the shape"),
+    }
+}
+
+/// Intersections of a1 X + b1 Y = r with X^2 + Y^2 = 1, ordered (branch 0, branch 1) along the
+/// direction (-b1, a1).
+fn line_circle(a1: f64, b1: f64, r: f64) -> Vec<(f64, f64)> {
+    let nrm = a1.hypot(b1);
+    if nrm == 0.0 {
+        return vec![];
+    }
+    let (na, nb) = (a1 / nrm, b1 / nrm);
+    let dist = r / nrm;
+    if dist.abs() > 1.0 {
+        return vec![];
+    }
+    let h = (1.0 - dist * dist).sqrt();
+    let (fx, fy) = (dist * na, dist * nb);
+    vec![(fx + nb * h, fy - na * h), (fx - nb * h, fy + na * h)]
+}
+
+fn pick_branch(pts: &[(f64, f64)], branch: i8) -> Option<(f64, f64)> {
+    pts.get(branch as usize).copied()
+}
+
+/// (X, Y) from [[a1, b1], [a2, b2]] (X, Y) = (r1, r2): the two side conditions (solvability and
+/// load) of the sinusoid, with r1 = beta tau0/s, r2 = P2/s.
+fn sinusoid_xy(bx: &Basis, by: &Basis, r1: f64, r2: f64) -> Option<(f64, f64)> {
+    let det = bx.cond * by.p2 - bx.p2 * by.cond;
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    Some(((r1 * by.p2 - by.cond * r2) / det, (bx.cond * r2 - bx.p2 * r1) / det))
+}
+
+/// h(lambda) = X^2 + Y^2 - 1 for the sinusoid at load P2 (zero at a solution).
+fn sinusoid_h(col: &Collocation, prm: &Params, big_l: f64, s: f64, p2: f64, lam: f64) -> Result<f64> {
+    let map = Map::periodic(big_l, lam);
+    let (bx, by) = sinusoid_bases(col, &map)?;
+    let (x, y) = sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s)
+        .ok_or_else(|| SlidingF64Error::NoConvergence { reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into() })?;
+    Ok(x.hypot(y).ln())
+}
+
+/// Refines a root of ln|(X, Y)| near `lam0` at the nodes of `col`.
+fn refine_sinusoid_lambda(col: &Collocation, prm: &Params, big_l: f64, s: f64, p2: f64, lam0: f64) -> Result<f64> {
+    let f = |lam: f64| sinusoid_h(col, prm, big_l, s, p2, lam);
+    let f0 = f(lam0)?;
+    if f0 == 0.0 {
+        return Ok(lam0);
+    }
+    let mut step = 1e-6 * lam0.max(1e-3);
+    for _ in 0..40 {
+        let lo = (lam0 - step).max(lam0 * 0.5);
+        let hi = (lam0 + step).min(LAMBDA_MAX);
+        let (flo, fhi) = (f(lo)?, f(hi)?);
+        if flo * f0 <= 0.0 {
+            return brent(f, lo, lam0, flo, f0, 1e-16 * lam0);
+        }
+        if fhi * f0 <= 0.0 {
+            return brent(f, lam0, hi, f0, fhi, 1e-16 * lam0);
+        }
+        step *= 4.0;
+    }
+    Err(SlidingF64Error::NoConvergence { reason: format!("lost the sinusoid root near lambda = {lam0} when adding nodes") })
+}
+
+/// All candidates of the problem (main-run accuracy), with the nodes to use for each.
+fn candidates(prm: &Params, target: Target, options: &SolverOptions) -> Result<Vec<(Candidate, usize)>> {
+    let pick = |lam: f64| options.nodes.unwrap_or_else(|| nodes_for(lam, options));
+    match (prm.shape, prm.period) {
+        (Shape::Parabolic { .. }, None) => Ok(vec![(Candidate::ParabolaSingle(0.0), options.nodes.unwrap_or(8))]),
+        (Shape::Parabolic { k }, Some(big_l)) => {
+            match target {
+                Target::HalfLength(l) => Ok(vec![(Candidate::ParabolaPeriodic(PI * l / big_l), pick(PI * l / big_l))]),
+                Target::Load(p2) => {
+                    // Provisional solve at 24 nodes, then at the nodes for that lambda until the
+                    // node count settles (at most 3 times).
+                    let mut n = options.nodes.unwrap_or(24);
+                    let mut lam = parabola_lambda(prm, k, big_l, p2, n)?;
+                    if options.nodes.is_none() {
+                        for _ in 0..3 {
+                            let n_new = pick(lam);
+                            if n_new == n {
+                                break;
+                            }
+                            n = n_new;
+                            lam = parabola_lambda(prm, k, big_l, p2, n)?;
+                        }
+                    }
+                    Ok(vec![(Candidate::ParabolaPeriodic(lam), n)])
+                }
+            }
+        }
+        (Shape::Sinusoidal { d }, Some(big_l)) => {
+            let s = PI * prm.e_star * d / big_l;
+            match target {
+                Target::HalfLength(l) => {
+                    let lam = PI * l / big_l;
+                    let n = pick(lam);
+                    let col = collocation(prm.theta, n)?;
+                    let map = Map::periodic(big_l, lam);
+                    let (bx, by) = sinusoid_bases(&col, &map)?;
+                    let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
+                    Ok(pts
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, (x, y))| x * bx.p2 + y * by.p2 > 0.0)
+                        .map(|(i, _)| (Candidate::Sinusoid { lambda: lam, branch: i as i8 }, n))
+                        .collect())
+                }
+                Target::Load(p2) => sinusoid_scan(prm, big_l, s, p2, options),
+            }
+        }
+        (Shape::Sinusoidal { .. }, None) => unreachable!("checked in params_of"),
+    }
+}
+
+/// Scans lambda in (0, 1.45] for sign changes of ln|(X, Y)| (Soldatenkov's P2(lambda) is not
+/// monotone for theta != 0, so there may be several), refines each with Brent at the nodes for
+/// that lambda. When there is none, reports the largest load found on the scan.
+fn sinusoid_scan(prm: &Params, big_l: f64, s: f64, p2: f64, options: &SolverOptions) -> Result<Vec<(Candidate, usize)>> {
+    const SCAN_MAX: f64 = 1.45;
+    const STEPS: usize = 96;
+    let n_scan = options.nodes.unwrap_or(48);
+    let col = collocation(prm.theta, n_scan)?;
+    let mut out = Vec::new();
+    let mut max_load: f64 = 0.0;
+    let mut prev: Option<(f64, f64)> = None;
+    for j in 1..=STEPS {
+        // Denser near 0 (small loads): lambda_j = SCAN_MAX (j/STEPS)^1.5.
+        let lam = SCAN_MAX * (j as f64 / STEPS as f64).powf(1.5);
+        let map = Map::periodic(big_l, lam);
+        let (bx, by) = sinusoid_bases(&col, &map)?;
+        for (x, y) in line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s) {
+            max_load = max_load.max(s * (x * bx.p2 + y * by.p2));
+        }
+        let h = match sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s) {
+            Some((x, y)) => x.hypot(y).ln(),
+            None => continue,
+        };
+        if let Some((lp, hp)) = prev {
+            if hp * h <= 0.0 {
+                let n = options.nodes.unwrap_or_else(|| nodes_for(lam, options));
+                let colr = collocation(prm.theta, n)?;
+                let f = |x: f64| sinusoid_h(&colr, prm, big_l, s, p2, x);
+                let (flo, fhi) = (f(lp)?, f(lam)?);
+                let root = if flo * fhi <= 0.0 {
+                    brent(f, lp, lam, flo, fhi, 1e-16 * lam)?
+                } else {
+                    refine_sinusoid_lambda(&colr, prm, big_l, s, p2, 0.5 * (lp + lam))?
+                };
+                out.push((Candidate::Sinusoid { lambda: root, branch: 0 }, n));
+            }
+        }
+        prev = Some((lam, h));
+    }
+    if out.is_empty() {
+        return Err(SlidingF64Error::LoadExceedsMaximum {
+            load: p2,
+            max_load,
+            theta: prm.theta,
+            tau0: prm.tau0,
+            max_fraction: 2.0 * SCAN_MAX / PI,
+        });
+    }
+    Ok(out)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Post-processing: outputs, physicality
+// ---------------------------------------------------------------------------------------------
+
+struct Outputs {
+    lambda: f64,
+    l: f64,
+    a: f64,
+    b: f64,
+    c: f64,
+    p1: f64,
+    p2: f64,
+    f_def: f64,
+    max_p: f64,
+    pressure: Vec<PressurePoint>,
+    grid_p: Vec<f64>,
+}
+
+const GRID: usize = 201;
+
+fn outputs(col: &Collocation, prm: &Params, st: &State, points: &[f64]) -> Outputs {
+    let l = st.map.half_length();
+    let c = st.c;
+    let p_at = |xh: f64| {
+        let u = st.map.u_of_xh(xh);
+        omega(u, prm.theta) * col.interpolate(&st.g, u)
+    };
+    let grid_p: Vec<f64> = (0..GRID).map(|i| p_at(-1.0 + 2.0 * (i as f64 + 0.5) / GRID as f64)).collect();
+    let pressure: Vec<PressurePoint> = points.iter().map(|&xh| PressurePoint { xh, x: c + l * xh, p: p_at(xh) }).collect();
+    let max_p = grid_p.iter().chain(pressure.iter().map(|p| &p.p)).fold(0.0f64, |m, v| m.max(*v));
+    let mut f_def = 0.0;
+    for ((t, w), gk) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
+        f_def += w * gk * prm.slope(c + st.map.offset(*t)) * st.map.jac(*t);
+    }
+    Outputs {
+        lambda: st.map.lambda(),
+        l,
+        a: l - c,
+        b: l + c,
+        c,
+        p1: prm.mu * st.p2 + 2.0 * l * prm.tau0,
+        p2: st.p2,
+        f_def,
+        max_p,
+        pressure,
+        grid_p,
+    }
+}
+
+/// H[p](x) for x outside the contact (THEORY.md section 2). Near the contact (|u| <= 3) the
+/// Cauchy part is G(u) (1/pi) int omega/(u - t) - (1/pi) sum W_k (G(u) - G_k)/(u - t_k)
+/// (exact for the polynomial G), with the closed form of [`omega_cauchy_exterior`]; farther out
+/// the plain rule in the cot (or 1/(x - xi)) form.
+fn hilbert_outside(col: &Collocation, prm: &Params, st: &State, x: f64) -> f64 {
+    let (u, c0) = match st.map {
+        Map::Periodic { big_l, m, .. } => {
+            let t = (PI * (x - st.c) / big_l).tan();
+            let c0: f64 = col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g).map(|((t, w), g)| w * g * st.map.c0_weight(*t)).sum();
+            (t / m, c0)
+        }
+        Map::Single { l } => ((x - st.c) / l, 0.0),
+    };
+    if u.is_finite() && u.abs() <= 3.0 {
+        // Off the contact |u| >= 1; rounding at the very edge could give |u| slightly below 1.
+        let u = u.signum() * u.abs().max(1.0);
+        let gu = col.interpolate(&st.g, u);
+        let mut s = 0.0;
+        for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
+            s += w * (gu - g) / (u - t);
+        }
+        gu * omega_cauchy_exterior(u, prm.theta) - s / PI + c0
+    } else {
+        let mut s = 0.0;
+        for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
+            let xi = st.c + st.map.offset(*t);
+            let jac = st.map.jac(*t);
+            s += match st.map {
+                Map::Periodic { big_l, .. } => w * g * jac / (big_l * (PI * (x - xi) / big_l).tan()),
+                Map::Single { .. } => w * g * jac / (PI * (x - xi)),
+            };
+        }
+        s
+    }
+}
+
+/// Checks p >= 0 on the contact and the gap >= 0 outside it. The gap h = g - delta - v has
+/// h(-a) = h(b) = 0 and h' = g' - (2/E*) H[p] off the contact (THEORY.md section 2 with
+/// q1 = q2 = 0 there). With the paper's convention v is not periodic when P1 or cW is nonzero
+/// (THEORY.md section 2), so h is integrated from each edge to the middle of the free arc
+/// (periodic), or over 4 l beyond each edge (single punch), on a graded mesh with 6-point
+/// Gauss–Legendre panels.
+///
+/// With tau0 > 0 the gap is NOT required to be >= 0 [finding, reported to the lead]: q1 = mu p +
+/// tau0 jumps by tau0 at the ends, so v' jumps by 2 beta tau0/E* there, and just beyond the
+/// leading edge b the gap starts with slope h' = -2 beta tau0/E* (single punch:
+/// (E*/2) h' = E* k l (X(u) - T), X(1) = 0), i.e. it is slightly negative over a short stretch.
+/// That is inherent in the model of THEORY.md section 3; the solution is returned and the most
+/// negative gap is reported in [`SlidingSolutionF64::min_gap`].
+fn physicality(col: &Collocation, prm: &Params, st: &State, out: &Outputs) -> std::result::Result<GapCheck, String> {
+    // p >= 0: G at the nodes, at +-1, and p on the grid.
+    let gmax = st.g.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let tol_g = 1e-9 * gmax;
+    for (u, gu) in [(-1.0, col.interpolate(&st.g, -1.0)), (1.0, col.interpolate(&st.g, 1.0))] {
+        if gu < -tol_g {
+            return Err(format!("p < 0 next to the contact end u = {u} (p/omega = {gu:e})"));
+        }
+    }
+    if let Some((k, g)) = st.g.iter().enumerate().find(|(_, g)| **g < -tol_g) {
+        return Err(format!("p < 0 inside the contact at node {k} (p/omega = {g:e})"));
+    }
+    if let Some(p) = out.grid_p.iter().find(|p| **p < -1e-9 * out.max_p) {
+        return Err(format!("p = {p:e} < 0 inside the contact"));
+    }
+    // Gap.
+    let gl = gauss_jacobi(6, 0.0, 0.0).expect("Gauss-Legendre 6 points");
+    let (free_right, free_left) = match prm.period {
+        Some(big_l) => {
+            let half = 0.5 * (big_l - 2.0 * out.l);
+            (half, half)
+        }
+        None => (4.0 * out.l, 4.0 * out.l),
+    };
+    let hprime = |x: f64| prm.slope(x) - 2.0 / prm.e_star * hilbert_outside(col, prm, st, x);
+    let mut worst: (f64, f64) = (0.0, 0.0);
+    let mut hmax: f64 = 0.0;
+    for (start, len, dir) in [(out.b, free_right, 1.0), (-out.a, free_left, -1.0)] {
+        const PANELS: usize = 24;
+        let mut h = 0.0;
+        let mut s_prev = 0.0;
+        for j in 1..=PANELS {
+            let s = len * (j as f64 / PANELS as f64).powi(3);
+            let (lo, hi) = (s_prev, s);
+            let mut inc = 0.0;
+            for (z, w) in gl.nodes.iter().zip(&gl.weights) {
+                let sz = 0.5 * (lo + hi) + 0.5 * (hi - lo) * z;
+                inc += w * hprime(start + dir * sz);
+            }
+            // h(start + dir s) = int_0^s dir h'(start + dir s') ds'.
+            h += dir * inc * 0.5 * (hi - lo);
+            hmax = hmax.max(h.abs());
+            if h < worst.0 {
+                worst = (h, start + dir * s);
+            }
+            s_prev = s;
+        }
+    }
+    let negative = worst.0 < -1e-7 * hmax.max(f64::MIN_POSITIVE);
+    if negative && prm.tau0 == 0.0 {
+        return Err(format!("the gap is negative outside the contact: h = {:e} at x = {} (max |h| = {hmax:e})", worst.0, worst.1));
+    }
+    Ok(GapCheck { min_gap: if negative { worst.0 } else { 0.0 }, at: worst.1 })
+}
+
+/// Result of the gap check: the most negative gap found (0 when none beyond round-off) and where.
+struct GapCheck {
+    min_gap: f64,
+    at: f64,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Public entry point
+// ---------------------------------------------------------------------------------------------
+
+/// Solves Problem 1 (THEORY.md section 3) in f64 by Gauss–Jacobi collocation and returns every
+/// physical solution, smallest contact first, with p at the requested `points` (xh = (x - c)/l in
+/// (-1, 1)) and an accuracy estimate from a check run with about 1.5x the nodes.
+///
+/// Errors: inputs that do not fit f64, points outside (-1, 1), the periodic parabola's contact
+/// leaving (-L/2, L/2), a load above the sinusoid's maximum, no physical solution, no convergence
+/// (including an estimated error above `options.accept`).
+pub fn solve_sliding_f64(problem: &SlidingProblem, points: &[f64], options: &SolverOptions) -> Result<SlidingSolutionsF64> {
+    if let Some(&p) = points.iter().find(|p| !(p.abs() < 1.0)) {
+        return Err(SlidingF64Error::InvalidPoint { value: p });
+    }
+    let (prm, target) = params_of(problem)?;
+    let cands = candidates(&prm, target, options)?;
+    let mut solutions = Vec::new();
+    let mut reasons = Vec::new();
+    for (cand, n) in cands {
+        let col = collocation(prm.theta, n)?;
+        let st = state_of(&prm, target, cand, n, false)?;
+        let out = outputs(&col, &prm, &st, points);
+        if let (Shape::Parabolic { .. }, Some(big_l)) = (prm.shape, prm.period) {
+            if out.a >= 0.5 * big_l || out.b >= 0.5 * big_l {
+                return Err(SlidingF64Error::ContactLeavesCell { neg_a: -out.a, b: out.b, half_period: 0.5 * big_l });
+            }
+        }
+        let gap = match physicality(&col, &prm, &st, &out) {
+            Ok(g) => g,
+            Err(r) => {
+                reasons.push(format!("lambda = {}: {r}", out.lambda));
+                continue;
+            }
+        };
+        // Check run with ~1.5x the nodes.
+        let n2 = (n + n / 2).max(n + 4);
+        let col2 = collocation(prm.theta, n2)?;
+        let cand2 = match cand {
+            Candidate::Sinusoid { branch, .. } => Candidate::Sinusoid { lambda: out.lambda, branch },
+            other => other,
+        };
+        let st2 = state_of(&prm, target, cand2, n2, true)?;
+        let out2 = outputs(&col2, &prm, &st2, points);
+        let l = out.l;
+        let geometry = ((out.a - out2.a).abs()).max((out.b - out2.b).abs()).max((out.c - out2.c).abs()) / l;
+        let pressure = out
+            .pressure
+            .iter()
+            .zip(&out2.pressure)
+            .map(|(p, q)| (p.p - q.p).abs())
+            .chain(out.grid_p.iter().zip(&out2.grid_p).map(|(p, q)| (p - q).abs()))
+            .fold(0.0f64, f64::max)
+            / out.max_p;
+        let load = ((out.p2 - out2.p2).abs()).max((out.p1 - out2.p1).abs()) / out.p2;
+        let f_def = (out.f_def - out2.f_def).abs() / (prm.k_scale() * l * out.p2);
+        let accuracy = AccuracyEstimate { geometry, pressure, load, f_def, check_nodes: n2 };
+        let all = [out.lambda, out.l, out.a, out.b, out.c, out.p1, out.p2, out.f_def, out.max_p];
+        if all.iter().any(|v| !v.is_finite()) || out.pressure.iter().any(|p| !p.p.is_finite()) {
+            return Err(SlidingF64Error::NoConvergence { reason: format!("non-finite result at n = {n}") });
+        }
+        if !(accuracy.max() <= options.accept) {
+            return Err(SlidingF64Error::NoConvergence {
+                reason: format!(
+                    "estimated relative error {:e} > {:e} at lambda = {} with {n} nodes (max_nodes = {})",
+                    accuracy.max(),
+                    options.accept,
+                    out.lambda,
+                    options.max_nodes
+                ),
+            });
+        }
+        let wear_per_distance = prm.period.map(|big_l| prm.cw * out.p2 / big_l);
+        solutions.push(SlidingSolutionF64 {
+            theta: prm.theta,
+            kappa: prm.kappa,
+            lambda: out.lambda,
+            l: out.l,
+            a: out.a,
+            b: out.b,
+            c: out.c,
+            p1: out.p1,
+            p2: out.p2,
+            f_def: out.f_def,
+            wear_per_distance,
+            wear_rate: match (wear_per_distance, prm.speed) {
+                (Some(w), Some(v)) => Some(w * v),
+                _ => None,
+            },
+            max_pressure: out.max_p,
+            min_gap: gap.min_gap,
+            min_gap_x: gap.at,
+            pressure: out.pressure,
+            nodes: n,
+            accuracy,
+        });
+    }
+    if solutions.is_empty() {
+        return Err(SlidingF64Error::NotPhysical { reason: reasons.join("; ") });
+    }
+    solutions.sort_by(|x, y| x.l.total_cmp(&y.l));
+    Ok(SlidingSolutionsF64 { solutions })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Exact, Material};
+    use num_bigint::BigInt;
+
+    fn r(n: i64, d: i64) -> Exact {
+        Exact::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    /// Problem with E* = 1, given (nu, L or None, shape, mu, tau0, cW, load).
+    fn problem(nu: Exact, period: Option<Exact>, shape: PunchShape, mu: Exact, tau0: Exact, cw: Exact, load: SlidingLoad) -> SlidingProblem {
+        let mat = Material::from_contact_modulus(nu, r(1, 1)).unwrap();
+        let per = match period {
+            Some(l) => Period::finite(l).unwrap(),
+            None => Period::Infinite,
+        };
+        SlidingProblem::new(mat, per, shape, mu, tau0, cw, None, load).unwrap()
+    }
+
+    fn parabola(k: Exact) -> PunchShape {
+        PunchShape::parabolic(k).unwrap()
+    }
+
+    fn rel(a: f64, b: f64, scale: f64) -> f64 {
+        (a - b).abs() / scale
+    }
+
+    const TOL: f64 = 1e-12;
+
+    #[test]
+    fn hertz_single_punch() {
+        // Hertz (THEORY.md section 6): P2 = (pi/2) E* k a^2, p = E* k sqrt(a^2 - x^2).
+        let pts = [-0.9, -0.3, 0.0, 0.5, 0.99];
+        let pb = problem(r(1, 2), None, parabola(r(3, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(2, 1)));
+        let s = solve_sliding_f64(&pb, &pts, &SolverOptions::default()).unwrap();
+        let s = s.primary();
+        let a = (2.0 * 2.0 / (PI * 3.0)).sqrt();
+        assert!(rel(s.l, a, a) < TOL && s.c.abs() < TOL * a, "{} vs {a}", s.l);
+        for p in &s.pressure {
+            let exact = 3.0 * (a * a - p.x * p.x).sqrt();
+            assert!(rel(p.p, exact, 3.0 * a) < TOL, "{} vs {exact}", p.p);
+        }
+        assert!(s.f_def.abs() < TOL * 3.0 * a * 2.0);
+    }
+
+    #[test]
+    fn single_punch_with_friction_wear_and_adhesive_friction() {
+        // l_s = a0/sqrt(1 - 4 theta^2), rbar_s = 2 theta - T, T = beta tau0/(E* k l_s),
+        // F_def = 2 pi E* k^2 l^3 (1 - 4 theta^2) (rbar/2 + theta/3) (THEORY.md [3.10]; F_def from
+        // p = E* k l cos(pi theta) omega(xh) and the moments of omega).
+        for (mu, cw, tau0) in [(r(3, 10), r(0, 1), r(1, 20)), (r(0, 1), r(7, 5), r(0, 1)), (r(1, 2), r(2, 5), r(1, 7))] {
+            let (k, p2) = (2.0, 0.7);
+            let pb = problem(r(1, 4), None, parabola(r(2, 1)), mu, tau0, cw, SlidingLoad::NormalLoad(r(7, 10)));
+            let (prm, _) = params_of(&pb).unwrap();
+            let th = prm.theta;
+            let s = solve_sliding_f64(&pb, &[0.2], &SolverOptions::default()).unwrap();
+            let s = s.primary();
+            let a0 = (2.0 * p2 / (PI * k)).sqrt();
+            let ls = a0 / (1.0 - 4.0 * th * th).sqrt();
+            let t = prm.beta * prm.tau0 / (k * ls);
+            assert!(rel(s.l, ls, ls) < TOL, "theta {th}: {} vs {ls}", s.l);
+            assert!(rel(s.c / s.l, 2.0 * th - t, 1.0) < TOL, "theta {th}: {} vs {}", s.c / s.l, 2.0 * th - t);
+            let fdef = 2.0 * PI * k * k * ls.powi(3) * (1.0 - 4.0 * th * th) * ((2.0 * th - t) / 2.0 + th / 3.0);
+            assert!(rel(s.f_def, fdef, k * ls * p2) < TOL, "{} vs {fdef}", s.f_def);
+            let p = k * ls * (PI * th).cos() * omega(0.2, th);
+            assert!(rel(s.pressure[0].p, p, s.max_pressure) < TOL);
+            assert!(rel(s.p1, prm.mu * p2 + 2.0 * ls * prm.tau0, p2) < TOL);
+        }
+    }
+
+    #[test]
+    fn kuznetsov_periodic_parabola() {
+        // P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], frictionless; both directions.
+        let (k, big_l) = (1.5, 2.0);
+        for lam in [0.05, 0.3, 0.7, 1.0, 1.2, 1.3] {
+            let a = lam * big_l / PI;
+            let p2 = k * big_l * big_l / PI * (1.0 / lam.cos()).ln();
+            let l_exact = Exact::from_float(a).unwrap();
+            let pb = problem(r(1, 2), Some(r(2, 1)), parabola(r(3, 2)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::HalfLength(l_exact.clone()));
+            let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
+            let s = s.primary();
+            assert!(rel(s.p2, p2, p2) < TOL, "lambda {lam}: P2 {} vs {p2}, err {:e}", s.p2, rel(s.p2, p2, p2));
+            assert!(s.c.abs() < TOL * a);
+            let pb = problem(r(1, 2), Some(r(2, 1)), parabola(r(3, 2)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()));
+            let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
+            let s = s.primary();
+            assert!(rel(s.a, a, a) < TOL, "lambda {lam}: a {} vs {a}, err {:e}", s.a, rel(s.a, a, a));
+            assert!(s.accuracy.max() < 1e-12, "{:?}", s.accuracy);
+        }
+    }
+
+    #[test]
+    fn westergaard_sinusoid() {
+        // P2 = pi E* D sin^2(pi a/L) [2.17], p = (2 pi E* D/L) cos(pi x/L) sqrt(sin^2 lambda - sin^2(pi x/L)).
+        let (d, big_l) = (0.1, 1.0);
+        let pts = [-0.95, -0.5, 0.0, 0.3, 0.8];
+        for lam in [0.1, 0.5, 0.9, 1.2, 1.3] {
+            let a = lam * big_l / PI;
+            let p2 = PI * d * lam.sin().powi(2);
+            let shape = PunchShape::sinusoidal(r(1, 10)).unwrap();
+            let pb = problem(r(1, 2), Some(r(1, 1)), shape, r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()));
+            let sols = solve_sliding_f64(&pb, &pts, &SolverOptions::default()).unwrap();
+            assert_eq!(sols.solutions.len(), 1);
+            let s = sols.primary();
+            assert!(rel(s.a, a, a) < TOL && rel(s.b, a, a) < TOL, "lambda {lam}: a {} vs {a}: {:e}", s.a, rel(s.a, a, a));
+            assert!(s.c.abs() < TOL * a);
+            let pmax = 2.0 * PI * d / big_l * lam.sin();
+            for p in &s.pressure {
+                let chi = PI * p.x / big_l;
+                let exact = 2.0 * PI * d / big_l * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt();
+                assert!(rel(p.p, exact, pmax) < TOL, "lambda {lam} xh {}: {} vs {exact}: {:e}", p.xh, p.p, rel(p.p, exact, pmax));
+            }
+        }
+    }
+}
