@@ -154,6 +154,10 @@ pub struct SlidingSolutionF64 {
     pub min_gap: f64,
     /// Where `min_gap` occurs (x).
     pub min_gap_x: f64,
+    /// h(L - a) - h(b) that the paper's non-periodic v implies: (2 beta/E*) P1 - cW P2 (checked
+    /// against the integrated gap; 0 for a single punch). Nonzero means the free surface of the
+    /// model does not close over a period; the gap check is two-sided because of it.
+    pub gap_closure: f64,
     /// p at the requested xh.
     pub pressure: Vec<PressurePoint>,
     /// Nodes of the main run.
@@ -215,8 +219,11 @@ pub enum SlidingF64Error {
         /// L/2.
         half_period: f64,
     },
-    /// The sinusoid cannot carry this load at these friction and wear values.
-    #[error("no solution: normal_load = {load} exceeds the maximum load {max_load} this sinusoid carries at theta = {theta}, tau0 = {tau0} (maximum found for contact fractions 2l/L up to {max_fraction})")]
+    /// The sinusoid cannot carry this load at these friction and wear values: either P2(lambda)
+    /// never reaches it, or the solutions that reach it are not physical (p < 0 at an end or a
+    /// negative gap). `max_load` is the largest (physical, when known) load, reached at the
+    /// contact fraction `max_fraction` = 2 l/L.
+    #[error("no solution: normal_load = {load} exceeds the maximum load {max_load} this sinusoid carries with a physical contact at theta = {theta}, tau0 = {tau0} (reached at contact fraction 2l/L = {max_fraction})")]
     LoadExceedsMaximum {
         /// Requested P2.
         load: f64,
@@ -655,8 +662,8 @@ fn parabola_lambda(prm: &Params, k: f64, big_l: f64, p2: f64, n: usize) -> Resul
 enum Candidate {
     /// Parabola, periodic: lambda.
     ParabolaPeriodic(f64),
-    /// Parabola, single punch: l.
-    ParabolaSingle(f64),
+    /// Parabola, single punch (l is explicit).
+    ParabolaSingle,
     /// Sinusoid: lambda and (X, Y) branch sign (which intersection of line and circle).
     Sinusoid { lambda: f64, branch: i8 },
 }
@@ -667,7 +674,7 @@ enum Candidate {
 fn state_of(prm: &Params, target: Target, cand: Candidate, n: usize, resolve: bool) -> Result<State> {
     let col = collocation(prm.theta, n)?;
     match (cand, prm.shape) {
-        (Candidate::ParabolaSingle(_), Shape::Parabolic { k }) => {
+        (Candidate::ParabolaSingle, Shape::Parabolic { k }) => {
             let l = match target {
                 Target::HalfLength(l) => l,
                 Target::Load(p2) => {
@@ -782,7 +789,7 @@ fn refine_sinusoid_lambda(col: &Collocation, prm: &Params, big_l: f64, s: f64, p
 fn candidates(prm: &Params, target: Target, options: &SolverOptions) -> Result<Vec<(Candidate, usize)>> {
     let pick = |lam: f64| options.nodes.unwrap_or_else(|| nodes_for(lam, options));
     match (prm.shape, prm.period) {
-        (Shape::Parabolic { .. }, None) => Ok(vec![(Candidate::ParabolaSingle(0.0), options.nodes.unwrap_or(8))]),
+        (Shape::Parabolic { .. }, None) => Ok(vec![(Candidate::ParabolaSingle, options.nodes.unwrap_or(8))]),
         (Shape::Parabolic { k }, Some(big_l)) => {
             match target {
                 Target::HalfLength(l) => Ok(vec![(Candidate::ParabolaPeriodic(PI * l / big_l), pick(PI * l / big_l))]),
@@ -966,11 +973,14 @@ fn hilbert_outside(col: &Collocation, prm: &Params, st: &State, x: f64) -> f64 {
 }
 
 /// Checks p >= 0 on the contact and the gap >= 0 outside it. The gap h = g - delta - v has
-/// h(-a) = h(b) = 0 and h' = g' - (2/E*) H[p] off the contact (THEORY.md section 2 with
-/// q1 = q2 = 0 there). With the paper's convention v is not periodic when P1 or cW is nonzero
-/// (THEORY.md section 2), so h is integrated from each edge to the middle of the free arc
-/// (periodic), or over 4 l beyond each edge (single punch), on a graded mesh with 6-point
-/// Gauss–Legendre panels.
+/// h(b) = 0 and h' = g' - (2/E*) H[p] off the contact (THEORY.md section 2 with q1 = q2 = 0
+/// there), integrated on a graded mesh with 6-point Gauss–Legendre panels: over 4 l beyond each
+/// edge for a single punch; from each edge to the middle of the free arc for a period. With the
+/// paper's convention v is not periodic when P1 or cW is nonzero (THEORY.md section 2): from b
+/// across the whole arc h would end at h(L - a) = (2 beta/E*) P1 - cW P2 instead of 0 (checked
+/// numerically; reported as [`SlidingSolutionF64::gap_closure`]). The two-sided check is the
+/// convention chosen here [doubtful: a rigid tilt closing the mismatch instead makes the gap
+/// negative next to one edge whenever the mismatch has the wrong sign].
 ///
 /// With tau0 > 0 the gap is NOT required to be >= 0 [finding, reported to the lead]: q1 = mu p +
 /// tau0 jumps by tau0 at the ends, so v' jumps by 2 beta tau0/E* there, and just beyond the
@@ -993,50 +1003,110 @@ fn physicality(col: &Collocation, prm: &Params, st: &State, out: &Outputs) -> st
     if let Some(p) = out.grid_p.iter().find(|p| **p < -1e-9 * out.max_p) {
         return Err(format!("p = {p:e} < 0 inside the contact"));
     }
-    // Gap.
+    // Gap: h(x) = int_edge^x h'(s) ds on a graded mesh of 6-point Gauss–Legendre panels.
     let gl = gauss_jacobi(6, 0.0, 0.0).expect("Gauss-Legendre 6 points");
-    let (free_right, free_left) = match prm.period {
-        Some(big_l) => {
-            let half = 0.5 * (big_l - 2.0 * out.l);
-            (half, half)
-        }
-        None => (4.0 * out.l, 4.0 * out.l),
-    };
     let hprime = |x: f64| prm.slope(x) - 2.0 / prm.e_star * hilbert_outside(col, prm, st, x);
-    let mut worst: (f64, f64) = (0.0, 0.0);
-    let mut hmax: f64 = 0.0;
-    for (start, len, dir) in [(out.b, free_right, 1.0), (-out.a, free_left, -1.0)] {
-        const PANELS: usize = 24;
+    // Integrates h' from `start` over `len` in direction `dir`; returns samples (x, h).
+    let integrate = |start: f64, len: f64, dir: f64| -> Vec<(f64, f64)> {
+        const PANELS: usize = 48;
+        // Cubic grading toward the edge, where h' ~ d^{1/2 -+ theta}.
+        let grade = |t: f64| t.powi(3);
         let mut h = 0.0;
         let mut s_prev = 0.0;
+        let mut samples = Vec::with_capacity(PANELS);
         for j in 1..=PANELS {
-            let s = len * (j as f64 / PANELS as f64).powi(3);
-            let (lo, hi) = (s_prev, s);
+            let s = len * grade(j as f64 / PANELS as f64);
             let mut inc = 0.0;
             for (z, w) in gl.nodes.iter().zip(&gl.weights) {
-                let sz = 0.5 * (lo + hi) + 0.5 * (hi - lo) * z;
+                let sz = 0.5 * (s_prev + s) + 0.5 * (s - s_prev) * z;
                 inc += w * hprime(start + dir * sz);
             }
-            // h(start + dir s) = int_0^s dir h'(start + dir s') ds'.
-            h += dir * inc * 0.5 * (hi - lo);
-            hmax = hmax.max(h.abs());
-            if h < worst.0 {
-                worst = (h, start + dir * s);
-            }
+            h += dir * inc * 0.5 * (s - s_prev);
+            samples.push((start + dir * s, h));
             s_prev = s;
         }
-    }
+        samples
+    };
+    // Periodic: from each edge to the middle of the free arc (b, L - a). With the paper's
+    // convention v is not periodic: integrating from b across the whole arc would end at
+    // h(L - a) = (2 beta/E*) P1 - cW P2 instead of 0 (checked numerically), so a one-sided
+    // integration (or a tilt closing it) would report an artefact near one edge.
+    // Single punch: over 4 l beyond each edge.
+    let reach = match prm.period {
+        Some(big_l) => 0.5 * (big_l - 2.0 * out.l),
+        None => 4.0 * out.l,
+    };
+    let mut samples = integrate(out.b, reach, 1.0);
+    samples.extend(integrate(-out.a, reach, -1.0));
+    let closure = match prm.period {
+        Some(_) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.cw * out.p2,
+        None => 0.0,
+    };
+    let hmax = samples.iter().fold(0.0f64, |m, v| m.max(v.1.abs()));
+    let worst = samples.iter().fold((0.0f64, out.b), |w, v| if v.1 < w.0 { (v.1, v.0) } else { w });
     let negative = worst.0 < -1e-7 * hmax.max(f64::MIN_POSITIVE);
     if negative && prm.tau0 == 0.0 {
         return Err(format!("the gap is negative outside the contact: h = {:e} at x = {} (max |h| = {hmax:e})", worst.0, worst.1));
     }
-    Ok(GapCheck { min_gap: if negative { worst.0 } else { 0.0 }, at: worst.1 })
+    Ok(GapCheck { min_gap: if negative { worst.0 } else { 0.0 }, at: worst.1, closure })
 }
 
 /// Result of the gap check: the most negative gap found (0 when none beyond round-off) and where.
 struct GapCheck {
     min_gap: f64,
     at: f64,
+    closure: f64,
+}
+
+/// Largest P2 among the physical solutions of the direct problem at contact size lambda
+/// (`None` if there is none).
+fn physical_load_at(prm: &Params, lam: f64, options: &SolverOptions) -> Result<Option<f64>> {
+    let big_l = prm.period.unwrap_or(f64::INFINITY);
+    let target = Target::HalfLength(lam * big_l / PI);
+    let mut best: Option<f64> = None;
+    for (cand, n) in candidates(prm, target, options)? {
+        let col = collocation(prm.theta, n)?;
+        let st = state_of(prm, target, cand, n, false)?;
+        let out = outputs(&col, prm, &st, &[]);
+        if physicality(&col, prm, &st, &out).is_ok() && out.p2 > 0.0 {
+            best = Some(best.map_or(out.p2, |b: f64| b.max(out.p2)));
+        }
+    }
+    Ok(best)
+}
+
+/// The maximum physical load of the sinusoid and its lambda: scans lambda for the first loss of
+/// physicality (p < 0 at an end, or a negative gap), then bisects it (40 steps). Assumes the
+/// physical solutions form one interval (0, lambda*) on which P2 increases, as observed on the
+/// charts of `chart_sinusoid_load_curve` [heuristic].
+fn sinusoid_max_physical_load(prm: &Params, options: &SolverOptions) -> Result<Option<(f64, f64)>> {
+    const STEPS: usize = 48;
+    let mut last: Option<(f64, f64)> = None;
+    let mut first_bad = None;
+    for j in 1..=STEPS {
+        let lam = 1.45 * j as f64 / STEPS as f64;
+        match physical_load_at(prm, lam, options)? {
+            Some(p) => last = Some((p, lam)),
+            None => {
+                if last.is_some() {
+                    first_bad = Some(lam);
+                    break;
+                }
+            }
+        }
+    }
+    let (Some((mut p, mut lo)), Some(mut hi)) = (last, first_bad) else { return Ok(last) };
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        match physical_load_at(prm, mid, options)? {
+            Some(pm) => {
+                lo = mid;
+                p = pm;
+            }
+            None => hi = mid,
+        }
+    }
+    Ok(Some((p, lo)))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1058,6 +1128,9 @@ pub fn solve_sliding_f64(problem: &SlidingProblem, points: &[f64], options: &Sol
     let cands = candidates(&prm, target, options)?;
     let mut solutions = Vec::new();
     let mut reasons = Vec::new();
+    if cands.is_empty() {
+        reasons.push("the side conditions have no solution with P2 > 0 at this contact size".to_string());
+    }
     for (cand, n) in cands {
         let col = collocation(prm.theta, n)?;
         let st = state_of(&prm, target, cand, n, false)?;
@@ -1131,12 +1204,26 @@ pub fn solve_sliding_f64(problem: &SlidingProblem, points: &[f64], options: &Sol
             max_pressure: out.max_p,
             min_gap: gap.min_gap,
             min_gap_x: gap.at,
+            gap_closure: gap.closure,
             pressure: out.pressure,
             nodes: n,
             accuracy,
         });
     }
     if solutions.is_empty() {
+        if let (Shape::Sinusoidal { .. }, Target::Load(p2)) = (prm.shape, target) {
+            if let Some((max_load, lam)) = sinusoid_max_physical_load(&prm, options)? {
+                if p2 > max_load {
+                    return Err(SlidingF64Error::LoadExceedsMaximum {
+                        load: p2,
+                        max_load,
+                        theta: prm.theta,
+                        tau0: prm.tau0,
+                        max_fraction: 2.0 * lam / PI,
+                    });
+                }
+            }
+        }
         return Err(SlidingF64Error::NotPhysical { reason: reasons.join("; ") });
     }
     solutions.sort_by(|x, y| x.l.total_cmp(&y.l));
@@ -1255,6 +1342,109 @@ mod tests {
                 let chi = PI * p.x / big_l;
                 let exact = 2.0 * PI * d / big_l * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt();
                 assert!(rel(p.p, exact, pmax) < TOL, "lambda {lam} xh {}: {} vs {exact}: {:e}", p.xh, p.p, rel(p.p, exact, pmax));
+            }
+        }
+    }
+
+    /// Convergence and timing chart (run with
+    /// `cargo test -p periodic-contact --lib collocation_f64::tests::chart -- --ignored --nocapture`).
+    #[test]
+    #[ignore]
+    fn chart_convergence_and_timing() {
+        let (k, big_l) = (1.0, 1.0);
+        println!("Kuznetsov: relative error of P2 at given l vs n");
+        for lam in [0.3f64, 0.7, 1.0, 1.3, 1.45] {
+            let a = lam * big_l / PI;
+            let p2 = k * big_l * big_l / PI * (1.0 / f64::cos(lam)).ln();
+            let mut line = format!("lambda {lam:5}: ");
+            for n in [8, 16, 24, 32, 48, 64, 96, 128, 192] {
+                let pb = problem(r(1, 2), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::HalfLength(Exact::from_float(a).unwrap()));
+                let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
+                let s = solve_sliding_f64(&pb, &[], &opts).unwrap();
+                line += &format!("{n}:{:.1e} ", rel(s.primary().p2, p2, p2));
+            }
+            println!("{line}  auto n = {}", nodes_for(lam, &SolverOptions::default()));
+        }
+        println!("Westergaard: relative error of p (scale max p) at xh in {{-0.9,0,0.5,0.99}} vs n");
+        for lam in [0.3f64, 0.7, 1.0, 1.3, 1.45] {
+            let p2 = PI * 0.1 * lam.sin().powi(2);
+            let mut line = format!("lambda {lam:5}: ");
+            for n in [8, 16, 24, 32, 48, 64, 96, 128, 192] {
+                let pts = [-0.9, 0.0, 0.5, 0.99];
+                let pb = problem(r(1, 2), Some(r(1, 1)), PunchShape::sinusoidal(r(1, 10)).unwrap(), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()));
+                let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
+                let s = match solve_sliding_f64(&pb, &pts, &opts) {
+                    Ok(s) => s,
+                    Err(e) => {
+                        line += &format!("{n}:ERR({e}) ");
+                        continue;
+                    }
+                };
+                let s = s.primary();
+                let pmax = 2.0 * PI * 0.1 * lam.sin();
+                let e = s.pressure.iter().map(|p| {
+                    let chi = PI * p.x;
+                    (p.p - 2.0 * PI * 0.1 * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt()).abs() / pmax
+                }).fold(rel(s.p2, p2, p2), f64::max);
+                line += &format!("{n}:{:.1e} ", e);
+            }
+            println!("{line}");
+        }
+        println!("Timing per case (P2 given, automatic nodes, check run included):");
+        for (name, lam, theta_case) in [("kuznetsov", 0.5, false), ("kuznetsov", 1.3, false), ("parabola+wear+friction", 1.0, true), ("parabola+wear+friction", 1.3, true)] {
+            let p2 = k * big_l * big_l / PI * (1.0 / f64::cos(lam)).ln();
+            let pb = if theta_case {
+                problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(3, 10), r(1, 20), r(1, 2), SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()))
+            } else {
+                problem(r(1, 2), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()))
+            };
+            CACHE.with(|c| c.borrow_mut().clear());
+            let t0 = std::time::Instant::now();
+            let s = solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+            let cold = t0.elapsed();
+            let reps = 50;
+            let t0 = std::time::Instant::now();
+            for _ in 0..reps {
+                solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+            }
+            let warm = t0.elapsed() / reps;
+            let s = s.primary();
+            println!("{name:24} lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}", s.lambda, s.nodes, s.accuracy.check_nodes, s.accuracy.max(), cold, warm);
+        }
+        for lam in [0.5f64, 1.0, 1.3] {
+            let p2 = PI * 0.1 * lam.sin().powi(2);
+            let pb = problem(r(1, 2), Some(r(1, 1)), PunchShape::sinusoidal(r(1, 10)).unwrap(), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()));
+            CACHE.with(|c| c.borrow_mut().clear());
+            let t0 = std::time::Instant::now();
+            let s = solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+            let cold = t0.elapsed();
+            let t0 = std::time::Instant::now();
+            for _ in 0..20 {
+                solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+            }
+            let warm = t0.elapsed() / 20;
+            let s = s.primary();
+            println!("westergaard              lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}", s.lambda, s.nodes, s.accuracy.check_nodes, s.accuracy.max(), cold, warm);
+        }
+    }
+
+    /// P2(lambda) of the sinusoid with theta != 0 (direct problem), for the docs/report.
+    #[test]
+    #[ignore]
+    fn chart_sinusoid_load_curve() {
+        for (mu, cw, tau0) in [(r(0, 1), r(1, 1), r(0, 1)), (r(0, 1), r(4, 1), r(0, 1)), (r(1, 1), r(0, 1), r(0, 1)), (r(1, 2), r(0, 1), r(1, 50))] {
+            println!("mu {mu} cW {cw} tau0 {tau0}");
+            for j in 1..=29 {
+                let lam = 1.5 * j as f64 / 29.0;
+                let pb = problem(r(1, 4), Some(r(1, 1)), PunchShape::sinusoidal(r(1, 10)).unwrap(), mu.clone(), tau0.clone(), cw.clone(), SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()));
+                let opts = SolverOptions { accept: 1.0, ..Default::default() };
+                match solve_sliding_f64(&pb, &[], &opts) {
+                    Ok(s) => {
+                        let v: Vec<String> = s.solutions.iter().map(|s| format!("P2/(pi D) {:.6} c/l {:.4} mingap {:.1e} closure {:.1e}", s.p2 / (PI * 0.1), s.c / s.l, s.min_gap, s.gap_closure)).collect();
+                        println!("  lambda {lam:.4} theta {:.3}: {}", s.primary().theta, v.join(" | "));
+                    }
+                    Err(e) => println!("  lambda {lam:.4}: {e}"),
+                }
             }
         }
     }
