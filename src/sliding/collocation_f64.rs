@@ -148,9 +148,10 @@ pub struct SlidingSolutionF64 {
     pub wear_rate: Option<f64>,
     /// Largest pressure on the contact (sampled).
     pub max_pressure: f64,
-    /// Most negative gap found outside the contact (0 if none beyond round-off). Nonzero only
-    /// with tau0 > 0, where the model makes it slightly negative just beyond the leading edge b
-    /// (see the module docs); with tau0 = 0 a negative gap rejects the solution.
+    /// Most negative gap found outside the contact by the two-sided check (0 if none beyond
+    /// round-off). With tau0 > 0 the model makes it slightly negative just beyond the leading
+    /// edge b; with friction or wear it may be negative by up to |gap_closure| because the
+    /// paper's v is not periodic (see `physicality` in the source). Deeper violations reject.
     pub min_gap: f64,
     /// Where `min_gap` occurs (x).
     pub min_gap_x: f64,
@@ -876,12 +877,16 @@ fn sinusoid_scan(prm: &Params, big_l: f64, s: f64, p2: f64, options: &SolverOpti
         prev = Some((lam, h));
     }
     if out.is_empty() {
+        let (max_load, max_fraction) = match sinusoid_max_physical_load(prm, options)? {
+            Some((p, lam)) => (p, 2.0 * lam / PI),
+            None => (max_load, 2.0 * SCAN_MAX / PI),
+        };
         return Err(SlidingF64Error::LoadExceedsMaximum {
             load: p2,
             max_load,
             theta: prm.theta,
             tau0: prm.tau0,
-            max_fraction: 2.0 * SCAN_MAX / PI,
+            max_fraction,
         });
     }
     Ok(out)
@@ -980,7 +985,10 @@ fn hilbert_outside(col: &Collocation, prm: &Params, st: &State, x: f64) -> f64 {
 /// across the whole arc h would end at h(L - a) = (2 beta/E*) P1 - cW P2 instead of 0 (checked
 /// numerically; reported as [`SlidingSolutionF64::gap_closure`]). The two-sided check is the
 /// convention chosen here [doubtful: a rigid tilt closing the mismatch instead makes the gap
-/// negative next to one edge whenever the mismatch has the wrong sign].
+/// negative next to one edge whenever the mismatch has the wrong sign]. Because the mismatch
+/// makes the far half of each side's gap uncertain by up to |closure|, a solution is rejected
+/// only when the gap is more negative than that (strict when P1 = 0 and cW = 0); the most
+/// negative gap found is always reported ([`SlidingSolutionF64::min_gap`]).
 ///
 /// With tau0 > 0 the gap is NOT required to be >= 0 [finding, reported to the lead]: q1 = mu p +
 /// tau0 jumps by tau0 at the ends, so v' jumps by 2 beta tau0/E* there, and just beyond the
@@ -1045,7 +1053,11 @@ fn physicality(col: &Collocation, prm: &Params, st: &State, out: &Outputs) -> st
     let hmax = samples.iter().fold(0.0f64, |m, v| m.max(v.1.abs()));
     let worst = samples.iter().fold((0.0f64, out.b), |w, v| if v.1 < w.0 { (v.1, v.0) } else { w });
     let negative = worst.0 < -1e-7 * hmax.max(f64::MIN_POSITIVE);
-    if negative && prm.tau0 == 0.0 {
+    // Reject only a violation that the convention cannot explain: deeper than the closure
+    // mismatch |(2 beta/E*) P1 - cW P2| (zero for frictionless, wear-free contact, where the
+    // check is strict), and never for tau0 > 0 (slope jump at b, see above).
+    let unexplained = worst.0 < -(closure.abs() + 1e-7 * hmax.max(f64::MIN_POSITIVE));
+    if unexplained && prm.tau0 == 0.0 {
         return Err(format!("the gap is negative outside the contact: h = {:e} at x = {} (max |h| = {hmax:e})", worst.0, worst.1));
     }
     Ok(GapCheck { min_gap: if negative { worst.0 } else { 0.0 }, at: worst.1, closure })
@@ -1343,6 +1355,144 @@ mod tests {
                 let exact = 2.0 * PI * d / big_l * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt();
                 assert!(rel(p.p, exact, pmax) < TOL, "lambda {lam} xh {}: {} vs {exact}: {:e}", p.xh, p.p, rel(p.p, exact, pmax));
             }
+        }
+    }
+
+    /// THEORY.md section 3 exact reduction, evaluated independently in f64 (Gauss–Jacobi rule of
+    /// 1/omega, 400 nodes): E* cos(pi theta) X(i/m)/(2 pi i) int g'(x(u)) du/(omega (u - i/m))
+    /// should equal P2/L - i beta tau0 [2.14]; and p(u) = omega(u) cos^2(pi theta)/pi
+    /// int [F(u') - F(u)]/(u' - u) du'/omega(u') [2.13].
+    fn check_exact_reduction(pb: &SlidingProblem, s: &SlidingSolutionF64, tol: f64) {
+        use nalgebra::Complex;
+        let (prm, _) = params_of(pb).unwrap();
+        let big_l = prm.period.unwrap();
+        let th = prm.theta;
+        let m = s.lambda.tan();
+        let rule = gauss_jacobi(400, th - 0.5, -th - 0.5).unwrap();
+        let x_of = |u: f64| s.c + big_l / PI * (m * u).atan();
+        let z = Complex::new(0.0, 1.0 / m);
+        let xz = (z - 1.0).powf(0.5 - th) * (z + 1.0).powf(0.5 + th);
+        let mut integral = Complex::new(0.0, 0.0);
+        for (u, w) in rule.nodes.iter().zip(&rule.weights) {
+            integral += Complex::new(w * prm.slope(x_of(*u)), 0.0) / (Complex::new(*u, 0.0) - z);
+        }
+        let lhs = xz * integral * (prm.e_star * (PI * th).cos()) / Complex::new(0.0, 2.0 * PI);
+        let scale = s.p2 / big_l;
+        assert!((lhs.re - s.p2 / big_l).abs() < tol * scale, "[2.14] real part {} vs {}", lhs.re, s.p2 / big_l);
+        assert!((lhs.im + prm.beta * prm.tau0).abs() < tol * scale, "[2.14] imaginary part {} vs {}", lhs.im, -prm.beta * prm.tau0);
+        let f = |u: f64| 0.5 * prm.e_star * prm.slope(x_of(u));
+        for pp in &s.pressure {
+            let u = (s.lambda * pp.xh).tan() / m;
+            let mut acc = 0.0;
+            for (t, w) in rule.nodes.iter().zip(&rule.weights) {
+                acc += w * (f(*t) - f(u)) / (t - u);
+            }
+            let p = omega(u, th) * (PI * th).cos().powi(2) / PI * acc;
+            assert!((p - pp.p).abs() < tol * s.max_pressure, "[2.13] at xh {}: {} vs {p}", pp.xh, pp.p);
+        }
+    }
+
+    #[test]
+    fn periodic_parabola_with_friction_wear_and_adhesion_matches_exact_reduction() {
+        let pts = [-0.97, -0.4, 0.0, 0.6, 0.95];
+        for (mu, cw, tau0, p2) in [(r(3, 10), r(0, 1), r(1, 20), r(1, 10)), (r(0, 1), r(1, 2), r(0, 1), r(1, 10)), (r(1, 2), r(2, 5), r(1, 7), r(3, 20))] {
+            let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), mu, tau0, cw, SlidingLoad::NormalLoad(p2));
+            let sols = solve_sliding_f64(&pb, &pts, &SolverOptions::default()).unwrap();
+            assert_eq!(sols.solutions.len(), 1);
+            let s = sols.primary();
+            check_exact_reduction(&pb, s, TOL);
+            assert!(s.accuracy.max() < TOL, "{:?}", s.accuracy);
+            // The direct problem at the same l gives the same P2 and c.
+            let pd = SlidingProblem { load: SlidingLoad::HalfLength(Exact::from_float(s.l).unwrap()), ..pb.clone() };
+            let d = solve_sliding_f64(&pd, &[], &SolverOptions::default()).unwrap();
+            let d = d.primary();
+            assert!(rel(d.p2, s.p2, s.p2) < TOL && rel(d.c, s.c, s.l) < TOL);
+        }
+    }
+
+    #[test]
+    fn parabola_lambda_does_not_depend_on_tau0_and_c_shifts_by_beta_tau0() {
+        // THEORY.md section 3: for the parabola lambda does not depend on tau0; c is explicit,
+        // and from the solvability condition dc = -beta dtau0/(E* k).
+        let mk = |tau0: Exact| problem(r(1, 4), Some(r(2, 1)), parabola(r(3, 1)), r(2, 5), tau0, r(1, 3), SlidingLoad::NormalLoad(r(1, 1)));
+        let s0 = solve_sliding_f64(&mk(r(0, 1)), &[], &SolverOptions::default()).unwrap();
+        let s1 = solve_sliding_f64(&mk(r(1, 10)), &[], &SolverOptions::default()).unwrap();
+        let (s0, s1) = (s0.primary(), s1.primary());
+        let beta = 1.0 / 3.0;
+        assert!(rel(s0.lambda, s1.lambda, s0.lambda) < TOL);
+        assert!(rel(s1.c - s0.c, -beta * 0.1 / 3.0, s0.l) < TOL);
+    }
+
+    #[test]
+    fn periodic_parabola_tends_to_the_single_punch() {
+        // L -> infinity: l -> l_s, rbar -> 2 theta - T with corrections O(Lambda^2) (THEORY.md [3.10]).
+        let pb = problem(r(1, 4), Some(r(1000, 1)), parabola(r(1, 1)), r(2, 5), r(1, 30), r(1, 3), SlidingLoad::NormalLoad(r(1, 1)));
+        let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
+        let s = s.primary();
+        let single = SlidingProblem { period: Period::Infinite, ..pb.clone() };
+        let t = solve_sliding_f64(&single, &[], &SolverOptions::default()).unwrap();
+        let t = t.primary();
+        let lam2 = (PI * t.l / 1000.0).powi(2);
+        assert!(rel(s.l, t.l, t.l) < lam2 && rel(s.c, t.c, t.l) < lam2, "{} {} {} {}", s.l, t.l, s.c, t.c);
+    }
+
+    #[test]
+    fn sinusoid_with_wear_matches_exact_reduction_and_reports_maximum_load() {
+        let shape = || PunchShape::sinusoidal(r(1, 10)).unwrap();
+        // theta = 0.148 (cW = 1, nu = 1/4): P2 at most about 0.43 pi E* D.
+        let pb = problem(r(1, 4), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(1, 1), SlidingLoad::NormalLoad(r(1, 20)));
+        let sols = solve_sliding_f64(&pb, &[-0.5, 0.0, 0.7], &SolverOptions::default()).unwrap();
+        assert_eq!(sols.solutions.len(), 1);
+        check_exact_reduction(&pb, sols.primary(), TOL);
+        let pb = problem(r(1, 4), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(1, 1), SlidingLoad::NormalLoad(r(3, 20)));
+        match solve_sliding_f64(&pb, &[], &SolverOptions::default()) {
+            Err(SlidingF64Error::LoadExceedsMaximum { max_load, max_fraction, .. }) => {
+                // Observed: 0.426 pi E* D at 2l/L = 0.59, where p < 0 starts at the leading end
+                // (chart_sinusoid_load_curve); the exact value awaits the MPFR solver.
+                assert!(max_load > 0.40 * PI * 0.1 && max_load < 0.45 * PI * 0.1, "{max_load} {max_fraction}");
+                assert!(max_fraction > 0.5 && max_fraction < 0.7, "{max_fraction}");
+            }
+            other => panic!("expected LoadExceedsMaximum, got {other:?}"),
+        }
+        // Frictionless: above the full-contact load pi E* D.
+        let pb = problem(r(1, 2), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(4, 10)));
+        assert!(matches!(solve_sliding_f64(&pb, &[], &SolverOptions::default()), Err(SlidingF64Error::LoadExceedsMaximum { .. })));
+    }
+
+    #[test]
+    fn invalid_inputs_are_typed_errors() {
+        let pb = problem(r(1, 2), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(1, 1)));
+        assert_eq!(solve_sliding_f64(&pb, &[1.0], &SolverOptions::default()), Err(SlidingF64Error::InvalidPoint { value: 1.0 }));
+        // Strong wear (theta = 0.35) shifts a large contact past L/2.
+        let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(4, 1), SlidingLoad::HalfLength(r(3, 10)));
+        assert!(matches!(solve_sliding_f64(&pb, &[], &SolverOptions::default()), Err(SlidingF64Error::ContactLeavesCell { .. })));
+        let huge = Exact::from_integer(BigInt::from(10).pow(400));
+        let pb = problem(r(1, 2), None, parabola(huge), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(1, 1)));
+        assert!(matches!(solve_sliding_f64(&pb, &[], &SolverOptions::default()), Err(SlidingF64Error::NotRepresentable { parameter: "k", .. })));
+    }
+
+    #[test]
+    fn convergence_in_the_number_of_nodes() {
+        // Westergaard pressure at lambda = 1: the error falls like tan(lambda/2)^n (module docs).
+        let lam: f64 = 1.0;
+        let rate = (0.5 * lam).tan();
+        let mut prev: Option<(usize, f64)> = None;
+        for n in [8usize, 16, 24, 32] {
+            let pb = problem(r(1, 2), Some(r(1, 1)), PunchShape::sinusoidal(r(1, 10)).unwrap(), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()));
+            let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
+            let s = solve_sliding_f64(&pb, &[0.0, 0.5, -0.8], &opts).unwrap();
+            let s = s.primary();
+            let pmax = 2.0 * PI * 0.1 * lam.sin();
+            let err = s.pressure.iter().map(|p| {
+                let chi = PI * p.x;
+                (p.p - 2.0 * PI * 0.1 * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt()).abs() / pmax
+            }).fold(0.0, f64::max);
+            if let Some((n0, e0)) = prev {
+                // Observed rate per node within a factor 1.5 of the predicted one (in the exponent).
+                let observed = (err / e0).ln() / (n - n0) as f64;
+                assert!(observed < 0.67 * rate.ln() && observed > 1.5 * rate.ln(), "n {n}: observed {observed}, predicted {}", rate.ln());
+            }
+            prev = Some((n, err));
         }
     }
 
