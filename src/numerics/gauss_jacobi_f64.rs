@@ -188,7 +188,8 @@ fn orthonormal_eval(a: &[f64], sq: &[f64], x: f64) -> (f64, f64, f64) {
 
 /// Eigenvalues of the symmetric tridiagonal matrix with diagonal `d` and off-diagonal
 /// `e[0..n-1]` (`e[n-1]` ignored): implicit QL with Wilkinson shifts (Numerical Recipes 11.4,
-/// `tqli` without eigenvectors). The eigenvalues overwrite `d`, unsorted.
+/// `tqli` without eigenvectors). The eigenvalues overwrite `d`, unsorted. Meant for Jacobi
+/// matrices (entries of size <= 1): rotations use sqrt(f^2 + g^2), not hypot.
 fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<(), ()> {
     let n = d.len();
     if n == 0 {
@@ -214,7 +215,9 @@ fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<(), ()> {
                 return Err(());
             }
             let mut g = (d[l + 1] - d[l]) / (2.0 * e[l]);
-            let mut r = g.hypot(1.0);
+            // sqrt instead of hypot (hypot dominated the run time): the entries are O(1) here;
+            // a huge g (tiny e[l]) overflows g*g to inf, which yields the correct limit below.
+            let mut r = (g * g + 1.0).sqrt();
             g = d[m] - d[l] + e[l] / (g + r.copysign(g));
             let (mut s, mut c, mut p) = (1.0, 1.0, 0.0);
             let mut i = m;
@@ -223,7 +226,7 @@ fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<(), ()> {
                 i -= 1;
                 let f = s * e[i];
                 let b = c * e[i];
-                r = f.hypot(g);
+                r = (f * f + g * g).sqrt();
                 e[i + 1] = r;
                 if r == 0.0 {
                     d[i + 1] -= p;
