@@ -642,7 +642,9 @@ fn parabola_lambda(prm: &Params, k: f64, big_l: f64, p2: f64, n: usize, near: Op
         None => (kuznetsov_guess(prm, k, big_l, p2), 0.05),
     };
     let mut step = width * guess;
-    let (mut lo, mut hi) = (guess - step, (guess + step).min(LAMBDA_MAX));
+    // Approach pi/2 geometrically: P2(lambda) at lambda ~ pi/2 needs more nodes than n.
+    let up = |from: f64, step: f64| (guess + step).min(from + 0.5 * (LAMBDA_MAX - from)).max(from);
+    let (mut lo, mut hi) = (guess - step, up(guess, step));
     let (mut flo, mut fhi) = (f(lo)?, f(hi)?);
     let mut it = 0;
     while flo > 0.0 {
@@ -657,15 +659,24 @@ fn parabola_lambda(prm: &Params, k: f64, big_l: f64, p2: f64, n: usize, near: Op
         }
     }
     while fhi < 0.0 {
-        if hi >= LAMBDA_MAX {
+        if hi >= LAMBDA_MAX * (1.0 - 1e-12) {
             return Err(SlidingF64Error::NoConvergence {
-                reason: format!("the load P2 = {p2} needs a contact fraction above {}", 2.0 * LAMBDA_MAX / PI),
+                reason: format!(
+                    "the load P2 = {p2} needs a contact fraction above {} (or more than {n} nodes; for theta != 0 the contact may also leave the cell (-L/2, L/2))",
+                    2.0 * LAMBDA_MAX / PI
+                ),
             });
         }
         lo = hi;
         flo = fhi;
         step *= 8.0;
-        hi = (guess + step).min(hi + 0.5 * (LAMBDA_MAX - hi)).max(hi + 0.5 * (LAMBDA_MAX - hi).min(step));
+        let next = up(hi, step);
+        if next <= hi {
+            return Err(SlidingF64Error::NoConvergence {
+                reason: format!("could not bracket lambda for P2 = {p2} below the contact fraction {}", 2.0 * LAMBDA_MAX / PI),
+            });
+        }
+        hi = next;
         fhi = f(hi)?;
     }
     brent(f, lo, hi, flo, fhi, 1e-16 * hi)
@@ -1517,6 +1528,46 @@ mod tests {
         }
     }
 
+    #[test]
+    fn sinusoid_past_the_load_maximum_is_not_physical() {
+        // theta = 0.148: P2 = 0.40 pi E* D is reached twice (lambda ~ 0.80 and ~ 1.02); past the
+        // maximum of P2(lambda) p < 0 at the leading end, so one solution is returned.
+        let shape = PunchShape::sinusoidal(r(1, 10)).unwrap();
+        let pb = problem(r(1, 4), Some(r(1, 1)), shape, r(0, 1), r(0, 1), r(1, 1), SlidingLoad::NormalLoad(Exact::from_float(0.40 * PI * 0.1).unwrap()));
+        let (prm, target) = params_of(&pb).unwrap();
+        assert_eq!(candidates(&prm, target, &SolverOptions::default()).unwrap().len(), 2);
+        let sols = solve_sliding_f64(&pb, &[0.0], &SolverOptions::default()).unwrap();
+        assert_eq!(sols.solutions.len(), 1);
+        let s = sols.primary();
+        assert!((s.lambda - 0.80158).abs() < 1e-4, "{}", s.lambda);
+        check_exact_reduction(&pb, s, TOL);
+    }
+
+    #[test]
+    fn small_load_with_adhesive_friction_drifts_to_minus_beta_tau0_over_e_k() {
+        // THEORY.md section 7: as P2 -> 0 with tau0 > 0, c -> -beta tau0/(E* k) (= -1/300 here).
+        let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(1, 2), r(1, 100), r(0, 1), SlidingLoad::NormalLoad(r(1, 100_000_000)));
+        let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
+        let s = s.primary();
+        // c = -beta tau0/(E* k) + 2 theta l + O(l lambda^2) (single-punch rbar_s = 2 theta - T).
+        let expected = -1.0 / 300.0 + 2.0 * s.theta * s.l;
+        assert!((s.c - expected).abs() < 1e-6 * s.l, "{} vs {expected}", s.c);
+        assert!(s.accuracy.max() < TOL);
+    }
+
+    #[test]
+    fn theta_near_one_half_single_punch() {
+        // cW = 100, nu = 1/4: theta = 0.4936; l_s = a0/sqrt(1 - 4 theta^2) (THEORY.md [3.10]).
+        let pb = problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(100, 1), SlidingLoad::NormalLoad(r(1, 100)));
+        let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
+        let s = s.primary();
+        let a0 = (2.0 * 0.01 / PI).sqrt();
+        let ls = a0 / (1.0 - 4.0 * s.theta * s.theta).sqrt();
+        // Tolerance 1e-11: the weight 1/omega ~ (1-u)^{theta - 1/2} is nearly non-integrable.
+        assert!(rel(s.l, ls, ls) < 1e-11, "{:e}", rel(s.l, ls, ls));
+        assert!(rel(s.c / s.l, 2.0 * s.theta, 1.0) < 1e-11);
+    }
+
     /// Convergence and timing chart (run with
     /// `cargo test -p periodic-contact --lib collocation_f64::tests::chart -- --ignored --nocapture`).
     #[test]
@@ -1561,7 +1612,8 @@ mod tests {
             }
             println!("{line}");
         }
-        println!("Timing per case (P2 given, automatic nodes, check run included):");
+        println!("Timing per case (P2 given, automatic nodes, check run and physicality check included;");
+        println!("cold = empty rule/LU cache, warm = cached, minimum of 30 runs):");
         for (name, lam, theta_case) in [("kuznetsov", 0.5, false), ("kuznetsov", 1.3, false), ("parabola+wear+friction", 1.0, true), ("parabola+wear+friction", 1.3, true)] {
             let p2 = k * big_l * big_l / PI * (1.0 / f64::cos(lam)).ln();
             let pb = if theta_case {
@@ -1573,12 +1625,13 @@ mod tests {
             let t0 = std::time::Instant::now();
             let s = solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
             let cold = t0.elapsed();
-            let reps = 50;
-            let t0 = std::time::Instant::now();
-            for _ in 0..reps {
+            // Warm: minimum over 30 runs (the machine is shared; the minimum is the least disturbed).
+            let mut warm = std::time::Duration::MAX;
+            for _ in 0..30 {
+                let t0 = std::time::Instant::now();
                 solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+                warm = warm.min(t0.elapsed());
             }
-            let warm = t0.elapsed() / reps;
             let s = s.primary();
             println!("{name:24} lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}", s.lambda, s.nodes, s.accuracy.check_nodes, s.accuracy.max(), cold, warm);
         }
@@ -1589,11 +1642,12 @@ mod tests {
             let t0 = std::time::Instant::now();
             let s = solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
             let cold = t0.elapsed();
-            let t0 = std::time::Instant::now();
-            for _ in 0..20 {
+            let mut warm = std::time::Duration::MAX;
+            for _ in 0..30 {
+                let t0 = std::time::Instant::now();
                 solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+                warm = warm.min(t0.elapsed());
             }
-            let warm = t0.elapsed() / 20;
             let s = s.primary();
             println!("westergaard              lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}", s.lambda, s.nodes, s.accuracy.check_nodes, s.accuracy.max(), cold, warm);
         }
@@ -1635,6 +1689,41 @@ mod tests {
                 t2 = t2.min(t0.elapsed());
             }
             println!("n {n}: rules {t1:?}, rules + matrix + LU {t2:?}");
+        }
+    }
+
+    /// Probes of THEORY.md section 7: lambda -> pi/2, theta -> +-1/2, small P2 with tau0 > 0.
+    #[test]
+    #[ignore]
+    fn chart_hard_cases() {
+        let show = |name: &str, pb: &SlidingProblem| {
+            let t0 = std::time::Instant::now();
+            match solve_sliding_f64(pb, &[0.0], &SolverOptions::default()) {
+                Ok(s) => {
+                    let s = s.primary();
+                    println!("{name}: theta {:.4} lambda {:.6} l {:.6e} c {:.6e} P2 {:.6e} n {} est {:.1e} min_gap {:.1e} ({:?})", s.theta, s.lambda, s.l, s.c, s.p2, s.nodes, s.accuracy.max(), s.min_gap, t0.elapsed());
+                }
+                Err(e) => println!("{name}: ERROR {e} ({:?})", t0.elapsed()),
+            }
+        };
+        for (p2n, p2d) in [(1, 1), (3, 1), (5, 1), (8, 1), (12, 1)] {
+            // Kuznetsov, L = 1, k = 1: P2 = (1/pi) ln sec(lambda): P2 = 12 is lambda = pi/2 - 2e-16.
+            let pb = problem(r(1, 2), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(p2n, p2d)));
+            show(&format!("kuznetsov P2 {p2n}/{p2d}"), &pb);
+        }
+        for cw in [r(1, 1), r(10, 1), r(100, 1), r(10000, 1)] {
+            let pb = problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), cw.clone(), SlidingLoad::NormalLoad(r(1, 100)));
+            show(&format!("single, wear cW {cw}"), &pb);
+            let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), cw.clone(), SlidingLoad::NormalLoad(r(1, 100)));
+            show(&format!("periodic, wear cW {cw}"), &pb);
+        }
+        for mu in [r(1, 1), r(10, 1), r(1000, 1)] {
+            let pb = problem(r(0, 1), Some(r(1, 1)), parabola(r(1, 1)), mu.clone(), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(1, 100)));
+            show(&format!("periodic, friction mu {mu} nu 0"), &pb);
+        }
+        for p2 in [r(1, 100), r(1, 10000), r(1, 1000000), r(1, 100000000)] {
+            let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(1, 2), r(1, 100), r(0, 1), SlidingLoad::NormalLoad(p2.clone()));
+            show(&format!("periodic, tau0 = 1/100, P2 {p2} (c -> -beta tau0/(E* k) = -1/300)"), &pb);
         }
     }
 
