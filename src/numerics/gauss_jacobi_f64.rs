@@ -16,7 +16,7 @@
 //!
 //! Companion rules for the singular integral equation of Problem 1 (THEORY.md section 3):
 //! with omega(u) = (1+u)^{1/2+theta} (1-u)^{1/2-theta} (Jacobi alpha = 1/2 - theta,
-//! beta = 1/2 + theta) the dominant operator S[f] = tan(pi theta) f + (1/pi) PV int f(u')/(u - u') du'
+//! beta = 1/2 + theta) the dominant operator S\[f\] = tan(pi theta) f + (1/pi) PV int f(u')/(u - u') du'
 //! maps omega P_n^{(alpha,beta)} onto a multiple of P_{n+1}^{(-alpha,-beta)} (Erdogan, Gupta & Cook
 //! 1973; for n = 0 see [`omega_cauchy_exterior`]), so the collocation points are the n + 1 zeros of
 //! P_{n+1}^{(-alpha,-beta)}: the nodes of the Gauss–Jacobi rule of the conjugate weight 1/omega.
@@ -56,7 +56,7 @@ pub enum QuadratureError {
 }
 
 /// Monic Jacobi recurrence coefficients: p_{k+1} = (u - a_k) p_k - b_k p_{k-1}, k = 0..n-1,
-/// b_0 = mu0 (Gautschi 2004, Table 1.1). Returns (a, b) with b[0] = mu0.
+/// b_0 = mu0 (Gautschi 2004, Table 1.1). Returns (a, b) with `b[0]` = mu0.
 pub fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>) {
     let s = alpha + beta;
     let mut a = Vec::with_capacity(n);
