@@ -1376,9 +1376,11 @@ mod tests {
             assert!(rel(s.p2, p2, p2) < TOL, "lambda {lam}: P2 {} vs {p2}, err {:e}", s.p2, rel(s.p2, p2, p2));
             assert!(s.c.abs() < TOL * a);
             let pb = problem(r(1, 2), Some(r(2, 1)), parabola(r(3, 2)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()));
-            let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
+            let s = solve_sliding_f64(&pb, &[-0.99, -0.5, 0.0, 0.7], &SolverOptions::default()).unwrap();
             let s = s.primary();
             assert!(rel(s.a, a, a) < TOL, "lambda {lam}: a {} vs {a}, err {:e}", s.a, rel(s.a, a, a));
+            // Pressure against the inversion formula [2.13] (no closed form is pinned).
+            check_exact_reduction(&pb, s, TOL);
             assert!(s.accuracy.max() < 1e-12, "{:?}", s.accuracy);
         }
     }
