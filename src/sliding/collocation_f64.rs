@@ -350,6 +350,17 @@ fn params_of(problem: &SlidingProblem) -> Result<(Params, Target)> {
     // kappa from the exact value (one rounding), theta = atan(kappa)/pi.
     let kappa = exact_to_f64(&problem.kappa(), "kappa", true)?;
     let theta = kappa.atan() / PI;
+    // The rules of 1/omega have exponents theta - 1/2 and -theta - 1/2, which must stay > -1
+    // with room for f64: |theta| <= 1/2 - 1e-6, i.e. |kappa| <= about 3e5.
+    if theta.abs() > 0.5 - 1e-6 {
+        return Err(SlidingF64Error::InvalidParameter {
+            parameter: "kappa",
+            value: problem.kappa().to_string(),
+            expected: format!(
+                "kappa = E* cW/2 - beta mu must satisfy |theta| = |atan(kappa)|/pi <= 1/2 - 1e-6 for the f64 solver (theta = {theta})"
+            ),
+        });
+    }
     let target = match &problem.load {
         SlidingLoad::NormalLoad(p) => Target::Load(exact_to_f64(p, "normal_load", false)?),
         SlidingLoad::HalfLength(l) => Target::HalfLength(exact_to_f64(l, "half_length", false)?),
@@ -1517,6 +1528,8 @@ mod tests {
         // Strong wear (theta = 0.35) shifts a large contact past L/2.
         let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(4, 1), SlidingLoad::HalfLength(r(3, 10)));
         assert!(matches!(solve_sliding_f64(&pb, &[], &SolverOptions::default()), Err(SlidingF64Error::ContactLeavesCell { .. })));
+        let pb = problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(10_000_000, 1), SlidingLoad::NormalLoad(r(1, 1)));
+        assert!(matches!(solve_sliding_f64(&pb, &[], &SolverOptions::default()), Err(SlidingF64Error::InvalidParameter { parameter: "kappa", .. })));
         let huge = Exact::from_integer(BigInt::from(10).pow(400));
         let pb = problem(r(1, 2), None, parabola(huge), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(1, 1)));
         assert!(matches!(solve_sliding_f64(&pb, &[], &SolverOptions::default()), Err(SlidingF64Error::NotRepresentable { parameter: "k", .. })));
