@@ -48,10 +48,11 @@
 //! P2(lambda) for theta != 0.
 //!
 //! # Accuracy
-//! The quadrature error behaves like tan(lambda/2)^{2n} (THEORY.md section 3); the pressure between
-//! nodes is a degree n-1 interpolant, whose error behaves like tan(lambda/2)^n (observed: Westergaard
-//! pressure at lambda = 1.3: 6e-12 at n = 96, 4e-15 at n = 128; Kuznetsov P2 at lambda = 1.3: 2e-15
-//! at n = 64). The number of nodes is chosen from the slower rate, and the result carries the
+//! The quadrature error behaves like tan(lambda/2)^{2n} (THEORY.md section 3). Between the nodes G
+//! is evaluated by the Nyström interpolant of the collocation equation (`g_at`), not by
+//! polynomial interpolation: its error follows the quadrature, tan(lambda/2)^{2n} (observed rate
+//! in `convergence_in_the_number_of_nodes`), where the degree n-1 interpolant only gives
+//! tan(lambda/2)^n. The number of nodes is chosen from that rate, and the result carries the
 //! difference to a second run with n + max(8, n/4) nodes ([`AccuracyEstimate`]).
 //! Measured (`chart_convergence_and_timing`): relative errors <= 1e-14 against Kuznetsov and
 //! Westergaard for lambda <= 1.3; the single punch is exact up to rounding (the data are linear).
@@ -73,7 +74,7 @@
 use crate::model::{Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use crate::numerics::gauss_jacobi_f64::{
-    barycentric_eval, barycentric_weights, gauss_jacobi, omega, omega_cauchy_exterior, sliding_rules, GaussRule,
+    gauss_jacobi, omega, omega_cauchy_exterior, sliding_rules, GaussRule,
     QuadratureError,
 };
 use nalgebra::{DMatrix, DVector, Dyn, LU};
@@ -392,7 +393,6 @@ struct Collocation {
     theta: f64,
     rule: GaussRule,
     colloc: Vec<f64>,
-    bary: Vec<f64>,
     lu: LU<f64, Dyn, Dyn>,
 }
 
@@ -407,8 +407,7 @@ impl Collocation {
             }
             m[(r, n)] = 1.0;
         }
-        let bary = barycentric_weights(&rule);
-        Ok(Collocation { theta, rule, colloc, bary, lu: m.lu() })
+        Ok(Collocation { theta, rule, colloc, lu: m.lu() })
     }
 
     fn n(&self) -> usize {
@@ -424,10 +423,6 @@ impl Collocation {
         Ok((sol.as_slice()[..n].to_vec(), sol[n]))
     }
 
-    /// The polynomial G at u (barycentric interpolation in the nodes).
-    fn interpolate(&self, g: &[f64], u: f64) -> f64 {
-        barycentric_eval(&self.rule.nodes, &self.bary, g, u)
-    }
 }
 
 thread_local! {
@@ -451,12 +446,12 @@ fn collocation(theta: f64, n: usize) -> Result<Rc<Collocation>> {
     Ok(c)
 }
 
-/// Nodes for a quadrature error ~ target at relative size lambda: the interpolant converges like
-/// rho^{-n}, rho = cot(lambda/2) (Bernstein ellipse through the singularities u = +-i/m of the
-/// data, THEORY.md section 3), so n = ln(1/target)/ln(rho) + 8 (8: margin for the constant).
-/// Heuristic, checked by the convergence tests below for lambda <= 1.45.
+/// Nodes for an error ~ target at relative size lambda: the quadrature and the Nyström interpolant
+/// converge like rho^{-2n}, rho = cot(lambda/2) (Bernstein ellipse through the singularities
+/// u = +-i/m of the data, THEORY.md section 3), so n = ln(1/target)/(2 ln rho) + 8 (8: margin
+/// for the constant). Heuristic, checked by the convergence tests below for lambda <= 1.45.
 fn nodes_for(lambda: f64, options: &SolverOptions) -> usize {
-    let rate = -(0.5 * lambda).tan().ln();
+    let rate = -2.0 * (0.5 * lambda).tan().ln();
     let n = if rate > 0.0 { (-(options.target.ln()) / rate).ceil() + 8.0 } else { f64::INFINITY };
     if n.is_finite() { (n as usize).clamp(8, options.max_nodes) } else { options.max_nodes }
 }
@@ -538,12 +533,83 @@ fn basis(col: &Collocation, map: &Map, f: impl Fn(f64) -> f64) -> Result<Basis> 
     Ok(Basis { g, cond: c0 - k, p2 })
 }
 
-/// A discrete state: the map, the centre c and G in physical units (p(u) = omega(u) G(u)).
+/// A discrete state: the map, the centre c, G in physical units at the nodes
+/// (p(u) = omega(u) G(u)) and the shape part of the right-hand side (for the Nyström interpolant).
 struct State {
     map: Map,
     c: f64,
     g: Vec<f64>,
     p2: f64,
+    rhs: Rhs,
+}
+
+/// The shape part F(u) of the right-hand side in physical units (constants are absorbed in K).
+#[derive(Debug, Clone, Copy)]
+enum Rhs {
+    /// F = s (x(u) - c): parabola, s = E* k.
+    Offset { s: f64 },
+    /// F = s (X sin 2phi + Y cos 2phi), phi = atan(m u): sinusoid, s = pi E* D/L.
+    Sinusoid { s: f64, x: f64, y: f64 },
+}
+
+impl Rhs {
+    /// (F(u) - F(v))/(u - v), in cancellation-free closed forms:
+    /// atan(mu) - atan(mv) = atan(m (u - v)/(1 + m^2 u v)) when 1 + m^2 u v > 0;
+    /// sin 2phi: 2m (u - v)(1 - m^2 u v)/((1 + m^2 u^2)(1 + m^2 v^2));
+    /// cos 2phi: -2 m^2 (u - v)(u + v)/((1 + m^2 u^2)(1 + m^2 v^2)).
+    fn divided_difference(&self, map: &Map, u: f64, v: f64) -> f64 {
+        let d = u - v;
+        match (*self, *map) {
+            (Rhs::Offset { s }, Map::Single { l }) => s * l,
+            (Rhs::Offset { s }, Map::Periodic { big_l, m, .. }) => {
+                let q = 1.0 + m * m * u * v;
+                let dd = if d == 0.0 {
+                    m / (1.0 + m * m * u * u)
+                } else if q > 0.0 {
+                    (m * d / q).atan() / d
+                } else {
+                    ((m * u).atan() - (m * v).atan()) / d
+                };
+                s * big_l / PI * dd
+            }
+            (Rhs::Sinusoid { s, x, y }, Map::Periodic { m, .. }) => {
+                let den = (1.0 + m * m * u * u) * (1.0 + m * m * v * v);
+                s * (x * 2.0 * m * (1.0 - m * m * u * v) - y * 2.0 * m * m * (u + v)) / den
+            }
+            (Rhs::Sinusoid { .. }, Map::Single { .. }) => unreachable!("sinusoid needs a period"),
+        }
+    }
+}
+
+/// G(u) by the Nyström interpolant of the collocation equation [reconstructed]: from
+/// G(u) D(u) = F(u) - K - (1/pi) sum_k W_k G_k/(u - t_k), D(u) = (u + 2 theta)/cos(pi theta)
+/// - (1/pi) sum_k W_k/(u - t_k) (the kappa-term plus the exact PV Cauchy transform of omega, see
+/// `gauss_jacobi_f64::omega_cauchy_exterior`, minus its quadrature), and D(x_r) = 0 = the
+/// residual at the collocation point x_r nearest to u, subtracting both at x_r gives
+///
+/// ```text
+/// G(u) = [ (F(u) - F(x_r))/(u - x_r) + (1/pi) sum_k W_k G_k / ((u - t_k)(x_r - t_k)) ]
+///      / [ 1/cos(pi theta)           + (1/pi) sum_k W_k     / ((u - t_k)(x_r - t_k)) ],
+/// ```
+///
+/// free of 0/0 at x_r and of K. Its error follows the quadrature, tan(lambda/2)^{2n}, instead of
+/// the interpolant's tan(lambda/2)^n; it is also the analytic continuation used off the contact.
+fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
+    let xs = &col.colloc;
+    let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
+    let xr = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { xs[i - 1] } else { xs[i] };
+    let mut num = st.rhs.divided_difference(&st.map, u, xr);
+    let mut den = 1.0 / (PI * col.theta).cos();
+    for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
+        let d = u - t;
+        if d == 0.0 {
+            return *g;
+        }
+        let q = w / (PI * d * (xr - t));
+        num += q * g;
+        den += q;
+    }
+    num / den
 }
 
 /// Parabola at fixed lambda (or l): RHS E* k (x(u) - c); the constant E* k c is absorbed in K,
@@ -553,7 +619,7 @@ fn parabola_state(col: &Collocation, prm: &Params, k: f64, map: Map) -> Result<S
     let b = basis(col, &map, |u| map.offset(u))?;
     let s = prm.e_star * k;
     let c = b.cond - prm.beta * prm.tau0 / s;
-    Ok(State { map, c, g: b.g.iter().map(|v| v * s).collect(), p2: s * b.p2 })
+    Ok(State { map, c, g: b.g.iter().map(|v| v * s).collect(), p2: s * b.p2, rhs: Rhs::Offset { s } })
 }
 
 /// Sinusoid at fixed lambda: F = s (X sin 2phi + Y cos 2phi), s = pi E* D/L, phi = atan(m u),
@@ -571,7 +637,7 @@ fn sinusoid_bases(col: &Collocation, map: &Map) -> Result<(Basis, Basis)> {
 fn sinusoid_state(map: Map, big_l: f64, s: f64, bx: &Basis, by: &Basis, x: f64, y: f64) -> State {
     let c = big_l * y.atan2(x) / (2.0 * PI);
     let g = bx.g.iter().zip(&by.g).map(|(gx, gy)| s * (x * gx + y * gy)).collect();
-    State { map, c, g, p2: s * (x * bx.p2 + y * by.p2) }
+    State { map, c, g, p2: s * (x * bx.p2 + y * by.p2), rhs: Rhs::Sinusoid { s, x, y } }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -973,7 +1039,7 @@ fn outputs(col: &Collocation, prm: &Params, st: &State, points: &[f64]) -> Outpu
     let c = st.c;
     let p_at = |xh: f64| {
         let u = st.map.u_of_xh(xh);
-        omega(u, prm.theta) * col.interpolate(&st.g, u)
+        omega(u, prm.theta) * g_at(col, st, u)
     };
     let grid_p: Vec<f64> = (0..GRID).map(|i| p_at(-1.0 + 2.0 * (i as f64 + 0.5) / GRID as f64)).collect();
     let pressure: Vec<PressurePoint> = points.iter().map(|&xh| PressurePoint { xh, x: c + l * xh, p: p_at(xh) }).collect();
@@ -1010,7 +1076,7 @@ fn hilbert_outside(col: &Collocation, prm: &Params, st: &State, c0: f64, x: f64)
     if u.is_finite() && u.abs() <= 3.0 {
         // Off the contact |u| >= 1; rounding at the very edge could give |u| slightly below 1.
         let u = u.signum() * u.abs().max(1.0);
-        let gu = col.interpolate(&st.g, u);
+        let gu = g_at(col, st, u);
         let mut s = 0.0;
         for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
             s += w * (gu - g) / (u - t);
@@ -1058,7 +1124,7 @@ fn physicality(col: &Collocation, prm: &Params, st: &State, out: &Outputs) -> st
     // p >= 0: G at the nodes, at +-1, and p on the grid.
     let gmax = st.g.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let tol_g = 1e-9 * gmax;
-    for (u, gu) in [(-1.0, col.interpolate(&st.g, -1.0)), (1.0, col.interpolate(&st.g, 1.0))] {
+    for (u, gu) in [(-1.0, g_at(col, st, -1.0)), (1.0, g_at(col, st, 1.0))] {
         if gu < -tol_g {
             return Err(format!("p < 0 next to the contact end u = {u} (p/omega = {gu:e})"));
         }
@@ -1537,11 +1603,12 @@ mod tests {
 
     #[test]
     fn convergence_in_the_number_of_nodes() {
-        // Westergaard pressure at lambda = 1: the error falls like tan(lambda/2)^n (module docs).
+        // Westergaard pressure at lambda = 1 (Nyström interpolant): the error falls like
+        // tan(lambda/2)^{2n} (module docs).
         let lam: f64 = 1.0;
-        let rate = (0.5 * lam).tan();
+        let rate = (0.5 * lam).tan().powi(2);
         let mut prev: Option<(usize, f64)> = None;
-        for n in [8usize, 16, 24, 32] {
+        for n in [4usize, 8, 12, 16] {
             let pb = problem(r(1, 2), Some(r(1, 1)), PunchShape::sinusoidal(r(1, 10)).unwrap(), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()));
             let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
             let s = solve_sliding_f64(&pb, &[0.0, 0.5, -0.8], &opts).unwrap();
