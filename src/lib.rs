@@ -9,6 +9,7 @@
 //! - `series` crate (`exact_series`): the exact power-series engine (no physics, no floats).
 //! - [`asymptotics`]: the objects of THEORY.md section 5 as exact truncated series.
 //! - [`numerics`]: evaluation of exact objects at `f64` and MPFR precision, quadrature.
+//! - [`sliding`]: Problem 1 solvers (high-precision exact reduction; fast f64 collocation).
 //! - [`report`]: data -> Markdown / LaTeX (pure), and the report writer.
 //! - [`cli`]: raw arguments -> validated configuration.
 
@@ -17,3 +18,4 @@ pub mod cli;
 pub mod model;
 pub mod numerics;
 pub mod report;
+pub mod sliding;

@@ -2,3 +2,4 @@
 
 pub mod evaluate;
 pub mod exact;
+pub mod gauss_jacobi_f64;
