@@ -18,4 +18,5 @@ pub mod cli;
 pub mod model;
 pub mod numerics;
 pub mod report;
+pub mod scene;
 pub mod sliding;
