@@ -13,3 +13,4 @@
 pub mod asymptotics;
 pub mod model;
 pub mod numerics;
+pub mod sliding;

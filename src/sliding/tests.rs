@@ -1,0 +1,253 @@
+//! Tests of the high-precision sliding solver against closed forms (THEORY.md section 6) and the
+//! single-punch limit [3.10], and of its internal consistency.
+
+use super::contact::{Contact, Size};
+use super::pressure::Pressure;
+use super::setup::Setup;
+use super::*;
+use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::numerics::gauss_jacobi_mpfr::gauss_jacobi;
+use rug::{float::Constant, Float};
+
+fn q(s: &str) -> Exact {
+    s.parse().expect("rational literal")
+}
+
+/// Problem builder: nu, E*, period ("inf" or a ratio), shape, mu, tau0, cW, load.
+#[allow(clippy::too_many_arguments)]
+fn problem(nu: &str, e: &str, period: &str, shape: PunchShape, mu: &str, tau0: &str, cw: &str, load: SlidingLoad) -> SlidingProblem {
+    let material = Material::from_contact_modulus(q(nu), q(e)).unwrap();
+    let period = if period == "inf" { Period::Infinite } else { Period::finite(q(period)).unwrap() };
+    SlidingProblem::new(material, period, shape, q(mu), q(tau0), q(cw), Some(q("2")), load).unwrap()
+}
+
+/// -log10(|x - y|/|scale|).
+fn digits(x: &Float, y: &Float, scale: &Float) -> f64 {
+    let d = Float::with_val(x.prec().max(y.prec()), x - y).abs();
+    if d.is_zero() {
+        return f64::INFINITY;
+    }
+    -(Float::with_val(64, d / scale).log10().to_f64())
+}
+
+fn float_to_exact(x: &Float) -> Exact {
+    let r = x.to_rational().expect("finite");
+    r.to_string().parse().expect("rational")
+}
+
+#[test]
+fn kuznetsov_periodic_parabola_frictionless() {
+    // P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], THEORY.md section 6. nu = 1/2: beta = 0, theta = 0.
+    for a in ["1/10", "1/4", "3/10"] {
+        let pb = problem("1/2", "3", "1", PunchShape::parabolic(q("2")).unwrap(), "1/5", "0", "0", SlidingLoad::HalfLength(q(a)));
+        let v = solve_verified(&pb, &[q("1/2")], 30).unwrap();
+        assert_eq!(v.len(), 1);
+        let s = &v[0].solution;
+        assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
+        let p = s.prec + 40;
+        let pi = Float::with_val(p, Constant::Pi);
+        let af = Float::with_val(p, crate::numerics::exact::to_rational(&q(a)));
+        let sec = Float::with_val(p, &pi * &af).cos().recip();
+        let expect = sec.ln() * 6u32 / &pi; // E* k L^2 = 3 * 2 * 1
+        assert!(digits(&s.p2, &expect, &expect) >= 30.0, "a = {a}: {} vs {}", s.p2, expect);
+        assert!(s.c.to_f64().abs() < 1e-35);
+    }
+}
+
+#[test]
+fn westergaard_sinusoid_frictionless() {
+    // P2 = pi E* D sin^2(pi a/L) [2.17].
+    for a in ["1/20", "1/5", "2/5"] {
+        let pb = problem("1/2", "2", "3/2", PunchShape::sinusoidal(q("1/7")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q(a)));
+        let v = solve_verified(&pb, &[], 30).unwrap();
+        assert_eq!(v.len(), 1);
+        let s = &v[0].solution;
+        assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
+        let p = s.prec + 40;
+        let pi = Float::with_val(p, Constant::Pi);
+        let af = Float::with_val(p, crate::numerics::exact::to_rational(&q(a)));
+        let sn = Float::with_val(p, &pi * af * 2u32 / 3u32).sin();
+        let expect = Float::with_val(p, sn.square_ref()) * &pi * 2u32 / 7u32;
+        assert!(digits(&s.p2, &expect, &expect) >= 30.0, "a = {a}: {} vs {}", s.p2, expect);
+    }
+}
+
+#[test]
+fn westergaard_inverse_problem() {
+    let pb = problem("1/2", "2", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/5")));
+    let v = solve_verified(&pb, &[], 30).unwrap();
+    assert_eq!(v.len(), 1);
+    let s = &v[0].solution;
+    let p = s.prec;
+    let pi = Float::with_val(p, Constant::Pi);
+    let sn = Float::with_val(p, &pi * &s.a).sin();
+    let p2 = Float::with_val(p, sn.square_ref()) * &pi * 2u32 / 10u32;
+    assert!(digits(&p2, &s.p2, &s.p2) >= 30.0);
+}
+
+#[test]
+fn single_punch_limit_with_friction_wear_and_adhesion() {
+    // l_s = a0/sqrt(1 - 4 theta^2), rbar_s = 2 theta - T, a0 = sqrt(2 P2/(pi E* k)),
+    // T = beta tau0/(E* k l_s) [3.10]. nu = 1/4: beta = 1/3.
+    for (mu, cw, tau0) in [("3/10", "0", "1/100"), ("0", "1/2", "1/50"), ("1/2", "1/10", "0"), ("0", "0", "1/20")] {
+        let pb = problem("1/4", "2", "inf", PunchShape::parabolic(q("1/2")).unwrap(), mu, tau0, cw, SlidingLoad::NormalLoad(q("1")));
+        let v = solve_verified(&pb, &[q("0")], 30).unwrap();
+        let s = &v[0].solution;
+        assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
+        assert!(s.wear_per_distance.is_none());
+        let p = s.prec;
+        let pi = Float::with_val(p, Constant::Pi);
+        let th = &s.theta;
+        let a0 = (Float::with_val(p, 2u32) / (Float::with_val(p, &pi * 2u32) / 2u32)).sqrt(); // E* k = 1
+        let ls = Float::with_val(p, &a0 / (1u32 - Float::with_val(p, th.square_ref()) * 4u32).sqrt());
+        assert!(digits(&s.l, &ls, &ls) >= 30.0, "l {} vs {}", s.l, ls);
+        let beta = Float::with_val(p, 1u32) / 3u32;
+        let tau = Float::with_val(p, crate::numerics::exact::to_rational(&q(tau0)));
+        let t = Float::with_val(p, &beta * &tau) / &ls;
+        let rbar = Float::with_val(p, th * 2u32) - &t;
+        let got = Float::with_val(p, &s.c / &s.l);
+        assert!(digits(&got, &rbar, &Float::with_val(p, 1)) >= 30.0, "rbar {got} vs {rbar}");
+        // P1 = mu P2 + 2 l tau0.
+        let p1 = Float::with_val(p, crate::numerics::exact::to_rational(&q(mu))) + Float::with_val(p, &s.l * &tau) * 2u32;
+        assert!(digits(&s.p1, &p1, &s.p2) >= 30.0);
+    }
+}
+
+#[test]
+fn hertz_pressure() {
+    // p = E* k sqrt(a^2 - x^2), P2 = (pi/2) E* k a^2.
+    let pb = problem("1/2", "5", "inf", PunchShape::parabolic(q("3")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("7")));
+    let pts = [q("-9/10"), q("-1/3"), q("0"), q("1/2"), q("99/100")];
+    let v = solve_verified(&pb, &pts, 40).unwrap();
+    let s = &v[0].solution;
+    assert!(v[0].accuracy.digits_verified >= 40.0, "{:?}", v[0].accuracy);
+    let p = s.prec;
+    let a2 = Float::with_val(p, s.a.square_ref());
+    for pt in &s.pressure {
+        let expect = (Float::with_val(p, &a2 - Float::with_val(p, pt.x.square_ref()))).sqrt() * 15u32;
+        assert!(digits(&pt.p, &expect, &s.max_pressure) >= 40.0, "x = {}: {} vs {}", pt.x, pt.p, expect);
+    }
+    let pi = Float::with_val(p, Constant::Pi);
+    let p2 = Float::with_val(p, &pi * &a2) * 15u32 / 2u32;
+    assert!(digits(&p2, &s.p2, &s.p2) >= 40.0);
+}
+
+#[test]
+fn load_is_the_integral_of_the_pressure() {
+    // P2 from [2.14] (given) against int p dx by a separate Gauss–Jacobi rule for omega.
+    let cases = [
+        problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10"))),
+        problem("0", "1", "1", PunchShape::sinusoidal(q("1/20")).unwrap(), "1/5", "1/100", "0", SlidingLoad::HalfLength(q("1/5"))),
+        problem("1/3", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "1/2", "1/10", "1", SlidingLoad::NormalLoad(q("1"))),
+    ];
+    for pb in cases {
+        let sols = solve_at(&pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap();
+        for s in sols {
+            let setup = Setup::new(&pb, s.prec).unwrap();
+            let sz = match &s.lambda {
+                Some(l) => Size::new(&setup, l),
+                None => Size::new(&setup, &s.l),
+            };
+            let contact = Contact::new(&setup, &sz, s.c.clone());
+            let (a, b) = setup.inverse_weight_exponents();
+            let rule = gauss_jacobi(&a, &b, s.nodes, s.prec).unwrap();
+            let (aw, bw) = setup.weight_exponents();
+            let rule_w = gauss_jacobi(&aw, &bw, s.nodes, s.prec).unwrap();
+            let pr = Pressure::new(&setup, &contact, &rule);
+            let (p2, fdef) = pr.load_and_deformation_force(&rule_w);
+            assert!(digits(&p2, &s.p2, &s.p2) >= 30.0, "{p2} vs {}", s.p2);
+            assert!(digits(&fdef, &s.f_def, &s.p2) >= 30.0);
+        }
+    }
+}
+
+#[test]
+fn direct_and_inverse_problems_agree() {
+    let shapes = [
+        ("1", PunchShape::parabolic(q("1")).unwrap(), "1/20"),
+        ("1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/10"),
+        ("inf", PunchShape::parabolic(q("2")).unwrap(), "1"),
+    ];
+    for (period, shape, load) in shapes {
+        let inv = problem("1/4", "1", period, shape.clone(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q(load)));
+        let s1 = solve_at(&inv, &[q("1/3")], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap();
+        let s1 = &s1[0];
+        let dir = problem("1/4", "1", period, shape, "1/5", "1/100", "1/10", SlidingLoad::HalfLength(float_to_exact(&s1.l)));
+        let s2 = solve_at(&dir, &[q("1/3")], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap();
+        let s2 = &s2[0];
+        assert!(digits(&s1.p2, &s2.p2, &s1.p2) >= 30.0, "{} vs {}", s1.p2, s2.p2);
+        assert!(digits(&s1.c, &s2.c, &s1.l) >= 30.0);
+        assert!(digits(&s1.pressure[0].p, &s2.pressure[0].p, &s1.max_pressure) >= 30.0);
+    }
+}
+
+#[test]
+fn adhesive_friction_does_not_change_lambda_for_the_parabola() {
+    let mk = |tau0: &str| problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", tau0, "1/10", SlidingLoad::NormalLoad(q("1/20")));
+    let s0 = &solve_at(&mk("0"), &[], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap()[0];
+    let s1 = &solve_at(&mk("1/100"), &[], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap()[0];
+    let (l0, l1) = (s0.lambda.as_ref().unwrap(), s1.lambda.as_ref().unwrap());
+    assert!(digits(l0, l1, l0) >= 30.0);
+    assert!(s1.c < s0.c, "tau0 shifts the contact toward -x");
+}
+
+#[test]
+fn contact_leaving_the_period_is_an_error() {
+    // Parabola with wear (theta ~ 0.1, rbar ~ 2 theta), large contact: b = l + c reaches L/2.
+    let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "13/20", SlidingLoad::HalfLength(q("9/20")));
+    let e = solve_verified(&pb, &[], 20).unwrap_err();
+    assert!(matches!(e, SlidingError::ContactOutsidePeriod { .. }), "{e}");
+    // Strong adhesive friction pushes the contact out of the period.
+    let pb = problem("0", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "1", "0", SlidingLoad::HalfLength(q("1/4")));
+    let e = solve_verified(&pb, &[], 20).unwrap_err();
+    assert!(matches!(e, SlidingError::ContactOutsidePeriod { .. }), "{e}");
+}
+
+#[test]
+fn theta_too_close_to_one_half_and_bad_points_are_errors() {
+    let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "100000000", SlidingLoad::NormalLoad(q("1/100")));
+    let e = solve_verified(&pb, &[], 20).unwrap_err();
+    assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter.starts_with("theta")), "{e}");
+    let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/100")));
+    let e = solve_verified(&pb, &[q("1")], 20).unwrap_err();
+    assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter == "points"), "{e}");
+}
+
+/// Timings of `solve_verified` at 30 digits (first call builds the rules, later calls reuse them).
+/// Run: `cargo test -p periodic-contact --lib sliding::tests::timing -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn timing() {
+    let cases: Vec<(&str, SlidingProblem)> = vec![
+        ("parabola periodic, theta=0, P2=1/20", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/20")))),
+        ("parabola periodic, mu, cW, tau0, P2=1/20", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/20")))),
+        ("parabola periodic, l=0.318 (lambda=1)", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "0", "1/10", SlidingLoad::HalfLength(q("318/1000")))),
+        ("parabola single, mu, cW, tau0", problem("1/4", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1")))),
+        ("sinusoid, theta=0, P2=1/5", problem("1/2", "2", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/5")))),
+        ("sinusoid, mu, cW, tau0, l=1/4", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::HalfLength(q("1/4")))),
+        ("sinusoid, mu, cW, tau0, P2=1/10", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/10")))),
+    ];
+    let pts = [q("-1/2"), q("0"), q("1/2")];
+    for (name, pb) in &cases {
+        for rep in 0..3 {
+            let t = std::time::Instant::now();
+            let r = solve_verified(pb, &pts, 30);
+            let dt = t.elapsed();
+            match r {
+                Ok(v) => {
+                    let s = &v[0];
+                    println!(
+                        "{name} [call {rep}]: {:.1} ms, {} solution(s), lambda = {:?}, n = {}, bits = {}, digits_verified = {:.1}",
+                        dt.as_secs_f64() * 1e3,
+                        v.len(),
+                        s.solution.lambda.as_ref().map(|l| l.to_f64()),
+                        s.solution.nodes,
+                        s.solution.prec,
+                        s.accuracy.digits_verified
+                    );
+                }
+                Err(e) => println!("{name}: error {e}"),
+            }
+        }
+    }
+}
