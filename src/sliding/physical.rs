@@ -8,10 +8,17 @@
 //! contact ends, so v' jumps there and h' carries a constant -2 beta tau0/E* outside the contact;
 //! it gives an overlap growing linearly from the leading edge b for any tau0 > 0, a property of
 //! the step model itself, so it is left out of the check (h' from [`super::pressure::Pressure::gap_slope`]);
-//! (ii) with the paper's symmetric summation [1.6]-[1.8] v is not periodic (the mean of v' over a
-//! period is -2 beta P1/(E* L)), so h is integrated from each contact end toward the middle of the
-//! free interval, not across it. Points x = b + Delta s^4 (and L - a - Delta s^4) cluster at the
-//! ends; cumulative Simpson in s with 16 panels.
+//! (ii) with the paper's symmetric summation [1.6]-[1.8] (mean of (E*/2) v' over a period is
+//! -beta P1/L) and the wear law v' = g' - cW p (no mean wear slope), the surface is not periodic:
+//! h' integrated over one period leaves the mismatch M = -(2/E*)(kappa P2 - 2 beta l tau0) (with
+//! the tau0 step term kept). So h is integrated from each contact end toward the middle of the
+//! free interval (x - c = +-L/2), not across it; the two halves need not meet. Removing M as a
+//! uniform slope instead was tried and rejected: any uniform slope makes h < 0 next to one end,
+//! where h ~ (x - b)^{3/2 - theta}. A self-consistent periodic model would add
+//! K = (kappa P2 - 2 beta l tau0)/L to the right side of [2.8] (it shifts c by an odd power of
+//! lambda); not done here because THEORY.md keeps the paper's convention.
+//! Points x = b + Delta s^4 (and L - a - Delta s^4) cluster at the ends; cumulative Simpson in s
+//! with 16 panels.
 
 use super::contact::Contact;
 use super::error::SlidingError;

@@ -251,3 +251,66 @@ fn timing() {
         }
     }
 }
+
+/// Chart of the sinusoid's load curve P2(lambda) on both centre branches, with physicality
+/// (exploration; `-- --ignored --nocapture`).
+#[test]
+#[ignore]
+fn explore_sinusoid_load_curve() {
+    for (mu, cw, tau0) in [("0", "0", "0"), ("1/5", "1/10", "1/100"), ("0", "1", "0"), ("1", "0", "0"), ("0", "0", "1/20")] {
+        println!("mu = {mu}, cW = {cw}, tau0 = {tau0}");
+        for i in 1..=30 {
+            let l = format!("{}/62", i);
+            let pb = problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), mu, tau0, cw, SlidingLoad::HalfLength(q(&l)));
+            let setup = Setup::new(&pb, 64).unwrap();
+            let lam = Float::with_val(64, std::f64::consts::PI * i as f64 / 62.0);
+            let size = Size::new(&setup, &lam);
+            let n = super::solve::nodes_for(lam.to_f64(), 16.0);
+            let (a, b) = setup.inverse_weight_exponents();
+            let rule = gauss_jacobi(&a, &b, n, 64).unwrap();
+            let terms = super::equation::equation_terms(&setup, &size, &rule);
+            let br = super::equation::shift_solutions(&setup, &terms);
+            let mut line = format!("  lambda {:.3} theta {:.4}:", lam.to_f64(), setup.theta.to_f64());
+            for s in br {
+                let contact = Contact::new(&setup, &size, s.c.clone());
+                let pr = Pressure::new(&setup, &contact, &rule);
+                let ok = super::physical::check_pressure(&setup, &pr).map(|_| ()).and_then(|_| super::physical::check_gap(&setup, &contact, &pr));
+                line += &format!(" [P2 {:.6} c {:.4} {}]", s.p2.to_f64(), s.c.to_f64(), match ok { Ok(_) => "ok".to_string(), Err(e) => e.to_string().chars().skip(30).take(110).collect::<String>() });
+            }
+            println!("{line}");
+        }
+    }
+}
+
+/// The sinusoid with friction (theta = -0.102): P2(lambda) rises to a maximum (~0.1624 at
+/// lambda ~ 0.96) and falls again, so a load below the maximum has two roots of [2.14]. Charted with
+/// `explore_sinusoid_load_curve`: physicality (gap, then p at the trailing end) is lost before the
+/// maximum, so only the smaller root is physical; loads beyond the physical range are an error that
+/// states the maximum physical load.
+#[test]
+fn non_monotone_sinusoid() {
+    let mk = |load: SlidingLoad| problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1", "0", "0", load);
+    // Two roots of the equations at P2 = 1/10; the physical one is returned.
+    let v = solve_verified(&mk(SlidingLoad::NormalLoad(q("1/10"))), &[q("0")], 30).unwrap();
+    assert_eq!(v.len(), 1);
+    assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
+    let lam = v[0].solution.lambda.as_ref().unwrap().to_f64();
+    assert!(lam > 0.5 && lam < 0.8, "lambda = {lam}");
+    // All roots of the equations, physical or not (run without the checks): two, sorted by size.
+    let all = solve_at(&mk(SlidingLoad::NormalLoad(q("1/10"))), &[], NodeRule { digits: 20.0, factor: 1.0 }, false, 128).unwrap();
+    assert_eq!(all.len(), 2);
+    assert!(all[0].l < all[1].l);
+    let lam2 = all[1].lambda.as_ref().unwrap().to_f64();
+    assert!(lam2 > 1.1 && lam2 < 1.4, "second root lambda = {lam2}");
+    // The larger root is not physical (negative pressure at the trailing end).
+    let e = solve_verified(&mk(SlidingLoad::HalfLength(float_to_exact(&all[1].l))), &[], 20).unwrap_err();
+    assert!(matches!(e, SlidingError::NotPhysical { .. }), "{e}");
+    // Above the physical range, and above the maximum of P2(lambda): errors stating the maximum.
+    for load in ["3/20", "1/5"] {
+        let e = solve_verified(&mk(SlidingLoad::NormalLoad(q(load))), &[], 20).unwrap_err();
+        match &e {
+            SlidingError::NoSolution { why, .. } => assert!(why.contains("at most P2 = 1.3"), "{e}"),
+            _ => panic!("{e}"),
+        }
+    }
+}

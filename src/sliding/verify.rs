@@ -60,20 +60,27 @@ pub fn solve_verified(problem: &SlidingProblem, points: &[Exact], digits: u32) -
     let d = digits as f64;
     let run1 = solve_at(problem, points, NodeRule { digits: d, factor: 1.0 }, true, prec)?;
     let run2 = solve_at(problem, points, NodeRule { digits: d, factor: 1.5 }, false, prec + VERIFY_EXTRA_BITS)?;
-    if run1.len() != run2.len() {
-        return Err(SlidingError::NoConvergence(format!(
-            "the two verification runs found {} and {} solutions",
-            run1.len(),
-            run2.len()
-        )));
-    }
+    // Run 2 skips the physicality checks, so it may list extra (non-physical) roots: each
+    // solution of run 1 is paired with the run-2 solution nearest in (l, c).
     let setup = Setup::new(problem, prec)?;
-    Ok(run1
-        .into_iter()
-        .zip(run2.iter())
-        .map(|(s1, s2)| {
-            let accuracy = compare(&setup, &s1, s2);
-            VerifiedSolution { solution: s1, accuracy }
-        })
-        .collect())
+    let mut out = vec![];
+    for s1 in run1 {
+        let dist = |s2: &SlidingSolution| -> f64 {
+            (Float::with_val(64, &s1.l - &s2.l).to_f64().abs() + Float::with_val(64, &s1.c - &s2.c).to_f64().abs()) / s1.l.to_f64()
+        };
+        let s2 = run2
+            .iter()
+            .min_by(|x, y| dist(x).partial_cmp(&dist(y)).unwrap_or(std::cmp::Ordering::Equal))
+            .ok_or_else(|| SlidingError::NoConvergence("the verification run found no solution".into()))?;
+        if dist(s2) > 1e-6 {
+            return Err(SlidingError::NoConvergence(format!(
+                "the verification run found no solution near l = {:.12} (nearest differs by {:.1e} relative)",
+                s1.l,
+                dist(s2)
+            )));
+        }
+        let accuracy = compare(&setup, &s1, s2);
+        out.push(VerifiedSolution { solution: s1, accuracy });
+    }
+    Ok(out)
 }
