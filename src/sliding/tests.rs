@@ -314,3 +314,74 @@ fn non_monotone_sinusoid() {
         }
     }
 }
+
+/// Independent check of the reduction [2.13]-[2.14] for theta != 0, tau0 > 0 on a periodic row:
+/// the pressure it returns satisfies the original equation [2.8]
+///     kappa p(x) + H[p](x) = (E*/2) g'(x) + beta tau0,  H[p] = (1/L) PV int p(xi) cot(pi (x - xi)/L) dxi,
+/// with H evaluated directly (no tangent map): PV int = int [p(xi) - p(x)] cot(...) dxi
+/// + p(x) (L/pi) ln|sin(pi (x + a)/L)/sin(pi (b - x)/L)|, the regular integral by tanh-sinh
+/// quadrature (step 1/64) in the linear variable (points off its nodes). Residuals ~1e-35.
+#[test]
+fn original_cot_kernel_equation_is_satisfied() {
+    let cases = [
+        problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10"))),
+        problem("0", "1", "1", PunchShape::sinusoidal(q("1/20")).unwrap(), "1/5", "1/100", "1/2", SlidingLoad::HalfLength(q("1/5"))),
+        problem("1/3", "1", "2", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "1", SlidingLoad::HalfLength(q("3/10"))),
+    ];
+    for pb in cases {
+        let prec = precision_for(30);
+        let sols = solve_at(&pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, prec).unwrap();
+        let s = &sols[0];
+        assert!(s.theta.to_f64().abs() > 0.01);
+        let setup = Setup::new(&pb, prec).unwrap();
+        let size = Size::new(&setup, s.lambda.as_ref().unwrap());
+        let contact = Contact::new(&setup, &size, s.c.clone());
+        let (a, b) = setup.inverse_weight_exponents();
+        let rule = gauss_jacobi(&a, &b, s.nodes, prec).unwrap();
+        let pr = Pressure::new(&setup, &contact, &rule);
+        let big_l = setup.period.clone().unwrap();
+        let pi = setup.pi.clone();
+        let lam = s.lambda.clone().unwrap();
+        let m = Float::with_val(prec, lam.tan_ref());
+        // p at x - c = l y (linear variable y in (-1, 1)).
+        let p_at = |y: &Float| -> Float {
+            let u = Float::with_val(prec, &lam * y).tan() / &m;
+            pr.p(&u)
+        };
+        let cot = |z: &Float| -> Float { Float::with_val(prec, z.tan_ref()).recip() };
+        let mut worst = 0.0f64;
+        for yx in ["-4/5", "-1/3", "1/7", "1/2", "9/10"] {
+            let yx = Float::with_val(prec, crate::numerics::exact::to_rational(&q(yx)));
+            let px = p_at(&yx);
+            // Regular part by tanh-sinh on y in (-1, 1).
+            let h = Float::with_val(prec, 1u32) / 64u32;
+            let mut sum = Float::with_val(prec, 0);
+            for k in -300i32..=300 {
+                let t = Float::with_val(prec, &h * k);
+                let sh = Float::with_val(prec, t.sinh_ref()) * &pi / 2u32;
+                let y = Float::with_val(prec, sh.tanh_ref());
+                let w = Float::with_val(prec, t.cosh_ref()) * &pi / 2u32 / Float::with_val(prec, sh.cosh_ref()).square();
+                if Float::with_val(prec, 1u32 - Float::with_val(prec, y.abs_ref())) < Float::with_val(53, 1e-35) || w.is_zero() {
+                    continue;
+                }
+                let dxi = Float::with_val(prec, &yx - &y) * &s.l; // x - xi
+                let arg = Float::with_val(prec, &pi * &dxi) / &big_l;
+                let f = (p_at(&y) - &px) * cot(&arg);
+                sum += f * w;
+            }
+            let regular = sum * &h * &s.l;
+            let x = Float::with_val(prec, &s.l * &yx) + &s.c;
+            let s1 = Float::with_val(prec, &pi * Float::with_val(prec, &x + &s.a)) / &big_l;
+            let s2 = Float::with_val(prec, &pi * Float::with_val(prec, &s.b - &x)) / &big_l;
+            let log = (Float::with_val(prec, s1.sin_ref()) / Float::with_val(prec, s2.sin_ref())).abs().ln();
+            let hp = (regular + Float::with_val(prec, &px * log) * &big_l / &pi) / &big_l;
+            let u = Float::with_val(prec, &lam * &yx).tan() / &m;
+            let rhs = contact.f(&setup, &u, prec) + Float::with_val(prec, &setup.beta * &setup.tau0);
+            let lhs = Float::with_val(prec, &setup.kappa * &px) + hp;
+            let scale = Float::with_val(prec, &setup.e_star * setup.osculating_k()) * &s.l;
+            let r = Float::with_val(64, Float::with_val(prec, &lhs - &rhs) / &scale).abs().to_f64();
+            worst = worst.max(r);
+        }
+        assert!(worst < 1e-30, "residual of [2.8] relative to E* k l: {worst:e}");
+    }
+}
