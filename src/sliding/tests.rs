@@ -385,3 +385,56 @@ fn original_cot_kernel_equation_is_satisfied() {
         assert!(worst < 1e-30, "residual of [2.8] relative to E* k l: {worst:e}");
     }
 }
+
+/// Independent check of the outside formula used by the gap check:
+/// (E*/2) v'(x) = H[p](x) = F(t) + beta tau0 - X(t) cos(pi theta) D(t)/pi for x outside the contact,
+/// against H[p] = (1/L) int p(xi) cot(pi (x - xi)/L) dxi by tanh-sinh (regular integrand).
+#[test]
+fn outside_displacement_formula() {
+    let pb = problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10")));
+    let prec = precision_for(30);
+    let s = solve_at(&pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, prec).unwrap().remove(0);
+    let setup = Setup::new(&pb, prec).unwrap();
+    let size = Size::new(&setup, s.lambda.as_ref().unwrap());
+    let contact = Contact::new(&setup, &size, s.c.clone());
+    let (a, b) = setup.inverse_weight_exponents();
+    let rule = gauss_jacobi(&a, &b, s.nodes, prec).unwrap();
+    let pr = Pressure::new(&setup, &contact, &rule);
+    let big_l = setup.period.clone().unwrap();
+    let pi = setup.pi.clone();
+    let lam = s.lambda.clone().unwrap();
+    let m = Float::with_val(prec, lam.tan_ref());
+    for off in ["13/10", "-3/2", "2"] {
+        // x - c = off * l (outside the contact, inside (-L/2, L/2) relative to c).
+        let xc = Float::with_val(prec, crate::numerics::exact::to_rational(&q(off))) * &s.l;
+        let h = Float::with_val(prec, 1u32) / 64u32;
+        let mut sum = Float::with_val(prec, 0);
+        for k in -300i32..=300 {
+            let t = Float::with_val(prec, &h * k);
+            let sh = Float::with_val(prec, t.sinh_ref()) * &pi / 2u32;
+            let y = Float::with_val(prec, sh.tanh_ref());
+            let w = Float::with_val(prec, t.cosh_ref()) * &pi / 2u32 / Float::with_val(prec, sh.cosh_ref()).square();
+            if Float::with_val(prec, 1u32 - Float::with_val(prec, y.abs_ref())) < Float::with_val(53, 1e-35) {
+                continue;
+            }
+            let u = Float::with_val(prec, &lam * &y).tan() / &m;
+            let arg = Float::with_val(prec, &xc - Float::with_val(prec, &y * &s.l)) * &pi / &big_l;
+            sum += pr.p(&u) * Float::with_val(prec, arg.tan_ref()).recip() * w;
+        }
+        let hp_direct = sum * &h * &s.l / &big_l;
+        // Formula: t = u(x), X(t) = sign(t)|t-1|^{1/2-theta}|t+1|^{1/2+theta}.
+        let t = size.u_of(&setup, &xc, prec);
+        let e1 = Float::with_val(prec, &setup.theta + 0.5f64);
+        let e2 = Float::with_val(prec, 0.5f64 - Float::with_val(prec, &setup.theta));
+        use rug::ops::Pow;
+        let mut xt = Float::with_val(prec, Float::with_val(prec, &t + 1u32).abs().pow(&e1)) * Float::with_val(prec, &t - 1u32).abs().pow(&e2);
+        if t.is_sign_negative() {
+            xt = -xt;
+        }
+        let hp_formula = contact.f(&setup, &t, prec) + Float::with_val(prec, &setup.beta * &setup.tau0)
+            - xt * pr.d(&t) * &setup.cos_pi_theta / &pi;
+        let scale = Float::with_val(prec, &setup.e_star * setup.osculating_k()) * &s.l;
+        let r = Float::with_val(64, (hp_direct - hp_formula) / scale).abs().to_f64();
+        assert!(r < 1e-25, "x - c = {off} l: relative difference {r:e}");
+    }
+}
