@@ -226,21 +226,27 @@ fn locate(problem: &SlidingProblem, p2: &Exact) -> Result<Vec<(f64, usize)>, Sli
             Ok(vec![(s, 0)])
         }
         (Shape::Sinusoidal { .. }, _) => {
-            let grid = 64;
+            // Both centre branches come from the same two integrals: evaluate them once per point.
+            let grid = 48;
+            let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
+            for i in 1..=grid {
+                let s = cap * i as f64 / grid as f64;
+                let n = bucket(nodes_for(s, LOCATE_DIGITS));
+                let b = branches(&setup, &Float::with_val(setup.prec, s), n)?;
+                for (br, curve) in curves.iter_mut().enumerate() {
+                    curve.push((s, b.get(br).map(|v| (v.p2.to_f64() - target) / target)));
+                }
+            }
             let mut found = vec![];
-            for br in 0..2 {
-                let mut prev: Option<(f64, f64)> = None;
-                for i in 1..=grid {
-                    let s = cap * i as f64 / grid as f64;
-                    let v = f(s, br)?;
-                    if let (Some((sp, fp)), Some(fv)) = (prev, v) {
+            for (br, curve) in curves.iter().enumerate() {
+                for w in curve.windows(2) {
+                    if let ((sp, Some(fp)), (s, Some(fv))) = (w[0], w[1]) {
                         if fp == 0.0 {
                             found.push((sp, br));
                         } else if (fp < 0.0) != (fv < 0.0) && fv != 0.0 {
                             found.push((illinois(|x| f(x, br), sp, fp, s, fv)?, br));
                         }
                     }
-                    prev = v.map(|fv| (s, fv));
                 }
             }
             found.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(std::cmp::Ordering::Equal));
@@ -361,6 +367,22 @@ pub fn solve_at(
     check: bool,
     prec: u32,
 ) -> Result<Vec<SlidingSolution>, SlidingError> {
+    Ok(solve_located(problem, points, nodes, check, prec, None)?.into_iter().map(|x| x.0).collect())
+}
+
+/// Low-precision estimate of a contact size (lambda, or l for a single punch) and its centre branch.
+pub type Located = (f64, usize);
+
+/// [`solve_at`] that can reuse the sizes located by an earlier run (`located`, for the inverse
+/// problem), and returns with each solution the located size it came from.
+pub fn solve_located(
+    problem: &SlidingProblem,
+    points: &[Exact],
+    nodes: NodeRule,
+    check: bool,
+    prec: u32,
+    located: Option<&[Located]>,
+) -> Result<Vec<(SlidingSolution, Located)>, SlidingError> {
     for x in points {
         let v = to_f64(x).unwrap_or(f64::NAN);
         if !(v > -1.0 && v < 1.0) {
@@ -381,7 +403,7 @@ pub fn solve_at(
         Ok((n as usize).div_ceil(4) * 4)
     };
     // Candidate (size, centre) pairs at working precision.
-    let mut cands: Vec<(Float, ShiftSolution, usize)> = vec![];
+    let mut cands: Vec<(Float, ShiftSolution, usize, Located)> = vec![];
     let sinusoid = matches!(setup.shape, Shape::Sinusoidal { .. });
     match &problem.load {
         SlidingLoad::HalfLength(l) => {
@@ -391,9 +413,9 @@ pub fn solve_at(
                 None => lf,
             };
             let n = n_for(lambda_of(&setup, s.to_f64()))?;
-            for b in branches(&setup, &s, n)? {
+            for (br, b) in branches(&setup, &s, n)?.into_iter().enumerate() {
                 if b.p2 > 0u32 {
-                    cands.push((s.clone(), b, n));
+                    cands.push((s.clone(), b, n, (s.to_f64(), br)));
                 }
             }
             if cands.is_empty() {
@@ -402,14 +424,17 @@ pub fn solve_at(
         }
         SlidingLoad::NormalLoad(p2) => {
             let p2f = to_float(p2, prec);
-            let found = locate(problem, p2)?;
+            let found = match located {
+                Some(v) => v.to_vec(),
+                None => locate(problem, p2)?,
+            };
             for (s0, br) in found {
                 let n = n_for(lambda_of(&setup, s0))?;
                 let s = refine(&setup, s0, br, &p2f, n)?;
                 let b = branches(&setup, &s, n)?;
                 let mut sol = b.get(br).cloned().ok_or_else(|| SlidingError::NoConvergence("centre branch lost".into()))?;
                 sol.p2 = p2f.clone();
-                cands.push((s, sol, n));
+                cands.push((s, sol, n, (s0, br)));
             }
             if cands.is_empty() {
                 let why = match sinusoid_max_physical_load(problem)? {
@@ -422,9 +447,9 @@ pub fn solve_at(
     }
     let mut out = vec![];
     let mut first_err = None;
-    for (s, sh, n) in cands {
+    for (s, sh, n, loc) in cands {
         match build(&setup, &s, sh, n, points, check) {
-            Ok(sol) => out.push(sol),
+            Ok(sol) => out.push((sol, loc)),
             Err(e @ SlidingError::NotPhysical { .. }) if sinusoid => {
                 first_err.get_or_insert(e);
             }
@@ -444,7 +469,7 @@ pub fn solve_at(
         }
         return Err(first_err.unwrap_or(SlidingError::NoConvergence("no solution".into())));
     }
-    out.sort_by(|x, y| x.l.partial_cmp(&y.l).unwrap_or(std::cmp::Ordering::Equal));
+    out.sort_by(|x, y| x.0.l.partial_cmp(&y.0.l).unwrap_or(std::cmp::Ordering::Equal));
     Ok(out)
 }
 

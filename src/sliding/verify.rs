@@ -6,7 +6,7 @@
 
 use super::setup::Setup;
 use super::solution::{Accuracy, SlidingSolution, VerifiedSolution};
-use super::solve::{solve_at, NodeRule};
+use super::solve::{solve_located, NodeRule};
 use super::error::SlidingError;
 use crate::model::{Exact, SlidingProblem};
 use rug::Float;
@@ -58,8 +58,15 @@ pub fn solve_verified(problem: &SlidingProblem, points: &[Exact], digits: u32) -
     }
     let prec = precision_for(digits);
     let d = digits as f64;
-    let run1 = solve_at(problem, points, NodeRule { digits: d, factor: 1.0 }, true, prec)?;
-    let run2 = solve_at(problem, points, NodeRule { digits: d, factor: 1.5 }, false, prec + VERIFY_EXTRA_BITS)?;
+    let run1 = solve_located(problem, points, NodeRule { digits: d, factor: 1.0 }, true, prec, None)?;
+    // Run 2 refines, independently at its own precision and rule, the sizes run 1 located.
+    let located: Vec<_> = run1.iter().map(|x| x.1).collect();
+    let run2: Vec<SlidingSolution> =
+        solve_located(problem, points, NodeRule { digits: d, factor: 1.5 }, false, prec + VERIFY_EXTRA_BITS, Some(&located))?
+            .into_iter()
+            .map(|x| x.0)
+            .collect();
+    let run1: Vec<SlidingSolution> = run1.into_iter().map(|x| x.0).collect();
     // Run 2 skips the physicality checks, so it may list extra (non-physical) roots: each
     // solution of run 1 is paired with the run-2 solution nearest in (l, c).
     let setup = Setup::new(problem, prec)?;
