@@ -438,3 +438,94 @@ fn outside_displacement_formula() {
         assert!(r < 1e-25, "x - c = {off} l: relative difference {r:e}");
     }
 }
+
+/// Edge cases of THEORY.md section 7 (exploration; `-- --ignored --nocapture`).
+#[test]
+#[ignore]
+fn explore_edge_cases() {
+    let cases: Vec<(&str, SlidingProblem)> = vec![
+        ("single, tiny load, tau0", problem("1/4", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "0", "1/100", "0", SlidingLoad::NormalLoad(q("1/1000000")))),
+        ("periodic, tiny load, tau0", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "1/100", "0", SlidingLoad::NormalLoad(q("1/1000000")))),
+        ("periodic, theta=0.49 (wear)", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "6000/37", SlidingLoad::NormalLoad(q("1/100")))),
+        ("periodic, theta=-0.45 (friction)", problem("0", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "63/5", "0", "0", SlidingLoad::NormalLoad(q("1/100")))),
+        ("periodic, lambda=1.4", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q("4456/10000")))),
+        ("periodic, lambda=1.5", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q("4775/10000")))),
+        ("periodic, lambda -> pi/2", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q("4999999/10000000")))),
+        ("periodic, huge load", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1000")))),
+        ("sinusoid, load above pi E* D", problem("1/2", "1", "1", PunchShape::sinusoidal(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("4")))),
+        ("sinusoid, wear theta=0.3", problem("1/2", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "11/2", SlidingLoad::NormalLoad(q("1/100")))),
+    ];
+    for (name, pb) in &cases {
+        let t = std::time::Instant::now();
+        match solve_verified(pb, &[q("0")], 30) {
+            Ok(v) => {
+                for s in &v {
+                    println!(
+                        "{name}: {:.0} ms, theta {:.4} lambda {:?} l {:.6e} c {:.6e} n {} digits {:.1}",
+                        t.elapsed().as_secs_f64() * 1e3,
+                        s.solution.theta.to_f64(),
+                        s.solution.lambda.as_ref().map(|x| x.to_f64()),
+                        s.solution.l.to_f64(),
+                        s.solution.c.to_f64(),
+                        s.solution.nodes,
+                        s.accuracy.digits_verified
+                    );
+                }
+            }
+            Err(e) => println!("{name}: {:.0} ms, error: {e}", t.elapsed().as_secs_f64() * 1e3),
+        }
+    }
+}
+
+/// Proof by computation of the convention note in `physical`: with the paper's summation and
+/// v' = g' - cW p, the gap does not close over a period. Outside the contact h' = g' - v'; its
+/// integral over the free interval (b, L - a) is
+///     M = (2/E*) beta P1 - cW P2,
+/// since int_period g' = 0, int_contact (g' - v') = cW P2 and int_period (E*/2) v' = -beta P1.
+/// `gap_slope` leaves out the step -2 beta tau0/E*, so it integrates to M + 2 beta tau0 (L - 2 l)/E*.
+#[test]
+fn paper_convention_gap_mismatch() {
+    let pb = problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10")));
+    let prec = precision_for(30);
+    let s = solve_at(&pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, prec).unwrap().remove(0);
+    let setup = Setup::new(&pb, prec).unwrap();
+    let size = Size::new(&setup, s.lambda.as_ref().unwrap());
+    let contact = Contact::new(&setup, &size, s.c.clone());
+    let (a, b) = setup.inverse_weight_exponents();
+    let rule = gauss_jacobi(&a, &b, s.nodes, prec).unwrap();
+    let pr = Pressure::new(&setup, &contact, &rule);
+    let big_l = setup.period.clone().unwrap();
+    let pi = setup.pi.clone();
+    // Over x - c in (l, L - l), split at the kink of the periodic parabola x = L/2, tanh-sinh on each.
+    let span = Float::with_val(prec, &big_l - Float::with_val(prec, &s.l * 2u32));
+    let kink = Float::with_val(prec, &big_l / 2u32) - &s.c;
+    let upper = Float::with_val(prec, &big_l - &s.l);
+    let h = Float::with_val(prec, 1u32) / 64u32;
+    let mut integral = Float::with_val(prec, 0);
+    for (lo, hi) in [(s.l.clone(), kink.clone()), (kink.clone(), upper)] {
+        let half = Float::with_val(prec, &hi - &lo) / 2u32;
+        let mid = Float::with_val(prec, &hi + &lo) / 2u32;
+        let mut sum = Float::with_val(prec, 0);
+        for k in -300i32..=300 {
+            let t = Float::with_val(prec, &h * k);
+            let sh = Float::with_val(prec, t.sinh_ref()) * &pi / 2u32;
+            let y = Float::with_val(prec, sh.tanh_ref());
+            let w = Float::with_val(prec, t.cosh_ref()) * &pi / 2u32 / Float::with_val(prec, sh.cosh_ref()).square();
+            if Float::with_val(prec, 1u32 - Float::with_val(prec, y.abs_ref())) < Float::with_val(53, 1e-35) {
+                continue;
+            }
+            let xc = Float::with_val(prec, &half * &y) + &mid;
+            sum += pr.gap_slope(&xc) * w;
+        }
+        integral += sum * &h * &half;
+    }
+    let beta = setup.beta.clone();
+    let m = Float::with_val(prec, &beta * &s.p1) * 2u32 / &setup.e_star - Float::with_val(prec, &setup.wear * &s.p2);
+    let step = Float::with_val(prec, &beta * &setup.tau0) * 2u32 * &span / &setup.e_star;
+    let expect = m + step;
+    let r = Float::with_val(64, Float::with_val(prec, &integral - &expect) / &expect).abs().to_f64();
+    assert!(r < 1e-20, "mismatch {} vs predicted {}: relative {r:e} (beta P1 term {}, wear term {}, step {})", integral, expect,
+        Float::with_val(prec, &beta * &s.p1) * 2u32 / &setup.e_star, Float::with_val(prec, &setup.wear * &s.p2),
+        Float::with_val(prec, &beta * &setup.tau0) * 2u32 * &span / &setup.e_star);
+    assert!(expect.to_f64().abs() > 1e-3, "the mismatch is not small");
+}
