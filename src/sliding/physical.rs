@@ -104,9 +104,15 @@ pub fn check_gap(setup: &Setup, contact: &Contact, pressure: &Pressure<'_>) -> R
                 let xc = Float::with_val(p, &delta * Float::with_val(p, (&s1).pow(4u32))) + l;
                 return Err(SlidingError::NotPhysical {
                     why: format!(
-                        "negative gap h = {hv:.3e} at x = c {} {} (the punch overlaps the surface outside the contact)",
+                        "negative gap h = {hv:.3e} at x = c {} {:.8} (the punch overlaps the surface outside the contact, gap integrated from the {} end){}",
                         if side > 0 { "+" } else { "-" },
-                        format!("{:.8}", xc)
+                        xc,
+                        if side > 0 { "leading" } else { "trailing" },
+                        if setup.period.is_some() && i >= n / 2 {
+                            "; far from the contact this depends on the paper's convention, whose surface does not close over a period (mismatch 2 beta P1/E* - cW P2), see sliding::physical"
+                        } else {
+                            ""
+                        }
                     ),
                 });
             }

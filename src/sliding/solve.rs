@@ -192,7 +192,7 @@ fn locate(problem: &SlidingProblem, p2: &Exact) -> Result<Vec<(f64, usize)>, Sli
                         return Err(SlidingError::NoSolution {
                             load: p2.to_string(),
                             why: format!(
-                                "the contact would exceed lambda = {cap:.4} (about {} nodes for {} digits); the load is too large for this method",
+                                "the contact would exceed lambda = pi l/L = {cap:.4} (about {} nodes for {} digits; the periodic parabola also needs the contact inside (-L/2, L/2)); the load is too large for this method",
                                 LOCATE_NODES, LOCATE_DIGITS
                             ),
                         });
