@@ -24,7 +24,7 @@
 //! with singularities at u = +-i/m, so the error behaves like tan(lambda/2)^{2n}.
 
 use super::contact::Size;
-use super::setup::{Setup, Shape};
+use super::setup::{Convention, Setup, Shape};
 use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
 use rug::Float;
 
@@ -107,9 +107,21 @@ pub struct ShiftSolution {
 /// A = Q im0, B = Q im1, Q = 2 pi D/L: phi = asin(-beta tau0/R) - psi or pi - asin(-beta tau0/R) - psi,
 /// R = hypot(A, B), psi = atan2(B, A); the first (principal) branch continues the frictionless
 /// phi = 0. Empty when R < beta tau0.
-pub fn shift_solutions(setup: &Setup, terms: &EquationTerms) -> Vec<ShiftSolution> {
+///
+/// With [`Convention::PeriodicSurface`] the residual gains K = (kappa P2 - 2 beta l tau0)/L with
+/// P2 = sum_j q_j re_j, i.e. im_j -> im_j + kappa re_j/L and beta tau0 -> beta tau0 (1 - 2 l/L).
+pub fn shift_solutions(setup: &Setup, size: &Size, terms: &EquationTerms) -> Vec<ShiftSolution> {
     let p = setup.prec;
-    let bt = Float::with_val(p, &setup.beta * &setup.tau0);
+    let mut bt = Float::with_val(p, &setup.beta * &setup.tau0);
+    let mut terms = terms.clone();
+    if let (Convention::PeriodicSurface, Some(big_l)) = (setup.convention, &setup.period) {
+        for j in 0..2 {
+            terms.im[j] += Float::with_val(p, &setup.kappa * &terms.re[j]) / big_l;
+        }
+        let f = 1u32 - Float::with_val(p, &size.l * 2u32) / big_l;
+        bt *= f;
+    }
+    let terms = &terms;
     match &setup.shape {
         Shape::Parabolic { k } => {
             let num = Float::with_val(p, k * &terms.im[1]) * 2u32 + &bt;

@@ -36,7 +36,8 @@ pub mod verify;
 pub use error::SlidingError;
 pub use solution::{Accuracy, PressurePoint, SlidingSolution, VerifiedSolution};
 pub use solve::{solve_at, NodeRule};
-pub use verify::{precision_for, solve_verified};
+pub use setup::Convention;
+pub use verify::{precision_for, solve_verified, solve_verified_with};
 
 #[cfg(test)]
 mod tests;

@@ -108,7 +108,7 @@ pub fn check_gap(setup: &Setup, contact: &Contact, pressure: &Pressure<'_>) -> R
                         if side > 0 { "+" } else { "-" },
                         xc,
                         if side > 0 { "leading" } else { "trailing" },
-                        if setup.period.is_some() && i >= n / 2 {
+                        if setup.period.is_some() && setup.convention == super::setup::Convention::Paper && i >= n / 2 {
                             "; far from the contact this depends on the paper's convention, whose surface does not close over a period (mismatch 2 beta P1/E* - cW P2), see sliding::physical"
                         } else {
                             ""

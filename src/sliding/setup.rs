@@ -24,6 +24,26 @@ pub enum Shape {
     },
 }
 
+/// Which constant the surface relations carry on a periodic row (THEORY.md section 2).
+///
+/// The paper's symmetric summation of Flamant's solutions [1.6]-[1.8] with the wear law
+/// v' = g' - cW p leaves a surface that does not close over a period: the gap h = g - delta - v
+/// (+ wear) gains M = (2/E*) beta P1 - cW P2 per period (proved numerically by the test
+/// `paper_convention_gap_mismatch`). Requiring a periodic surface (mean of v' zero; mean wear slope
+/// cW P2/L in the co-descending frame, w' = cW (P2/L - p)) changes [2.8] to
+///     kappa p + H[p] = (E*/2) g' + beta tau0 + K,   K = (kappa P2 - 2 beta l tau0)/L   [reconstructed],
+/// i.e. beta tau0 -> beta tau0 + K in [2.14]. K -> 0 for a single punch and vanishes when kappa = 0
+/// and tau0 = 0; it is odd in lambda (K/(E* k l) ~ kappa lambda/2), so the paper's expansions in
+/// even powers of lambda belong to [`Convention::Paper`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Convention {
+    /// The paper's (THEORY.md's) convention: no constant K. The default.
+    #[default]
+    Paper,
+    /// The periodic-surface model: the constant K above.
+    PeriodicSurface,
+}
+
 /// Every input of Problem 1 rounded once to `prec` bits, plus the derived constants.
 #[derive(Debug, Clone)]
 pub struct Setup {
@@ -53,12 +73,19 @@ pub struct Setup {
     pub shape: Shape,
     /// pi.
     pub pi: Float,
+    /// Surface convention (periodic rows only).
+    pub convention: Convention,
 }
 
 impl Setup {
     /// Rounds the exact inputs of `problem` once to `prec` bits and derives kappa and theta.
     /// Errors when |theta| is within [`THETA_MARGIN`] of 1/2.
     pub fn new(problem: &SlidingProblem, prec: u32) -> Result<Self, SlidingError> {
+        Self::with_convention(problem, prec, Convention::Paper)
+    }
+
+    /// As [`Setup::new`], with the surface convention `convention`.
+    pub fn with_convention(problem: &SlidingProblem, prec: u32, convention: Convention) -> Result<Self, SlidingError> {
         let pi = Float::with_val(prec, Constant::Pi);
         let kappa = to_float(&problem.kappa(), prec);
         let theta = Float::with_val(prec, kappa.atan_ref()) / &pi;
@@ -93,6 +120,7 @@ impl Setup {
             period,
             shape,
             pi,
+            convention,
         })
     }
 

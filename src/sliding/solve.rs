@@ -14,7 +14,7 @@ use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
 use super::physical::{check_gap, check_pressure};
 use super::pressure::Pressure;
-use super::setup::{Setup, Shape};
+use super::setup::{Convention, Setup, Shape};
 use super::solution::{PressurePoint, SlidingSolution};
 use crate::model::{Exact, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::{to_f64, to_float};
@@ -99,7 +99,7 @@ fn lambda_of(setup: &Setup, s: f64) -> f64 {
 fn branches(setup: &Setup, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
     let rule = inverse_rule(setup, n)?;
     let size = Size::new(setup, s);
-    Ok(shift_solutions(setup, &equation_terms(setup, &size, &rule)))
+    Ok(shift_solutions(setup, &size, &equation_terms(setup, &size, &rule)))
 }
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).
@@ -150,8 +150,8 @@ fn illinois(
 }
 
 /// Contact sizes (with their centre branch) carrying the load `p2` (low precision), sorted by size.
-fn locate(problem: &SlidingProblem, p2: &Exact) -> Result<Vec<(f64, usize)>, SlidingError> {
-    let setup = Setup::new(problem, LOCATE_PREC)?;
+fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Result<Vec<(f64, usize)>, SlidingError> {
+    let setup = Setup::with_convention(problem, LOCATE_PREC, convention)?;
     let target = to_f64(p2).ok_or_else(|| SlidingError::parameter("normal_load", p2, "must be a finite number"))?;
     let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
     let f = |s: f64, br: usize| -> Result<Option<f64>, SlidingError> {
@@ -257,8 +257,8 @@ fn locate(problem: &SlidingProblem, p2: &Exact) -> Result<Vec<(f64, usize)>, Sli
 
 /// The largest load on a physical solution of the sinusoid (low precision, for error messages):
 /// (P2_max, lambda) over a 64-point scan of both branches, refined by golden-section search.
-pub fn sinusoid_max_physical_load(problem: &SlidingProblem) -> Result<Option<(f64, f64)>, SlidingError> {
-    let setup = Setup::new(problem, LOCATE_PREC)?;
+pub fn sinusoid_max_physical_load(problem: &SlidingProblem, convention: Convention) -> Result<Option<(f64, f64)>, SlidingError> {
+    let setup = Setup::with_convention(problem, LOCATE_PREC, convention)?;
     let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
     let grid = 64;
     let mut best: Option<(f64, f64, usize)> = None;
@@ -367,7 +367,7 @@ pub fn solve_at(
     check: bool,
     prec: u32,
 ) -> Result<Vec<SlidingSolution>, SlidingError> {
-    Ok(solve_located(problem, points, nodes, check, prec, None)?.into_iter().map(|x| x.0).collect())
+    Ok(solve_located(problem, points, nodes, check, prec, None, Convention::Paper)?.into_iter().map(|x| x.0).collect())
 }
 
 /// Low-precision estimate of a contact size (lambda, or l for a single punch) and its centre branch.
@@ -382,6 +382,7 @@ pub fn solve_located(
     check: bool,
     prec: u32,
     located: Option<&[Located]>,
+    convention: Convention,
 ) -> Result<Vec<(SlidingSolution, Located)>, SlidingError> {
     for x in points {
         let v = to_f64(x).unwrap_or(f64::NAN);
@@ -389,7 +390,7 @@ pub fn solve_located(
             return Err(SlidingError::parameter("points", x, "each point xh = (x - c)/l must lie in (-1, 1)"));
         }
     }
-    let setup = Setup::new(problem, prec)?;
+    let setup = Setup::with_convention(problem, prec, convention)?;
     let n_for = |lam: f64| -> Result<usize, SlidingError> {
         let n0 = nodes_for(lam, nodes.digits);
         let n = (n0 as f64 * nodes.factor).ceil();
@@ -426,7 +427,7 @@ pub fn solve_located(
             let p2f = to_float(p2, prec);
             let found = match located {
                 Some(v) => v.to_vec(),
-                None => locate(problem, p2)?,
+                None => locate(problem, p2, convention)?,
             };
             for (s0, br) in found {
                 let n = n_for(lambda_of(&setup, s0))?;
@@ -437,7 +438,7 @@ pub fn solve_located(
                 cands.push((s, sol, n, (s0, br)));
             }
             if cands.is_empty() {
-                let why = match sinusoid_max_physical_load(problem)? {
+                let why = match sinusoid_max_physical_load(problem, convention)? {
                     Some((v, lam)) => format!("the sinusoid carries at most P2 = {v:.6e} (at lambda = {lam:.4}) at these friction and wear values"),
                     None => "no physical contact exists at these friction and wear values".into(),
                 };
@@ -458,7 +459,7 @@ pub fn solve_located(
     }
     if out.is_empty() {
         if let (SlidingLoad::NormalLoad(p2), true) = (&problem.load, sinusoid) {
-            let why = match sinusoid_max_physical_load(problem)? {
+            let why = match sinusoid_max_physical_load(problem, convention)? {
                 Some((v, lam)) => format!(
                     "the solutions of the equations are not physical ({}); the sinusoid carries at most P2 = {v:.6e} (at lambda = {lam:.4}) at these friction and wear values",
                     first_err.map(|e| e.to_string()).unwrap_or_default()

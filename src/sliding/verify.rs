@@ -4,7 +4,7 @@
 //! l for a, b, c; max p for p(x); P2 for P1 and P2; k l P2 for F_def (for the sinusoid the
 //! osculating k = 2 pi^2 D/L^2). The headline is the minimum.
 
-use super::setup::Setup;
+use super::setup::{Convention, Setup};
 use super::solution::{Accuracy, SlidingSolution, VerifiedSolution};
 use super::solve::{solve_located, NodeRule};
 use super::error::SlidingError;
@@ -53,16 +53,26 @@ pub fn compare(setup: &Setup, s1: &SlidingSolution, s2: &SlidingSolution) -> Acc
 /// bits with the error-model node count, run 2 with [`VERIFY_EXTRA_BITS`] more bits and 1.5x the
 /// nodes. Returns every physical solution (smallest contact first) with its accuracy.
 pub fn solve_verified(problem: &SlidingProblem, points: &[Exact], digits: u32) -> Result<Vec<VerifiedSolution>, SlidingError> {
+    solve_verified_with(problem, points, digits, Convention::Paper)
+}
+
+/// [`solve_verified`] with the surface convention `convention` (see [`Convention`]).
+pub fn solve_verified_with(
+    problem: &SlidingProblem,
+    points: &[Exact],
+    digits: u32,
+    convention: Convention,
+) -> Result<Vec<VerifiedSolution>, SlidingError> {
     if digits == 0 || digits > 2000 {
         return Err(SlidingError::parameter("digits", digits, "must lie in 1..=2000"));
     }
     let prec = precision_for(digits);
     let d = digits as f64;
-    let run1 = solve_located(problem, points, NodeRule { digits: d, factor: 1.0 }, true, prec, None)?;
+    let run1 = solve_located(problem, points, NodeRule { digits: d, factor: 1.0 }, true, prec, None, convention)?;
     // Run 2 refines, independently at its own precision and rule, the sizes run 1 located.
     let located: Vec<_> = run1.iter().map(|x| x.1).collect();
     let run2: Vec<SlidingSolution> =
-        solve_located(problem, points, NodeRule { digits: d, factor: 1.5 }, false, prec + VERIFY_EXTRA_BITS, Some(&located))?
+        solve_located(problem, points, NodeRule { digits: d, factor: 1.5 }, false, prec + VERIFY_EXTRA_BITS, Some(&located), convention)?
             .into_iter()
             .map(|x| x.0)
             .collect();
