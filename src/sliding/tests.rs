@@ -257,12 +257,13 @@ fn timing() {
 #[test]
 #[ignore]
 fn explore_sinusoid_load_curve() {
+    let convention = if std::env::var("PERIODIC_SURFACE").is_ok() { Convention::PeriodicSurface } else { Convention::Paper };
     for (mu, cw, tau0) in [("0", "0", "0"), ("1/5", "1/10", "1/100"), ("0", "1", "0"), ("1", "0", "0"), ("0", "0", "1/20")] {
-        println!("mu = {mu}, cW = {cw}, tau0 = {tau0}");
+        println!("{convention:?}: mu = {mu}, cW = {cw}, tau0 = {tau0}");
         for i in 1..=30 {
             let l = format!("{}/62", i);
             let pb = problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), mu, tau0, cw, SlidingLoad::HalfLength(q(&l)));
-            let setup = Setup::new(&pb, 64).unwrap();
+            let setup = Setup::with_convention(&pb, 64, convention).unwrap();
             let lam = Float::with_val(64, std::f64::consts::PI * i as f64 / 62.0);
             let size = Size::new(&setup, &lam);
             let n = super::solve::nodes_for(lam.to_f64(), 16.0);
@@ -542,4 +543,20 @@ fn paper_convention_gap_mismatch() {
             assert!(m.to_f64().abs() > 1e-3, "the mismatch is not small");
         }
     }
+}
+
+/// With `Convention::PeriodicSurface` the sinusoid with friction (theta = -0.102, tau0 = 0) has a
+/// monotone, physical load curve (charted with `PERIODIC_SURFACE=1 ... explore_sinusoid_load_curve`):
+/// P2 = 1/5, beyond the paper-convention maximum (~0.162), has exactly one physical solution. Without
+/// friction, wear and tau0 (K = 0) both conventions give the same contact.
+#[test]
+fn periodic_surface_convention() {
+    let mk = |mu: &str, load: &str| problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), mu, "0", "0", SlidingLoad::NormalLoad(q(load)));
+    let v = solve_verified_with(&mk("1", "1/5"), &[q("0")], 30, Convention::PeriodicSurface).unwrap();
+    assert_eq!(v.len(), 1);
+    assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
+    assert!(solve_verified(&mk("1", "1/5"), &[], 20).is_err());
+    let a = &solve_verified_with(&mk("0", "1/10"), &[], 30, Convention::PeriodicSurface).unwrap()[0].solution;
+    let b = &solve_verified(&mk("0", "1/10"), &[], 30).unwrap()[0].solution;
+    assert!(digits(&a.l, &b.l, &a.l) >= 30.0);
 }
