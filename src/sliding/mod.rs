@@ -16,12 +16,23 @@
 //! ([2.14] and the centre), `pressure` ([2.13], gap slope, integrals of p), `physical` (p >= 0,
 //! gap >= 0), `solve` (locating and refining the contact), `verify` (two runs), `solution`, `error`.
 //!
-//! Conventions kept from THEORY.md (paper's symmetric summation). Two consequences found here and
-//! documented in [`physical`]: with tau0 > 0 the step of q1 at the contact ends puts a slope
-//! -2 beta tau0/E* into the gap just outside the leading edge (so the strict gap >= 0 fails for
-//! every tau0 > 0 and beta > 0; the check leaves that term out), and v is not periodic (mean of
-//! (E*/2) v' over a period is -beta P1/L; a periodic v would add (kappa P2 - 2 beta l tau0)/L to the
-//! right side of [2.8], an odd-in-lambda change of c). See the report of the branch `sliding-mpfr`.
+//! Conventions. By default the paper's (THEORY.md's) convention is used. Two consequences found
+//! here (derivations in [`setup::Convention`] and [`physical`], numerical proofs in the tests
+//! `paper_convention_gap_mismatch`, `outside_displacement_formula`):
+//! - with tau0 > 0 the step of q1 at the contact ends puts a slope -2 beta tau0/E* into the gap just
+//!   outside the leading edge, so the strict gap >= 0 fails there for every tau0 > 0, beta > 0; the
+//!   physicality check leaves that term out;
+//! - the surface does not close over a period: the gap gains M = (2/E*) beta P1 - cW P2 per period.
+//!   The opt-in [`Convention::PeriodicSurface`] adds K = (kappa P2 - 2 beta l tau0)/L to the right
+//!   side of [2.8], which closes it (M = 0, checked to 1e-20). Under it the sinusoid's load curve
+//!   with friction or wear (tau0 = 0) is monotone and physical up to lambda ~ 1.52 (charted), while
+//!   under the paper's convention it is not monotone and loses physicality (gap, then p at the
+//!   trailing end) before its maximum.
+//!
+//! Independent checks (tests): closed forms of THEORY.md section 6 (Kuznetsov, Westergaard, Hertz)
+//! to 30-40 digits; single-punch limit [3.10]; the returned p satisfies the original cot-kernel
+//! equation [2.8] to ~1e-35 (direct tanh-sinh quadrature, no tangent map); P2 = int p dx by a
+//! separate rule; direct vs inverse problem.
 
 pub mod contact;
 pub mod equation;

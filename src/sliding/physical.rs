@@ -16,7 +16,8 @@
 //! uniform slope instead was tried and rejected: any uniform slope makes h < 0 next to one end,
 //! where h ~ (x - b)^{3/2 - theta}. A self-consistent periodic model would add
 //! K = (kappa P2 - 2 beta l tau0)/L to the right side of [2.8] (it shifts c by an odd power of
-//! lambda); not done here because THEORY.md keeps the paper's convention.
+//! lambda); available as the opt-in [`super::setup::Convention::PeriodicSurface`], under which the
+//! two halves meet (THEORY.md keeps the paper's convention, the default).
 //! Points x = b + Delta s^4 (and L - a - Delta s^4) cluster at the ends; cumulative Simpson in s
 //! with 16 panels.
 

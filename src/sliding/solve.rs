@@ -127,7 +127,8 @@ fn illinois(
             Some(v) => v,
             None => return Err(SlidingError::NoConvergence(format!("the load curve has a gap at size {x}"))),
         };
-        if fx == 0.0 || (hi - lo).abs() <= 4.0 * f64::EPSILON * x.abs() {
+        // f is a relative load residual evaluated to ~16 digits: 1e-15 is at its noise level.
+        if fx.abs() <= 1e-15 || (hi - lo).abs() <= 4.0 * f64::EPSILON * x.abs() {
             return Ok(x);
         }
         if (fx > 0.0) == (fhi > 0.0) {
@@ -176,6 +177,10 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
             };
             let f0 = f(s0, 0)?.unwrap_or(f64::NAN);
             let (mut lo, mut flo, mut hi, mut fhi);
+            let mut step = 1e-4 * s0;
+            if f0.abs() <= 1e-15 {
+                return Ok(vec![(s0, 0)]);
+            }
             if f0 < 0.0 {
                 lo = s0;
                 flo = f0;
@@ -185,7 +190,9 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                 while fhi < 0.0 {
                     lo = hi;
                     flo = fhi;
-                    hi = if smax.is_finite() { hi + 0.5 * (smax - hi) } else { hi * 2.0 };
+                    // Geometric steps from the estimate (good to O(lambda^2)), capped by smax.
+                    step *= 8.0;
+                    hi = if smax.is_finite() { (hi + step).min(hi + 0.5 * (smax - hi)) } else { hi + step };
                     fhi = f(hi, 0)?.unwrap_or(f64::NAN);
                     tries += 1;
                     if tries > 60 || (smax.is_finite() && smax - hi < 1e-12) {
@@ -207,14 +214,15 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                 while flo > 0.0 {
                     hi = lo;
                     fhi = flo;
-                    lo *= 0.5;
+                    step *= 8.0;
+                    lo = (lo - step).max(lo * 0.5);
                     flo = f(lo, 0)?.unwrap_or(f64::NAN);
                     tries += 1;
                     if tries > 2000 {
                         return Err(SlidingError::NoConvergence("no lower bracket for the contact size".into()));
                     }
                 }
-            } else if f0 == 0.0 {
+            } else if f0.abs() <= 1e-15 {
                 return Ok(vec![(s0, 0)]);
             } else {
                 return Err(SlidingError::NoConvergence(format!("load not computable at size {s0}")));
