@@ -86,6 +86,30 @@ impl Setup {
 
     /// As [`Setup::new`], with the surface convention `convention`.
     pub fn with_convention(problem: &SlidingProblem, prec: u32, convention: Convention) -> Result<Self, SlidingError> {
+        // The problem's fields are public: re-validate, so that no input can reach a panic or NaN.
+        let m = &problem.material;
+        crate::model::Material::from_contact_modulus(m.poisson_ratio.clone(), m.contact_modulus.clone())
+            .and_then(|_| match &problem.shape {
+                PunchShape::Parabolic { k } => PunchShape::parabolic(k.clone()),
+                PunchShape::Sinusoidal { amplitude } => PunchShape::sinusoidal(amplitude.clone()),
+            })
+            .and_then(|_| match &problem.period {
+                Period::Finite(l) => Period::finite(l.clone()).map(|_| ()),
+                Period::Infinite => Ok(()),
+            })
+            .and_then(|_| {
+                SlidingProblem::new(
+                    problem.material.clone(),
+                    problem.period.clone(),
+                    problem.shape.clone(),
+                    problem.friction.clone(),
+                    problem.adhesive_friction.clone(),
+                    problem.wear.clone(),
+                    problem.speed.clone(),
+                    problem.load.clone(),
+                )
+            })
+            .map_err(|e| SlidingError::Parameter { parameter: e.parameter, value: e.value, expected: e.expected })?;
         let pi = Float::with_val(prec, Constant::Pi);
         let kappa = to_float(&problem.kappa(), prec);
         let theta = Float::with_val(prec, kappa.atan_ref()) / &pi;

@@ -392,9 +392,9 @@ pub fn solve_located(
     located: Option<&[Located]>,
     convention: Convention,
 ) -> Result<Vec<(SlidingSolution, Located)>, SlidingError> {
+    let one = Exact::from_integer(1.into());
     for x in points {
-        let v = to_f64(x).unwrap_or(f64::NAN);
-        if !(v > -1.0 && v < 1.0) {
+        if !(x > &-one.clone() && x < &one) {
             return Err(SlidingError::parameter("points", x, "each point xh = (x - c)/l must lie in (-1, 1)"));
         }
     }

@@ -211,6 +211,17 @@ fn theta_too_close_to_one_half_and_bad_points_are_errors() {
     let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/100")));
     let e = solve_verified(&pb, &[q("1")], 20).unwrap_err();
     assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter == "points"), "{e}");
+    // A point that rounds to 1 in f64 is still inside (-1, 1): compared exactly.
+    assert!(solve_verified(&pb, &[q("99999999999999999999/100000000000000000000")], 20).is_ok());
+    // Fields are public: a problem built without the model's validation is an error, not a panic.
+    let mut bad = pb.clone();
+    bad.shape = PunchShape::Sinusoidal { amplitude: q("1") };
+    bad.period = Period::Infinite;
+    let e = solve_verified(&bad, &[], 20).unwrap_err();
+    assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter == "period"), "{e}");
+    let mut bad = pb.clone();
+    bad.shape = PunchShape::Parabolic { k: q("-1") };
+    assert!(matches!(solve_verified(&bad, &[], 20), Err(SlidingError::Parameter { .. })));
 }
 
 /// Timings of `solve_verified` at 30 digits (first call builds the rules, later calls reuse them).
