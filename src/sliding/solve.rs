@@ -438,6 +438,20 @@ pub fn solve_located(
                 None => locate(problem, p2, convention)?,
             };
             for (s0, br) in found {
+                // Sinusoid: screen the roots for physicality at the locating precision first, so
+                // that non-physical roots (e.g. on the falling part of P2(lambda)) are not refined
+                // at full precision. A root within the checks' tolerance of the physical boundary
+                // could be misjudged here; such roots sit at the end of the physical range.
+                if sinusoid && check && located.is_none() {
+                    let lo = Setup::with_convention(problem, LOCATE_PREC, convention)?;
+                    let n_lo = bucket(nodes_for(lambda_of(&lo, s0), LOCATE_DIGITS));
+                    let s_lo = Float::with_val(LOCATE_PREC, s0);
+                    if let Some(sol) = branches(&lo, &s_lo, n_lo)?.get(br) {
+                        if physical_at(&lo, &s_lo, sol, n_lo).is_err() {
+                            continue;
+                        }
+                    }
+                }
                 let n = n_for(lambda_of(&setup, s0))?;
                 let s = refine(&setup, s0, br, &p2f, n)?;
                 let b = branches(&setup, &s, n)?;
@@ -548,4 +562,9 @@ fn build(setup: &Setup, s: &Float, sh: ShiftSolution, n: usize, points: &[Exact]
         nodes: n,
         prec: p,
     })
+}
+
+#[cfg(test)]
+pub(crate) fn locate_for_profile(problem: &SlidingProblem, p2: &Exact) -> Vec<Located> {
+    locate(problem, p2, Convention::Paper).unwrap()
 }

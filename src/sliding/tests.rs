@@ -236,6 +236,8 @@ fn timing() {
         ("parabola single, mu, cW, tau0", problem("1/4", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1")))),
         ("sinusoid, theta=0, P2=1/5", problem("1/2", "2", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/5")))),
         ("sinusoid, mu, cW, tau0, l=1/4", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::HalfLength(q("1/4")))),
+        ("parabola periodic, mu, cW, P2=1/5 (lambda~1)", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("1/5")))),
+        ("sinusoid, mu=1/5, cW=1/10, P2=17/100 (lambda~0.9)", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("17/100")))),
         ("sinusoid, mu, cW, tau0, P2=1/10", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/10")))),
     ];
     let pts = [q("-1/2"), q("0"), q("1/2")];
@@ -570,4 +572,20 @@ fn periodic_surface_convention() {
     let a = &solve_verified_with(&mk("0", "1/10"), &[], 30, Convention::PeriodicSurface).unwrap()[0].solution;
     let b = &solve_verified(&mk("0", "1/10"), &[], 30).unwrap()[0].solution;
     assert!(digits(&a.l, &b.l, &a.l) >= 30.0);
+}
+
+#[test]
+#[ignore]
+fn profile_phases() {
+    let pb = problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("17/100")));
+    let _ = solve_verified(&pb, &[q("0")], 30);
+    let t = std::time::Instant::now();
+    let found = super::solve::locate_for_profile(&pb, &q("17/100"));
+    println!("locate: {:.1} ms -> {:?}", t.elapsed().as_secs_f64() * 1e3, found);
+    let t = std::time::Instant::now();
+    let r = super::solve::solve_located(&pb, &[q("0")], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30), Some(&found), Convention::Paper);
+    println!("run 1 given located: {:.1} ms ({} ok)", t.elapsed().as_secs_f64() * 1e3, r.map(|v| v.len()).unwrap_or(0));
+    let t = std::time::Instant::now();
+    let r = super::solve::solve_located(&pb, &[q("0")], NodeRule { digits: 30.0, factor: 1.5 }, false, precision_for(30) + 32, Some(&found[..1]), Convention::Paper);
+    println!("run 2 given located: {:.1} ms ({} ok)", t.elapsed().as_secs_f64() * 1e3, r.map(|v| v.len()).unwrap_or(0));
 }
