@@ -14,7 +14,8 @@
 //! 2. f64 eigenvalues of the Jacobi matrix (implicit QL) as initial guesses;
 //! 3. Newton on $p_n$ evaluated by the recurrence at `prec + GUARD_BITS` bits, with precision
 //!    doubling from the f64 start;
-//! 4. Christoffel weights $w_i = \mu_0 / \sum_{k<n} p_k(u_i)^2$ ($p_0 = 1$),
+//! 4. Christoffel weights $w_i = \mu_0 / \sum_{k<n} p_k(u_i)^2$ ($p_0 = 1$), the sum taken from the
+//!    last Newton pass by Christoffel–Darboux, $\sum_{k<n} p_k^2 = b_n p_n'(u_i) p_{n-1}(u_i)$ (DLMF 18.2.12),
 //!    $\mu_0 = 2^{\alpha+\beta+1}\Gamma(\alpha+1)\Gamma(\beta+1)/\Gamma(\alpha+\beta+2)$.
 //!
 //! Nodes and weights are correct to about `prec` bits (tests check moments and orthogonality at
@@ -244,8 +245,8 @@ impl Eval {
         }
     }
 
-    /// p_n(x), p_n'(x) (p_0 = 1) and, if `sum`, sum_{k<n} p_k(x)^2.
-    fn run(&self, x: &Float, n: usize, prec: u32, want_sum: bool) -> (Float, Float, Float) {
+    /// p_n(x), p_n'(x), p_{n-1}(x) (p_0 = 1) and, if `want_sum`, sum_{k<n} p_k(x)^2.
+    fn run(&self, x: &Float, n: usize, prec: u32, want_sum: bool) -> (Float, Float, Float, Float) {
         let mut pm = Float::with_val(prec, 0);
         let mut p = Float::with_val(prec, 1);
         let mut dpm = Float::with_val(prec, 0);
@@ -269,7 +270,7 @@ impl Eval {
             std::mem::swap(&mut dpm, &mut dp);
             std::mem::swap(&mut dp, &mut dt);
         }
-        (p, dp, sum)
+        (p, dp, pm, sum)
     }
 }
 
@@ -317,9 +318,11 @@ pub fn gauss_jacobi_uncached(alpha: &Float, beta: &Float, n: usize, prec: u32) -
     for (i, &x0) in start.iter().enumerate() {
         let mut x = Float::with_val(wp, x0);
         let mut converged = false;
+        // p_n' and p_{n-1} from the last full-precision pass, for the weight.
+        let mut last: Option<(Float, Float)> = None;
         for (step, &pb) in ladder.iter().enumerate() {
             let xe = Float::with_val(pb, &x);
-            let (p, dp, _) = get(pb).run(&xe, n, pb, false);
+            let (p, dp, pm, _) = get(pb).run(&xe, n, pb, false);
             if dp.is_zero() || !dp.is_finite() {
                 return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
             }
@@ -327,15 +330,17 @@ pub fn gauss_jacobi_uncached(alpha: &Float, beta: &Float, n: usize, prec: u32) -
             x -= &dx;
             if step + 1 == ladder.len() {
                 converged = dx.abs() <= tol;
+                last = Some((dp, pm));
             }
         }
-        // One more step at full precision if the last correction was not yet negligible.
+        // More steps at full precision if the last correction was not yet negligible.
         let mut extra = 0;
         while !converged && extra < 6 {
-            let (p, dp, _) = get(wp).run(&x, n, wp, false);
+            let (p, dp, pm, _) = get(wp).run(&x, n, wp, false);
             let dx = Float::with_val(wp, &p / &dp);
             x -= &dx;
             converged = dx.abs() <= tol;
+            last = Some((dp, pm));
             extra += 1;
         }
         if !converged {
@@ -344,7 +349,13 @@ pub fn gauss_jacobi_uncached(alpha: &Float, beta: &Float, n: usize, prec: u32) -
         if (x.to_f64() - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
             return Err(QuadratureError::NoConvergence { n, why: format!("Newton drifted from its start at node {i}") });
         }
-        let (_, _, sum) = get(wp).run(&x, n, wp, true);
+        // Christoffel–Darboux at a root of p_n: sum_{k<n} p_k^2 = b_n p_n'(x) p_{n-1}(x) (evaluated
+        // before the last, negligible, correction |dx| <= 2^(4 - wp)).
+        let (dp, pm) = last.expect("at least one full-precision pass");
+        let sum = Float::with_val(wp, &dp * &pm) * &b[n];
+        if !(sum > 0u32) {
+            return Err(QuadratureError::NoConvergence { n, why: format!("non-positive Christoffel sum at node {i}") });
+        }
         let w = Float::with_val(wp, &mu0 / &sum);
         nodes.push(Float::with_val(prec, &x));
         weights.push(Float::with_val(prec, &w));

@@ -1,7 +1,7 @@
 //! Physical admissibility of a solution: p >= 0 inside the contact and gap >= 0 outside it.
 //!
 //! Pressure: sign(p) = sign(D(u)) (see [`super::pressure`]); D is analytic on [-1, 1], sampled at
-//! 65 Chebyshev points, both ends and 1 -+ 10^-j (j = 2..10).
+//! 68 Chebyshev points, both ends and 1 -+ 10^-j (j = 2..10).
 //!
 //! Gap: h(x) = int h' over the free interval. Two conventions of the model shape this check
 //! (derivations in the module [`super`]): (i) the adhesive shear q1 = tau0 stops abruptly at the
@@ -34,8 +34,11 @@ const GAP_PANELS: u32 = 16;
 /// Checks p >= 0 on the contact; returns max p over the samples (in the tangent variable u).
 pub fn check_pressure(setup: &Setup, pressure: &Pressure<'_>) -> Result<Float, SlidingError> {
     let p = setup.prec;
-    let mut us: Vec<Float> = (0..=64u32)
-        .map(|k| -Float::with_val(p, Float::with_val(p, &setup.pi * k) / 64u32).cos())
+    // -cos(pi k/67): 67 is prime, so these points miss the Gauss–Chebyshev-like nodes
+    // cos((2i+1) pi/(2n)) of theta = 0 for every n not a multiple of 67 (a coincidence is handled
+    // by `Pressure::d`, only more slowly).
+    let mut us: Vec<Float> = (0..=67u32)
+        .map(|k| -Float::with_val(p, Float::with_val(p, &setup.pi * k) / 67u32).cos())
         .collect();
     for j in 2..=10u32 {
         let e = Float::with_val(p, 10u32).pow(-(j as i32));

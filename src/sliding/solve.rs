@@ -29,6 +29,8 @@ pub const NODE_CAP: usize = 3000;
 const LOCATE_PREC: u32 = 64;
 /// Digits the locating stage aims at.
 const LOCATE_DIGITS: f64 = 16.0;
+/// Digits of the sinusoid's load-curve scan (signs only).
+const SCAN_DIGITS: f64 = 8.0;
 /// Most nodes of the locating stage.
 const LOCATE_NODES: usize = 512;
 
@@ -239,7 +241,8 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
             let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
             for i in 1..=grid {
                 let s = cap * i as f64 / grid as f64;
-                let n = bucket(nodes_for(s, LOCATE_DIGITS));
+                // The scan only needs signs: SCAN_DIGITS; brackets are refined with LOCATE_DIGITS.
+                let n = bucket(nodes_for(s, SCAN_DIGITS));
                 let b = branches(&setup, &Float::with_val(setup.prec, s), n)?;
                 for (br, curve) in curves.iter_mut().enumerate() {
                     curve.push((s, b.get(br).map(|v| (v.p2.to_f64() - target) / target)));
