@@ -589,3 +589,29 @@ fn profile_phases() {
     let r = super::solve::solve_located(&pb, &[q("0")], NodeRule { digits: 30.0, factor: 1.5 }, false, precision_for(30) + 32, Some(&found[..1]), Convention::Paper);
     println!("run 2 given located: {:.1} ms ({} ok)", t.elapsed().as_secs_f64() * 1e3, r.map(|v| v.len()).unwrap_or(0));
 }
+
+/// digits_verified is honest: the 30-digit solution agrees with a 60-digit one at least to the
+/// verified digits (less one for the scale conventions).
+#[test]
+fn verified_digits_are_honest() {
+    let cases = [
+        problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/5"))),
+        problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("17/100"))),
+    ];
+    for pb in cases {
+        let v = solve_verified(&pb, &[q("1/3")], 30).unwrap().remove(0);
+        let r = solve_at(&pb, &[q("1/3")], NodeRule { digits: 60.0, factor: 1.0 }, true, precision_for(60)).unwrap().remove(0);
+        let s = &v.solution;
+        let kl = Float::with_val(s.prec, Float::with_val(s.prec, &s.l * &s.p2) * Setup::new(&pb, s.prec).unwrap().osculating_k());
+        let got = [
+            ("a", digits(&s.a, &r.a, &s.l)),
+            ("c", digits(&s.c, &r.c, &s.l)),
+            ("P1", digits(&s.p1, &r.p1, &s.p2)),
+            ("F_def", digits(&s.f_def, &r.f_def, &kl)),
+            ("p", digits(&s.pressure[0].p, &r.pressure[0].p, &s.max_pressure)),
+        ];
+        for (name, d) in got {
+            assert!(d >= v.accuracy.digits_verified - 1.0, "{name}: true digits {d:.1} < verified {:.1}", v.accuracy.digits_verified);
+        }
+    }
+}
