@@ -546,6 +546,12 @@ fn build(setup: &Setup, s: &Float, sh: ShiftSolution, n: usize, points: &[Exact]
         (Some(w), Some(v)) => Some(Float::with_val(p, w * v)),
         _ => None,
     };
+    // Never return a non-finite number.
+    let finite = [&l, &a, &b, &sh.c, &p1, &p2, &f_def, &max_pressure].iter().all(|v| v.is_finite())
+        && pts.iter().all(|q| q.p.is_finite() && q.x.is_finite());
+    if !finite {
+        return Err(SlidingError::NoConvergence(format!("a non-finite value arose for the contact of half-length {:.12}", l)));
+    }
     Ok(SlidingSolution {
         theta: setup.theta.clone(),
         kappa: setup.kappa.clone(),
