@@ -111,6 +111,14 @@ pub fn gauss_jacobi(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<
     Ok(rule)
 }
 
+/// Empties the process cache of [`gauss_jacobi`] (it grows by one rule per distinct
+/// (alpha, beta, n, prec), e.g. along a sweep in theta).
+pub fn clear_cache() {
+    if let Ok(mut c) = cache().lock() {
+        c.clear();
+    }
+}
+
 /// $\mu_0 = \int_{-1}^1 (1-u)^\alpha (1+u)^\beta du = 2^{\alpha+\beta+1}\Gamma(\alpha+1)\Gamma(\beta+1)/\Gamma(\alpha+\beta+2)$ (DLMF 5.12.1).
 pub fn jacobi_mu0(alpha: &Float, beta: &Float, prec: u32) -> Float {
     let ap1 = Float::with_val(prec, alpha + 1u32);

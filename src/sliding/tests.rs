@@ -266,7 +266,7 @@ fn timing() {
 }
 
 /// Chart of the sinusoid's load curve P2(lambda) on both centre branches, with physicality
-/// (exploration; `-- --ignored --nocapture`).
+/// (exploration; `-- --ignored --nocapture`; set PERIODIC_SURFACE=1 for `Convention::PeriodicSurface`).
 #[test]
 #[ignore]
 fn explore_sinusoid_load_curve() {
@@ -574,6 +574,7 @@ fn periodic_surface_convention() {
     assert!(digits(&a.l, &b.l, &a.l) >= 30.0);
 }
 
+/// Time of the phases of one inverse sinusoid case (exploration; `-- --ignored --nocapture`).
 #[test]
 #[ignore]
 fn profile_phases() {
