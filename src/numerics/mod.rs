@@ -3,3 +3,4 @@
 pub mod evaluate;
 pub mod exact;
 pub mod gauss_jacobi_f64;
+pub mod gauss_jacobi_mpfr;

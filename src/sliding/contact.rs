@@ -1,0 +1,169 @@
+//! The contact [-a, b] = [c - l, c + l] and the map u -> x(u) of THEORY.md section 3.
+//!
+//! Periodic (period L): m = tan(lambda), lambda = pi l / L [2.1], t = tan(pi (x - c)/L) = m u,
+//! x(u) = c + (L/pi) arctan(m u), x'(u) = (L/pi) m / (1 + m^2 u^2).
+//! Single punch (L = infinity, the Cauchy-kernel limit): x(u) = c + l u, x'(u) = l.
+//!
+//! The slope of the punch along the contact is written g'(x(u)) = q0 B0(u) + q1 B1(u) with
+//! coefficients depending only on c and basis functions depending only on the contact size:
+//! - parabola, periodic: q = (2 k c, 2 k), B = (1, (L/pi) arctan(m u));
+//! - parabola, single:   q = (2 k c, 2 k), B = (1, l u);
+//! - sinusoid [2.16]: with phi = 2 pi c/L and s = m u, sin(2 pi x(u)/L) = sin(phi + 2 arctan s), so
+//!   q = (2 pi D/L) (sin phi, cos phi), B = ((1 - s^2)/(1 + s^2), 2 s/(1 + s^2)).
+
+use super::setup::{Setup, Shape};
+use rug::Float;
+
+/// A contact of given size and centre, with the slope coefficients.
+#[derive(Debug, Clone)]
+pub struct Contact {
+    /// Size: lambda, m (periodic) and the half-length l = (a + b)/2.
+    pub size: Size,
+    /// Centre c = (b - a)/2.
+    pub c: Float,
+    /// Coefficients (q0, q1) of g'(x(u)) = q0 B0(u) + q1 B1(u).
+    pub q: [Float; 2],
+}
+
+/// Size-only part of a contact: lambda (periodic) or l (single punch).
+#[derive(Debug, Clone)]
+pub struct Size {
+    /// lambda (periodic) or None.
+    pub lambda: Option<Float>,
+    /// m = tan(lambda) or None.
+    pub m: Option<Float>,
+    /// Half-length.
+    pub l: Float,
+}
+
+impl Size {
+    /// From the size parameter s: lambda for a periodic row, l for a single punch.
+    pub fn new(setup: &Setup, s: &Float) -> Self {
+        let p = setup.prec;
+        match &setup.period {
+            Some(big_l) => {
+                let l = Float::with_val(p, s * big_l) / &setup.pi;
+                Size { lambda: Some(Float::with_val(p, s)), m: Some(Float::with_val(p, s.tan_ref())), l }
+            }
+            None => Size { lambda: None, m: None, l: Float::with_val(p, s) },
+        }
+    }
+
+    /// Basis values (B0, B1) at u, at precision `wp`.
+    pub fn basis(&self, setup: &Setup, u: &Float, wp: u32) -> [Float; 2] {
+        match (&setup.shape, &self.m) {
+            (Shape::Parabolic { .. }, Some(m)) => {
+                let l = setup.period.as_ref().expect("periodic");
+                let at = Float::with_val(wp, m * u).atan();
+                [Float::with_val(wp, 1), at * l / &setup.pi]
+            }
+            (Shape::Parabolic { .. }, None) => [Float::with_val(wp, 1), Float::with_val(wp, &self.l * u)],
+            (Shape::Sinusoidal { .. }, Some(m)) => {
+                let s = Float::with_val(wp, m * u);
+                let s2 = Float::with_val(wp, s.square_ref());
+                let den = Float::with_val(wp, &s2 + 1u32);
+                let b0 = Float::with_val(wp, 1u32 - &s2) / &den;
+                let b1 = Float::with_val(wp, &s * 2u32) / den;
+                [b0, b1]
+            }
+            (Shape::Sinusoidal { .. }, None) => unreachable!("a sinusoid needs a finite period (validated by the model)"),
+        }
+    }
+
+    /// Derivatives (B0', B1') at u, at precision `wp`.
+    pub fn basis_derivative(&self, setup: &Setup, u: &Float, wp: u32) -> [Float; 2] {
+        match (&setup.shape, &self.m) {
+            (Shape::Parabolic { .. }, Some(m)) => {
+                let l = setup.period.as_ref().expect("periodic");
+                let s = Float::with_val(wp, m * u);
+                let den = Float::with_val(wp, s.square_ref()) + 1u32;
+                [Float::with_val(wp, 0), Float::with_val(wp, l * m) / &setup.pi / den]
+            }
+            (Shape::Parabolic { .. }, None) => [Float::with_val(wp, 0), Float::with_val(wp, &self.l)],
+            (Shape::Sinusoidal { .. }, Some(m)) => {
+                let s = Float::with_val(wp, m * u);
+                let s2 = Float::with_val(wp, s.square_ref());
+                let den = Float::with_val(wp, &s2 + 1u32);
+                let den2 = Float::with_val(wp, den.square_ref());
+                let b0 = -Float::with_val(wp, &s * m) * 4u32 / &den2;
+                let b1 = Float::with_val(wp, 1u32 - &s2) * m * 2u32 / den2;
+                [b0, b1]
+            }
+            (Shape::Sinusoidal { .. }, None) => unreachable!("a sinusoid needs a finite period"),
+        }
+    }
+
+    /// x(u) - c.
+    pub fn offset(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+        match &self.m {
+            Some(m) => {
+                let l = setup.period.as_ref().expect("periodic");
+                Float::with_val(wp, m * u).atan() * l / &setup.pi
+            }
+            None => Float::with_val(wp, &self.l * u),
+        }
+    }
+
+    /// x'(u).
+    pub fn jacobian(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+        match &self.m {
+            Some(m) => {
+                let l = setup.period.as_ref().expect("periodic");
+                let s = Float::with_val(wp, m * u);
+                let den = Float::with_val(wp, s.square_ref()) + 1u32;
+                Float::with_val(wp, l * m) / &setup.pi / den
+            }
+            None => Float::with_val(wp, &self.l),
+        }
+    }
+
+    /// Inverse map: u(x) = tan(pi (x - c)/L)/m (periodic) or (x - c)/l. For periodic rows
+    /// x - c must lie in (-L/2, L/2).
+    pub fn u_of(&self, setup: &Setup, x_minus_c: &Float, wp: u32) -> Float {
+        match &self.m {
+            Some(m) => {
+                let l = setup.period.as_ref().expect("periodic");
+                let t = Float::with_val(wp, x_minus_c * &setup.pi) / l;
+                t.tan() / m
+            }
+            None => Float::with_val(wp, x_minus_c / &self.l),
+        }
+    }
+}
+
+impl Contact {
+    /// The contact of size `size` centred at `c`, with the slope coefficients of the shape.
+    pub fn new(setup: &Setup, size: &Size, c: Float) -> Self {
+        let p = setup.prec;
+        let q = match &setup.shape {
+            Shape::Parabolic { k } => [Float::with_val(p, k * &c) * 2u32, Float::with_val(p, k * 2u32)],
+            Shape::Sinusoidal { d } => {
+                let l = setup.period.as_ref().expect("periodic");
+                let amp = Float::with_val(p, &setup.pi * d) * 2u32 / l;
+                let phi = Float::with_val(p, &setup.pi * &c) * 2u32 / l;
+                let (s, co) = phi.sin_cos(Float::new(p));
+                [Float::with_val(p, &amp * &s), amp * co]
+            }
+        };
+        Contact { size: size.clone(), c, q }
+    }
+
+    /// F(u) = (E*/2) g'(x(u)) at precision `wp` (the right-hand side of [2.8] without beta tau0).
+    pub fn f(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+        let b = self.size.basis(setup, u, wp);
+        let v = Float::with_val(wp, &self.q[0] * &b[0]) + Float::with_val(wp, &self.q[1] * &b[1]);
+        v * &setup.e_star / 2u32
+    }
+
+    /// F'(u) at precision `wp`.
+    pub fn f_prime(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+        let b = self.size.basis_derivative(setup, u, wp);
+        let v = Float::with_val(wp, &self.q[0] * &b[0]) + Float::with_val(wp, &self.q[1] * &b[1]);
+        v * &setup.e_star / 2u32
+    }
+
+    /// g'(x(u)).
+    pub fn slope(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+        Float::with_val(wp, self.f(setup, u, wp) * 2u32) / &setup.e_star
+    }
+}

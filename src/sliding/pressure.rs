@@ -1,0 +1,143 @@
+//! The pressure [2.13], the gap slope outside the contact, and the integrals of p.
+//!
+//! With F(u) = (E*/2) g'(x(u)) and the Gauss–Jacobi rule (u_j, w_j) for 1/omega (THEORY.md section 3):
+//!     p(u) = omega(u) cos^2(pi theta)/pi * D(u),   D(u) = int [F(u') - F(u)]/(u' - u) du'/omega(u'),
+//! which is Psi+ - Psi- for the Psi of [`super::equation`], since X+ - X- = 2 i omega cos(pi theta).
+//! p does not depend on tau0 or P2 [2.13]; sign(p) = sign(D) inside the contact.
+//!
+//! Outside the contact (real t = u(x), |t| > 1; q1 = 0 there) the same Psi gives [reconstructed]
+//!     (E*/2) v'(x) = H[p](x) = F(t) + beta tau0 - X(t) cos(pi theta) D(t)/pi,
+//!     X(t) = sign(t) |t - 1|^{1/2 - theta} |t + 1|^{1/2 + theta},
+//! with F(t) the analytic continuation of F. (Check: Hertz, theta = 0: h' = 2 k sqrt(x^2 - a^2).)
+
+use super::contact::Contact;
+use super::setup::{Setup, Shape};
+use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
+use rug::ops::Pow;
+use rug::{Assign, Float};
+
+/// The pressure of one contact: the rule for 1/omega and F at its nodes.
+pub struct Pressure<'a> {
+    setup: &'a Setup,
+    contact: &'a Contact,
+    rule: &'a GaussJacobiRule,
+    f_nodes: Vec<Float>,
+    /// cos^2(pi theta)/pi.
+    factor: Float,
+}
+
+impl<'a> Pressure<'a> {
+    /// Precomputes F(u_j) at the nodes of `rule` (weight 1/omega).
+    pub fn new(setup: &'a Setup, contact: &'a Contact, rule: &'a GaussJacobiRule) -> Self {
+        let p = setup.prec;
+        let f_nodes = rule.nodes.iter().map(|u| contact.f(setup, u, p)).collect();
+        let factor = Float::with_val(p, setup.cos_pi_theta.square_ref()) / &setup.pi;
+        Pressure { setup, contact, rule, f_nodes, factor }
+    }
+
+    /// D(u) = sum_j w_j [F(u_j) - F(u)]/(u_j - u), for any real u (inside or outside [-1, 1]).
+    ///
+    /// A node closer to u than 2^(-prec/2) is replaced by F'(midpoint) (error O(|u_j - u|^2));
+    /// when a node is closer than 2^-16 the whole sum is formed at a precision raised by the bits
+    /// the difference quotient would lose.
+    pub fn d(&self, u: &Float) -> Float {
+        let p = self.setup.prec;
+        let mut min_gap = f64::INFINITY;
+        for x in &self.rule.nodes {
+            let g = (x.to_f64() - u.to_f64()).abs();
+            if g < min_gap {
+                min_gap = g;
+            }
+        }
+        let lost = if min_gap < 1.0 / 65536.0 { ((-min_gap.max(1e-300).log2()).ceil() as u32).min(p) } else { 0 };
+        let wp = p + lost;
+        let fu = self.contact.f(self.setup, u, wp);
+        let near = Float::with_val(53, Float::i_exp(1, -(p as i32) / 2));
+        let mut acc = Float::with_val(wp, 0);
+        let mut t1 = Float::new(wp);
+        let mut t2 = Float::new(wp);
+        for (j, (x, w)) in self.rule.nodes.iter().zip(&self.rule.weights).enumerate() {
+            t2.assign(x - u);
+            if Float::with_val(53, t2.abs_ref()) < near {
+                let mid = Float::with_val(wp, x + u) / 2u32;
+                t1 = self.contact.f_prime(self.setup, &mid, wp);
+            } else {
+                if lost > 0 {
+                    t1 = self.contact.f(self.setup, x, wp);
+                    t1 -= &fu;
+                } else {
+                    t1.assign(&self.f_nodes[j] - &fu);
+                }
+                t1 /= &t2;
+            }
+            t1 *= w;
+            acc += &t1;
+        }
+        Float::with_val(p, acc)
+    }
+
+    /// omega(u) = (1 + u)^{1/2 + theta} (1 - u)^{1/2 - theta}, u in [-1, 1].
+    pub fn omega(&self, u: &Float) -> Float {
+        let p = self.setup.prec;
+        let e1 = Float::with_val(p, &self.setup.theta + 0.5f64);
+        let e2 = Float::with_val(p, 0.5f64 - Float::with_val(p, &self.setup.theta));
+        let a = Float::with_val(p, u + 1u32).pow(&e1);
+        let b = Float::with_val(p, 1u32 - Float::with_val(p, u)).pow(&e2);
+        a * b
+    }
+
+    /// p(u) = omega(u) cos^2(pi theta) D(u)/pi [2.13], u in [-1, 1] (tangent variable).
+    pub fn p(&self, u: &Float) -> Float {
+        self.omega(u) * &self.factor * self.d(u)
+    }
+
+    /// p(u)/omega(u) = cos^2(pi theta) D(u)/pi (bounded, sign of p).
+    pub fn p_over_omega(&self, u: &Float) -> Float {
+        self.d(u) * &self.factor
+    }
+
+    /// Slope of the gap h' = g'(x) - v'(x) outside the contact, without the step -2 beta tau0/E*
+    /// that the adhesive shear tau0 (discontinuous at the contact ends) adds to it everywhere
+    /// outside (see [`super::physical`]): h' = g'(x) - g'_cont(x) + (2/E*) X(t) cos(pi theta) D(t)/pi,
+    /// where g'_cont is the continuation used in F (differs from g' only for the periodic
+    /// parabola beyond +-L/2). `x_minus_c` is x - c, t = u(x) with |t| > 1.
+    pub fn gap_slope(&self, x_minus_c: &Float) -> Float {
+        let s = self.setup;
+        let p = s.prec;
+        let t = self.contact.size.u_of(s, x_minus_c, p);
+        let e1 = Float::with_val(p, &s.theta + 0.5f64);
+        let e2 = Float::with_val(p, 0.5f64 - Float::with_val(p, &s.theta));
+        let tp = Float::with_val(p, &t + 1u32).abs().pow(&e1);
+        let tm = Float::with_val(p, &t - 1u32).abs().pow(&e2);
+        let mut xt = tp * tm;
+        if t.is_sign_negative() {
+            xt = -xt;
+        }
+        let mut h = xt * self.d(&t) * &s.cos_pi_theta / &s.pi * 2u32 / &s.e_star;
+        if let (Shape::Parabolic { k }, Some(big_l)) = (&s.shape, &s.period) {
+            // True slope 2k (x - n L) vs the continuation 2k x(t), x(t) in (c - L/2, c + L/2).
+            let x = Float::with_val(p, x_minus_c + &self.contact.c);
+            let n = Float::with_val(p, &x / big_l).round();
+            let x_true = Float::with_val(p, &x - Float::with_val(p, &n * big_l));
+            let off = self.contact.size.offset(s, &t, p);
+            let x_cont = Float::with_val(p, &off + &self.contact.c);
+            h += Float::with_val(p, x_true - x_cont) * k * 2u32;
+        }
+        h
+    }
+
+    /// (P2, F_def) = (int p dx, int p g' dx) over the contact, by the n-point rule `rule_omega`
+    /// for the weight omega: int p x'(u) du = cos^2(pi theta)/pi sum_i w_i D(u_i) x'(u_i).
+    pub fn load_and_deformation_force(&self, rule_omega: &GaussJacobiRule) -> (Float, Float) {
+        let s = self.setup;
+        let p = s.prec;
+        let mut p2 = Float::with_val(p, 0);
+        let mut fd = Float::with_val(p, 0);
+        for (u, w) in rule_omega.nodes.iter().zip(&rule_omega.weights) {
+            let v = self.d(u) * w * self.contact.size.jacobian(s, u, p);
+            fd += Float::with_val(p, &v * self.contact.slope(s, u, p));
+            p2 += v;
+        }
+        (p2 * &self.factor, fd * &self.factor)
+    }
+}
