@@ -10,6 +10,7 @@
 //! - [`asymptotics`]: the objects of THEORY.md section 5 as exact truncated series.
 //! - [`numerics`]: evaluation of exact objects at `f64` and MPFR precision, quadrature.
 
+pub mod adhesion;
 pub mod asymptotics;
 pub mod model;
 pub mod numerics;
