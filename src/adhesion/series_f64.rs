@@ -277,11 +277,15 @@ mod tests {
     }
 }
 #[cfg(test)]
-mod debug_tests {
+mod chart_tests {
     use super::*;
     use crate::model::Exact;
+    /// Chart (not a check): ratios f_{n-1}/f_n of the universal coefficients. They decrease
+    /// with n for eps > 0 (nu = 0: 1.20 at n = 20, 0.99 at 40, 0.85 at 60, 0.69 at 89), so the
+    /// lambda^2 series has at best a radius well below (pi/2)^2 at small nu. Run with `--ignored`.
     #[test]
-    fn adhesion_debug_radius() {
+    #[ignore]
+    fn adhesion_chart_series_ratios() {
         for nu in [(0i64, 1i64), (1, 10), (3, 10), (9, 20), (49, 100)] {
             let m = Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap();
             let (f, _) = universal_coefficients(&m, &tanh_sinh_f64(60, 1.2)).unwrap();

@@ -328,3 +328,68 @@ fn adhesion_flat_punch_is_adhesive_and_k_is_its_outside_slope() {
         assert!((hr - beta * s0i).abs() < 1e-13 && (hi + beta * s0r).abs() < 1e-13, "nu {nu}: inside");
     }
 }
+
+/// Chart (not a check): verified digits, nodes, timings over nu and lambda. Run with
+/// `cargo test -p periodic-contact --lib adhesion_chart -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn adhesion_chart_conditioning() {
+    let points = vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100), q(999, 1000)];
+    for nu in [q(0, 1), q(3, 10), q(9, 20), q(1, 2)] {
+        for a_over_l in chart_sizes() {
+            let pr = problem(nu.clone(), Some(q(1, 1)), AdhesionSize::HalfWidth(a_over_l.clone()));
+            match solve_verified(&pr, &points, 20) {
+                Ok(v) => {
+                    let d = v.digits_verified;
+                    let z = v.solution.tension.zones.first().map(|z| format!("({:.6e}, {:.6e})", z.delta_inner.to_f64(), z.delta_outer.to_f64())).unwrap_or("-".into());
+                    println!(
+                        "nu {nu} a/L {a_over_l} lambda {:.4}: P2~ {:.20e} digits size {:.1} psi {:.1} phi {:.1} q1 {:.1} q2 {:.1} | n {} piv {:.1e} | {:.3}s | tension 1-x/a in {z}",
+                        v.solution.lambda.to_f64(), v.solution.normal_load.to_f64(), d.size, d.psi, d.phi, d.q1, d.q2, v.solution.nodes, v.solution.pivot_ratio, v.elapsed_seconds
+                    );
+                }
+                Err(e) => println!("nu {nu} a/L {a_over_l}: error {e}"),
+            }
+        }
+    }
+}
+
+fn chart_sizes() -> Vec<Exact> {
+    match std::env::var("ADHESION_CHART_SMALL") {
+        Ok(_) => vec![q(1, 20), q(1, 10), q(3, 20)],
+        Err(_) => vec![q(1, 20), q(1, 10), q(3, 20), q(1, 5), q(1, 4), q(3, 10), q(7, 20), q(2, 5), q(9, 20), q(19, 40)],
+    }
+}
+
+#[test]
+#[ignore]
+fn adhesion_chart_timing_breakdown() {
+    use std::time::Instant;
+    let m = material(q(0, 1));
+    for d in [20u32] {
+        let p = VolterraParams::for_digits(d);
+        for params in [p, p.refined()] {
+            let lam = Float::with_val(params.prec, 0.4712);
+            let n0 = volterra_mpfr::chebyshev_size(0.4712, params.target_bits, params.refine).unwrap();
+            let t = Instant::now();
+            let s = volterra_mpfr::solve(&m, &lam, params).unwrap();
+            let t1 = t.elapsed().as_secs_f64();
+            let t = Instant::now();
+            let _ = s.psi_ratio(&Float::with_val(params.prec, 0.5));
+            let t2 = t.elapsed().as_secs_f64();
+            let t = Instant::now();
+            let _ = s.stress_ratio(&q(1, 2));
+            let t3 = t.elapsed().as_secs_f64();
+            println!("prec {} target {} n0 {n0} n {} solve {t1:.3}s psi {t2:.4}s stress {t3:.4}s", params.prec, params.target_bits, s.f_coeffs.len());
+        }
+        let pr = problem(q(0, 1), Some(q(1, 1)), AdhesionSize::HalfWidth(q(3, 20)));
+        let points = vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100), q(999, 1000)];
+        for tz in [false, true] {
+            let t = Instant::now();
+            let _ = super::solution::solve_mpfr_with(&pr, &points, p, tz).unwrap();
+            println!("solve_mpfr_with tension {tz}: {:.3}s", t.elapsed().as_secs_f64());
+        }
+        let t = Instant::now();
+        let v = solve_verified(&pr, &points, 20).unwrap();
+        println!("solve_verified: {:.3}s (own {:.3}s)", t.elapsed().as_secs_f64(), v.elapsed_seconds);
+    }
+}

@@ -6,7 +6,7 @@
 //! Conditioning warnings say where digits are lost (THEORY.md section 7).
 
 use super::error::AdhesionError;
-use super::solution::{solve_mpfr, AdhesionSolution};
+use super::solution::{solve_mpfr_with, AdhesionSolution};
 use super::volterra_mpfr::VolterraParams;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::exact::to_float;
@@ -73,8 +73,8 @@ pub fn solve_verified(problem: &AdhesionProblem, points: &[Exact], digits_reques
     let start = Instant::now();
     let p1 = VolterraParams::for_digits(digits_requested);
     let p2 = p1.refined();
-    let s1 = solve_mpfr(problem, points, p1)?;
-    let s2 = solve_mpfr(problem, points, p2)?;
+    let s1 = solve_mpfr_with(problem, points, p1, false)?;
+    let s2 = solve_mpfr_with(problem, points, p2, true)?;
     let elapsed_seconds = start.elapsed().as_secs_f64();
     let cap = (p1.prec as f64) * std::f64::consts::LOG10_2;
     let prec = p2.prec;
@@ -111,9 +111,9 @@ pub fn solve_verified(problem: &AdhesionProblem, points: &[Exact], digits_reques
     if !s2.tension.zones.is_empty() {
         let z = &s2.tension.zones[0];
         warnings.push(format!(
-            "tension q2 < 0 for x/a in ({}, {}) and in infinitely many thinner zones nearer the edge (oscillating edge singularity)",
-            z.from_x_over_a.to_f64(),
-            z.to_x_over_a.to_f64()
+            "tension q2 < 0 for 1 - x/a in ({:.6e}, {:.6e}) and in infinitely many thinner zones nearer the edge (oscillating edge singularity)",
+            z.delta_inner.to_f64(),
+            z.delta_outer.to_f64()
         ));
     }
     Ok(VerifiedSolution {

@@ -52,7 +52,7 @@ impl VolterraParams {
     }
     /// The verification run: more bits, more nodes, finer quadrature.
     pub fn refined(&self) -> Self {
-        VolterraParams { prec: self.prec + 40, target_bits: self.target_bits + 24, refine: self.refine * 1.3 }
+        VolterraParams { prec: self.prec + 24, target_bits: self.target_bits + 16, refine: self.refine * 1.15 }
     }
 }
 
@@ -99,6 +99,7 @@ pub struct VolterraSolution {
     /// Ratio of largest to smallest pivot of the collocation matrix (conditioning indicator).
     pub pivot_ratio: f64,
     rule: TanhSinh,
+    pre: kernel::VolterraNodes,
 }
 
 /// Solves the Volterra equation at `lambda` (0 <= lambda < pi/2), choosing the Chebyshev size
@@ -149,6 +150,7 @@ pub fn solve_with_nodes(material: &Material, lambda: &Float, params: VolterraPar
     let eps = constants::eps(material, prec);
     let cosh_pi_eps = constants::cosh_pi_eps(material, prec);
     let rule = TanhSinh::new(params.target_bits + 8, params.refine, prec);
+    let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
     let tau = chebyshev::nodes(n, prec);
     let pi = Float::with_val(prec, Constant::Pi);
     // Rows: A_ij = sum_q Re z_iq T_j(x_iq), x_iq = 2 tau_i s_q^2 - 1; keep Im z_iq, x_iq for J.
@@ -158,13 +160,13 @@ pub fn solve_with_nodes(material: &Material, lambda: &Float, params: VolterraPar
     for i in 0..n {
         let sigma = Float::with_val(prec, tau[i].sqrt_ref());
         let chi = Float::with_val(prec, lambda * &sigma);
+        let sc_chi = chi.clone().sin_cos(Float::new(prec));
         let mut row_keep = Vec::with_capacity(rule.len());
         for q in 0..rule.len() {
-            let (re, im) = kernel::volterra_integrand(&rule.s[q], &rule.c[q], &chi, &eps, prec);
+            let (re, im) = pre.integrand(q, &rule.s[q], &rule.c[q], &chi, &sc_chi, &eps, prec);
             let re = re * &rule.w[q];
             let im = im * &rule.w[q];
-            let s2 = Float::with_val(prec, &rule.s[q] * &rule.s[q]);
-            let x = Float::with_val(prec, &tau[i] * &s2) * 2u32 - 1u32;
+            let x = Float::with_val(prec, &tau[i] * &pre.s2[q]) * 2u32 - 1u32;
             chebyshev_values(&x, &mut tj, prec);
             for j in 0..n {
                 a[i][j] += Float::with_val(prec, &re * &tj[j]);
@@ -196,6 +198,7 @@ pub fn solve_with_nodes(material: &Material, lambda: &Float, params: VolterraPar
         residual: 0.0,
         pivot_ratio,
         rule,
+        pre,
     };
     // Residual of Re I = pi between collocation nodes (a posteriori check).
     let mut res = 0f64;
@@ -269,16 +272,37 @@ fn gauss_solve(mut a: Vec<Vec<Float>>, mut b: Vec<Float>, prec: u32) -> Result<(
 }
 
 impl VolterraSolution {
+    /// A copy rounded to `bits` (>= 53) with a quadrature rule for that accuracy: for cheap
+    /// evaluations that need only a few digits (locating tension zones).
+    pub fn reduced(&self, bits: u32) -> VolterraSolution {
+        let prec = bits.max(53);
+        let rule = TanhSinh::new(prec - 8, 1.0, prec);
+        let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
+        let r = |v: &[Float]| v.iter().map(|x| Float::with_val(prec, x)).collect::<Vec<_>>();
+        VolterraSolution {
+            prec,
+            lambda: Float::with_val(prec, &self.lambda),
+            eps: Float::with_val(prec, &self.eps),
+            cosh_pi_eps: Float::with_val(prec, &self.cosh_pi_eps),
+            f_coeffs: r(&self.f_coeffs),
+            j_coeffs: r(&self.j_coeffs),
+            residual: self.residual,
+            pivot_ratio: self.pivot_ratio,
+            rule,
+            pre,
+        }
+    }
+
     /// I(sigma) = int_0^1 s w(s) G(lambda sigma, s) F(sigma^2 s^2) ds as (re, im); Re I = pi.
     pub fn integral_i(&self, sigma: &Float) -> (Float, Float) {
         let prec = self.prec;
         let chi = Float::with_val(prec, &self.lambda * sigma);
+        let sc_chi = chi.clone().sin_cos(Float::new(prec));
         let sig2 = Float::with_val(prec, sigma * sigma);
         let (mut sr, mut si) = (Float::with_val(prec, 0), Float::with_val(prec, 0));
         for q in 0..self.rule.len() {
-            let (re, im) = kernel::volterra_integrand(&self.rule.s[q], &self.rule.c[q], &chi, &self.eps, prec);
-            let s2 = Float::with_val(prec, &self.rule.s[q] * &self.rule.s[q]);
-            let x = Float::with_val(prec, &sig2 * &s2) * 2u32 - 1u32;
+            let (re, im) = self.pre.integrand(q, &self.rule.s[q], &self.rule.c[q], &chi, &sc_chi, &self.eps, prec);
+            let x = Float::with_val(prec, &sig2 * &self.pre.s2[q]) * 2u32 - 1u32;
             let fw = chebyshev::evaluate(&self.f_coeffs, &x, prec) * &self.rule.w[q];
             sr += Float::with_val(prec, &re * &fw);
             si += Float::with_val(prec, &im * &fw);
