@@ -261,6 +261,10 @@ fn adhesion_errors_are_typed() {
     assert!(matches!(e, AdhesionError::IllConditioned { parameter: "lambda", .. }), "{e}");
     let e = solve_f64(&near, &[]).unwrap_err();
     assert!(matches!(e, AdhesionError::IllConditioned { parameter: "lambda", .. }));
+    // nu = 0 at lambda = 0.4 pi: the two runs do not agree (module doc, Conditioning).
+    let bad = problem(q(0, 1), Some(q(1, 1)), AdhesionSize::HalfWidth(q(2, 5)));
+    let e = solve_verified(&bad, &[q(1, 2)], 20).unwrap_err();
+    assert!(matches!(e, AdhesionError::IllConditioned { parameter: "lambda", .. }), "{e}");
 }
 
 #[test]

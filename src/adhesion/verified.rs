@@ -13,6 +13,9 @@ use crate::numerics::exact::to_float;
 use rug::Float;
 use std::time::Instant;
 
+/// Below this many verified digits `solve_verified` returns `IllConditioned` instead of values.
+pub const MIN_DIGITS: f64 = 2.0;
+
 /// Verified digits per quantity (minimum over the points).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DigitsVerified {
@@ -99,6 +102,18 @@ pub fn solve_verified(problem: &AdhesionProblem, points: &[Exact], digits_reques
     let headline = size.min(psi).min(phi).min(q1).min(q2);
     let mut warnings = Vec::new();
     let lam = s2.lambda.to_f64();
+    if headline < MIN_DIGITS {
+        return Err(AdhesionError::IllConditioned {
+            method: "mpfr-volterra",
+            parameter: "lambda",
+            value: format!("{lam}"),
+            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
+            reason: format!(
+                "two runs agree to only {headline:.1} digits: the Volterra equation of the incremental method is \
+                 ill-conditioned here (see volterra_mpfr, Conditioning)"
+            ),
+        });
+    }
     if headline < digits_requested as f64 {
         warnings.push(format!(
             "only {headline:.1} of {digits_requested} requested digits verified (lambda = {lam:.6}; \

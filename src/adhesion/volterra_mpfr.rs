@@ -18,6 +18,21 @@
 //!   phi/(k a^2) = -(1/pi) int_0^{sigma^2} Im I(sqrt tau) d tau,
 //! and the stresses by [`super::kernel::stress_integrand`].
 //! lambda = 0 is the single punch (G = 1, F = pi/Re M_1 constant: self-similar).
+//!
+//! # Conditioning (measured; THEORY.md section 7)
+//! For nu = 1/2 (eps = 0) and nu >= 0.45 the method verifies 20+ digits up to lambda ~ 1.49.
+//! For small nu it breaks down at a moderate contact size: verified digits of P2 at 20 requested
+//! (`adhesion_chart_conditioning`): nu = 0: 31 (lambda <= 0.47), 27 (0.63), 22 (0.79), 6 (0.94),
+//! 2 (1.10), 0 beyond; nu = 0.3: >= 26 up to 1.26, 3 at 1.41, no convergence at 1.49.
+//! Mechanism (a hypothesis supported by the following facts, not a proof): the kernel Re K is the
+//! real part of an Abel kernel (chi - eta)^{-1/2 - i eps}, so on powers eta^{2n+1} the operator
+//! acts, at lambda -> 0, by the factor Re M_{2n+1}; Re M_m changes sign at m ~ 605 for nu = 0
+//! (m ~ 2285 for nu = 0.1, beyond 2e5 for nu = 0.3; computed from the recurrence for M_m), and the
+//! phase of the near-diagonal coefficient cos(chi(1 - 2 i eps)) (sin 2 chi)^{i eps} grows with chi,
+//! bringing the sign change down to low degrees as lambda grows: the first-kind equation then has
+//! (near-)homogeneous solutions and the discrete problem loses digits without bound. The same
+//! factor 1/Re M_{2n+1} enters the lambda^2 series (see [`super::series_f64`]).
+//! `solve_verified` reports the loss (fewer verified digits, and a typed error below 2 digits).
 
 use super::chebyshev;
 use super::constants;
@@ -64,7 +79,8 @@ pub fn chebyshev_size(lambda: f64, bits: u32, refine: f64) -> Result<usize, Adhe
     let half_pi = std::f64::consts::FRAC_PI_2;
     let tau_star = (half_pi / lambda).powi(2);
     let z = 2.0 * tau_star - 1.0;
-    // Observed (nu = 0) slower decay, as if f were singular near t = -0.8: cap rho accordingly.
+    // Observed (nu = 0) slower decay (rho ~ 2 + 3.2/lambda^2 at lambda = pi/5): cap rho so the
+    // first size is usually sufficient and the adaptive re-solve rare.
     let rho = (z + (z * z - 1.0).max(0.0).sqrt()).min(2.0 + 3.0 / (lambda * lambda));
     let n = ((bits as f64 * std::f64::consts::LN_2 / rho.ln()) * refine).ceil() as usize + 4;
     if !(n <= MAX_NODES) {
@@ -107,8 +123,8 @@ pub struct VolterraSolution {
 /// not below 2^-target_bits |c_0|, a larger size from the observed geometric decay (at most four
 /// times). The a priori estimate assumes the singularity at full contact only; for eps > 0 the
 /// coefficients decay more slowly (observed at nu = 0: ratio ~1/10 per coefficient at
-/// lambda = pi/5 instead of the predicted 1/23, consistent with a singularity of f near
-/// t = -0.8), hence the a posteriori check.
+/// lambda = pi/5 instead of the predicted 1/23; see the module doc on conditioning), hence the
+/// a posteriori check.
 pub fn solve(material: &Material, lambda: &Float, params: VolterraParams) -> Result<VolterraSolution, AdhesionError> {
     let mut n = chebyshev_size(lambda.to_f64(), params.target_bits, params.refine)?;
     let goal = (params.target_bits as f64) * std::f64::consts::LN_2;
