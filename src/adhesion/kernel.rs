@@ -106,6 +106,21 @@ pub mod f64k {
         let theta = eps * (one_p.ln() - c.ln());
         rotate(mag, theta, 1.0, 0.0)
     }
+    /// v-form of the stress integrand (see [`super::stress_integrand_v`]): (re, im, r^2).
+    pub fn stress_integrand_v(sigma: f64, v: f64, lambda: f64, eps: f64) -> (f64, f64, f64) {
+        let (sh, ch) = ((0.5 * v).sinh(), (0.5 * v).cosh());
+        let r = sigma * v.cosh();
+        let (rps, rms) = (2.0 * sigma * ch * ch, 2.0 * sigma * sh * sh);
+        let a = sinc(lambda * rps);
+        let b = sinc(lambda * rms);
+        let mag = r / (a * b).sqrt();
+        let theta = eps * (2.0 * (ch / sh).ln() + (a / b).ln());
+        let x = lambda * sigma;
+        let yy = 2.0 * eps * lambda * r;
+        let (cr, ci) = (x.cos() * yy.cosh(), x.sin() * yy.sinh());
+        let (re, im) = rotate(mag, theta, cr, ci);
+        (re, im, r * r)
+    }
     /// Stress integrand without F(r^2): (re, im, r^2).
     pub fn stress_integrand(sigma: f64, omss: f64, y: f64, lambda: f64, eps: f64) -> (f64, f64, f64) {
         let y2d = y * y * omss;
@@ -202,4 +217,31 @@ mod tests {
         assert!(Float::with_val(prec, r1 - r2).abs().to_f64() < 1e-35);
         assert!(Float::with_val(prec, i1 - i2).abs().to_f64() < 1e-35);
     }
+}
+
+/// The stress integrand in the variable v, r = sigma cosh v (0 < sigma < 1, v in (0, acosh(1/sigma))),
+/// used for small sigma where the y-form of [`stress_integrand`] has branch points at
+/// y = +-i sigma/sqrt(1 - sigma^2) close to its end y = 0 (slow tanh-sinh convergence). Here
+/// r dr/sqrt(r^2 - sigma^2) = r dv and ((r+sigma)/(r-sigma))^{i eps} = coth(v/2)^{2 i eps}, so
+///   (q2 + i q1)/(E* k a) = (cosh(pi eps)/pi) int_0^{acosh(1/sigma)} cos(lambda(sigma - 2 i eps r))
+///       coth(v/2)^{2 i eps} (sinc(lambda(r+sigma))/sinc(lambda(r-sigma)))^{i eps}
+///       / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) r F(r^2) dv,
+/// whose singularities in v lie at distance pi from the real axis. Returns (re, im, r^2) without
+/// F(r^2) and without the prefactor, times r.
+pub fn stress_integrand_v(sigma: &Float, v: &Float, lambda: &Float, eps: &Float, prec: u32) -> (Float, Float, Float) {
+    let half = Float::with_val(prec, v / 2u32);
+    let (sh, ch) = half.sinh_cosh(Float::new(prec));
+    let r = Float::with_val(prec, &ch * &ch) * sigma * 2u32 - sigma; // sigma cosh v
+    let rps = Float::with_val(prec, &ch * &ch) * sigma * 2u32;
+    let rms = Float::with_val(prec, &sh * &sh) * sigma * 2u32;
+    let a = sinc(&Float::with_val(prec, lambda * &rps), prec);
+    let b = sinc(&Float::with_val(prec, lambda * &rms), prec);
+    let mag = Float::with_val(prec, &a * &b).sqrt().recip() * &r;
+    let theta = (Float::with_val(prec, &ch / &sh).ln() * 2u32 + Float::with_val(prec, &a / &b).ln()) * eps;
+    let x = Float::with_val(prec, lambda * sigma);
+    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    let (cr, ci) = cos_minus_i(&x, &yy, prec);
+    let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
+    let r2 = Float::with_val(prec, &r * &r);
+    (re, im, r2)
 }

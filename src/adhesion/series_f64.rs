@@ -250,6 +250,18 @@ impl SeriesSolution {
             return (0.0, 0.0);
         }
         let (mut sr, mut si) = (0.0, 0.0);
+        if sigma > 0.0 && sigma < 0.5 {
+            // v-form, r = sigma cosh v (see kernel::stress_integrand_v).
+            let big_v = (1.0 / sigma).acosh();
+            for &(s, _, w) in &self.rule {
+                let (re, im, r2) = f64k::stress_integrand_v(sigma, big_v * s, self.lambda, self.eps);
+                let fw = self.f_at(r2) * w;
+                sr += re * fw;
+                si += im * fw;
+            }
+            let scale = big_v * self.cosh_pi_eps / std::f64::consts::PI;
+            return (sr * scale, si * scale);
+        }
         for &(y, _, w) in &self.rule {
             let (re, im, r2) = f64k::stress_integrand(sigma, omss, y, self.lambda, self.eps);
             let fw = self.f_at(r2) * w;

@@ -131,8 +131,8 @@ pub fn solve_mpfr_with(problem: &AdhesionProblem, points: &[Exact], params: Volt
             let lf = to_float(l, prec);
             let target = Float::with_val(prec, to_float(p2, prec) * &pi * &pi)
                 / (Float::with_val(prec, &lf * &lf) * &e_star * &k);
-            let lam = lambda_for_load(problem, &target, params)?;
-            let sol = volterra_mpfr::solve(&problem.material, &lam, params)?;
+            let (lam, big) = lambda_for_load(problem, &target, params)?;
+            let sol = big.restrict(&lam);
             let a = Float::with_val(prec, &lam * &lf) / &pi;
             (lam, a, sol)
         }
@@ -168,7 +168,7 @@ pub fn solve_mpfr_with(problem: &AdhesionProblem, points: &[Exact], params: Volt
 /// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
 /// Newton on one Chebyshev solution over [0, Lambda] (f does not depend on lambda:
 /// P(lambda) = (1/2) int_0^{lambda^2} f, P'(lambda) = lambda f(lambda^2)).
-fn lambda_for_load(problem: &AdhesionProblem, target: &Float, params: VolterraParams) -> Result<Float, AdhesionError> {
+fn lambda_for_load(problem: &AdhesionProblem, target: &Float, params: VolterraParams) -> Result<(Float, VolterraSolution), AdhesionError> {
     let prec = params.prec;
     let cp = constants::single_punch_load_constant(&problem.material, 64).to_f64();
     let half_pi = std::f64::consts::FRAC_PI_2;
@@ -183,20 +183,20 @@ fn lambda_for_load(problem: &AdhesionProblem, target: &Float, params: VolterraPa
         let big_f = Float::with_val(prec, big);
         let sol = volterra_mpfr::solve(&problem.material, &big_f, params)?;
         let big2 = Float::with_val(prec, &big_f * &big_f);
-        let p_of = |lam: &Float| -> (Float, Float) {
+        let p_of = |sol: &VolterraSolution, lam: &Float| -> (Float, Float) {
             let tau = Float::with_val(prec, lam * lam) / &big2;
             let p = crate::adhesion::chebyshev::integral(&sol.f_coeffs, &tau, prec) * &big2 / 2u32;
             let d = sol.f_at(&tau) * lam;
             (p, d)
         };
-        let (pmax, _) = p_of(&big_f);
+        let (pmax, _) = p_of(&sol, &big_f);
         if &pmax < target {
             lam0 = 0.5 * (big + half_pi);
             continue;
         }
         let mut lam = Float::with_val(prec, lam0.min(big));
         for _ in 0..200 {
-            let (p, d) = p_of(&lam);
+            let (p, d) = p_of(&sol, &lam);
             let step = Float::with_val(prec, p - target) / d;
             let mut next = Float::with_val(prec, &lam - &step);
             if next > big_f {
@@ -208,7 +208,7 @@ fn lambda_for_load(problem: &AdhesionProblem, target: &Float, params: VolterraPa
             let done = Float::with_val(prec, &next - &lam).abs() <= Float::with_val(prec, Float::i_exp(1, -(prec as i32) + 4)) * &next;
             lam = next;
             if done {
-                return Ok(lam);
+                return Ok((lam, sol));
             }
         }
         return Err(AdhesionError::NotConverged { what: "Newton for the half-width", reason: "200 steps".into() });

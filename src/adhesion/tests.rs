@@ -29,7 +29,7 @@ fn problem(nu: Exact, period: Option<Exact>, size: AdhesionSize) -> AdhesionProb
     AdhesionProblem::new(material(nu), p, PunchShape::parabolic(q(3, 1)).unwrap(), size).unwrap()
 }
 fn pts() -> Vec<Exact> {
-    vec![q(0, 1), q(1, 4), q(1, 2), q(9, 10), q(99, 100), q(1, 1)]
+    vec![q(0, 1), q(1, 1000), q(1, 10), q(1, 4), q(1, 2), q(9, 10), q(99, 100), q(1, 1)]
 }
 fn relerr(a: &Float, b: &Float) -> f64 {
     Float::with_val(64, Float::with_val(a.prec().max(b.prec()), a - b) / b).abs().to_f64()
@@ -395,5 +395,13 @@ fn adhesion_chart_timing_breakdown() {
         let t = Instant::now();
         let v = solve_verified(&pr, &points, 20).unwrap();
         println!("solve_verified: {:.3}s (own {:.3}s)", t.elapsed().as_secs_f64(), v.elapsed_seconds);
+        let ten: Vec<Exact> = (0..=10).map(|i| q(i, 10)).collect();
+        for nu in [q(0, 1), q(3, 10), q(1, 2)] {
+            for (size, l) in [(AdhesionSize::HalfWidth(q(3, 20)), Some(q(1, 1))), (AdhesionSize::NormalLoad(q(1, 5)), Some(q(1, 1))), (AdhesionSize::NormalLoad(q(1, 5)), None)] {
+                let pr = problem(nu.clone(), l.clone(), size.clone());
+                let v = solve_verified(&pr, &ten, 20).unwrap();
+                println!("nu {nu} {size:?} L {l:?}: lambda {:.4} a {:.6} digits {:.1} ({:?}) time {:.3}s", v.solution.lambda.to_f64(), v.solution.half_width.to_f64(), v.digits_verified.headline, v.warnings.len(), v.elapsed_seconds);
+            }
+        }
     }
 }

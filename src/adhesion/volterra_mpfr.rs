@@ -288,6 +288,42 @@ fn gauss_solve(mut a: Vec<Vec<Float>>, mut b: Vec<Float>, prec: u32) -> Result<(
 }
 
 impl VolterraSolution {
+    /// The solution at a smaller lambda' <= lambda without re-solving: f(t) does not depend on
+    /// lambda, so F'(tau) = F(tau lambda'^2/lambda^2) and J'(tau) = J(tau lambda'^2/lambda^2)
+    /// (I depends on chi only); both re-interpolated at the same number of Chebyshev nodes.
+    pub fn restrict(&self, lambda_new: &Float) -> VolterraSolution {
+        let prec = self.prec;
+        let n = self.f_coeffs.len();
+        let ratio = if self.lambda.is_zero() {
+            Float::with_val(prec, 0)
+        } else {
+            Float::with_val(prec, lambda_new / &self.lambda).square()
+        };
+        let tau = chebyshev::nodes(n, prec);
+        let resample = |c: &[Float]| {
+            let vals: Vec<Float> = tau
+                .iter()
+                .map(|t| {
+                    let x = Float::with_val(prec, t * &ratio) * 2u32 - 1u32;
+                    chebyshev::evaluate(c, &x, prec)
+                })
+                .collect();
+            chebyshev::coefficients(&vals, prec)
+        };
+        VolterraSolution {
+            prec,
+            lambda: Float::with_val(prec, lambda_new),
+            eps: self.eps.clone(),
+            cosh_pi_eps: self.cosh_pi_eps.clone(),
+            f_coeffs: resample(&self.f_coeffs),
+            j_coeffs: resample(&self.j_coeffs),
+            residual: self.residual,
+            pivot_ratio: self.pivot_ratio,
+            rule: self.rule.clone(),
+            pre: self.pre.clone(),
+        }
+    }
+
     /// A copy rounded to `bits` (>= 53) with a quadrature rule for that accuracy: for cheap
     /// evaluations that need only a few digits (locating tension zones).
     pub fn reduced(&self, bits: u32) -> VolterraSolution {
@@ -375,13 +411,26 @@ impl VolterraSolution {
     fn stress_ratio_float(&self, sigma: &Float, omss: &Float) -> (Float, Float) {
         let prec = self.prec;
         let (mut sr, mut si) = (Float::with_val(prec, 0), Float::with_val(prec, 0));
+        let pi = Float::with_val(prec, Constant::Pi);
+        if !sigma.is_zero() && *sigma < 0.5f64 {
+            // v-form: r = sigma cosh v, v in (0, V), V = acosh(1/sigma).
+            let big_v = Float::with_val(prec, sigma.recip_ref()).acosh();
+            for q in 0..self.rule.len() {
+                let v = Float::with_val(prec, &big_v * &self.rule.s[q]);
+                let (re, im, r2) = kernel::stress_integrand_v(sigma, &v, &self.lambda, &self.eps, prec);
+                let fw = self.f_at(&r2) * &self.rule.w[q];
+                sr += Float::with_val(prec, &re * &fw);
+                si += Float::with_val(prec, &im * &fw);
+            }
+            let scale = Float::with_val(prec, &big_v * &self.cosh_pi_eps) / pi;
+            return (sr * &scale, si * &scale);
+        }
         for q in 0..self.rule.len() {
             let (re, im, r2) = kernel::stress_integrand(sigma, omss, &self.rule.s[q], &self.lambda, &self.eps, prec);
             let fw = self.f_at(&r2) * &self.rule.w[q];
             sr += Float::with_val(prec, &re * &fw);
             si += Float::with_val(prec, &im * &fw);
         }
-        let pi = Float::with_val(prec, Constant::Pi);
         let scale = Float::with_val(prec, omss.sqrt_ref()) * &self.cosh_pi_eps / pi;
         (sr * &scale, si * &scale)
     }
