@@ -13,6 +13,7 @@ use super::AdhesionError;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape};
 use crate::numerics::exact::to_f64;
 use rug::float::Constant;
+use rug::ops::Pow;
 use rug::Float;
 
 fn q(n: i64, d: i64) -> Exact {
@@ -275,8 +276,35 @@ fn adhesion_tension_zone_near_edge() {
     assert!(!s.tension.zones.is_empty());
     let z = &s.tension.zones[0];
     assert!(z.from_x_over_a < z.to_x_over_a && z.to_x_over_a < 1);
+    // Middle of the zone (geometric mean of its 1 - x/a ends) in tension; outside it, pressure.
+    let mid = Float::with_val(64, &z.delta_inner * &z.delta_outer).sqrt().to_f64();
+    let mid = Exact::new(((1.0 - mid) * 1e15).round().to_string().parse().unwrap(), 1_000_000_000_000_000i64.into());
+    let outer = Float::with_val(64, &z.delta_outer * 10u32).to_f64();
+    let outer = Exact::new(((1.0 - outer) * 1e15).round().to_string().parse().unwrap(), 1_000_000_000_000_000i64.into());
+    let s = solve_mpfr(&pr, &[mid, outer], VolterraParams::for_digits(20)).unwrap();
+    assert!(s.points[0].q2 < 0 && s.points[1].q2 > 0, "{} {}", s.points[0].q2, s.points[1].q2);
+    assert_eq!(s.tension.at_points, vec![0]);
     let pr2 = problem(q(1, 2), Some(q(1, 1)), AdhesionSize::HalfWidth(q(1, 5)));
     assert!(solve_mpfr(&pr2, &[], VolterraParams::for_digits(20)).unwrap().tension.zones.is_empty());
+}
+
+#[test]
+fn adhesion_edge_factor_matches_stress_near_edge() {
+    // (q2 + i q1)/(E* k a) = C delta^{1/2 - i eps} (1 + O(delta)) at delta = 1 - x/a -> 0.
+    let m = material(q(0, 1));
+    let prec = 100;
+    let lam = Float::with_val(prec, 0.6);
+    let sol = volterra_mpfr::solve(&m, &lam, VolterraParams::for_digits(20)).unwrap();
+    let c = sol.edge_stress_factor();
+    for d in [1e-6, 1e-9] {
+        let delta = Float::with_val(prec, d);
+        let (q2, q1) = sol.stress_ratio_near_edge(&delta);
+        let expo = rug::Complex::with_val(prec, (0.5f64, Float::with_val(prec, -&sol.eps)));
+        let want = rug::Complex::with_val(prec, &c * rug::Complex::with_val(prec, delta.clone()).pow(&expo));
+        let err = ((q2.to_f64() - want.real().to_f64()).powi(2) + (q1.to_f64() - want.imag().to_f64()).powi(2)).sqrt();
+        let size = want.clone().abs().real().to_f64();
+        assert!(err < 10.0 * d * size, "delta {d}: {err:e} vs {size:e}");
+    }
 }
 
 #[test]
