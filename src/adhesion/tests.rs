@@ -433,3 +433,35 @@ fn adhesion_chart_timing_breakdown() {
         }
     }
 }
+
+/// Chart: cost against requested digits (nu = 0.3, a/L = 3/20, 11 points). `--ignored`.
+#[test]
+#[ignore]
+fn adhesion_chart_digits_cost() {
+    let ten: Vec<Exact> = (0..=10).map(|i| q(i, 10)).collect();
+    let pr = problem(q(3, 10), Some(q(1, 1)), AdhesionSize::HalfWidth(q(3, 20)));
+    for d in [10u32, 20, 30, 50, 80] {
+        let v = solve_verified(&pr, &ten, d).unwrap();
+        let g = v.digits_verified;
+        println!("digits {d}: verified size {:.1} psi {:.1} phi {:.1} q1 {:.1} q2 {:.1} nodes {} time {:.3}s", g.size, g.psi, g.phi, g.q1, g.q2, v.solution.nodes, v.elapsed_seconds);
+    }
+}
+
+#[test]
+fn adhesion_robust_over_inputs() {
+    // No panic, no NaN, digits delivered, for tiny and moderate contacts and points at the edge.
+    let points = vec![q(0, 1), q(1, 3), Exact::new(1.into(), 1.into()) - Exact::new(1.into(), num_bigint::BigInt::from(10).pow(20)), q(1, 1)];
+    for nu in [q(0, 1), q(1, 4), q(1, 2)] {
+        for (a, l) in [(Exact::new(1.into(), num_bigint::BigInt::from(10).pow(6)), Some(q(1, 1))), (q(1, 10), Some(q(1, 1))), (q(7, 3), None)] {
+            let pr = problem(nu.clone(), l, AdhesionSize::HalfWidth(a.clone()));
+            let v = solve_verified(&pr, &points, 10).unwrap();
+            assert!(v.digits_verified.headline >= 10.0, "nu {nu} a {a}: {:?}", v.digits_verified);
+            for p in &v.solution.points {
+                for x in [&p.psi, &p.phi, &p.q1, &p.q2] {
+                    assert!(x.is_finite());
+                }
+            }
+            assert!(v.solution.normal_load.is_finite() && v.solution.normal_load > 0);
+        }
+    }
+}
