@@ -465,3 +465,30 @@ fn adhesion_robust_over_inputs() {
         }
     }
 }
+
+/// Chart: Chebyshev decay rate of F at nu = 0 and the singularity location t_s it implies
+/// (if on the positive axis: rho = z + sqrt(z^2 - 1), z = 2 t_s/lambda^2 - 1). `--ignored`.
+#[test]
+#[ignore]
+fn adhesion_chart_singularity_location() {
+    for nu in [q(0, 1), q(3, 10)] {
+        let m = material(nu.clone());
+        for lam in [0.4f64, 0.5, 0.6, 0.7, 0.75, 0.8] {
+            let p = VolterraParams { prec: 260, target_bits: 200, refine: 1.2 };
+            let lf = Float::with_val(260, lam);
+            match volterra_mpfr::solve(&m, &lf, p) {
+                Ok(s) => {
+                    let c: Vec<f64> = s.f_coeffs.iter().map(|x| x.clone().abs().to_f64().max(1e-300).ln()).collect();
+                    let n = c.len();
+                    let (i0, i1) = (n / 4, 3 * n / 4);
+                    let rate = (c[i0] - c[i1]) / (i1 - i0) as f64;
+                    let rho = rate.exp();
+                    let z = 0.5 * (rho + 1.0 / rho);
+                    let ts = (z + 1.0) / 2.0 * lam * lam;
+                    println!("nu {nu} lambda {lam}: n {n} rho {rho:.3} -> t_s {ts:.4} (eta_s {:.4})", ts.sqrt());
+                }
+                Err(e) => println!("nu {nu} lambda {lam}: {e}"),
+            }
+        }
+    }
+}
