@@ -21,3 +21,4 @@ pub mod numerics;
 pub mod report;
 pub mod scene;
 pub mod sliding;
+pub mod solve;

@@ -8,24 +8,11 @@ use std::process::ExitCode;
 
 fn run(config: RunConfig) -> anyhow::Result<()> {
     match config {
-        RunConfig::Series {
-            object,
-            order,
-            subs,
-            format,
-        } => {
+        RunConfig::Series { object, order, subs, format } => {
             let parts = object.derive(order, &subs)?;
             let text = match format {
-                Format::Text => parts
-                    .iter()
-                    .map(|d| d.text())
-                    .collect::<Vec<_>>()
-                    .join("\n"),
-                Format::Latex => parts
-                    .iter()
-                    .map(|d| d.latex())
-                    .collect::<Vec<_>>()
-                    .join("\n"),
+                Format::Text => parts.iter().map(|d| d.text()).collect::<Vec<_>>().join("\n"),
+                Format::Latex => parts.iter().map(|d| d.latex()).collect::<Vec<_>>().join("\n"),
                 Format::Json => {
                     let v = match parts.as_slice() {
                         [one] => one.json(),
@@ -36,6 +23,17 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                     };
                     format!("{}\n", serde_json::to_string_pretty(&v)?)
                 }
+            };
+            std::io::stdout().write_all(text.as_bytes())?;
+        }
+        RunConfig::Solve { scene, request, format } => {
+            let v = periodic_contact::solve::solve_scene(&scene, request).map_err(|e| match e {
+                periodic_contact::solve::SolveError::Invalid(i) => anyhow::Error::new(i),
+                periodic_contact::solve::SolveError::Failed(m) => anyhow::anyhow!("no solution: {m}"),
+            })?;
+            let text = match format {
+                Format::Json => format!("{}\n", serde_json::to_string_pretty(&v)?),
+                _ => periodic_contact::solve::format::text(&v),
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }
@@ -68,11 +66,7 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
-            ExitCode::from(if e.downcast_ref::<InvalidInput>().is_some() {
-                2
-            } else {
-                1
-            })
+            ExitCode::from(if e.downcast_ref::<InvalidInput>().is_some() { 2 } else { 1 })
         }
     }
 }

@@ -3,10 +3,7 @@
 use std::process::Command;
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_periodic-contact"))
-        .args(args)
-        .output()
-        .expect("binary runs");
+    let out = Command::new(env!("CARGO_BIN_EXE_periodic-contact")).args(args).output().expect("binary runs");
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -16,9 +13,8 @@ fn run(args: &[&str]) -> (i32, String, String) {
 
 #[test]
 fn series_json_has_the_documented_layout() {
-    let (code, out, _) = run(&[
-        "series", "weight", "--order", "4", "--theta", "1/10", "--xh", "-1/2", "--format", "json",
-    ]);
+    let (code, out, _) =
+        run(&["series", "weight", "--order", "4", "--theta", "1/10", "--xh", "-1/2", "--format", "json"]);
     assert_eq!(code, 0);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["object"], "weight");
@@ -36,22 +32,10 @@ fn bad_input_is_exit_code_2_with_a_message_naming_the_parameter() {
         (vec!["series", "kernel", "--order", "1000000000"], "--order"),
         (vec!["series", "kernel", "--order", "-3"], "--order"),
         (vec!["series", "kernel", "--order", "x"], "--order"),
-        (
-            vec!["series", "weight", "--order", "4", "--theta", "1/2"],
-            "|theta| < 1/2",
-        ),
-        (
-            vec!["series", "weight", "--order", "4", "--theta", "abc"],
-            "--theta",
-        ),
-        (
-            vec!["series", "weight", "--order", "4", "--xh", "3/2"],
-            "[-1, 1]",
-        ),
-        (
-            vec!["series", "jacobi", "--order", "4", "--xh", "0"],
-            "--xh",
-        ),
+        (vec!["series", "weight", "--order", "4", "--theta", "1/2"], "|theta| < 1/2"),
+        (vec!["series", "weight", "--order", "4", "--theta", "abc"], "--theta"),
+        (vec!["series", "weight", "--order", "4", "--xh", "3/2"], "[-1, 1]"),
+        (vec!["series", "jacobi", "--order", "4", "--xh", "0"], "--xh"),
         (vec!["series", "nothing", "--order", "4"], "possible values"),
         (vec!["series", "kernel"], "--order"),
     ] {

@@ -29,7 +29,7 @@ fn q(n: i64, d: i64) -> Q {
 #[test]
 fn numbers_are_read_exactly_quoted_or_not() {
     let s = parse_scene(BASE).unwrap();
-    let SceneProblem::Sliding(p) = &s.problem;
+    let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
     assert_eq!(p.material.poisson_ratio, q(1, 4));
     assert_eq!(p.material.contact_modulus, q(2, 1));
     assert_eq!(p.shape, PunchShape::Parabolic { k: q(1, 10) });
@@ -47,69 +47,27 @@ fn err(text: &str) -> String {
 #[test]
 fn errors_name_the_parameter_value_and_range() {
     let cases = [
-        (
-            BASE.replace("digits = 30", "digits = 30\ncolour = \"red\""),
-            "output.colour",
-        ),
-        (
-            BASE.replace("\"0.25\"", "\"0.75\""),
-            "poisson_ratio = 3/4: must lie in [0, 1/2]",
-        ),
-        (
-            BASE.replace(
-                "contact_modulus = 2",
-                "contact_modulus = 2\nyoungs_modulus = 3",
-            ),
-            "not both",
-        ),
-        (
-            BASE.replace("k = 0.1", "k = -1"),
-            "punch.k = -1: must be > 0",
-        ),
-        (
-            BASE.replace("period = \"1/3\"", "period = 0"),
-            "punch.period = 0: must be > 0",
-        ),
-        (
-            BASE.replace("\"7/10\"", "\"1\""),
-            "output.points[2] = 1: must lie in (-1, 1)",
-        ),
-        (
-            BASE.replace("friction = \"0.3\"", "friction = \"-0.3\""),
-            "sliding.friction = -3/10: must be >= 0",
-        ),
-        (
-            BASE.replace("normal_load = 1e-3", ""),
-            "give normal_load or half_length",
-        ),
-        (
-            BASE.replace("normal_load = 1e-3", "half_length = \"1/5\""),
-            "2 l < L = 1/3",
-        ),
+        (BASE.replace("digits = 30", "digits = 30\ncolour = \"red\""), "output.colour"),
+        (BASE.replace("\"0.25\"", "\"0.75\""), "poisson_ratio = 3/4: must lie in [0, 1/2]"),
+        (BASE.replace("contact_modulus = 2", "contact_modulus = 2\nyoungs_modulus = 3"), "not both"),
+        (BASE.replace("k = 0.1", "k = -1"), "punch.k = -1: must be > 0"),
+        (BASE.replace("period = \"1/3\"", "period = 0"), "punch.period = 0: must be > 0"),
+        (BASE.replace("\"7/10\"", "\"1\""), "output.points[2] = 1: must lie in (-1, 1)"),
+        (BASE.replace("friction = \"0.3\"", "friction = \"-0.3\""), "sliding.friction = -3/10: must be >= 0"),
+        (BASE.replace("normal_load = 1e-3", ""), "give normal_load or half_length"),
+        (BASE.replace("normal_load = 1e-3", "half_length = \"1/5\""), "2 l < L = 1/3"),
         (
             BASE.replace("digits = 30", "digits = 1000000000"),
             "output.digits = 1000000000: must be an integer in [1, 1000]",
         ),
-        (
-            BASE.replace("digits = 30", "digits = 0"),
-            "output.digits = 0",
-        ),
+        (BASE.replace("digits = 30", "digits = 0"), "output.digits = 0"),
         (BASE.replace("[sliding]", "[sliding\n"), "malformed TOML"),
-        (
-            BASE.replace("k = 0.1", "k = \"abc\""),
-            "punch.k = abc: must be an exact number",
-        ),
+        (BASE.replace("k = 0.1", "k = \"abc\""), "punch.k = abc: must be an exact number"),
         (BASE.replace("k = 0.1", "k = nan"), "punch.k = nan"),
+        (BASE.replace("\"sliding\"", "\"rolling\""), "problem.kind = rolling"),
         (
-            BASE.replace("\"sliding\"", "\"rolling\""),
-            "problem.kind = rolling",
-        ),
-        (
-            BASE.replace(
-                "shape = \"parabolic\"\nk = 0.1",
-                "shape = \"sinusoidal\"\namplitude = 0.1",
-            )
-            .replace("\"1/3\"", "\"inf\""),
+            BASE.replace("shape = \"parabolic\"\nk = 0.1", "shape = \"sinusoidal\"\namplitude = 0.1")
+                .replace("\"1/3\"", "\"inf\""),
             "finite period",
         ),
     ];
@@ -122,18 +80,11 @@ fn errors_name_the_parameter_value_and_range() {
 #[test]
 fn single_punch_and_sinusoid() {
     let s = parse_scene(&BASE.replace("\"1/3\"", "\"inf\"")).unwrap();
-    let SceneProblem::Sliding(p) = &s.problem;
+    let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
     assert_eq!(p.period, Period::Infinite);
-    let s = parse_scene(&BASE.replace(
-        "shape = \"parabolic\"\nk = 0.1",
-        "shape = \"sinusoidal\"\namplitude = \"0.01\"",
-    ))
-    .unwrap();
-    let SceneProblem::Sliding(p) = &s.problem;
-    assert_eq!(
-        p.shape,
-        PunchShape::Sinusoidal {
-            amplitude: q(1, 100)
-        }
-    );
+    let s =
+        parse_scene(&BASE.replace("shape = \"parabolic\"\nk = 0.1", "shape = \"sinusoidal\"\namplitude = \"0.01\""))
+            .unwrap();
+    let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
+    assert_eq!(p.shape, PunchShape::Sinusoidal { amplitude: q(1, 100) });
 }

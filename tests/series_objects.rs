@@ -48,10 +48,7 @@ fn weight_series_remainder_scales_like_next_even_power() {
                 Float::with_val(PREC, s - direct(lam)).abs()
             };
             let p = observed_order(err, 0.02);
-            assert!(
-                (p - (n as f64 + 2.0)).abs() < 0.1,
-                "theta={tq} xh={xq} N={n}: order {p}"
-            );
+            assert!((p - (n as f64 + 2.0)).abs() < 0.1, "theta={tq} xh={xq} N={n}: order {p}");
         }
     }
 }

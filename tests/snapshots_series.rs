@@ -27,55 +27,31 @@ fn snap(name: &str, object: SeriesObject, subs: Substitutions) {
 
 #[test]
 fn kernel_order12() {
-    snap(
-        "kernel_order12",
-        SeriesObject::Kernel,
-        Substitutions::default(),
-    );
+    snap("kernel_order12", SeriesObject::Kernel, Substitutions::default());
 }
 
 #[test]
 fn weight_order12() {
-    snap(
-        "weight_order12",
-        SeriesObject::Weight,
-        Substitutions::default(),
-    );
+    snap("weight_order12", SeriesObject::Weight, Substitutions::default());
 }
 
 #[test]
 fn weight_order12_theta_1_10() {
-    let subs = Substitutions {
-        theta: Some(exact_series::Q::new(1.into(), 10.into())),
-        xh: None,
-        t: None,
-    };
+    let subs = Substitutions { theta: Some(exact_series::Q::new(1.into(), 10.into())), xh: None, t: None };
     snap("weight_order12_theta_1_10", SeriesObject::Weight, subs);
 }
 
 #[test]
 fn jacobi_order12() {
-    snap(
-        "jacobi_order12",
-        SeriesObject::Jacobi,
-        Substitutions::default(),
-    );
+    snap("jacobi_order12", SeriesObject::Jacobi, Substitutions::default());
 }
 
 #[test]
 fn sliding_parabolic_order12() {
-    snap(
-        "sliding_parabolic_order12",
-        SeriesObject::Sliding(SlidingShape::Parabolic),
-        Substitutions::default(),
-    );
+    snap("sliding_parabolic_order12", SeriesObject::Sliding(SlidingShape::Parabolic), Substitutions::default());
 }
 
 #[test]
 fn sliding_sinusoidal_order12() {
-    snap(
-        "sliding_sinusoidal_order12",
-        SeriesObject::Sliding(SlidingShape::Sinusoidal),
-        Substitutions::default(),
-    );
+    snap("sliding_sinusoidal_order12", SeriesObject::Sliding(SlidingShape::Sinusoidal), Substitutions::default());
 }

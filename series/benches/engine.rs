@@ -7,9 +7,7 @@ use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criteri
 use exact_series::{Poly, Ring, Series, Q};
 
 fn alpha() -> Poly {
-    Poly::var("theta")
-        .unwrap()
-        .add(&Poly::from_q(&Q::new(1.into(), 2.into())))
+    Poly::var("theta").unwrap().add(&Poly::from_q(&Q::new(1.into(), 2.into())))
 }
 
 fn sinc_power(c: &mut Criterion) {
@@ -17,20 +15,10 @@ fn sinc_power(c: &mut Criterion) {
     g.sample_size(10);
     for n in [30usize, 60] {
         g.bench_with_input(BenchmarkId::new("series", n), &n, |b, &n| {
-            b.iter(|| {
-                Series::<Poly>::sinc_series(black_box(n))
-                    .pow(&alpha())
-                    .unwrap()
-            })
+            b.iter(|| Series::<Poly>::sinc_series(black_box(n)).pow(&alpha()).unwrap())
         });
-        let f = Series::<Poly>::sinc_series(n)
-            .pow(&alpha())
-            .unwrap()
-            .shift(1)
-            .truncate(n);
-        g.bench_with_input(BenchmarkId::new("reversion", n), &f, |b, f| {
-            b.iter(|| f.revert().unwrap())
-        });
+        let f = Series::<Poly>::sinc_series(n).pow(&alpha()).unwrap().shift(1).truncate(n);
+        g.bench_with_input(BenchmarkId::new("reversion", n), &f, |b, f| b.iter(|| f.revert().unwrap()));
     }
     g.finish();
 }
@@ -39,13 +27,9 @@ fn rational(c: &mut Criterion) {
     let mut g = c.benchmark_group("rational");
     g.sample_size(10);
     for n in [30usize, 100] {
-        g.bench_with_input(BenchmarkId::new("zcot", n), &n, |b, &n| {
-            b.iter(|| Series::<Q>::zcot_series(black_box(n)))
-        });
+        g.bench_with_input(BenchmarkId::new("zcot", n), &n, |b, &n| b.iter(|| Series::<Q>::zcot_series(black_box(n))));
         let x = Series::<Q>::var(n);
-        g.bench_with_input(BenchmarkId::new("tan_revert", n), &x, |b, x| {
-            b.iter(|| x.tan().unwrap().revert().unwrap())
-        });
+        g.bench_with_input(BenchmarkId::new("tan_revert", n), &x, |b, x| b.iter(|| x.tan().unwrap().revert().unwrap()));
     }
     g.finish();
 }

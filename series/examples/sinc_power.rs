@@ -38,27 +38,13 @@ fn main() {
         ns = vec![30, 60, 100];
     }
     let half = Q::new(1.into(), 2.into());
-    let alpha = Poly::var("theta")
-        .expect("valid symbol")
-        .add(&Poly::from_q(&half));
+    let alpha = Poly::var("theta").expect("valid symbol").add(&Poly::from_q(&half));
     let a_fixed = &half + Q::new(1.into(), 3.into());
     for n in ns {
-        let (ts, f) = best(repeat, || {
-            Series::<Poly>::sinc_series(n)
-                .pow(&alpha)
-                .expect("sinc(0) = 1")
-        });
-        let (tr, rev) = best(repeat, || {
-            f.shift(1).truncate(n).revert().expect("f(0) = 1")
-        });
-        let (tqs, g) = best(repeat, || {
-            Series::<Q>::sinc_series(n)
-                .pow(&a_fixed)
-                .expect("sinc(0) = 1")
-        });
-        let (tqr, _) = best(repeat, || {
-            g.shift(1).truncate(n).revert().expect("g(0) = 1")
-        });
+        let (ts, f) = best(repeat, || Series::<Poly>::sinc_series(n).pow(&alpha).expect("sinc(0) = 1"));
+        let (tr, rev) = best(repeat, || f.shift(1).truncate(n).revert().expect("f(0) = 1"));
+        let (tqs, g) = best(repeat, || Series::<Q>::sinc_series(n).pow(&a_fixed).expect("sinc(0) = 1"));
+        let (tqr, _) = best(repeat, || g.shift(1).truncate(n).revert().expect("g(0) = 1"));
         let c7 = rev.coeff(7).map(|c| c.text()).unwrap_or_default();
         println!(
             "{{\"N\": {n}, \"symbolic_series_s\": {ts:.6e}, \"symbolic_reversion_s\": {tr:.6e}, \"q_series_s\": {tqs:.6e}, \"q_reversion_s\": {tqr:.6e}, \"rev_x7\": \"{c7}\"}}"

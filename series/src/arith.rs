@@ -41,12 +41,8 @@ impl<R: Ring> Series<R> {
     /// ```
     pub fn inv(&self) -> Result<Self, SeriesError> {
         let a0 = self.coeffs.first().cloned().unwrap_or_else(R::zero);
-        let b0 = a0
-            .inv()
-            .ok_or_else(|| SeriesError::NonInvertibleConstantTerm {
-                operation: "inv",
-                constant: a0.text(),
-            })?;
+        let b0 =
+            a0.inv().ok_or_else(|| SeriesError::NonInvertibleConstantTerm { operation: "inv", constant: a0.text() })?;
         let p = self.prec();
         let mut b: Vec<R> = Vec::with_capacity(p);
         b.push(b0.clone());
@@ -81,17 +77,10 @@ impl<R: Ring> Series<R> {
         }
         let va = self.valuation();
         if va < v || v >= other.prec() {
-            return Err(SeriesError::ValuationMismatch {
-                dividend: va,
-                divisor: v,
-            });
+            return Err(SeriesError::ValuationMismatch { dividend: va, divisor: v });
         }
-        let a = Series {
-            coeffs: self.coeffs[v..].to_vec(),
-        };
-        let b = Series {
-            coeffs: other.coeffs[v..].to_vec(),
-        };
+        let a = Series { coeffs: self.coeffs[v..].to_vec() };
+        let b = Series { coeffs: other.coeffs[v..].to_vec() };
         Ok(a.mul(&b.inv()?))
     }
 

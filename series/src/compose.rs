@@ -15,10 +15,7 @@ impl<R: Ring> Series<R> {
     pub fn compose(&self, g: &Self) -> Result<Self, SeriesError> {
         if let Some(c) = g.coeffs.first() {
             if !c.is_zero() {
-                return Err(SeriesError::NonZeroInnerConstant {
-                    operation: "compose",
-                    constant: c.text(),
-                });
+                return Err(SeriesError::NonZeroInnerConstant { operation: "compose", constant: c.text() });
             }
         }
         let vg = g.valuation().max(1);
@@ -49,35 +46,25 @@ impl<R: Ring> Series<R> {
         let p = self.prec();
         if let Some(c) = self.coeffs.first() {
             if !c.is_zero() {
-                return Err(SeriesError::NonZeroInnerConstant {
-                    operation: "revert",
-                    constant: c.text(),
-                });
+                return Err(SeriesError::NonZeroInnerConstant { operation: "revert", constant: c.text() });
             }
         }
         if p < 2 {
             return Ok(Series::zero(p));
         }
         let a1 = &self.coeffs[1];
-        let a1_inv = a1
-            .inv()
-            .ok_or_else(|| SeriesError::NonInvertibleConstantTerm {
-                operation: "revert (linear coefficient)",
-                constant: a1.text(),
-            })?;
+        let a1_inv = a1.inv().ok_or_else(|| SeriesError::NonInvertibleConstantTerm {
+            operation: "revert (linear coefficient)",
+            constant: a1.text(),
+        })?;
         // h = self / (a1 x), known to p - 1 coefficients.
-        let h = Series {
-            coeffs: self.coeffs[1..].iter().map(|c| c.mul(&a1_inv)).collect(),
-        };
+        let h = Series { coeffs: self.coeffs[1..].iter().map(|c| c.mul(&a1_inv)).collect() };
         let log_h = h.log()?;
         let mut out = vec![R::zero(); p];
         let mut a1_pow = a1_inv.clone(); // a1^(-n)
         for n in 1..p {
             // [x^(n-1)] exp(-n log h), with exp truncated to n coefficients.
-            let e = log_h
-                .truncate(n)
-                .scale(&crate::Q::from_integer((-(n as i64)).into()))
-                .exp()?;
+            let e = log_h.truncate(n).scale(&crate::Q::from_integer((-(n as i64)).into())).exp()?;
             out[n] = e.coeffs[n - 1].mul(&a1_pow).div_int(n as i64);
             a1_pow = a1_pow.mul(&a1_inv);
         }

@@ -9,10 +9,7 @@ use num_traits::One;
 
 fn check_zero_constant<R: Ring>(f: &Series<R>, operation: &'static str) -> Result<(), SeriesError> {
     match f.coeffs.first() {
-        Some(c) if !c.is_zero() => Err(SeriesError::NonZeroInnerConstant {
-            operation,
-            constant: c.text(),
-        }),
+        Some(c) if !c.is_zero() => Err(SeriesError::NonZeroInnerConstant { operation, constant: c.text() }),
         _ => Ok(()),
     }
 }
@@ -20,11 +17,7 @@ fn check_zero_constant<R: Ring>(f: &Series<R>, operation: &'static str) -> Resul
 fn check_unit_constant<R: Ring>(f: &Series<R>, operation: &'static str) -> Result<(), SeriesError> {
     match f.coeffs.first() {
         Some(c) if c.is_one() => Ok(()),
-        Some(c) => Err(SeriesError::ConstantTermRequired {
-            operation,
-            required: "1",
-            constant: c.text(),
-        }),
+        Some(c) => Err(SeriesError::ConstantTermRequired { operation, required: "1", constant: c.text() }),
         None => Ok(()),
     }
 }
@@ -41,12 +34,7 @@ impl<R: Ring> Series<R> {
     pub fn exp(&self) -> Result<Self, SeriesError> {
         check_zero_constant(self, "exp")?;
         let p = self.prec();
-        let kf: Vec<R> = self
-            .coeffs
-            .iter()
-            .enumerate()
-            .map(|(k, c)| c.mul_int(k as i64))
-            .collect();
+        let kf: Vec<R> = self.coeffs.iter().enumerate().map(|(k, c)| c.mul_int(k as i64)).collect();
         let mut g: Vec<R> = Vec::with_capacity(p);
         if p > 0 {
             g.push(R::one());
@@ -94,12 +82,7 @@ impl<R: Ring> Series<R> {
             g.push(R::one());
         }
         // Precompute (alpha + 1) k f_k and f_k.
-        let af: Vec<R> = self
-            .coeffs
-            .iter()
-            .enumerate()
-            .map(|(k, c)| a1.mul_int(k as i64).mul(c))
-            .collect();
+        let af: Vec<R> = self.coeffs.iter().enumerate().map(|(k, c)| a1.mul_int(k as i64).mul(c)).collect();
         for m in 1..p {
             let mut acc = R::zero();
             for k in 1..=m {
@@ -128,28 +111,17 @@ impl<R: Ring> Series<R> {
         let v = self.valuation();
         if v > 0 && v < self.prec() {
             if v % 2 == 1 {
-                return Err(SeriesError::NotASquare {
-                    constant: format!("x^{v} * ..."),
-                });
+                return Err(SeriesError::NotASquare { constant: format!("x^{v} * ...") });
             }
-            let inner = Series {
-                coeffs: self.coeffs[v..].to_vec(),
-            };
+            let inner = Series { coeffs: self.coeffs[v..].to_vec() };
             return Ok(inner.sqrt()?.shift(v / 2));
         }
         let c0 = self.coeffs.first().cloned().unwrap_or_else(R::zero);
         let s =
-            c0.sqrt_exact()
-                .filter(|s| !s.is_zero())
-                .ok_or_else(|| SeriesError::NotASquare {
-                    constant: c0.text(),
-                })?;
+            c0.sqrt_exact().filter(|s| !s.is_zero()).ok_or_else(|| SeriesError::NotASquare { constant: c0.text() })?;
         let c0_inv = c0
             .inv()
-            .ok_or_else(|| SeriesError::NonInvertibleConstantTerm {
-                operation: "sqrt",
-                constant: c0.text(),
-            })?;
+            .ok_or_else(|| SeriesError::NonInvertibleConstantTerm { operation: "sqrt", constant: c0.text() })?;
         let half = Q::new(BigInt::one(), BigInt::from(2));
         Ok(self.mul_scalar(&c0_inv).pow_q(&half)?.mul_scalar(&s))
     }
@@ -158,12 +130,7 @@ impl<R: Ring> Series<R> {
     pub fn sin_cos(&self) -> Result<(Self, Self), SeriesError> {
         check_zero_constant(self, "sin/cos")?;
         let p = self.prec();
-        let kf: Vec<R> = self
-            .coeffs
-            .iter()
-            .enumerate()
-            .map(|(k, c)| c.mul_int(k as i64))
-            .collect();
+        let kf: Vec<R> = self.coeffs.iter().enumerate().map(|(k, c)| c.mul_int(k as i64)).collect();
         let mut s: Vec<R> = Vec::with_capacity(p);
         let mut c: Vec<R> = Vec::with_capacity(p);
         if p > 0 {
@@ -214,11 +181,7 @@ impl<R: Ring> Series<R> {
         for k in 0..prec {
             fact *= BigInt::from(k as u64 + 1);
             if k % 2 == 0 {
-                let sign = if (k / 2) % 2 == 0 {
-                    BigInt::one()
-                } else {
-                    -BigInt::one()
-                };
+                let sign = if (k / 2) % 2 == 0 { BigInt::one() } else { -BigInt::one() };
                 out.push(R::from_q(&Q::new(sign, fact.clone())));
             } else {
                 out.push(R::zero());
@@ -232,8 +195,7 @@ impl<R: Ring> Series<R> {
     pub fn zcot_series(prec: usize) -> Self {
         let z = Series::<R>::var(prec + 1);
         let cos = z.cos().expect("z has zero constant term").truncate(prec);
-        cos.div(&Series::sinc_series(prec))
-            .expect("sinc(0) = 1 is a unit")
+        cos.div(&Series::sinc_series(prec)).expect("sinc(0) = 1 is a unit")
     }
 
     /// `sinc(self) = sin(self)/self` (with sinc(0) = 1), requires `self(0) = 0`.

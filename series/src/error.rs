@@ -30,9 +30,7 @@ pub enum SeriesError {
         constant: String,
     },
     /// Division by a series whose leading term is beyond the known precision or does not divide.
-    #[error(
-        "division: the divisor's valuation {divisor} exceeds the dividend's valuation {dividend}"
-    )]
+    #[error("division: the divisor's valuation {divisor} exceeds the dividend's valuation {dividend}")]
     ValuationMismatch {
         /// Valuation of the dividend.
         dividend: usize,

@@ -39,10 +39,7 @@ fn lex_cmp(a: &Monomial, b: &Monomial) -> Ordering {
 fn leading(p: &Poly) -> (Monomial, Q) {
     let mut best: Option<(&Monomial, Q)> = None;
     for (m, q) in p.terms() {
-        if best
-            .as_ref()
-            .is_none_or(|(bm, _)| lex_cmp(m, bm) == Ordering::Greater)
-        {
+        if best.as_ref().is_none_or(|(bm, _)| lex_cmp(m, bm) == Ordering::Greater) {
             best = Some((m, q));
         }
     }
@@ -60,10 +57,7 @@ fn mono_div(m: &Monomial, d: &Monomial) -> Option<Monomial> {
         }
         out = out.mul(&Monomial::power(s, e - f));
     }
-    d.factors()
-        .iter()
-        .all(|&(s, _)| m.exponent(s) > 0)
-        .then_some(out)
+    d.factors().iter().all(|&(s, _)| m.exponent(s) > 0).then_some(out)
 }
 
 /// Exact division `a / b` in Q[symbols], `None` if `b` does not divide `a`.
@@ -97,10 +91,7 @@ fn coeffs_in(p: &Poly, x: Symbol) -> Vec<Poly> {
 
 /// Content of `p` with respect to `x`: the gcd of its coefficients in `x`.
 fn content_in(p: &Poly, x: Symbol) -> Poly {
-    coeffs_in(p, x)
-        .iter()
-        .filter(|c| !c.is_zero())
-        .fold(Poly::zero(), |g, c| gcd(&g, c))
+    coeffs_in(p, x).iter().filter(|c| !c.is_zero()).fold(Poly::zero(), |g, c| gcd(&g, c))
 }
 
 /// Pseudo-remainder of `a` by `b` in `x` (deg_x b >= 0, b non-zero).
@@ -112,10 +103,7 @@ fn prem(a: &Poly, b: &Poly, x: Symbol) -> Poly {
     while !r.is_zero() && r.degree_in(x) as usize >= n {
         let cr = coeffs_in(&r, x);
         let m = cr.len() - 1;
-        let shift = Poly::term(
-            &Q::from_integer(1.into()),
-            Monomial::power(x, (m - n) as u32),
-        );
+        let shift = Poly::term(&Q::from_integer(1.into()), Monomial::power(x, (m - n) as u32));
         r = r.mul(&lcb).sub(&cr[m].mul(&shift).mul(b));
     }
     r
@@ -162,11 +150,7 @@ pub fn gcd(a: &Poly, b: &Poly) -> Poly {
     while !q.is_zero() && q.degree_in(x) > 0 {
         let r = prem(&p, &q, x);
         p = q;
-        q = if r.is_zero() {
-            r
-        } else {
-            div_exact(&r, &content_in(&r, x)).expect("content divides")
-        };
+        q = if r.is_zero() { r } else { div_exact(&r, &content_in(&r, x)).expect("content divides") };
     }
     let g_prim = if q.is_zero() { p } else { Poly::one() };
     monic(&g_content.mul(&g_prim))
@@ -202,17 +186,11 @@ impl Frac {
         let (n, d) = (div_exact(&num, &g)?, div_exact(&den, &g)?);
         let (_, lc) = leading(&d);
         let inv = lc.recip();
-        Some(Frac {
-            num: n.scale(&inv),
-            den: d.scale(&inv),
-        })
+        Some(Frac { num: n.scale(&inv), den: d.scale(&inv) })
     }
     /// The polynomial `p` as a fraction `p/1`.
     pub fn from_poly(p: Poly) -> Frac {
-        Frac {
-            num: p,
-            den: Poly::one(),
-        }
+        Frac { num: p, den: Poly::one() }
     }
     /// Numerator.
     pub fn numer(&self) -> &Poly {
@@ -230,16 +208,10 @@ impl Frac {
 
 impl Ring for Frac {
     fn zero() -> Self {
-        Frac {
-            num: Poly::zero(),
-            den: Poly::one(),
-        }
+        Frac { num: Poly::zero(), den: Poly::one() }
     }
     fn one() -> Self {
-        Frac {
-            num: Poly::one(),
-            den: Poly::one(),
-        }
+        Frac { num: Poly::one(), den: Poly::one() }
     }
     fn is_zero(&self) -> bool {
         self.num.is_zero()
@@ -248,35 +220,22 @@ impl Ring for Frac {
         if self.den == o.den {
             return Frac::new(self.num.add(&o.num), self.den.clone()).expect("non-zero den");
         }
-        Frac::new(
-            self.num.mul(&o.den).add(&o.num.mul(&self.den)),
-            self.den.mul(&o.den),
-        )
-        .expect("non-zero den")
+        Frac::new(self.num.mul(&o.den).add(&o.num.mul(&self.den)), self.den.mul(&o.den)).expect("non-zero den")
     }
     fn sub(&self, o: &Self) -> Self {
         self.add(&o.neg())
     }
     fn neg(&self) -> Self {
-        Frac {
-            num: self.num.neg(),
-            den: self.den.clone(),
-        }
+        Frac { num: self.num.neg(), den: self.den.clone() }
     }
     fn mul(&self, o: &Self) -> Self {
         if self.den.is_one() && o.den.is_one() {
-            return Frac {
-                num: self.num.mul(&o.num),
-                den: Poly::one(),
-            };
+            return Frac { num: self.num.mul(&o.num), den: Poly::one() };
         }
         Frac::new(self.num.mul(&o.num), self.den.mul(&o.den)).expect("non-zero den")
     }
     fn from_q(q: &Q) -> Self {
-        Frac {
-            num: Poly::from_q(q),
-            den: Poly::one(),
-        }
+        Frac { num: Poly::from_q(q), den: Poly::one() }
     }
     fn as_q(&self) -> Option<Q> {
         if self.den.is_one() {
@@ -312,9 +271,6 @@ impl Ring for Frac {
         if Zero::is_zero(q) {
             return Frac::zero();
         }
-        Frac {
-            num: self.num.scale(q),
-            den: self.den.clone(),
-        }
+        Frac { num: self.num.scale(q), den: self.den.clone() }
     }
 }

@@ -27,10 +27,7 @@ impl<R: Ring> Gaussian<R> {
     }
     /// The imaginary unit.
     pub fn i() -> Self {
-        Gaussian {
-            re: R::zero(),
-            im: R::one(),
-        }
+        Gaussian { re: R::zero(), im: R::one() }
     }
     /// The embedding of `R`.
     pub fn real(re: R) -> Self {
@@ -38,17 +35,11 @@ impl<R: Ring> Gaussian<R> {
     }
     /// Complex conjugate.
     pub fn conj(&self) -> Self {
-        Gaussian {
-            re: self.re.clone(),
-            im: self.im.neg(),
-        }
+        Gaussian { re: self.re.clone(), im: self.im.neg() }
     }
     /// Applies `f` to both parts (e.g. substitution of a symbol).
     pub fn map(&self, f: impl Fn(&R) -> R) -> Self {
-        Gaussian {
-            re: f(&self.re),
-            im: f(&self.im),
-        }
+        Gaussian { re: f(&self.re), im: f(&self.im) }
     }
 }
 
@@ -62,61 +53,34 @@ fn wrap(s: String, paren: bool) -> String {
 
 impl<R: Ring> Ring for Gaussian<R> {
     fn zero() -> Self {
-        Gaussian {
-            re: R::zero(),
-            im: R::zero(),
-        }
+        Gaussian { re: R::zero(), im: R::zero() }
     }
     fn one() -> Self {
-        Gaussian {
-            re: R::one(),
-            im: R::zero(),
-        }
+        Gaussian { re: R::one(), im: R::zero() }
     }
     fn is_zero(&self) -> bool {
         self.re.is_zero() && self.im.is_zero()
     }
     fn add(&self, o: &Self) -> Self {
-        Gaussian {
-            re: self.re.add(&o.re),
-            im: self.im.add(&o.im),
-        }
+        Gaussian { re: self.re.add(&o.re), im: self.im.add(&o.im) }
     }
     fn sub(&self, o: &Self) -> Self {
-        Gaussian {
-            re: self.re.sub(&o.re),
-            im: self.im.sub(&o.im),
-        }
+        Gaussian { re: self.re.sub(&o.re), im: self.im.sub(&o.im) }
     }
     fn neg(&self) -> Self {
-        Gaussian {
-            re: self.re.neg(),
-            im: self.im.neg(),
-        }
+        Gaussian { re: self.re.neg(), im: self.im.neg() }
     }
     fn mul(&self, o: &Self) -> Self {
         if self.im.is_zero() {
-            return Gaussian {
-                re: self.re.mul(&o.re),
-                im: self.re.mul(&o.im),
-            };
+            return Gaussian { re: self.re.mul(&o.re), im: self.re.mul(&o.im) };
         }
         if o.im.is_zero() {
-            return Gaussian {
-                re: self.re.mul(&o.re),
-                im: self.im.mul(&o.re),
-            };
+            return Gaussian { re: self.re.mul(&o.re), im: self.im.mul(&o.re) };
         }
-        Gaussian {
-            re: self.re.mul(&o.re).sub(&self.im.mul(&o.im)),
-            im: self.re.mul(&o.im).add(&self.im.mul(&o.re)),
-        }
+        Gaussian { re: self.re.mul(&o.re).sub(&self.im.mul(&o.im)), im: self.re.mul(&o.im).add(&self.im.mul(&o.re)) }
     }
     fn from_q(q: &Q) -> Self {
-        Gaussian {
-            re: R::from_q(q),
-            im: R::zero(),
-        }
+        Gaussian { re: R::from_q(q), im: R::zero() }
     }
     fn as_q(&self) -> Option<Q> {
         if self.im.is_zero() {
@@ -128,10 +92,7 @@ impl<R: Ring> Ring for Gaussian<R> {
     fn inv(&self) -> Option<Self> {
         let norm = self.re.mul(&self.re).add(&self.im.mul(&self.im));
         let n_inv = norm.inv()?;
-        Some(Gaussian {
-            re: self.re.mul(&n_inv),
-            im: self.im.neg().mul(&n_inv),
-        })
+        Some(Gaussian { re: self.re.mul(&n_inv), im: self.im.neg().mul(&n_inv) })
     }
     fn text(&self) -> String {
         match (self.re.is_zero(), self.im.is_zero()) {
@@ -174,10 +135,7 @@ impl<R: Ring> Ring for Gaussian<R> {
         }
     }
     fn scale(&self, q: &Q) -> Self {
-        Gaussian {
-            re: self.re.scale(q),
-            im: self.im.scale(q),
-        }
+        Gaussian { re: self.re.scale(q), im: self.im.scale(q) }
     }
 }
 

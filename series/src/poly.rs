@@ -77,34 +77,19 @@ impl Monomial {
     /// This monomial without the symbol `s`, and the exponent `s` had.
     pub fn remove(&self, s: Symbol) -> (Monomial, u32) {
         let e = self.exponent(s);
-        (
-            Monomial(self.0.iter().copied().filter(|&(t, _)| t != s).collect()),
-            e,
-        )
+        (Monomial(self.0.iter().copied().filter(|&(t, _)| t != s).collect()), e)
     }
     fn text(&self) -> String {
         self.0
             .iter()
-            .map(|&(s, e)| {
-                if e == 1 {
-                    s.name().to_string()
-                } else {
-                    format!("{}^{e}", s.name())
-                }
-            })
+            .map(|&(s, e)| if e == 1 { s.name().to_string() } else { format!("{}^{e}", s.name()) })
             .collect::<Vec<_>>()
             .join("*")
     }
     fn latex(&self) -> String {
         self.0
             .iter()
-            .map(|&(s, e)| {
-                if e == 1 {
-                    s.latex()
-                } else {
-                    format!("{}^{{{e}}}", s.latex())
-                }
-            })
+            .map(|&(s, e)| if e == 1 { s.latex() } else { format!("{}^{{{e}}}", s.latex()) })
             .collect::<Vec<_>>()
             .join(" ")
     }
@@ -131,26 +116,18 @@ impl Poly {
     }
     /// The polynomial `s`.
     pub fn symbol(s: Symbol) -> Poly {
-        Poly {
-            terms: vec![(Monomial::power(s, 1), BigInt::one())],
-            den: BigInt::one(),
-        }
+        Poly { terms: vec![(Monomial::power(s, 1), BigInt::one())], den: BigInt::one() }
     }
     /// `q * m` for a rational `q` and a monomial `m`.
     pub fn term(q: &Q, m: Monomial) -> Poly {
         if Zero::is_zero(q) {
             return <Poly as Ring>::zero();
         }
-        Poly {
-            terms: vec![(m, q.numer().clone())],
-            den: q.denom().clone(),
-        }
+        Poly { terms: vec![(m, q.numer().clone())], den: q.denom().clone() }
     }
     /// The terms as `(monomial, rational coefficient)`, in the internal (sorted) order.
     pub fn terms(&self) -> impl Iterator<Item = (&Monomial, Q)> + '_ {
-        self.terms
-            .iter()
-            .map(move |(m, n)| (m, Q::new(n.clone(), self.den.clone())))
+        self.terms.iter().map(move |(m, n)| (m, Q::new(n.clone(), self.den.clone())))
     }
     /// Number of terms.
     pub fn len(&self) -> usize {
@@ -169,30 +146,18 @@ impl Poly {
     }
     /// The symbols that occur, sorted by name.
     pub fn symbols(&self) -> Vec<Symbol> {
-        let mut v: Vec<Symbol> = self
-            .terms
-            .iter()
-            .flat_map(|(m, _)| m.0.iter().map(|&(s, _)| s))
-            .collect();
+        let mut v: Vec<Symbol> = self.terms.iter().flat_map(|(m, _)| m.0.iter().map(|&(s, _)| s)).collect();
         v.sort();
         v.dedup();
         v
     }
     /// Degree in the symbol `s`.
     pub fn degree_in(&self, s: Symbol) -> u32 {
-        self.terms
-            .iter()
-            .map(|(m, _)| m.exponent(s))
-            .max()
-            .unwrap_or(0)
+        self.terms.iter().map(|(m, _)| m.exponent(s)).max().unwrap_or(0)
     }
     /// Total degree (0 for constants and for zero).
     pub fn total_degree(&self) -> u32 {
-        self.terms
-            .iter()
-            .map(|(m, _)| m.degree())
-            .max()
-            .unwrap_or(0)
+        self.terms.iter().map(|(m, _)| m.degree()).max().unwrap_or(0)
     }
 
     /// Substitutes the exact rational `value` for the symbol `s`.
@@ -270,13 +235,9 @@ impl Poly {
     }
 
     fn normalized(terms: Vec<(Monomial, BigInt)>, mut den: BigInt) -> Poly {
-        let mut terms: Vec<(Monomial, BigInt)> =
-            terms.into_iter().filter(|(_, n)| !n.is_zero()).collect();
+        let mut terms: Vec<(Monomial, BigInt)> = terms.into_iter().filter(|(_, n)| !n.is_zero()).collect();
         if terms.is_empty() {
-            return Poly {
-                terms,
-                den: BigInt::one(),
-            };
+            return Poly { terms, den: BigInt::one() };
         }
         if den.is_negative() {
             den = -den;
@@ -307,16 +268,9 @@ impl Poly {
     fn is_canonical(&self) -> bool {
         self.den.is_positive()
             && self.terms.windows(2).all(|w| w[0].0 < w[1].0)
-            && self
-                .terms
-                .iter()
-                .all(|(m, n)| !n.is_zero() && m.0.iter().all(|&(_, e)| e > 0))
+            && self.terms.iter().all(|(m, n)| !n.is_zero() && m.0.iter().all(|&(_, e)| e > 0))
             && (self.terms.is_empty() && self.den.is_one()
-                || self
-                    .terms
-                    .iter()
-                    .fold(self.den.clone(), |g, (_, n)| g.gcd(n))
-                    .is_one())
+                || self.terms.iter().fold(self.den.clone(), |g, (_, n)| g.gcd(n)).is_one())
     }
 
     /// Terms in print order: higher total degree first, then reverse internal order.
@@ -332,13 +286,7 @@ impl Poly {
         self.terms().map(|(m, q)| (q, m.0.clone())).collect()
     }
 
-    fn merge(
-        a: &Poly,
-        sa: &BigInt,
-        b: &Poly,
-        sb: &BigInt,
-        negate_b: bool,
-    ) -> Vec<(Monomial, BigInt)> {
+    fn merge(a: &Poly, sa: &BigInt, b: &Poly, sb: &BigInt, negate_b: bool) -> Vec<(Monomial, BigInt)> {
         let mut out = Vec::with_capacity(a.terms.len() + b.terms.len());
         let (mut i, mut j) = (0, 0);
         let fb = |n: &BigInt| if negate_b { -(n * sb) } else { n * sb };
@@ -384,19 +332,13 @@ impl Poly {
         if self.den == other.den {
             let one = BigInt::one();
             let t = Poly::merge(self, &one, other, &one, negate);
-            return Poly {
-                terms: t,
-                den: self.den.clone(),
-            };
+            return Poly { terms: t, den: self.den.clone() };
         }
         let g = self.den.gcd(&other.den);
         let sa = &other.den / &g;
         let sb = &self.den / &g;
         let den = &self.den * &sa;
-        Poly {
-            terms: Poly::merge(self, &sa, other, &sb, negate),
-            den,
-        }
+        Poly { terms: Poly::merge(self, &sa, other, &sb, negate), den }
     }
 
     /// The single symbol of a univariate polynomial (`Ok(None)` for a constant), `Err` otherwise.
@@ -425,21 +367,11 @@ impl Poly {
         // A constant factor scales the other polynomial.
         if self.terms.len() == 1 && self.terms[0].0 .0.is_empty() {
             let n = &self.terms[0].1;
-            return (
-                other
-                    .terms
-                    .iter()
-                    .map(|(m, x)| (m.clone(), x * n))
-                    .collect(),
-                den,
-            );
+            return (other.terms.iter().map(|(m, x)| (m.clone(), x * n)).collect(), den);
         }
         if other.terms.len() == 1 && other.terms[0].0 .0.is_empty() {
             let n = &other.terms[0].1;
-            return (
-                self.terms.iter().map(|(m, x)| (m.clone(), x * n)).collect(),
-                den,
-            );
+            return (self.terms.iter().map(|(m, x)| (m.clone(), x * n)).collect(), den);
         }
         // Univariate in one common symbol: dense convolution by exponent.
         if let (Ok(sa), Ok(sb)) = (self.univariate_symbol(), other.univariate_symbol()) {
@@ -485,16 +417,10 @@ impl Poly {
 
 impl Ring for Poly {
     fn zero() -> Self {
-        Poly {
-            terms: Vec::new(),
-            den: BigInt::one(),
-        }
+        Poly { terms: Vec::new(), den: BigInt::one() }
     }
     fn one() -> Self {
-        Poly {
-            terms: vec![(Monomial::one(), BigInt::one())],
-            den: BigInt::one(),
-        }
+        Poly { terms: vec![(Monomial::one(), BigInt::one())], den: BigInt::one() }
     }
     fn is_zero(&self) -> bool {
         self.terms.is_empty()
@@ -506,10 +432,7 @@ impl Ring for Poly {
         self.add_sub(other, true)
     }
     fn neg(&self) -> Self {
-        Poly {
-            terms: self.terms.iter().map(|(m, n)| (m.clone(), -n)).collect(),
-            den: self.den.clone(),
-        }
+        Poly { terms: self.terms.iter().map(|(m, n)| (m.clone(), -n)).collect(), den: self.den.clone() }
     }
     fn mul(&self, other: &Self) -> Self {
         let (t, d) = self.mul_raw(other);
@@ -539,9 +462,7 @@ impl Ring for Poly {
         }
     }
     fn inv(&self) -> Option<Self> {
-        self.as_q()
-            .filter(|q| !Zero::is_zero(q))
-            .map(|q| Poly::from_q(&q.recip()))
+        self.as_q().filter(|q| !Zero::is_zero(q)).map(|q| Poly::from_q(&q.recip()))
     }
     fn text(&self) -> String {
         if self.terms.is_empty() {
@@ -600,11 +521,7 @@ impl Ring for Poly {
         if Zero::is_zero(q) || self.terms.is_empty() {
             return Poly::zero();
         }
-        let t = self
-            .terms
-            .iter()
-            .map(|(m, n)| (m.clone(), n * q.numer()))
-            .collect();
+        let t = self.terms.iter().map(|(m, n)| (m.clone(), n * q.numer())).collect();
         Poly::normalized(t, &self.den * q.denom())
     }
 }

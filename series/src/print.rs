@@ -66,10 +66,7 @@ impl<R: Ring> Series<R> {
             };
             terms.push((neg, t));
         }
-        terms.push((
-            false,
-            format!("O({})", power_text(var, self.prec()).replace("^0", "")).replace("O()", "O(1)"),
-        ));
+        terms.push((false, format!("O({})", power_text(var, self.prec()).replace("^0", "")).replace("O()", "O(1)")));
         join_terms(terms)
     }
 
@@ -92,11 +89,7 @@ impl<R: Ring> Series<R> {
             };
             terms.push((neg, t));
         }
-        let o = if self.prec() == 0 {
-            "O(1)".to_string()
-        } else {
-            format!("O({})", power_latex(var, self.prec()))
-        };
+        let o = if self.prec() == 0 { "O(1)".to_string() } else { format!("O({})", power_latex(var, self.prec())) };
         terms.push((false, o));
         join_terms(terms)
     }

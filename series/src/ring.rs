@@ -83,9 +83,7 @@ pub trait Ring: Clone + PartialEq + Debug + Send + Sync + 'static {
     fn canonicalize(&mut self) {}
     /// An exact square root, if one exists in the ring (used for the constant term of sqrt).
     fn sqrt_exact(&self) -> Option<Self> {
-        self.as_q()
-            .and_then(|q| rational_sqrt(&q))
-            .map(|r| Self::from_q(&r))
+        self.as_q().and_then(|q| rational_sqrt(&q)).map(|r| Self::from_q(&r))
     }
 }
 
@@ -201,9 +199,7 @@ impl Ring for Q {
 /// assert!(parse_rational("abc").is_err());
 /// ```
 pub fn parse_rational(text: &str) -> Result<Q, crate::SeriesError> {
-    let err = || crate::SeriesError::InvalidRational {
-        text: text.to_string(),
-    };
+    let err = || crate::SeriesError::InvalidRational { text: text.to_string() };
     let s = text.trim();
     if s.is_empty() || s.len() > 100_000 {
         return Err(err());
@@ -245,11 +241,7 @@ pub fn parse_rational(text: &str) -> Result<Q, crate::SeriesError> {
     let scale = exponent - frac_part.len() as i64;
     let ten = BigInt::from(10);
     let p = num_traits::pow(ten, scale.unsigned_abs().to_usize().ok_or_else(err)?);
-    Ok(if scale >= 0 {
-        Q::from_integer(n * p)
-    } else {
-        Q::new(n, p)
-    })
+    Ok(if scale >= 0 { Q::from_integer(n * p) } else { Q::new(n, p) })
 }
 
 fn parse_integer(s: &str) -> Option<BigInt> {

@@ -32,9 +32,7 @@ impl Symbol {
         let ok = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
             && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
         if !ok {
-            return Err(SeriesError::InvalidSymbol {
-                name: name.to_string(),
-            });
+            return Err(SeriesError::InvalidSymbol { name: name.to_string() });
         }
         let mut set = interner().lock().unwrap_or_else(|e| e.into_inner());
         if let Some(s) = set.get(name) {
@@ -54,8 +52,8 @@ impl Symbol {
     /// `xh` is `\hat{x}`; other names are printed as they are (multi-letter names in `\mathrm`).
     pub fn latex(self) -> String {
         const GREEK: [&str; 20] = [
-            "alpha", "beta", "gamma", "delta", "zeta", "eta", "theta", "iota", "kappa", "lambda",
-            "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi",
+            "alpha", "beta", "gamma", "delta", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu", "nu", "xi",
+            "pi", "rho", "sigma", "tau", "phi", "chi", "psi",
         ];
         match self.0 {
             "eps" | "epsilon" => r"\varepsilon".to_string(),

@@ -36,9 +36,7 @@ impl<R: Ring> Series<R> {
     }
     /// `0 + O(x^prec)`.
     pub fn zero(prec: usize) -> Self {
-        Series {
-            coeffs: vec![R::zero(); prec],
-        }
+        Series { coeffs: vec![R::zero(); prec] }
     }
     /// `1 + O(x^prec)`.
     pub fn one(prec: usize) -> Self {
@@ -54,9 +52,7 @@ impl<R: Ring> Series<R> {
     }
     /// A series from a coefficient function `k -> c_k`, `k < prec`.
     pub fn from_fn(prec: usize, f: impl FnMut(usize) -> R) -> Self {
-        Series {
-            coeffs: (0..prec).map(f).collect(),
-        }
+        Series { coeffs: (0..prec).map(f).collect() }
     }
     /// The number of known coefficients `p` (the series is known up to `O(x^p)`).
     pub fn prec(&self) -> usize {
@@ -77,16 +73,11 @@ impl<R: Ring> Series<R> {
     }
     /// The index of the first non-zero coefficient (`prec` if all known ones are zero).
     pub fn valuation(&self) -> usize {
-        self.coeffs
-            .iter()
-            .position(|c| !c.is_zero())
-            .unwrap_or(self.coeffs.len())
+        self.coeffs.iter().position(|c| !c.is_zero()).unwrap_or(self.coeffs.len())
     }
     /// The same series known to `min(prec, self.prec())` only.
     pub fn truncate(&self, prec: usize) -> Self {
-        Series {
-            coeffs: self.coeffs[..prec.min(self.prec())].to_vec(),
-        }
+        Series { coeffs: self.coeffs[..prec.min(self.prec())].to_vec() }
     }
     /// Whether the first `n` coefficients agree (FLINT's `equal_trunc`); both must know them.
     pub fn eq_trunc(&self, other: &Self, n: usize) -> bool {
@@ -94,27 +85,17 @@ impl<R: Ring> Series<R> {
     }
     /// Applies `f` to every coefficient (e.g. substitution of a symbol, a change of ring).
     pub fn map<S: Ring>(&self, f: impl FnMut(&R) -> S) -> Series<S> {
-        Series {
-            coeffs: self.coeffs.iter().map(f).collect(),
-        }
+        Series { coeffs: self.coeffs.iter().map(f).collect() }
     }
     /// `self + other`, known to the smaller precision.
     pub fn add(&self, other: &Self) -> Self {
         let p = self.prec().min(other.prec());
-        Series {
-            coeffs: (0..p)
-                .map(|k| self.coeffs[k].add(&other.coeffs[k]))
-                .collect(),
-        }
+        Series { coeffs: (0..p).map(|k| self.coeffs[k].add(&other.coeffs[k])).collect() }
     }
     /// `self - other`, known to the smaller precision.
     pub fn sub(&self, other: &Self) -> Self {
         let p = self.prec().min(other.prec());
-        Series {
-            coeffs: (0..p)
-                .map(|k| self.coeffs[k].sub(&other.coeffs[k]))
-                .collect(),
-        }
+        Series { coeffs: (0..p).map(|k| self.coeffs[k].sub(&other.coeffs[k])).collect() }
     }
     /// `-self`.
     pub fn neg(&self) -> Self {
@@ -146,26 +127,13 @@ impl<R: Ring> Series<R> {
     }
     /// `d/dx self` (known to `prec - 1`).
     pub fn derivative(&self) -> Self {
-        Series {
-            coeffs: self
-                .coeffs
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(k, c)| c.mul_int(k as i64))
-                .collect(),
-        }
+        Series { coeffs: self.coeffs.iter().enumerate().skip(1).map(|(k, c)| c.mul_int(k as i64)).collect() }
     }
     /// The antiderivative vanishing at 0 (known to `prec + 1`).
     pub fn integral(&self) -> Self {
         let mut coeffs = Vec::with_capacity(self.prec() + 1);
         coeffs.push(R::zero());
-        coeffs.extend(
-            self.coeffs
-                .iter()
-                .enumerate()
-                .map(|(k, c)| c.div_int(k as i64 + 1)),
-        );
+        coeffs.extend(self.coeffs.iter().enumerate().map(|(k, c)| c.div_int(k as i64 + 1)));
         Series { coeffs }
     }
     /// Whether every odd coefficient is zero.

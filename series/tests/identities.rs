@@ -10,15 +10,8 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 const PREC: usize = 9;
 
 fn runner(seed: u8) -> TestRunner {
-    let config = Config {
-        cases: 48,
-        failure_persistence: None,
-        ..Config::default()
-    };
-    TestRunner::new_with_rng(
-        config,
-        TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]),
-    )
+    let config = Config { cases: 48, failure_persistence: None, ..Config::default() };
+    TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]))
 }
 
 fn rational() -> impl Strategy<Value = Q> {
@@ -39,10 +32,7 @@ fn series_q(c0: Option<Q>) -> impl Strategy<Value = Series<Q>> {
 fn series_poly(c0: Option<Q>) -> impl Strategy<Value = Series<Poly>> {
     proptest::collection::vec((rational(), rational()), PREC).prop_map(move |v| {
         let theta = Poly::var("theta").unwrap();
-        let mut coeffs: Vec<Poly> = v
-            .iter()
-            .map(|(a, b)| Poly::from_q(a).add(&theta.scale(b)))
-            .collect();
+        let mut coeffs: Vec<Poly> = v.iter().map(|(a, b)| Poly::from_q(a).add(&theta.scale(b))).collect();
         if let Some(c) = &c0 {
             coeffs[0] = Poly::from_q(c);
         }
@@ -92,9 +82,8 @@ fn reversion_of_reversion_is_identity() {
             Ok(())
         })
         .unwrap();
-    let strat = series_poly(Some(q(0))).prop_filter("f'(0) rational non-zero", |f| {
-        f.coeff(1).unwrap().as_q().is_some_and(|c| c != q(0))
-    });
+    let strat = series_poly(Some(q(0)))
+        .prop_filter("f'(0) rational non-zero", |f| f.coeff(1).unwrap().as_q().is_some_and(|c| c != q(0)));
     runner(5)
         .run(&strat, |f| {
             prop_assert_eq!(f.revert().unwrap().revert().unwrap(), f.clone());
@@ -170,18 +159,12 @@ fn trigonometric_identities() {
 #[test]
 fn square_root_squared() {
     runner(11)
-        .run(
-            &series_poly(Some(Q::new(BigInt::from(9), BigInt::from(4)))),
-            |f| {
-                let r = f.sqrt().unwrap();
-                prop_assert_eq!(
-                    r.coeff(0).unwrap().as_q(),
-                    Some(Q::new(BigInt::from(3), BigInt::from(2)))
-                );
-                prop_assert_eq!(r.mul(&r), f.clone());
-                Ok(())
-            },
-        )
+        .run(&series_poly(Some(Q::new(BigInt::from(9), BigInt::from(4)))), |f| {
+            let r = f.sqrt().unwrap();
+            prop_assert_eq!(r.coeff(0).unwrap().as_q(), Some(Q::new(BigInt::from(3), BigInt::from(2))));
+            prop_assert_eq!(r.mul(&r), f.clone());
+            Ok(())
+        })
         .unwrap();
 }
 
@@ -196,12 +179,7 @@ fn powers_add_exponents() {
             let rhs = f.pow(&a.add(&b)).unwrap();
             prop_assert_eq!(lhs, rhs.clone());
             // integer exponent agrees with repeated multiplication
-            prop_assert_eq!(
-                rhs,
-                f.powi(2)
-                    .unwrap()
-                    .mul(&f.pow(&Poly::from_q(&Q::new(1.into(), 2.into()))).unwrap())
-            );
+            prop_assert_eq!(rhs, f.powi(2).unwrap().mul(&f.pow(&Poly::from_q(&Q::new(1.into(), 2.into()))).unwrap()));
             Ok(())
         })
         .unwrap();

@@ -42,11 +42,7 @@ fn z_cot_z_from_bernoulli_numbers() {
         let expected = if k % 2 == 1 {
             Q::zero()
         } else {
-            let sign = if (k / 2) % 2 == 0 {
-                BigInt::from(1)
-            } else {
-                -BigInt::from(1)
-            };
+            let sign = if (k / 2) % 2 == 0 { BigInt::from(1) } else { -BigInt::from(1) };
             &b[k] * Q::new(sign * (BigInt::from(1) << k), fact(k as u64))
         };
         assert_eq!(z.coeff(k).unwrap(), &expected, "coefficient of z^{k}");
@@ -63,10 +59,7 @@ fn tangent_numbers() {
     let tangent = [1u64, 2, 16, 272, 7936, 353792, 22368256];
     for (i, &tn) in tangent.iter().enumerate() {
         let n = 2 * i + 1;
-        assert_eq!(
-            t.coeff(n).unwrap(),
-            &Q::new(BigInt::from(tn), fact(n as u64))
-        );
+        assert_eq!(t.coeff(n).unwrap(), &Q::new(BigInt::from(tn), fact(n as u64)));
         assert!(t.coeff(n - 1).unwrap().is_zero());
     }
 }
@@ -78,16 +71,11 @@ fn sinc_against_sine_recurrence() {
     let x = Series::<Q>::var(n + 1);
     let via_sin = x.sin().unwrap().div(&x).unwrap();
     assert_eq!(via_sin, Series::sinc_series(n));
-    assert_eq!(
-        Series::<Q>::sinc_series(4).text("z"),
-        "1 - 1/6*z^2 + O(z^4)"
-    );
+    assert_eq!(Series::<Q>::sinc_series(4).text("z"), "1 - 1/6*z^2 + O(z^4)");
 }
 
 fn alpha() -> Poly {
-    Poly::var("theta")
-        .unwrap()
-        .add(&Poly::from_q(&Q::new(1.into(), 2.into())))
+    Poly::var("theta").unwrap().add(&Poly::from_q(&Q::new(1.into(), 2.into())))
 }
 
 #[test]
@@ -98,10 +86,7 @@ fn reversion_of_x_sinc_power() {
     let n = 8;
     let f = Series::<Poly>::sinc_series(n).pow(&alpha()).unwrap();
     assert_eq!(f.coeff(2).unwrap().text(), "-1/6*theta - 1/12");
-    assert_eq!(
-        f.coeff(6).unwrap().text(),
-        "-1/1296*theta^3 - 1/4320*theta^2 - 1/181440*theta - 1/24192"
-    );
+    assert_eq!(f.coeff(6).unwrap().text(), "-1/1296*theta^3 - 1/4320*theta^2 - 1/181440*theta - 1/24192");
     let rev = f.shift(1).truncate(n).revert().unwrap();
     let expected = [
         "0",
@@ -128,18 +113,10 @@ fn symbolic_route_matches_rational_route() {
     let sym = Series::<Poly>::sinc_series(n).pow(&alpha()).unwrap();
     let sym_rev = sym.shift(1).truncate(n).revert().unwrap();
     let a = Q::new(1.into(), 2.into()) + &th;
-    let fixed = Series::<Q>::sinc_series(n)
-        .log()
-        .unwrap()
-        .scale(&a)
-        .exp()
-        .unwrap();
+    let fixed = Series::<Q>::sinc_series(n).log().unwrap().scale(&a).exp().unwrap();
     let fixed_rev = fixed.shift(1).truncate(n).revert().unwrap();
     assert_eq!(sym.map(|c| c.subs(theta, &th).as_q().unwrap()), fixed);
-    assert_eq!(
-        sym_rev.map(|c| c.subs(theta, &th).as_q().unwrap()),
-        fixed_rev
-    );
+    assert_eq!(sym_rev.map(|c| c.subs(theta, &th).as_q().unwrap()), fixed_rev);
 }
 
 #[test]
@@ -152,12 +129,7 @@ fn gaussian_arithmetic() {
     let x = Series::<G>::var(10);
     let e = x.mul_scalar(&G::i()).exp().unwrap();
     let (s, c) = Series::<Q>::var(10).sin_cos().unwrap();
-    let expected = Series::from_fn(10, |k| {
-        G::new(c.coeff(k).unwrap().clone(), s.coeff(k).unwrap().clone())
-    });
+    let expected = Series::from_fn(10, |k| G::new(c.coeff(k).unwrap().clone(), s.coeff(k).unwrap().clone()));
     assert_eq!(e, expected);
-    assert_eq!(
-        G::new(Q::new(1.into(), 2.into()), -Q::one()).text(),
-        "1/2 - i"
-    );
+    assert_eq!(G::new(Q::new(1.into(), 2.into()), -Q::one()).text(), "1/2 - i");
 }

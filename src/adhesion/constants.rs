@@ -52,11 +52,14 @@ pub fn s_const(eps: &Float, prec: u32) -> Float {
     // The weights c_k reach d_n ~ 2^prec; a relative cancellation of at most n: guard bits.
     let w = prec + GUARD_BITS + 2 * (32 - n.leading_zeros());
     let c = Float::with_val(w, eps * 2u32);
-    Float::with_val(prec, alternating_sum_crvz(n, w, |k| {
-        let t = Float::with_val(w, 2 * k + 1);
-        let den = Float::with_val(w, &t * &t) + Float::with_val(w, &c * &c);
-        Float::with_val(w, &c / den)
-    }) * 2u32)
+    Float::with_val(
+        prec,
+        alternating_sum_crvz(n, w, |k| {
+            let t = Float::with_val(w, 2 * k + 1);
+            let den = Float::with_val(w, &t * &t) + Float::with_val(w, &c * &c);
+            Float::with_val(w, &c / den)
+        }) * 2u32,
+    )
 }
 
 /// Algorithm 1 of Cohen, Rodriguez Villegas, Zagier (2000): sum_{k>=0} (-1)^k a_k from n terms.
@@ -148,8 +151,7 @@ mod tests {
     use crate::model::Exact;
 
     fn material(nu: (i64, i64)) -> Material {
-        Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into()))
-            .unwrap()
+        Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
     }
     fn parse(prec: u32, s: &str) -> Float {
         Float::with_val(prec, Float::parse(s).unwrap())

@@ -185,7 +185,16 @@ impl VolterraNodes {
     }
 
     /// Same value as [`volterra_integrand`] at node j; `sc_chi` = (sin chi, cos chi).
-    pub fn integrand(&self, j: usize, s: &Float, c: &Float, chi: &Float, sc_chi: &(Float, Float), eps: &Float, prec: u32) -> (Float, Float) {
+    pub fn integrand(
+        &self,
+        j: usize,
+        s: &Float,
+        c: &Float,
+        chi: &Float,
+        sc_chi: &(Float, Float),
+        eps: &Float,
+        prec: u32,
+    ) -> (Float, Float) {
         let a = sinc(&Float::with_val(prec, chi * &self.one_p[j]), prec);
         let b = sinc(&Float::with_val(prec, chi * c), prec);
         let ab = Float::with_val(prec, &a * &b);

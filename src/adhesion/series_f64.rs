@@ -123,7 +123,10 @@ fn radius_estimate(f: &[f64]) -> f64 {
 }
 
 /// The universal Taylor coefficients f_n (n < [`SERIES_TERMS`]) and the moments mu_{j,m}.
-pub fn universal_coefficients(material: &Material, rule: &[(f64, f64, f64)]) -> Result<(Vec<f64>, Vec<Vec<C64>>), AdhesionError> {
+pub fn universal_coefficients(
+    material: &Material,
+    rule: &[(f64, f64, f64)],
+) -> Result<(Vec<f64>, Vec<Vec<C64>>), AdhesionError> {
     let terms = SERIES_TERMS;
     let eps = constants::eps(material, 64).to_f64();
     let lsinc = ln_sinc_coeffs(terms);
@@ -195,8 +198,12 @@ pub fn solve(material: &Material, lambda: f64) -> Result<SeriesSolution, Adhesio
             method: "f64-series",
             parameter: "lambda",
             value: format!("{lambda}"),
-            valid: format!("lambda^2 well inside the radius of convergence R ~ {r:.4} of the lambda^2 series at this nu"),
-            reason: format!("truncation error estimate {tail:.1e}; the solution f = P'(eta)/eta is singular at eta^2 = R"),
+            valid: format!(
+                "lambda^2 well inside the radius of convergence R ~ {r:.4} of the lambda^2 series at this nu"
+            ),
+            reason: format!(
+                "truncation error estimate {tail:.1e}; the solution f = P'(eta)/eta is singular at eta^2 = R"
+            ),
         });
     }
     f.truncate(keep);
@@ -304,11 +311,13 @@ mod chart_tests {
     #[ignore]
     fn adhesion_chart_series_ratios() {
         for nu in [(0i64, 1i64), (1, 10), (3, 10), (9, 20), (49, 100)] {
-            let m = Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap();
+            let m = Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into()))
+                .unwrap();
             let (f, _) = universal_coefficients(&m, &tanh_sinh_f64(60, 1.2)).unwrap();
             let s = SeriesSolution { f, ..solve(&m, 0.0).unwrap() };
             let n = s.f.len();
-            let r: Vec<String> = (n - 8..n - 1).chain([20usize, 40, 60]).map(|k| format!("{:.4}", s.f[k] / s.f[k + 1])).collect();
+            let r: Vec<String> =
+                (n - 8..n - 1).chain([20usize, 40, 60]).map(|k| format!("{:.4}", s.f[k] / s.f[k + 1])).collect();
             println!("nu {:?} eps {:.4} ratios {:?}", nu, s.eps, r);
             let signs: String = s.f.iter().map(|x| if *x > 0.0 { '+' } else { '-' }).collect();
             println!("   signs {signs}");

@@ -99,13 +99,22 @@ fn inputs(problem: &AdhesionProblem, prec: u32) -> (Float, Float) {
 }
 
 /// Method 1 (MPFR) at the given discretisation, with the tension report.
-pub fn solve_mpfr(problem: &AdhesionProblem, points: &[Exact], params: VolterraParams) -> Result<AdhesionSolution, AdhesionError> {
+pub fn solve_mpfr(
+    problem: &AdhesionProblem,
+    points: &[Exact],
+    params: VolterraParams,
+) -> Result<AdhesionSolution, AdhesionError> {
     solve_mpfr_with(problem, points, params, true)
 }
 
 /// Method 1; `with_tension = false` skips the (bisection-refined) tension zones, leaving only
 /// the edge factor and the points with q2 < 0 (the verification run needs no zones).
-pub fn solve_mpfr_with(problem: &AdhesionProblem, points: &[Exact], params: VolterraParams, with_tension: bool) -> Result<AdhesionSolution, AdhesionError> {
+pub fn solve_mpfr_with(
+    problem: &AdhesionProblem,
+    points: &[Exact],
+    params: VolterraParams,
+    with_tension: bool,
+) -> Result<AdhesionSolution, AdhesionError> {
     check_points(points)?;
     let prec = params.prec;
     let (e_star, k) = inputs(problem, prec);
@@ -168,7 +177,11 @@ pub fn solve_mpfr_with(problem: &AdhesionProblem, points: &[Exact], params: Volt
 /// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
 /// Newton on one Chebyshev solution over [0, Lambda] (f does not depend on lambda:
 /// P(lambda) = (1/2) int_0^{lambda^2} f, P'(lambda) = lambda f(lambda^2)).
-fn lambda_for_load(problem: &AdhesionProblem, target: &Float, params: VolterraParams) -> Result<(Float, VolterraSolution), AdhesionError> {
+fn lambda_for_load(
+    problem: &AdhesionProblem,
+    target: &Float,
+    params: VolterraParams,
+) -> Result<(Float, VolterraSolution), AdhesionError> {
     let prec = params.prec;
     let cp = constants::single_punch_load_constant(&problem.material, 64).to_f64();
     let half_pi = std::f64::consts::FRAC_PI_2;
@@ -205,7 +218,8 @@ fn lambda_for_load(problem: &AdhesionProblem, target: &Float, params: VolterraPa
             if next <= 0 {
                 next = Float::with_val(prec, &lam / 2u32);
             }
-            let done = Float::with_val(prec, &next - &lam).abs() <= Float::with_val(prec, Float::i_exp(1, -(prec as i32) + 4)) * &next;
+            let done = Float::with_val(prec, &next - &lam).abs()
+                <= Float::with_val(prec, Float::i_exp(1, -(prec as i32) + 4)) * &next;
             lam = next;
             if done {
                 return Ok((lam, sol));
@@ -336,13 +350,19 @@ pub struct AdhesionSolutionF64 {
 pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<AdhesionSolutionF64, AdhesionError> {
     check_points(points)?;
     let conv = |q: &Exact, name: &'static str| {
-        to_f64(q).ok_or(AdhesionError::InvalidArgument { parameter: name, value: q.to_string(), expected: "must fit in f64".into() })
+        to_f64(q).ok_or(AdhesionError::InvalidArgument {
+            parameter: name,
+            value: q.to_string(),
+            expected: "must fit in f64".into(),
+        })
     };
     let e_star = conv(&problem.material.contact_modulus, "contact_modulus")?;
     let k = conv(problem.curvature(), "k")?;
     let pi = std::f64::consts::PI;
     let (lambda, a, sol) = match (&problem.size, &problem.period) {
-        (AdhesionSize::HalfWidth(a), Period::Infinite) => (0.0, conv(a, "half_width")?, series_f64::solve(&problem.material, 0.0)?),
+        (AdhesionSize::HalfWidth(a), Period::Infinite) => {
+            (0.0, conv(a, "half_width")?, series_f64::solve(&problem.material, 0.0)?)
+        }
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
             let lam = pi * conv(&(a / l), "half_width")?;
             (lam, conv(a, "half_width")?, series_f64::solve(&problem.material, lam)?)
@@ -370,7 +390,10 @@ pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhesion
                     break;
                 }
                 if it == 59 {
-                    return Err(AdhesionError::NotConverged { what: "f64 Newton for the half-width", reason: "60 steps".into() });
+                    return Err(AdhesionError::NotConverged {
+                        what: "f64 Newton for the half-width",
+                        reason: "60 steps".into(),
+                    });
                 }
             }
             (lam, lam * lf / pi, sol)

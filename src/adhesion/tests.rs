@@ -68,7 +68,8 @@ fn adhesion_hertz_single_punch_nu_half() {
     assert!(relerr(&s.normal_load, &want) < 1e-30);
     for p in &s.points {
         let x = crate::numerics::exact::to_float(&p.x_over_a, prec) / 5u32;
-        let w = Float::with_val(prec, Float::with_val(prec, 1u32) / 25u32 - Float::with_val(prec, &x * &x)).sqrt() * 6u32;
+        let w =
+            Float::with_val(prec, Float::with_val(prec, 1u32) / 25u32 - Float::with_val(prec, &x * &x)).sqrt() * 6u32;
         let err = Float::with_val(prec, &p.q2 - w).abs().to_f64();
         assert!(err < 1e-29, "x/a {}: {err:e}", p.x_over_a);
         assert!(p.q1.clone().abs().to_f64() < 1e-30 && p.psi.clone().abs().to_f64() < 1e-30);
@@ -205,7 +206,13 @@ fn adhesion_mpfr_and_f64_agree() {
             let f = solve_f64(&pr, &pts()).unwrap();
             let ka = 3.0 * m.half_width.to_f64();
             let tol = 1e-12;
-            assert!((m.normal_load.to_f64() - f.normal_load).abs() < tol * f.normal_load, "nu {nu} lam {}: {} vs {}", f.lambda, m.normal_load, f.normal_load);
+            assert!(
+                (m.normal_load.to_f64() - f.normal_load).abs() < tol * f.normal_load,
+                "nu {nu} lam {}: {} vs {}",
+                f.lambda,
+                m.normal_load,
+                f.normal_load
+            );
             for (u, v) in m.points.iter().zip(&f.points) {
                 assert!((u.psi.to_f64() - v.psi).abs() < tol * ka, "nu {nu} psi {} {}", u.psi, v.psi);
                 assert!((u.phi.to_f64() - v.phi).abs() < tol * ka);
@@ -280,7 +287,8 @@ fn adhesion_tension_zone_near_edge() {
     let mid = Float::with_val(64, &z.delta_inner * &z.delta_outer).sqrt().to_f64();
     let mid = Exact::new(((1.0 - mid) * 1e15).round().to_string().parse().unwrap(), 1_000_000_000_000_000i64.into());
     let outer = Float::with_val(64, &z.delta_outer * 10u32).to_f64();
-    let outer = Exact::new(((1.0 - outer) * 1e15).round().to_string().parse().unwrap(), 1_000_000_000_000_000i64.into());
+    let outer =
+        Exact::new(((1.0 - outer) * 1e15).round().to_string().parse().unwrap(), 1_000_000_000_000_000i64.into());
     let s = solve_mpfr(&pr, &[mid, outer], VolterraParams::for_digits(20)).unwrap();
     assert!(s.points[0].q2 < 0 && s.points[1].q2 > 0, "{} {}", s.points[0].q2, s.points[1].q2);
     assert_eq!(s.tension.at_points, vec![0]);
@@ -336,7 +344,10 @@ fn adhesion_flat_punch_is_adhesive_and_k_is_its_outside_slope() {
             let (cr, ci) = (chi0.cos() * (2.0 * eps * lam).cosh(), chi0.sin() * (2.0 * eps * lam).sinh());
             let (st, ct) = th.sin_cos();
             let (kr, ki) = (mag * (ct * cr - st * ci), mag * (ct * ci + st * cr));
-            assert!((hr - kr).abs() < 1e-13 && (hi - ki).abs() < 1e-13, "nu {nu} chi {chi0}: ({hr}, {hi}) vs ({kr}, {ki})");
+            assert!(
+                (hr - kr).abs() < 1e-13 && (hi - ki).abs() < 1e-13,
+                "nu {nu} chi {chi0}: ({hr}, {hi}) vs ({kr}, {ki})"
+            );
         }
         // Inside: (H + i beta) sigma at chi0 = 0.3: PV by subtraction.
         let chi0 = 0.3f64;
@@ -344,10 +355,24 @@ fn adhesion_flat_punch_is_adhesive_and_k_is_its_outside_slope() {
         let (mut hr, mut hi) = (0.0, 0.0);
         for (lo, hi_) in [(-lam, chi0), (chi0, lam)] {
             for &(s, c, w) in &rule {
-                let (x, lp, lm) = if s < 0.5 { let x = lo + (hi_ - lo) * s; (x, lam + x, lam - x) } else { let x = hi_ - (hi_ - lo) * c; (x, lam + x, lam - x) };
-                let (lp, lm) = if lo == -lam && s < 0.5 { ((hi_ - lo) * s, lm) } else if hi_ == lam && s >= 0.5 { (lp, (hi_ - lo) * c) } else { (lp, lm) };
+                let (x, lp, lm) = if s < 0.5 {
+                    let x = lo + (hi_ - lo) * s;
+                    (x, lam + x, lam - x)
+                } else {
+                    let x = hi_ - (hi_ - lo) * c;
+                    (x, lam + x, lam - x)
+                };
+                let (lp, lm) = if lo == -lam && s < 0.5 {
+                    ((hi_ - lo) * s, lm)
+                } else if hi_ == lam && s >= 0.5 {
+                    (lp, (hi_ - lo) * c)
+                } else {
+                    (lp, lm)
+                };
                 let d = chi0 - x;
-                if d == 0.0 { continue; }
+                if d == 0.0 {
+                    continue;
+                }
                 let (r, i) = sig(x, lp, lm);
                 let k = (hi_ - lo) * w / d.tan() / pi;
                 hr += (r - s0r) * k;
@@ -373,7 +398,13 @@ fn adhesion_chart_conditioning() {
             match solve_verified(&pr, &points, 20) {
                 Ok(v) => {
                     let d = v.digits_verified;
-                    let z = v.solution.tension.zones.first().map(|z| format!("({:.6e}, {:.6e})", z.delta_inner.to_f64(), z.delta_outer.to_f64())).unwrap_or("-".into());
+                    let z = v
+                        .solution
+                        .tension
+                        .zones
+                        .first()
+                        .map(|z| format!("({:.6e}, {:.6e})", z.delta_inner.to_f64(), z.delta_outer.to_f64()))
+                        .unwrap_or("-".into());
                     println!(
                         "nu {nu} a/L {a_over_l} lambda {:.4}: P2~ {:.20e} digits size {:.1} psi {:.1} phi {:.1} q1 {:.1} q2 {:.1} | n {} piv {:.1e} | {:.3}s | tension 1-x/a in {z}",
                         v.solution.lambda.to_f64(), v.solution.normal_load.to_f64(), d.size, d.psi, d.phi, d.q1, d.q2, v.solution.nodes, v.solution.pivot_ratio, v.elapsed_seconds
@@ -388,7 +419,9 @@ fn adhesion_chart_conditioning() {
 fn chart_sizes() -> Vec<Exact> {
     match std::env::var("ADHESION_CHART_SMALL") {
         Ok(_) => vec![q(1, 20), q(1, 10), q(3, 20)],
-        Err(_) => vec![q(1, 20), q(1, 10), q(3, 20), q(1, 5), q(1, 4), q(3, 10), q(7, 20), q(2, 5), q(9, 20), q(19, 40)],
+        Err(_) => {
+            vec![q(1, 20), q(1, 10), q(3, 20), q(1, 5), q(1, 4), q(3, 10), q(7, 20), q(2, 5), q(9, 20), q(19, 40)]
+        }
     }
 }
 
@@ -411,7 +444,12 @@ fn adhesion_chart_timing_breakdown() {
             let t = Instant::now();
             let _ = s.stress_ratio(&q(1, 2));
             let t3 = t.elapsed().as_secs_f64();
-            println!("prec {} target {} n0 {n0} n {} solve {t1:.3}s psi {t2:.4}s stress {t3:.4}s", params.prec, params.target_bits, s.f_coeffs.len());
+            println!(
+                "prec {} target {} n0 {n0} n {} solve {t1:.3}s psi {t2:.4}s stress {t3:.4}s",
+                params.prec,
+                params.target_bits,
+                s.f_coeffs.len()
+            );
         }
         let pr = problem(q(0, 1), Some(q(1, 1)), AdhesionSize::HalfWidth(q(3, 20)));
         let points = vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100), q(999, 1000)];
@@ -425,10 +463,21 @@ fn adhesion_chart_timing_breakdown() {
         println!("solve_verified: {:.3}s (own {:.3}s)", t.elapsed().as_secs_f64(), v.elapsed_seconds);
         let ten: Vec<Exact> = (0..=10).map(|i| q(i, 10)).collect();
         for nu in [q(0, 1), q(3, 10), q(1, 2)] {
-            for (size, l) in [(AdhesionSize::HalfWidth(q(3, 20)), Some(q(1, 1))), (AdhesionSize::NormalLoad(q(1, 5)), Some(q(1, 1))), (AdhesionSize::NormalLoad(q(1, 5)), None)] {
+            for (size, l) in [
+                (AdhesionSize::HalfWidth(q(3, 20)), Some(q(1, 1))),
+                (AdhesionSize::NormalLoad(q(1, 5)), Some(q(1, 1))),
+                (AdhesionSize::NormalLoad(q(1, 5)), None),
+            ] {
                 let pr = problem(nu.clone(), l.clone(), size.clone());
                 let v = solve_verified(&pr, &ten, 20).unwrap();
-                println!("nu {nu} {size:?} L {l:?}: lambda {:.4} a {:.6} digits {:.1} ({:?}) time {:.3}s", v.solution.lambda.to_f64(), v.solution.half_width.to_f64(), v.digits_verified.headline, v.warnings.len(), v.elapsed_seconds);
+                println!(
+                    "nu {nu} {size:?} L {l:?}: lambda {:.4} a {:.6} digits {:.1} ({:?}) time {:.3}s",
+                    v.solution.lambda.to_f64(),
+                    v.solution.half_width.to_f64(),
+                    v.digits_verified.headline,
+                    v.warnings.len(),
+                    v.elapsed_seconds
+                );
             }
         }
     }
@@ -443,16 +492,28 @@ fn adhesion_chart_digits_cost() {
     for d in [10u32, 20, 30, 50, 80] {
         let v = solve_verified(&pr, &ten, d).unwrap();
         let g = v.digits_verified;
-        println!("digits {d}: verified size {:.1} psi {:.1} phi {:.1} q1 {:.1} q2 {:.1} nodes {} time {:.3}s", g.size, g.psi, g.phi, g.q1, g.q2, v.solution.nodes, v.elapsed_seconds);
+        println!(
+            "digits {d}: verified size {:.1} psi {:.1} phi {:.1} q1 {:.1} q2 {:.1} nodes {} time {:.3}s",
+            g.size, g.psi, g.phi, g.q1, g.q2, v.solution.nodes, v.elapsed_seconds
+        );
     }
 }
 
 #[test]
 fn adhesion_robust_over_inputs() {
     // No panic, no NaN, digits delivered, for tiny and moderate contacts and points at the edge.
-    let points = vec![q(0, 1), q(1, 3), Exact::new(1.into(), 1.into()) - Exact::new(1.into(), num_bigint::BigInt::from(10).pow(20)), q(1, 1)];
+    let points = vec![
+        q(0, 1),
+        q(1, 3),
+        Exact::new(1.into(), 1.into()) - Exact::new(1.into(), num_bigint::BigInt::from(10).pow(20)),
+        q(1, 1),
+    ];
     for nu in [q(0, 1), q(1, 4), q(1, 2)] {
-        for (a, l) in [(Exact::new(1.into(), num_bigint::BigInt::from(10).pow(6)), Some(q(1, 1))), (q(1, 10), Some(q(1, 1))), (q(7, 3), None)] {
+        for (a, l) in [
+            (Exact::new(1.into(), num_bigint::BigInt::from(10).pow(6)), Some(q(1, 1))),
+            (q(1, 10), Some(q(1, 1))),
+            (q(7, 3), None),
+        ] {
             let pr = problem(nu.clone(), l, AdhesionSize::HalfWidth(a.clone()));
             let v = solve_verified(&pr, &points, 10).unwrap();
             assert!(v.digits_verified.headline >= 10.0, "nu {nu} a {a}: {:?}", v.digits_verified);

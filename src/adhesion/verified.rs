@@ -65,7 +65,11 @@ fn digits(diff: &Float, scale: &Float, cap: f64) -> f64 {
 }
 
 /// Two MPFR runs and their agreement (see module doc). `digits` in 5..=300.
-pub fn solve_verified(problem: &AdhesionProblem, points: &[Exact], digits_requested: u32) -> Result<VerifiedSolution, AdhesionError> {
+pub fn solve_verified(
+    problem: &AdhesionProblem,
+    points: &[Exact],
+    digits_requested: u32,
+) -> Result<VerifiedSolution, AdhesionError> {
     if !(5..=300).contains(&digits_requested) {
         return Err(AdhesionError::InvalidArgument {
             parameter: "digits",

@@ -172,7 +172,12 @@ pub fn solve(material: &Material, lambda: &Float, params: VolterraParams) -> Res
 }
 
 /// Solves with exactly `n` Chebyshev nodes.
-pub fn solve_with_nodes(material: &Material, lambda: &Float, params: VolterraParams, n: usize) -> Result<VolterraSolution, AdhesionError> {
+pub fn solve_with_nodes(
+    material: &Material,
+    lambda: &Float,
+    params: VolterraParams,
+    n: usize,
+) -> Result<VolterraSolution, AdhesionError> {
     let prec = params.prec;
     let eps = constants::eps(material, prec);
     let cosh_pi_eps = constants::cosh_pi_eps(material, prec);
@@ -260,7 +265,9 @@ fn gauss_solve(mut a: Vec<Vec<Float>>, mut b: Vec<Float>, prec: u32) -> Result<(
     let (mut pmax, mut pmin) = (0f64, f64::INFINITY);
     for k in 0..n {
         let p = (k..n)
-            .max_by(|&i, &j| a[i][k].clone().abs().partial_cmp(&a[j][k].clone().abs()).unwrap_or(std::cmp::Ordering::Equal))
+            .max_by(|&i, &j| {
+                a[i][k].clone().abs().partial_cmp(&a[j][k].clone().abs()).unwrap_or(std::cmp::Ordering::Equal)
+            })
             .unwrap_or(k);
         a.swap(k, p);
         b.swap(k, p);
@@ -479,8 +486,7 @@ mod tests {
     use super::*;
 
     fn material(nu: (i64, i64)) -> Material {
-        Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into()))
-            .unwrap()
+        Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
     }
 
     #[test]

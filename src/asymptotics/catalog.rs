@@ -59,10 +59,7 @@ fn substitute(
             let mapped: Option<Vec<Frac>> = series.coeffs().iter().map(|c| c.subs(s, v)).collect();
             let coeffs = mapped.ok_or_else(|| SeriesError::NotInvertible {
                 operation: "substitution",
-                value: format!(
-                    "a denominator vanishes at {name} = {}",
-                    exact_series::q_text(v)
-                ),
+                value: format!("a denominator vanishes at {name} = {}", exact_series::q_text(v)),
             })?;
             series = Series::from_coeffs(coeffs);
             symbols.retain(|x| *x != s);
@@ -138,14 +135,7 @@ impl SeriesObject {
             .into_iter()
             .map(|(object, formula, source, variable, series, mut symbols)| {
                 let series = substitute(series, &mut symbols, subs)?;
-                Ok(Derived {
-                    object,
-                    formula,
-                    source,
-                    variable,
-                    series,
-                    symbols,
-                })
+                Ok(Derived { object, formula, source, variable, series, symbols })
             })
             .collect()
     }
@@ -158,22 +148,12 @@ impl Derived {
         let range = if self.object == "jacobi" {
             format!("index n, j_0 .. j_{n}")
         } else {
-            format!(
-                "variable {v}, order {n} (every term through {v}^{n})",
-                v = self.variable
-            )
+            format!("variable {v}, order {n} (every term through {v}^{n})", v = self.variable)
         };
-        let mut s = format!(
-            "object: {}\nformula: {}\nsource: {}\n{range}\n",
-            self.object, self.formula, self.source
-        );
+        let mut s = format!("object: {}\nformula: {}\nsource: {}\n{range}\n", self.object, self.formula, self.source);
         for (k, c) in self.series.coeffs().iter().enumerate() {
             if !c.is_zero() {
-                let label = if self.object == "jacobi" {
-                    format!("j_{k}")
-                } else {
-                    format!("[{}^{k}]", self.variable)
-                };
+                let label = if self.object == "jacobi" { format!("j_{k}") } else { format!("[{}^{k}]", self.variable) };
                 s.push_str(&format!("{label} {}\n", c.text()));
             }
         }
@@ -182,10 +162,7 @@ impl Derived {
 
     /// LaTeX: one `align*` line per non-zero coefficient.
     pub fn latex(&self) -> String {
-        let mut s = format!(
-            "% {}: {} ({})\n\\begin{{align*}}\n",
-            self.object, self.formula, self.source
-        );
+        let mut s = format!("% {}: {} ({})\n\\begin{{align*}}\n", self.object, self.formula, self.source);
         let v = match self.variable {
             "lambda" => "\\lambda",
             other => other,
@@ -208,8 +185,7 @@ impl Derived {
 
     /// JSON in the layout `{"object", "variable", "order", "symbols", "coefficients"}`.
     pub fn json(&self) -> serde_json::Value {
-        self.series
-            .to_json(self.object, self.variable, &self.symbols)
+        self.series.to_json(self.object, self.variable, &self.symbols)
     }
 }
 
@@ -223,24 +199,13 @@ mod tests {
 
     #[test]
     fn kernel_text_lists_bernoulli_coefficients() {
-        let d = SeriesObject::Kernel
-            .derive(4, &Substitutions::default())
-            .unwrap()
-            .remove(0);
-        assert!(
-            d.text().contains("[z^2] -1/3\n[z^4] -1/45\n"),
-            "{}",
-            d.text()
-        );
+        let d = SeriesObject::Kernel.derive(4, &Substitutions::default()).unwrap().remove(0);
+        assert!(d.text().contains("[z^2] -1/3\n[z^4] -1/45\n"), "{}", d.text());
     }
 
     #[test]
     fn weight_substitution_is_exact() {
-        let subs = Substitutions {
-            theta: Some(q(1, 10)),
-            xh: Some(q(0, 1)),
-            t: None,
-        };
+        let subs = Substitutions { theta: Some(q(1, 10)), xh: Some(q(0, 1)), t: None };
         let d = SeriesObject::Weight.derive(2, &subs).unwrap().remove(0);
         // At xh = 0: Y = sinc(lambda) = 1 - lambda^2/6 + ..., independent of theta.
         assert_eq!(d.series.coeff(2).unwrap().as_q(), Some(q(-1, 6)));

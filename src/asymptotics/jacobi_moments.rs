@@ -23,10 +23,7 @@ pub fn jacobi_moments_at(n: usize, theta: &Poly) -> Series<Poly> {
     }
     for m in 1..n {
         // (m+1) j_{m+1} = m j_{m-1} - 2 theta j_m
-        let next = j[m - 1]
-            .mul_int(m as i64)
-            .sub(&two_theta.mul(&j[m]))
-            .div_int(m as i64 + 1);
+        let next = j[m - 1].mul_int(m as i64).sub(&two_theta.mul(&j[m])).div_int(m as i64 + 1);
         j.push(next);
     }
     Series::from_coeffs(j)
@@ -48,9 +45,7 @@ mod tests {
         for k in 0..=n {
             let mut rising = Poly::one();
             for i in 0..k {
-                rising = rising
-                    .mul(&Poly::from_int(i as i64).add(&half).sub(&theta))
-                    .div_int(i as i64 + 1);
+                rising = rising.mul(&Poly::from_int(i as i64).add(&half).sub(&theta)).div_int(i as i64 + 1);
             }
             let sign = if (n - k) % 2 == 0 { 1 } else { -1 };
             let c = &binom * Q::from_integer((sign * (1i64 << k)).into());

@@ -94,35 +94,20 @@ impl Tables {
         let k_max = order / 2;
         let deg = 2 * k_max + 2;
         let j = jacobi_moments_at(2 * deg + 2, theta).coeffs().to_vec();
-        let jm = jacobi_moments_at(4 * deg + 6, &theta.neg())
-            .coeffs()
-            .to_vec();
+        let jm = jacobi_moments_at(4 * deg + 6, &theta.neg()).coeffs().to_vec();
         let quarter = Poly::from_q(&Q::new(1.into(), 4.into())).sub(&theta.mul(theta));
         let nu = (0..4 * deg + 4)
             .map(|n| {
-                jm[n].sub(&jm[n + 2]).div_exact(&quarter).ok_or_else(|| {
-                    SeriesError::NotInvertible {
-                        operation: "moment of omega divided by 1/4 - theta^2",
-                        value: jm[n].sub(&jm[n + 2]).text(),
-                    }
+                jm[n].sub(&jm[n + 2]).div_exact(&quarter).ok_or_else(|| SeriesError::NotInvertible {
+                    operation: "moment of omega divided by 1/4 - theta^2",
+                    value: jm[n].sub(&jm[n + 2]).text(),
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
         let zs = kernel_series(2 * k_max + 2);
-        let z = (0..=k_max + 1)
-            .map(|k| {
-                zs.coeff(2 * k)
-                    .cloned()
-                    .unwrap_or_else(|| Q::from_integer(0.into()))
-            })
-            .collect();
-        Ok(Tables {
-            prec: order + 1,
-            j,
-            nu,
-            z,
-            quarter,
-        })
+        let z =
+            (0..=k_max + 1).map(|k| zs.coeff(2 * k).cloned().unwrap_or_else(|| Q::from_integer(0.into()))).collect();
+        Ok(Tables { prec: order + 1, j, nu, z, quarter })
     }
 
     /// sum_i F_i sum_{r+s=i-1} j_s w_{n+r}: the moment functional of the bounded solution.
@@ -150,10 +135,7 @@ impl Tables {
 /// // Frictionless check (Kuznetsov): a = a0 (1 - Lambda^2/12 + ...) at theta = T = 0.
 /// assert!(e.l_over_ls.coeff(2).unwrap().text().ends_with("- 1/12"));
 /// ```
-pub fn sliding_expansion(
-    shape: SlidingShape,
-    order: usize,
-) -> Result<SlidingExpansion, SeriesError> {
+pub fn sliding_expansion(shape: SlidingShape, order: usize) -> Result<SlidingExpansion, SeriesError> {
     let theta = Poly::symbol(Symbol::new("theta")?);
     let t = Poly::symbol(Symbol::new("T")?);
     let tab = Tables::new(order, &theta)?;
@@ -191,11 +173,7 @@ pub fn sliding_expansion(
                 let sign = if n % 2 == 0 { 1 } else { -1 };
                 let c = Q::from_integer((sign * 4i64.pow(n as u32)).into()) / &fact;
                 for (i, yi) in y_pow.iter().enumerate() {
-                    xp_add(
-                        &mut shape_poly,
-                        i,
-                        &yi.mul(&lam_pow).truncate(prec).scale(&c),
-                    );
+                    xp_add(&mut shape_poly, i, &yi.mul(&lam_pow).truncate(prec).scale(&c));
                 }
             }
         }
@@ -208,17 +186,9 @@ pub fn sliding_expansion(
             let zk = &tab.z[k];
             let mut binom = Q::from_integer(1.into()); // C(2k-1, j)
             for j in 0..2 * k {
-                let sign = if j % 2 == 0 {
-                    Q::from_integer(1.into())
-                } else {
-                    Q::from_integer((-1).into())
-                };
+                let sign = if j % 2 == 0 { Q::from_integer(1.into()) } else { Q::from_integer((-1).into()) };
                 let c = -(zk * &binom * sign);
-                xp_add(
-                    &mut h,
-                    2 * k - 1 - j,
-                    &mt[j].mul(&lam_pow).truncate(prec).scale(&c),
-                );
+                xp_add(&mut h, 2 * k - 1 - j, &mt[j].mul(&lam_pow).truncate(prec).scale(&c));
                 binom = binom * Q::new(((2 * k - 1 - j) as i64).into(), ((j + 1) as i64).into());
             }
         }
@@ -241,9 +211,7 @@ pub fn sliding_expansion(
             for (i, si) in shape_poly.iter().enumerate() {
                 acc = acc.add(&si.mul(&mt[i]).truncate(prec));
             }
-            acc.mul(&rho.powi(3)?)
-                .truncate(prec)
-                .scale(&Q::from_integer(2.into()))
+            acc.mul(&rho.powi(3)?).truncate(prec).scale(&Q::from_integer(2.into()))
         };
         // Pressure B(xh) = sum_i F_i sum_{r+s=i-1} xh^r j_s.
         let mut b: XPoly = vec![Series::zero(prec)];
@@ -272,21 +240,12 @@ pub fn sliding_expansion(
         .map(|jj| {
             b.iter().enumerate().fold(Poly::zero(), |acc, (r, br)| {
                 let c = br.coeff(2 * jj).cloned().unwrap_or_else(Poly::zero);
-                acc.add(&c.mul(&Poly::term(
-                    &Q::from_integer(1.into()),
-                    exact_series::Monomial::power(xh, r as u32),
-                )))
+                acc.add(&c.mul(&Poly::term(&Q::from_integer(1.into()), exact_series::Monomial::power(xh, r as u32))))
             })
         })
         .collect();
     let rbar_s = theta.mul_int(2).sub(&t);
-    Ok(SlidingExpansion {
-        shape,
-        l_over_ls: rho,
-        rbar_minus_rbar_s: rbar.sub(&cst(&rbar_s)),
-        f_def_scaled,
-        pressure,
-    })
+    Ok(SlidingExpansion { shape, l_over_ls: rho, rbar_minus_rbar_s: rbar.sub(&cst(&rbar_s)), f_def_scaled, pressure })
 }
 
 #[cfg(test)]
@@ -294,9 +253,7 @@ mod tests {
     use super::*;
 
     fn at(p: &Poly, theta: Q, t: Q) -> Q {
-        let p = p
-            .subs(Symbol::new("theta").unwrap(), &theta)
-            .subs(Symbol::new("T").unwrap(), &t);
+        let p = p.subs(Symbol::new("theta").unwrap(), &theta).subs(Symbol::new("T").unwrap(), &t);
         p.as_q().expect("no symbols left")
     }
 
@@ -311,20 +268,11 @@ mod tests {
         let order = 12;
         let prec = order + 2;
         let x = Series::<Q>::var(prec + 2);
-        let e = x
-            .mul(&x)
-            .scale(&Q::new((-1).into(), 2.into()))
-            .exp()
-            .unwrap();
-        let two_v = Series::one(prec + 2)
-            .sub(&e)
-            .scale(&Q::from_integer(2.into()));
+        let e = x.mul(&x).scale(&Q::new((-1).into(), 2.into())).exp().unwrap();
+        let two_v = Series::one(prec + 2).sub(&e).scale(&Q::from_integer(2.into()));
         let s = two_v.sqrt().unwrap(); // = Lambda (1 + ...)
         let arcsin = x.sin().unwrap().revert().unwrap();
-        let lambda = arcsin
-            .compose(&s.scale(&Q::new(1.into(), 2.into())))
-            .unwrap()
-            .scale(&Q::from_integer(2.into()));
+        let lambda = arcsin.compose(&s.scale(&Q::new(1.into(), 2.into()))).unwrap().scale(&Q::from_integer(2.into()));
         let expected = lambda.div(&x).unwrap();
         let got = sliding_expansion(SlidingShape::Parabolic, order).unwrap();
         for k in 0..=order {
@@ -333,10 +281,7 @@ mod tests {
                 expected.coeff(k).unwrap().clone(),
                 "Lambda^{k}"
             );
-            assert_eq!(
-                at(got.rbar_minus_rbar_s.coeff(k).unwrap(), zero(), zero()),
-                zero()
-            );
+            assert_eq!(at(got.rbar_minus_rbar_s.coeff(k).unwrap(), zero(), zero()), zero());
         }
     }
 
@@ -365,10 +310,7 @@ mod tests {
         assert!(e.l_over_ls.coeff(0).unwrap().is_one());
         assert!(e.rbar_minus_rbar_s.coeff(0).unwrap().is_zero());
         // F_def,s / (pi E* k^2 l_s^3) = 2 (rbar_s mu_0 + mu_1) = (1/4 - theta^2)(32 theta/3 - 4 T).
-        assert_eq!(
-            e.f_def_scaled.coeff(0).unwrap().text(),
-            "-32/3*theta^3 + 4*T*theta^2 + 8/3*theta - T"
-        );
+        assert_eq!(e.f_def_scaled.coeff(0).unwrap().text(), "-32/3*theta^3 + 4*T*theta^2 + 8/3*theta - T");
         assert!(e.pressure.len() == 2);
     }
 }

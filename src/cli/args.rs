@@ -38,6 +38,17 @@ pub enum ObjectName {
     Sliding,
 }
 
+/// Solution methods.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MethodName {
+    /// High precision (MPFR), verified by a second run.
+    Mpfr,
+    /// Fast f64.
+    F64,
+    /// Truncated exact series evaluated in MPFR (Problem 1).
+    Series,
+}
+
 /// Punch shapes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ShapeName {
@@ -72,6 +83,26 @@ pub enum RawCommand {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
+    },
+    /// Solve the problem a scene file describes and print the result with its verified accuracy.
+    Solve {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Digits requested (overrides [output] digits; default 30).
+        #[arg(long, value_name = "N")]
+        digits: Option<String>,
+        /// Method (overrides [output] method; default mpfr).
+        #[arg(long, value_enum)]
+        method: Option<MethodName>,
+        /// Series order for --method series (default 12).
+        #[arg(long, value_name = "N")]
+        order: Option<String>,
+        /// Output format.
+        #[arg(long, value_enum)]
+        format: Option<Format>,
+        /// Same as --format json.
+        #[arg(long)]
+        json: bool,
     },
     /// Write the report (coefficient tables, Markdown and LaTeX) into a folder: the main job.
     Report {

@@ -1,9 +1,11 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
-use super::args::{Format, ObjectName, RawArgs, RawCommand, ShapeName};
+use super::args::{Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
 use super::InvalidInput;
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
 use crate::asymptotics::sliding::SlidingShape;
+use crate::scene::{parse::parse_scene, Method, Scene};
+use crate::solve::{SolveRequest, DEFAULT_DIGITS};
 use exact_series::{parse_rational, Q};
 use num_traits::Signed;
 use std::path::PathBuf;
@@ -19,6 +21,15 @@ pub enum RunConfig {
         order: usize,
         /// Exact substitutions.
         subs: Substitutions,
+        /// Output format.
+        format: Format,
+    },
+    /// `solve SCENE`
+    Solve {
+        /// The parsed scene.
+        scene: Box<Scene>,
+        /// Method, digits, series order.
+        request: SolveRequest,
         /// Output format.
         format: Format,
     },
@@ -47,19 +58,13 @@ pub fn parse_order(text: &str, max: usize) -> Result<usize, InvalidInput> {
         .parse::<usize>()
         .ok()
         .filter(|&n| n <= max)
-        .ok_or_else(|| {
-            InvalidInput::new("--order", text, format!("must be an integer in [0, {max}]"))
-        })
+        .ok_or_else(|| InvalidInput::new("--order", text, format!("must be an integer in [0, {max}]")))
 }
 
 /// Parses an exact rational flag.
 pub fn parse_exact(flag: &str, text: &str) -> Result<Q, InvalidInput> {
     parse_rational(text).map_err(|_| {
-        InvalidInput::new(
-            flag,
-            text,
-            "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25",
-        )
+        InvalidInput::new(flag, text, "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25")
     })
 }
 
@@ -67,15 +72,7 @@ impl RunConfig {
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, InvalidInput> {
         match args.command {
-            RawCommand::Series {
-                object,
-                order,
-                theta,
-                xh,
-                t,
-                shape,
-                format,
-            } => {
+            RawCommand::Series { object, order, theta, xh, t, shape, format } => {
                 let object = match object {
                     ObjectName::Kernel => SeriesObject::Kernel,
                     ObjectName::Weight => SeriesObject::Weight,
@@ -89,11 +86,7 @@ impl RunConfig {
                 let theta = theta.map(|t| parse_exact("--theta", &t)).transpose()?;
                 if let Some(t) = &theta {
                     if t.abs() >= Q::new(1.into(), 2.into()) {
-                        return Err(InvalidInput::new(
-                            "--theta",
-                            t,
-                            "must satisfy |theta| < 1/2",
-                        ));
+                        return Err(InvalidInput::new("--theta", t, "must satisfy |theta| < 1/2"));
                     }
                     if object == SeriesObject::Kernel {
                         return Err(InvalidInput::new("--theta", t, "the kernel has no theta"));
@@ -105,30 +98,56 @@ impl RunConfig {
                         return Err(InvalidInput::new("--xh", x, "must lie in [-1, 1]"));
                     }
                     if !matches!(object, SeriesObject::Weight | SeriesObject::Sliding(_)) {
-                        return Err(InvalidInput::new(
-                            "--xh",
-                            x,
-                            "only the weight and sliding series have xh",
-                        ));
+                        return Err(InvalidInput::new("--xh", x, "only the weight and sliding series have xh"));
                     }
                 }
                 let t = t.map(|v| parse_exact("--T", &v)).transpose()?;
                 if let Some(v) = &t {
                     if v.is_negative() {
-                        return Err(InvalidInput::new(
-                            "--T",
-                            v,
-                            "must be >= 0 (T = beta tau0/(E* k l_s))",
-                        ));
+                        return Err(InvalidInput::new("--T", v, "must be >= 0 (T = beta tau0/(E* k l_s))"));
                     }
                     if !matches!(object, SeriesObject::Sliding(_)) {
                         return Err(InvalidInput::new("--T", v, "only the sliding series has T"));
                     }
                 }
-                Ok(RunConfig::Series {
-                    object,
-                    order,
-                    subs: Substitutions { theta, xh, t },
+                Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t }, format })
+            }
+            RawCommand::Solve { scene, digits, method, order, format, json } => {
+                let text = std::fs::read_to_string(&scene)
+                    .map_err(|e| InvalidInput::new("SCENE", scene.display(), format!("cannot be read: {e}")))?;
+                let parsed = parse_scene(&text)?;
+                let digits = match digits {
+                    Some(d) => d
+                        .trim()
+                        .parse::<u32>()
+                        .ok()
+                        .filter(|d| (1..=crate::scene::parse::MAX_DIGITS).contains(d))
+                        .ok_or_else(|| {
+                            InvalidInput::new(
+                                "--digits",
+                                &d,
+                                format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
+                            )
+                        })?,
+                    None => parsed.output.digits.unwrap_or(DEFAULT_DIGITS),
+                };
+                let method = match method {
+                    Some(MethodName::Mpfr) => Method::Mpfr,
+                    Some(MethodName::F64) => Method::F64,
+                    Some(MethodName::Series) => Method::Series,
+                    None => parsed.output.method.unwrap_or(Method::Mpfr),
+                };
+                let series_order = match order {
+                    Some(o) => parse_order(&o, 24)?,
+                    None => parsed.output.series_order.unwrap_or(12),
+                };
+                let format = if json { Format::Json } else { format.unwrap_or(Format::Text) };
+                if format == Format::Latex {
+                    return Err(InvalidInput::new("--format", "latex", "solve prints text or json"));
+                }
+                Ok(RunConfig::Solve {
+                    scene: Box::new(parsed),
+                    request: SolveRequest { method, digits, series_order },
                     format,
                 })
             }

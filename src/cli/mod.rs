@@ -19,25 +19,13 @@ pub struct InvalidInput {
 
 impl InvalidInput {
     /// Builds the error.
-    pub fn new(
-        parameter: impl Into<String>,
-        value: impl ToString,
-        expected: impl Into<String>,
-    ) -> Self {
-        InvalidInput {
-            parameter: parameter.into(),
-            value: value.to_string(),
-            expected: expected.into(),
-        }
+    pub fn new(parameter: impl Into<String>, value: impl ToString, expected: impl Into<String>) -> Self {
+        InvalidInput { parameter: parameter.into(), value: value.to_string(), expected: expected.into() }
     }
 }
 
 impl From<crate::model::ModelError> for InvalidInput {
     fn from(e: crate::model::ModelError) -> Self {
-        InvalidInput {
-            parameter: e.parameter,
-            value: e.value,
-            expected: e.expected,
-        }
+        InvalidInput { parameter: e.parameter, value: e.value, expected: e.expected }
     }
 }

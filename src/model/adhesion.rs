@@ -30,12 +30,7 @@ impl AdhesionProblem {
     /// Validates the statement: parabolic punch only, positive sizes, 2a < L for a given a.
     /// (For a given load every P2 > 0 has a solution with 2a < L, since P2(a) -> infinity as
     /// 2a -> L.)
-    pub fn new(
-        material: Material,
-        period: Period,
-        shape: PunchShape,
-        size: AdhesionSize,
-    ) -> Result<Self, ModelError> {
+    pub fn new(material: Material, period: Period, shape: PunchShape, size: AdhesionSize) -> Result<Self, ModelError> {
         if let PunchShape::Sinusoidal { .. } = shape {
             return Err(ModelError::new(
                 "shape",

@@ -14,15 +14,7 @@ pub struct ModelError {
 
 impl ModelError {
     /// Builds an error for `parameter` with value `value` and the valid range `expected`.
-    pub fn new(
-        parameter: impl Into<String>,
-        value: impl ToString,
-        expected: impl Into<String>,
-    ) -> Self {
-        ModelError {
-            parameter: parameter.into(),
-            value: value.to_string(),
-            expected: expected.into(),
-        }
+    pub fn new(parameter: impl Into<String>, value: impl ToString, expected: impl Into<String>) -> Self {
+        ModelError { parameter: parameter.into(), value: value.to_string(), expected: expected.into() }
     }
 }

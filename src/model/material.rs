@@ -20,10 +20,7 @@ impl Material {
         if !e_star.is_positive() {
             return Err(ModelError::new("contact_modulus", &e_star, "must be > 0"));
         }
-        Ok(Material {
-            poisson_ratio: nu,
-            contact_modulus: e_star,
-        })
+        Ok(Material { poisson_ratio: nu, contact_modulus: e_star })
     }
 
     /// From nu and Young's modulus E: E* = E/(1 - nu^2), exactly.
@@ -33,10 +30,7 @@ impl Material {
             return Err(ModelError::new("youngs_modulus", &e, "must be > 0"));
         }
         let e_star = &e / (Exact::one() - &nu * &nu);
-        Ok(Material {
-            poisson_ratio: nu,
-            contact_modulus: e_star,
-        })
+        Ok(Material { poisson_ratio: nu, contact_modulus: e_star })
     }
 
     /// beta = (1 - 2 nu) / (2 (1 - nu)), in [0, 1/2] (THEORY.md section 1), exact.

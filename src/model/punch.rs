@@ -16,11 +16,7 @@ impl Period {
     /// A finite period, validated (> 0).
     pub fn finite(l: Exact) -> Result<Self, ModelError> {
         if !l.is_positive() {
-            return Err(ModelError::new(
-                "period",
-                &l,
-                "must be > 0 (or \"inf\" for a single punch)",
-            ));
+            return Err(ModelError::new("period", &l, "must be > 0 (or \"inf\" for a single punch)"));
         }
         Ok(Period::Finite(l))
     }

@@ -52,11 +52,7 @@ impl SlidingProblem {
             return Err(ModelError::new("friction", &friction, "must be >= 0"));
         }
         if adhesive_friction.is_negative() {
-            return Err(ModelError::new(
-                "adhesive_friction",
-                &adhesive_friction,
-                "must be >= 0",
-            ));
+            return Err(ModelError::new("adhesive_friction", &adhesive_friction, "must be >= 0"));
         }
         if wear.is_negative() {
             return Err(ModelError::new("wear", &wear, "must be >= 0"));
@@ -76,31 +72,14 @@ impl SlidingProblem {
             _ => {}
         }
         if let (PunchShape::Sinusoidal { .. }, Period::Infinite) = (&shape, &period) {
-            return Err(ModelError::new(
-                "period",
-                "inf",
-                "a sinusoidal punch needs a finite period",
-            ));
+            return Err(ModelError::new("period", "inf", "a sinusoidal punch needs a finite period"));
         }
         if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, &period) {
             if (l + l) >= *big_l {
-                return Err(ModelError::new(
-                    "half_length",
-                    l,
-                    format!("must satisfy 2 l < L = {big_l}"),
-                ));
+                return Err(ModelError::new("half_length", l, format!("must satisfy 2 l < L = {big_l}")));
             }
         }
-        Ok(SlidingProblem {
-            material,
-            period,
-            shape,
-            friction,
-            adhesive_friction,
-            wear,
-            speed,
-            load,
-        })
+        Ok(SlidingProblem { material, period, shape, friction, adhesive_friction, wear, speed, load })
     }
 
     /// kappa = E* cW / 2 - beta mu (THEORY.md section 3, the paper's (2.8)), exact.

@@ -65,11 +65,7 @@ pub fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>
         let kf = k as f64;
         let t = 2.0 * kf + s;
         // a_0 = (beta - alpha)/(s + 2): the general formula is 0/0 at s = 0.
-        a.push(if k == 0 {
-            (beta - alpha) / (s + 2.0)
-        } else {
-            (beta - alpha) * (beta + alpha) / (t * (t + 2.0))
-        });
+        a.push(if k == 0 { (beta - alpha) / (s + 2.0) } else { (beta - alpha) * (beta + alpha) / (t * (t + 2.0)) });
         b.push(match k {
             0 => jacobi_mass(alpha, beta),
             // b_1 with the factor (1 + s) cancelled (0/0 at s = -1).
@@ -110,8 +106,7 @@ pub fn jacobi_mass(alpha: f64, beta: f64) -> f64 {
         // Gamma(1+alpha) Gamma(-alpha) = Gamma(z) Gamma(1-z), z = 1 + alpha.
         PI / (PI * (1.0 + alpha)).sin()
     } else {
-        (2f64.ln() * (s + 1.0) + ln_gamma(alpha + 1.0) + ln_gamma(beta + 1.0) - ln_gamma(s + 2.0))
-            .exp()
+        (2f64.ln() * (s + 1.0) + ln_gamma(alpha + 1.0) + ln_gamma(beta + 1.0) - ln_gamma(s + 2.0)).exp()
     }
 }
 
@@ -147,25 +142,17 @@ fn ln_gamma(x: f64) -> f64 {
 /// Exact for polynomials of degree <= 2n - 1.
 pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> Result<GaussRule, QuadratureError> {
     if !(alpha.is_finite() && alpha > -1.0) {
-        return Err(QuadratureError::InvalidExponent {
-            parameter: "alpha",
-            value: alpha,
-        });
+        return Err(QuadratureError::InvalidExponent { parameter: "alpha", value: alpha });
     }
     if !(beta.is_finite() && beta > -1.0) {
-        return Err(QuadratureError::InvalidExponent {
-            parameter: "beta",
-            value: beta,
-        });
+        return Err(QuadratureError::InvalidExponent { parameter: "beta", value: beta });
     }
     if n == 0 {
         return Err(QuadratureError::NoNodes);
     }
     let (a, b) = jacobi_recurrence(n, alpha, beta);
     let mut d = a.clone();
-    let mut e: Vec<f64> = (0..n)
-        .map(|k| if k + 1 < n { b[k + 1].sqrt() } else { 0.0 })
-        .collect();
+    let mut e: Vec<f64> = (0..n).map(|k| if k + 1 < n { b[k + 1].sqrt() } else { 0.0 }).collect();
     tridiagonal_eigenvalues(&mut d, &mut e).map_err(|_| QuadratureError::NoConvergence { n })?;
     d.sort_by(|x, y| x.total_cmp(y));
     let sq: Vec<f64> = b.iter().map(|v| v.sqrt()).collect();
@@ -283,10 +270,7 @@ fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<(), ()> {
 pub fn sliding_rules(n: usize, theta: f64) -> Result<(GaussRule, GaussRule), QuadratureError> {
     let alpha = 0.5 - theta;
     let beta = 0.5 + theta;
-    Ok((
-        gauss_jacobi(n, alpha, beta)?,
-        gauss_jacobi(n + 1, -alpha, -beta)?,
-    ))
+    Ok((gauss_jacobi(n, alpha, beta)?, gauss_jacobi(n + 1, -alpha, -beta)?))
 }
 
 /// (1/pi) int_{-1}^{1} omega(t)/(u - t) dt for real |u| > 1, omega as in [`sliding_rules`]:
@@ -377,18 +361,10 @@ mod tests {
                 let rule = gauss_jacobi(n, theta - 0.5, -theta - 0.5).unwrap();
                 let jm = j_moments(theta, 2 * n);
                 for (m, exact) in jm.iter().enumerate() {
-                    let q: f64 = rule
-                        .nodes
-                        .iter()
-                        .zip(&rule.weights)
-                        .map(|(u, w)| w * u.powi(m as i32))
-                        .sum();
+                    let q: f64 = rule.nodes.iter().zip(&rule.weights).map(|(u, w)| w * u.powi(m as i32)).sum();
                     // Tolerance: a few ulps of J_0 times the number of terms summed (C = 8).
                     let tol = 8.0 * f64::EPSILON * jm[0] * (n as f64).max(4.0);
-                    assert!(
-                        (q - exact).abs() <= tol,
-                        "theta {theta} n {n} m {m}: {q} vs {exact}"
-                    );
+                    assert!((q - exact).abs() <= tol, "theta {theta} n {n} m {m}: {q} vs {exact}");
                 }
             }
         }
@@ -403,17 +379,9 @@ mod tests {
                 let jm = j_moments(-theta, 2 * n + 2);
                 for m in 0..2 * n {
                     let exact = jm[m] - jm[m + 2];
-                    let q: f64 = rule
-                        .nodes
-                        .iter()
-                        .zip(&rule.weights)
-                        .map(|(u, w)| w * u.powi(m as i32))
-                        .sum();
+                    let q: f64 = rule.nodes.iter().zip(&rule.weights).map(|(u, w)| w * u.powi(m as i32)).sum();
                     let tol = 8.0 * f64::EPSILON * jm[0] * (n as f64).max(4.0);
-                    assert!(
-                        (q - exact).abs() <= tol,
-                        "theta {theta} n {n} m {m}: {q} vs {exact}"
-                    );
+                    assert!((q - exact).abs() <= tol, "theta {theta} n {n} m {m}: {q} vs {exact}");
                 }
             }
         }
@@ -445,22 +413,10 @@ mod tests {
         let theta = 0.3;
         let r = gauss_jacobi(80, 0.5 - theta, 0.5 + theta).unwrap();
         let u = 1.5;
-        let q: f64 = r
-            .nodes
-            .iter()
-            .zip(&r.weights)
-            .map(|(t, w)| w / (u - t))
-            .sum::<f64>()
-            / PI;
+        let q: f64 = r.nodes.iter().zip(&r.weights).map(|(t, w)| w / (u - t)).sum::<f64>() / PI;
         assert!((q - omega_cauchy_exterior(u, theta)).abs() < 1e-14);
         let u = -2.5;
-        let q: f64 = r
-            .nodes
-            .iter()
-            .zip(&r.weights)
-            .map(|(t, w)| w / (u - t))
-            .sum::<f64>()
-            / PI;
+        let q: f64 = r.nodes.iter().zip(&r.weights).map(|(t, w)| w / (u - t)).sum::<f64>() / PI;
         assert!((q - omega_cauchy_exterior(u, theta)).abs() < 1e-14);
     }
 

@@ -158,9 +158,8 @@ fn recurrence(alpha: &Float, beta: &Float, n: usize, prec: u32) -> (Vec<Float>, 
             Float::with_val(prec, &num_ab * 4u32) / (Float::with_val(prec, &s * &s) * Float::with_val(prec, &s + 1u32))
         } else {
             let num = Float::with_val(prec, &num_ab * &kf) * Float::with_val(prec, &ab + &kf) * 4u32;
-            let den = Float::with_val(prec, &s * &s)
-                * Float::with_val(prec, &s + 1u32)
-                * Float::with_val(prec, &s - 1u32);
+            let den =
+                Float::with_val(prec, &s * &s) * Float::with_val(prec, &s + 1u32) * Float::with_val(prec, &s - 1u32);
             num / den
         };
         b.push(b2.sqrt());
@@ -248,7 +247,13 @@ impl Eval {
             b: b.iter().map(|x| Float::with_val(prec, x)).collect(),
             ib: b
                 .iter()
-                .map(|x| if x.is_zero() { Float::with_val(prec, 0) } else { Float::with_val(prec, 1u32) / Float::with_val(prec, x) })
+                .map(|x| {
+                    if x.is_zero() {
+                        Float::with_val(prec, 0)
+                    } else {
+                        Float::with_val(prec, 1u32) / Float::with_val(prec, x)
+                    }
+                })
                 .collect(),
         }
     }
@@ -283,7 +288,12 @@ impl Eval {
 }
 
 /// The n-point rule computed afresh (no cache); see the module doc for the method.
-pub fn gauss_jacobi_uncached(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<GaussJacobiRule, QuadratureError> {
+pub fn gauss_jacobi_uncached(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+) -> Result<GaussJacobiRule, QuadratureError> {
     for (name, v) in [("alpha", alpha), ("beta", beta)] {
         if !v.is_finite() || *v <= -1i32 {
             return Err(QuadratureError::Exponent { name, value: v.to_string() });
@@ -296,8 +306,10 @@ pub fn gauss_jacobi_uncached(alpha: &Float, beta: &Float, n: usize, prec: u32) -
     let (a, b) = recurrence(alpha, beta, n, wp);
     let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
     let e64: Vec<f64> = b[1..].iter().map(|x| x.to_f64()).collect();
-    let start = tridiagonal_eigenvalues(d64, &e64)
-        .ok_or_else(|| QuadratureError::NoConvergence { n, why: "f64 eigenvalues (implicit QL) did not converge".into() })?;
+    let start = tridiagonal_eigenvalues(d64, &e64).ok_or_else(|| QuadratureError::NoConvergence {
+        n,
+        why: "f64 eigenvalues (implicit QL) did not converge".into(),
+    })?;
 
     // Precision ladder for Newton: each step roughly doubles the correct bits from ~50.
     let mut ladder = vec![];
@@ -355,7 +367,10 @@ pub fn gauss_jacobi_uncached(alpha: &Float, beta: &Float, n: usize, prec: u32) -
             return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
         }
         if (x.to_f64() - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
-            return Err(QuadratureError::NoConvergence { n, why: format!("Newton drifted from its start at node {i}") });
+            return Err(QuadratureError::NoConvergence {
+                n,
+                why: format!("Newton drifted from its start at node {i}"),
+            });
         }
         // Christoffel–Darboux at a root of p_n: sum_{k<n} p_k^2 = b_n p_n'(x) p_{n-1}(x) (evaluated
         // before the last, negligible, correction |dx| <= 2^(4 - wp)).
@@ -399,7 +414,8 @@ mod tests {
     fn j_moments(theta: &Float, kmax: usize, prec: u32) -> Vec<Float> {
         let mut j = vec![Float::with_val(prec, 1), Float::with_val(prec, theta * -2i32)];
         for n in 1..kmax {
-            let v = (Float::with_val(prec, &j[n - 1] * n as u32) - Float::with_val(prec, theta * 2u32) * &j[n]) / (n as u32 + 1);
+            let v = (Float::with_val(prec, &j[n - 1] * n as u32) - Float::with_val(prec, theta * 2u32) * &j[n])
+                / (n as u32 + 1);
             j.push(v);
         }
         let c = Float::with_val(prec, pi(prec) * theta).cos();
@@ -467,7 +483,8 @@ mod tests {
                     let mut v = vec![Float::with_val(wp, 1)];
                     let mut pm = Float::with_val(wp, 0);
                     for k in 0..2 * n - 1 {
-                        let next = (Float::with_val(wp, &x - &a[k]) * &v[k] - Float::with_val(wp, &b[k] * &pm)) / &b[k + 1];
+                        let next =
+                            (Float::with_val(wp, &x - &a[k]) * &v[k] - Float::with_val(wp, &b[k] * &pm)) / &b[k + 1];
                         pm = v[k].clone();
                         v.push(next);
                     }

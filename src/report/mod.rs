@@ -19,7 +19,5 @@ pub fn write_report(out: &Path, order: usize) -> anyhow::Result<ReportFiles> {
     let tex = out.join("coefficients.tex");
     std::fs::write(&md, coefficients::markdown(&tables, order))?;
     std::fs::write(&tex, coefficients::latex(&tables))?;
-    Ok(ReportFiles {
-        files: vec![md, tex],
-    })
+    Ok(ReportFiles { files: vec![md, tex] })
 }

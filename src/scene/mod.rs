@@ -22,10 +22,21 @@
 //! digits = 30
 //! points = ["-0.6", "0.1", "0.7"] # xh = (x - c)/l in (-1, 1)
 //! ```
+//!
+//! Problem 2 (adhesion, parabolic punch only) replaces `[sliding]` by
+//!
+//! ```toml
+//! [problem]
+//! kind = "adhesion"
+//! [adhesion]
+//! half_width = "0.1"             # or normal_load = "..." (then a is found)
+//! [output]
+//! points = ["0", "0.5", "0.9"]   # x/a in [0, 1]
+//! ```
 
 pub mod parse;
 
-use crate::model::{Exact, SlidingProblem};
+use crate::model::{AdhesionProblem, Exact, SlidingProblem};
 
 /// The solution method a scene or the command line asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -65,7 +76,7 @@ pub struct OutputSpec {
     pub digits: Option<u32>,
     /// Accuracy target (the cheapest method meeting it may be chosen).
     pub target_digits: Option<u32>,
-    /// Points where the fields are wanted (Problem 1: xh in (-1, 1)).
+    /// Points where the fields are wanted (Problem 1: xh in (-1, 1); Problem 2: x/a in [0, 1]).
     pub points: Vec<Exact>,
     /// Method asked for.
     pub method: Option<Method>,
@@ -78,6 +89,8 @@ pub struct OutputSpec {
 pub enum SceneProblem {
     /// Problem 1.
     Sliding(SlidingProblem),
+    /// Problem 2.
+    Adhesion(AdhesionProblem),
 }
 
 /// A parsed, validated scene.

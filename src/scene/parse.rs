@@ -1,7 +1,9 @@
 //! Strict scene parser (toml_edit keeps each literal's text, so numbers are read exactly).
 
 use super::{Method, OutputSpec, Scene, SceneProblem};
-use crate::model::{Exact, Material, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::model::{
+    AdhesionProblem, AdhesionSize, Exact, Material, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem,
+};
 use exact_series::parse_rational;
 use num_traits::{One, Signed};
 use toml_edit::{DocumentMut, Item, Table, Value};
@@ -12,48 +14,29 @@ pub const MAX_DIGITS: u32 = 1000;
 /// Parses and validates a scene from TOML text.
 pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
     let doc: DocumentMut = text.parse().map_err(|e: toml_edit::TomlError| {
-        ModelError::new(
-            "scene",
-            "(file)",
-            format!("malformed TOML: {}", e.to_string().trim()),
-        )
+        ModelError::new("scene", "(file)", format!("malformed TOML: {}", e.to_string().trim()))
     })?;
     let root = doc.as_table();
-    allow_keys(
-        root,
-        "",
-        &[
-            "problem", "material", "punch", "sliding", "adhesion", "output", "sweep",
-        ],
-    )?;
+    allow_keys(root, "", &["problem", "material", "punch", "sliding", "adhesion", "output", "sweep"])?;
     let problem = table(root, "problem")?;
     allow_keys(problem, "problem", &["kind"])?;
     let kind = string(problem, "problem", "kind")?;
-    let output = parse_output(root)?;
     match kind.as_str() {
         "sliding" => {
             if root.contains_key("adhesion") {
-                return Err(ModelError::new(
-                    "adhesion",
-                    "(table)",
-                    "not allowed in a sliding scene",
-                ));
+                return Err(ModelError::new("adhesion", "(table)", "not allowed in a sliding scene"));
             }
-            Ok(Scene {
-                problem: SceneProblem::Sliding(parse_sliding(root)?),
-                output,
-            })
+            let output = parse_output(root, PointRange::OpenUnit)?;
+            Ok(Scene { problem: SceneProblem::Sliding(parse_sliding(root)?), output })
         }
-        "adhesion" => Err(ModelError::new(
-            "problem.kind",
-            "adhesion",
-            "the adhesion problem is not supported by this build yet; use \"sliding\"",
-        )),
-        other => Err(ModelError::new(
-            "problem.kind",
-            other,
-            "must be \"sliding\" or \"adhesion\"",
-        )),
+        "adhesion" => {
+            if root.contains_key("sliding") {
+                return Err(ModelError::new("sliding", "(table)", "not allowed in an adhesion scene"));
+            }
+            let output = parse_output(root, PointRange::ClosedHalf)?;
+            Ok(Scene { problem: SceneProblem::Adhesion(parse_adhesion(root)?), output })
+        }
+        other => Err(ModelError::new("problem.kind", other, "must be \"sliding\" or \"adhesion\"")),
     }
 }
 
@@ -81,16 +64,8 @@ fn allow_keys(t: &Table, prefix: &str, allowed: &[&str]) -> Result<(), ModelErro
 fn table<'a>(t: &'a Table, key: &str) -> Result<&'a Table, ModelError> {
     match t.get(key) {
         Some(Item::Table(x)) => Ok(x),
-        Some(_) => Err(ModelError::new(
-            key,
-            "(not a table)",
-            format!("must be a [{key}] table"),
-        )),
-        None => Err(ModelError::new(
-            key,
-            "(missing)",
-            format!("a [{key}] table is required"),
-        )),
+        Some(_) => Err(ModelError::new(key, "(not a table)", format!("must be a [{key}] table"))),
+        None => Err(ModelError::new(key, "(missing)", format!("a [{key}] table is required"))),
     }
 }
 
@@ -98,27 +73,15 @@ fn value<'a>(t: &'a Table, prefix: &str, key: &str) -> Result<Option<&'a Value>,
     match t.get(key) {
         None => Ok(None),
         Some(Item::Value(v)) => Ok(Some(v)),
-        Some(_) => Err(ModelError::new(
-            path(prefix, key),
-            "(table)",
-            "must be a value",
-        )),
+        Some(_) => Err(ModelError::new(path(prefix, key), "(table)", "must be a value")),
     }
 }
 
 fn string(t: &Table, prefix: &str, key: &str) -> Result<String, ModelError> {
     match value(t, prefix, key)? {
         Some(Value::String(s)) => Ok(s.value().clone()),
-        Some(v) => Err(ModelError::new(
-            path(prefix, key),
-            v.to_string().trim(),
-            "must be a string",
-        )),
-        None => Err(ModelError::new(
-            path(prefix, key),
-            "(missing)",
-            "is required",
-        )),
+        Some(v) => Err(ModelError::new(path(prefix, key), v.to_string().trim(), "must be a string")),
+        None => Err(ModelError::new(path(prefix, key), "(missing)", "is required")),
     }
 }
 
@@ -134,13 +97,8 @@ fn literal(v: &Value) -> Option<String> {
 
 /// An exact number from a value, quoted or not.
 fn exact_value(v: &Value, name: &str) -> Result<Exact, ModelError> {
-    let text = literal(v).ok_or_else(|| {
-        ModelError::new(
-            name,
-            v.to_string().trim(),
-            "must be a number or a quoted exact number",
-        )
-    })?;
+    let text = literal(v)
+        .ok_or_else(|| ModelError::new(name, v.to_string().trim(), "must be a number or a quoted exact number"))?;
     parse_rational(&text).map_err(|_| {
         ModelError::new(
             name,
@@ -151,44 +109,24 @@ fn exact_value(v: &Value, name: &str) -> Result<Exact, ModelError> {
 }
 
 fn exact_opt(t: &Table, prefix: &str, key: &str) -> Result<Option<Exact>, ModelError> {
-    value(t, prefix, key)?
-        .map(|v| exact_value(v, &path(prefix, key)))
-        .transpose()
+    value(t, prefix, key)?.map(|v| exact_value(v, &path(prefix, key))).transpose()
 }
 
 fn exact_req(t: &Table, prefix: &str, key: &str) -> Result<Exact, ModelError> {
-    exact_opt(t, prefix, key)?
-        .ok_or_else(|| ModelError::new(path(prefix, key), "(missing)", "is required"))
+    exact_opt(t, prefix, key)?.ok_or_else(|| ModelError::new(path(prefix, key), "(missing)", "is required"))
 }
 
 fn parse_material(root: &Table) -> Result<Material, ModelError> {
     let m = table(root, "material")?;
-    allow_keys(
-        m,
-        "material",
-        &["poisson_ratio", "youngs_modulus", "contact_modulus"],
-    )?;
+    allow_keys(m, "material", &["poisson_ratio", "youngs_modulus", "contact_modulus"])?;
     let nu = exact_req(m, "material", "poisson_ratio")?;
-    match (
-        exact_opt(m, "material", "youngs_modulus")?,
-        exact_opt(m, "material", "contact_modulus")?,
-    ) {
-        (Some(_), Some(_)) => Err(ModelError::new(
-            "material",
-            "youngs_modulus and contact_modulus",
-            "give one of them, not both",
-        )),
-        (Some(e), None) => {
-            Material::from_youngs_modulus(nu, e).map_err(|e| prefixed(e, "material"))
+    match (exact_opt(m, "material", "youngs_modulus")?, exact_opt(m, "material", "contact_modulus")?) {
+        (Some(_), Some(_)) => {
+            Err(ModelError::new("material", "youngs_modulus and contact_modulus", "give one of them, not both"))
         }
-        (None, Some(e)) => {
-            Material::from_contact_modulus(nu, e).map_err(|e| prefixed(e, "material"))
-        }
-        (None, None) => Err(ModelError::new(
-            "material",
-            "(missing)",
-            "give youngs_modulus or contact_modulus",
-        )),
+        (Some(e), None) => Material::from_youngs_modulus(nu, e).map_err(|e| prefixed(e, "material")),
+        (None, Some(e)) => Material::from_contact_modulus(nu, e).map_err(|e| prefixed(e, "material")),
+        (None, None) => Err(ModelError::new("material", "(missing)", "give youngs_modulus or contact_modulus")),
     }
 }
 
@@ -211,9 +149,7 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
             ))
         }
         Some(Value::String(s)) if s.value().trim() == "inf" => Period::Infinite,
-        Some(v) => {
-            Period::finite(exact_value(v, "punch.period")?).map_err(|e| prefixed(e, "punch"))?
-        }
+        Some(v) => Period::finite(exact_value(v, "punch.period")?).map_err(|e| prefixed(e, "punch"))?,
     };
     let shape = match shape.as_str() {
         "parabolic" => {
@@ -222,16 +158,9 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
         }
         "sinusoidal" => {
             allow_keys(p, "punch", &["shape", "amplitude", "period"])?;
-            PunchShape::sinusoidal(exact_req(p, "punch", "amplitude")?)
-                .map_err(|e| prefixed(e, "punch"))?
+            PunchShape::sinusoidal(exact_req(p, "punch", "amplitude")?).map_err(|e| prefixed(e, "punch"))?
         }
-        other => {
-            return Err(ModelError::new(
-                "punch.shape",
-                other,
-                "must be \"parabolic\" or \"sinusoidal\"",
-            ))
-        }
+        other => return Err(ModelError::new("punch.shape", other, "must be \"parabolic\" or \"sinusoidal\"")),
     };
     Ok((shape, period))
 }
@@ -240,39 +169,15 @@ fn parse_sliding(root: &Table) -> Result<SlidingProblem, ModelError> {
     let material = parse_material(root)?;
     let (shape, period) = parse_punch(root)?;
     let s = table(root, "sliding")?;
-    allow_keys(
-        s,
-        "sliding",
-        &[
-            "normal_load",
-            "half_length",
-            "friction",
-            "adhesive_friction",
-            "wear",
-            "speed",
-        ],
-    )?;
+    allow_keys(s, "sliding", &["normal_load", "half_length", "friction", "adhesive_friction", "wear", "speed"])?;
     let zero = || Exact::from_integer(0.into());
-    let load = match (
-        exact_opt(s, "sliding", "normal_load")?,
-        exact_opt(s, "sliding", "half_length")?,
-    ) {
+    let load = match (exact_opt(s, "sliding", "normal_load")?, exact_opt(s, "sliding", "half_length")?) {
         (Some(_), Some(_)) => {
-            return Err(ModelError::new(
-                "sliding",
-                "normal_load and half_length",
-                "give one of them, not both",
-            ))
+            return Err(ModelError::new("sliding", "normal_load and half_length", "give one of them, not both"))
         }
         (Some(p), None) => SlidingLoad::NormalLoad(p),
         (None, Some(l)) => SlidingLoad::HalfLength(l),
-        (None, None) => {
-            return Err(ModelError::new(
-                "sliding",
-                "(missing)",
-                "give normal_load or half_length",
-            ))
-        }
+        (None, None) => return Err(ModelError::new("sliding", "(missing)", "give normal_load or half_length")),
     };
     SlidingProblem::new(
         material,
@@ -287,95 +192,84 @@ fn parse_sliding(root: &Table) -> Result<SlidingProblem, ModelError> {
     .map_err(|e| prefixed(e, "sliding"))
 }
 
+fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
+    let material = parse_material(root)?;
+    let (shape, period) = parse_punch(root)?;
+    let s = table(root, "adhesion")?;
+    allow_keys(s, "adhesion", &["half_width", "normal_load"])?;
+    let size = match (exact_opt(s, "adhesion", "half_width")?, exact_opt(s, "adhesion", "normal_load")?) {
+        (Some(_), Some(_)) => {
+            return Err(ModelError::new("adhesion", "half_width and normal_load", "give one of them, not both"))
+        }
+        (Some(a), None) => AdhesionSize::HalfWidth(a),
+        (None, Some(p)) => AdhesionSize::NormalLoad(p),
+        (None, None) => return Err(ModelError::new("adhesion", "(missing)", "give half_width or normal_load")),
+    };
+    AdhesionProblem::new(material, period, shape, size).map_err(|e| prefixed(e, "adhesion"))
+}
+
+/// Where the output points of a problem live.
+#[derive(Clone, Copy)]
+enum PointRange {
+    /// xh in (-1, 1) (Problem 1).
+    OpenUnit,
+    /// x/a in [0, 1] (Problem 2).
+    ClosedHalf,
+}
+
 fn parse_digits(v: &Value, name: &str) -> Result<u32, ModelError> {
     let text = literal(v).unwrap_or_else(|| v.to_string());
     text.trim()
         .parse::<u32>()
         .ok()
         .filter(|d| (1..=MAX_DIGITS).contains(d))
-        .ok_or_else(|| {
-            ModelError::new(
-                name,
-                text.trim(),
-                format!("must be an integer in [1, {MAX_DIGITS}]"),
-            )
-        })
+        .ok_or_else(|| ModelError::new(name, text.trim(), format!("must be an integer in [1, {MAX_DIGITS}]")))
 }
 
-fn parse_output(root: &Table) -> Result<OutputSpec, ModelError> {
-    let mut out = OutputSpec {
-        digits: None,
-        target_digits: None,
-        points: Vec::new(),
-        method: None,
-        series_order: None,
-    };
+fn parse_output(root: &Table, range: PointRange) -> Result<OutputSpec, ModelError> {
+    let mut out =
+        OutputSpec { digits: None, target_digits: None, points: Vec::new(), method: None, series_order: None };
     let Some(item) = root.get("output") else {
         return Ok(out);
     };
     let Item::Table(o) = item else {
-        return Err(ModelError::new(
-            "output",
-            "(not a table)",
-            "must be an [output] table",
-        ));
+        return Err(ModelError::new("output", "(not a table)", "must be an [output] table"));
     };
-    allow_keys(
-        o,
-        "output",
-        &[
-            "digits",
-            "target_digits",
-            "points",
-            "method",
-            "series_order",
-        ],
-    )?;
-    out.digits = value(o, "output", "digits")?
-        .map(|v| parse_digits(v, "output.digits"))
-        .transpose()?;
-    out.target_digits = value(o, "output", "target_digits")?
-        .map(|v| parse_digits(v, "output.target_digits"))
-        .transpose()?;
+    allow_keys(o, "output", &["digits", "target_digits", "points", "method", "series_order"])?;
+    out.digits = value(o, "output", "digits")?.map(|v| parse_digits(v, "output.digits")).transpose()?;
+    out.target_digits =
+        value(o, "output", "target_digits")?.map(|v| parse_digits(v, "output.target_digits")).transpose()?;
     if let Some(v) = value(o, "output", "method")? {
         let name = literal(v).unwrap_or_default();
-        out.method = Some(Method::parse(&name).ok_or_else(|| {
-            ModelError::new(
-                "output.method",
-                &name,
-                "must be \"mpfr\", \"f64\" or \"series\"",
-            )
-        })?);
+        out.method = Some(
+            Method::parse(&name)
+                .ok_or_else(|| ModelError::new("output.method", &name, "must be \"mpfr\", \"f64\" or \"series\""))?,
+        );
     }
     if let Some(v) = value(o, "output", "series_order")? {
         let text = literal(v).unwrap_or_default();
-        out.series_order = Some(text.parse::<usize>().ok().filter(|n| *n <= 24).ok_or_else(
-            || {
-                ModelError::new(
-                    "output.series_order",
-                    &text,
-                    "must be an integer in [0, 24]",
-                )
-            },
-        )?);
+        out.series_order = Some(
+            text.parse::<usize>()
+                .ok()
+                .filter(|n| *n <= 24)
+                .ok_or_else(|| ModelError::new("output.series_order", &text, "must be an integer in [0, 24]"))?,
+        );
     }
     if let Some(v) = value(o, "output", "points")? {
         let Value::Array(a) = v else {
-            return Err(ModelError::new(
-                "output.points",
-                v.to_string().trim(),
-                "must be an array of numbers",
-            ));
+            return Err(ModelError::new("output.points", v.to_string().trim(), "must be an array of numbers"));
         };
         for (i, p) in a.iter().enumerate() {
             let name = format!("output.points[{i}]");
             let x = exact_value(p, &name)?;
-            if x.abs() >= Exact::one() {
-                return Err(ModelError::new(
-                    name,
-                    &x,
-                    "must lie in (-1, 1) (xh = (x - c)/l)",
-                ));
+            match range {
+                PointRange::OpenUnit if x.abs() >= Exact::one() => {
+                    return Err(ModelError::new(name, &x, "must lie in (-1, 1) (xh = (x - c)/l)"));
+                }
+                PointRange::ClosedHalf if x.is_negative() || x > Exact::one() => {
+                    return Err(ModelError::new(name, &x, "must lie in [0, 1] (x/a)"));
+                }
+                _ => {}
             }
             out.points.push(x);
         }

@@ -107,12 +107,7 @@ pub struct SolverOptions {
 
 impl Default for SolverOptions {
     fn default() -> Self {
-        SolverOptions {
-            target: 1e-14,
-            max_nodes: 1200,
-            nodes: None,
-            accept: 1e-8,
-        }
+        SolverOptions { target: 1e-14, max_nodes: 1200, nodes: None, accept: 1e-8 }
     }
 }
 
@@ -147,10 +142,7 @@ pub struct AccuracyEstimate {
 impl AccuracyEstimate {
     /// The largest of the four relative differences.
     pub fn max(&self) -> f64 {
-        self.geometry
-            .max(self.pressure)
-            .max(self.load)
-            .max(self.f_def)
+        self.geometry.max(self.pressure).max(self.load).max(self.f_def)
     }
 }
 
@@ -221,9 +213,7 @@ impl SlidingSolutionsF64 {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SlidingF64Error {
     /// An exact input is outside the finite f64 range (or rounds to 0).
-    #[error(
-        "{parameter} = {value} is not representable in f64 (must round to a finite, nonzero f64)"
-    )]
+    #[error("{parameter} = {value} is not representable in f64 (must round to a finite, nonzero f64)")]
     NotRepresentable {
         /// Parameter name.
         parameter: &'static str,
@@ -340,10 +330,7 @@ impl Params {
 fn exact_to_f64(q: &crate::model::Exact, name: &'static str, allow_zero: bool) -> Result<f64> {
     match to_f64(q) {
         Some(v) if v.is_finite() && (allow_zero || v != 0.0) => Ok(v),
-        _ => Err(SlidingF64Error::NotRepresentable {
-            parameter: name,
-            value: q.to_string(),
-        }),
+        _ => Err(SlidingF64Error::NotRepresentable { parameter: name, value: q.to_string() }),
     }
 }
 
@@ -353,22 +340,14 @@ fn params_of(problem: &SlidingProblem) -> Result<(Params, Target)> {
     let mu = exact_to_f64(&problem.friction, "friction", true)?;
     let tau0 = exact_to_f64(&problem.adhesive_friction, "adhesive_friction", true)?;
     let cw = exact_to_f64(&problem.wear, "wear", true)?;
-    let speed = problem
-        .speed
-        .as_ref()
-        .map(|v| exact_to_f64(v, "speed", false))
-        .transpose()?;
+    let speed = problem.speed.as_ref().map(|v| exact_to_f64(v, "speed", false)).transpose()?;
     let period = match &problem.period {
         Period::Finite(l) => Some(exact_to_f64(l, "period", false)?),
         Period::Infinite => None,
     };
     let shape = match &problem.shape {
-        PunchShape::Parabolic { k } => Shape::Parabolic {
-            k: exact_to_f64(k, "k", false)?,
-        },
-        PunchShape::Sinusoidal { amplitude } => Shape::Sinusoidal {
-            d: exact_to_f64(amplitude, "amplitude", false)?,
-        },
+        PunchShape::Parabolic { k } => Shape::Parabolic { k: exact_to_f64(k, "k", false)? },
+        PunchShape::Sinusoidal { amplitude } => Shape::Sinusoidal { d: exact_to_f64(amplitude, "amplitude", false)? },
     };
     if let (Shape::Sinusoidal { .. }, None) = (shape, period) {
         return Err(SlidingF64Error::InvalidParameter {
@@ -404,21 +383,7 @@ fn params_of(problem: &SlidingProblem) -> Result<(Params, Target)> {
             });
         }
     }
-    Ok((
-        Params {
-            e_star,
-            beta,
-            mu,
-            tau0,
-            cw,
-            speed,
-            period,
-            shape,
-            theta,
-            kappa,
-        },
-        target,
-    ))
+    Ok((Params { e_star, beta, mu, tau0, cw, speed, period, shape, theta, kappa }, target))
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -450,12 +415,7 @@ impl Collocation {
             }
             m[(r, n)] = 1.0;
         }
-        Ok(Collocation {
-            theta,
-            rule,
-            colloc,
-            lu: m.lu(),
-        })
+        Ok(Collocation { theta, rule, colloc, lu: m.lu() })
     }
 
     fn n(&self) -> usize {
@@ -465,15 +425,9 @@ impl Collocation {
     /// Solves sum_k W_k G_k/(pi (x_r - t_k)) + K = rhs_r; returns (G, K).
     fn solve(&self, rhs: DVector<f64>) -> Result<(Vec<f64>, f64)> {
         let n = self.n();
-        let sol = self
-            .lu
-            .solve(&rhs)
-            .ok_or_else(|| SlidingF64Error::NoConvergence {
-                reason: format!(
-                    "singular collocation matrix (theta = {}, n = {n})",
-                    self.theta
-                ),
-            })?;
+        let sol = self.lu.solve(&rhs).ok_or_else(|| SlidingF64Error::NoConvergence {
+            reason: format!("singular collocation matrix (theta = {}, n = {n})", self.theta),
+        })?;
         Ok((sol.as_slice()[..n].to_vec(), sol[n]))
     }
 }
@@ -505,11 +459,7 @@ fn collocation(theta: f64, n: usize) -> Result<Rc<Collocation>> {
 /// for the constant). Heuristic, checked by the convergence tests below for lambda <= 1.45.
 fn nodes_for(lambda: f64, options: &SolverOptions) -> usize {
     let rate = -2.0 * (0.5 * lambda).tan().ln();
-    let n = if rate > 0.0 {
-        (-(options.target.ln()) / rate).ceil() + 8.0
-    } else {
-        f64::INFINITY
-    };
+    let n = if rate > 0.0 { (-(options.target.ln()) / rate).ceil() + 8.0 } else { f64::INFINITY };
     if n.is_finite() {
         (n as usize).clamp(8, options.max_nodes)
     } else {
@@ -530,11 +480,7 @@ enum Map {
 
 impl Map {
     fn periodic(big_l: f64, lambda: f64) -> Self {
-        Map::Periodic {
-            big_l,
-            lambda,
-            m: lambda.tan(),
-        }
+        Map::Periodic { big_l, lambda, m: lambda.tan() }
     }
     /// x(u) - c = (L/pi) atan(m u)   (or l u).
     fn offset(&self, u: f64) -> f64 {
@@ -595,11 +541,7 @@ fn basis(col: &Collocation, map: &Map, f: impl Fn(f64) -> f64) -> Result<Basis> 
         c0 += w * gk * map.c0_weight(*t);
         p2 += w * gk * map.jac(*t);
     }
-    Ok(Basis {
-        g,
-        cond: c0 - k,
-        p2,
-    })
+    Ok(Basis { g, cond: c0 - k, p2 })
 }
 
 /// A discrete state: the map, the centre c, G in physical units at the nodes
@@ -666,11 +608,7 @@ impl Rhs {
 fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
     let xs = &col.colloc;
     let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
-    let xr = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() {
-        xs[i - 1]
-    } else {
-        xs[i]
-    };
+    let xr = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { xs[i - 1] } else { xs[i] };
     let mut num = st.rhs.divided_difference(&st.map, u, xr);
     let mut den = 1.0 / (PI * col.theta).cos();
     for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
@@ -692,13 +630,7 @@ fn parabola_state(col: &Collocation, prm: &Params, k: f64, map: Map) -> Result<S
     let b = basis(col, &map, |u| map.offset(u))?;
     let s = prm.e_star * k;
     let c = b.cond - prm.beta * prm.tau0 / s;
-    Ok(State {
-        map,
-        c,
-        g: b.g.iter().map(|v| v * s).collect(),
-        p2: s * b.p2,
-        rhs: Rhs::Offset { s },
-    })
+    Ok(State { map, c, g: b.g.iter().map(|v| v * s).collect(), p2: s * b.p2, rhs: Rhs::Offset { s } })
 }
 
 /// Sinusoid at fixed lambda: F = s (X sin 2phi + Y cos 2phi), s = pi E* D/L, phi = atan(m u),
@@ -715,18 +647,8 @@ fn sinusoid_bases(col: &Collocation, map: &Map) -> Result<(Basis, Basis)> {
 
 fn sinusoid_state(map: Map, big_l: f64, s: f64, bx: &Basis, by: &Basis, x: f64, y: f64) -> State {
     let c = big_l * y.atan2(x) / (2.0 * PI);
-    let g =
-        bx.g.iter()
-            .zip(&by.g)
-            .map(|(gx, gy)| s * (x * gx + y * gy))
-            .collect();
-    State {
-        map,
-        c,
-        g,
-        p2: s * (x * bx.p2 + y * by.p2),
-        rhs: Rhs::Sinusoid { s, x, y },
-    }
+    let g = bx.g.iter().zip(&by.g).map(|(gx, gy)| s * (x * gx + y * gy)).collect();
+    State { map, c, g, p2: s * (x * bx.p2 + y * by.p2), rhs: Rhs::Sinusoid { s, x, y } }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -734,14 +656,7 @@ fn sinusoid_state(map: Map, big_l: f64, s: f64, bx: &Basis, by: &Basis, x: f64, 
 // ---------------------------------------------------------------------------------------------
 
 /// Brent's method (Brent 1973, ch. 4; `zbrent` of Numerical Recipes 9.3) on a sign-changing bracket.
-fn brent(
-    mut f: impl FnMut(f64) -> Result<f64>,
-    mut a: f64,
-    mut b: f64,
-    fa0: f64,
-    fb0: f64,
-    xtol: f64,
-) -> Result<f64> {
+fn brent(mut f: impl FnMut(f64) -> Result<f64>, mut a: f64, mut b: f64, fa0: f64, fb0: f64, xtol: f64) -> Result<f64> {
     let (mut fa, mut fb) = (fa0, fb0);
     let (mut c, mut fc) = (b, fb);
     let (mut d, mut e) = (b - a, b - a);
@@ -799,9 +714,7 @@ fn brent(
         b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
         fb = f(b)?;
     }
-    Err(SlidingF64Error::NoConvergence {
-        reason: "Brent iteration for lambda exceeded 200 steps".into(),
-    })
+    Err(SlidingF64Error::NoConvergence { reason: "Brent iteration for lambda exceeded 200 steps".into() })
 }
 
 /// Largest lambda considered: contact fraction 2 lambda/pi = 1 - 1e-6.
@@ -814,9 +727,7 @@ fn kuznetsov_guess(prm: &Params, k: f64, big_l: f64, p2: f64) -> f64 {
     let a0sq = 2.0 * p2 / (PI * prm.e_star * k);
     let ls = (a0sq / (1.0 - 4.0 * prm.theta * prm.theta)).sqrt();
     let z = 0.5 * (PI * ls / big_l).powi(2);
-    (2.0 * (0.5 * -(-z).exp_m1()).sqrt().asin())
-        .min(LAMBDA_MAX - 1e-3)
-        .max(1e-300)
+    (2.0 * (0.5 * -(-z).exp_m1()).sqrt().asin()).min(LAMBDA_MAX - 1e-3).max(1e-300)
 }
 
 /// Parabola, given P2, periodic: solve P2(lambda) = P2 (monotone) with Brent; start from the
@@ -825,14 +736,7 @@ fn kuznetsov_guess(prm: &Params, k: f64, big_l: f64, p2: f64) -> f64 {
 ///
 /// `near`: a lambda already solved at other nodes; the bracket then starts at +-1e-7 relative
 /// around it (a few Brent steps instead of a dozen).
-fn parabola_lambda(
-    prm: &Params,
-    k: f64,
-    big_l: f64,
-    p2: f64,
-    n: usize,
-    near: Option<f64>,
-) -> Result<f64> {
+fn parabola_lambda(prm: &Params, k: f64, big_l: f64, p2: f64, n: usize, near: Option<f64>) -> Result<f64> {
     let col = collocation(prm.theta, n)?;
     let f = |lam: f64| -> Result<f64> {
         let st = parabola_state(&col, prm, k, Map::periodic(big_l, lam))?;
@@ -844,11 +748,7 @@ fn parabola_lambda(
     };
     let mut step = width * guess;
     // Approach pi/2 geometrically: P2(lambda) at lambda ~ pi/2 needs more nodes than n.
-    let up = |from: f64, step: f64| {
-        (guess + step)
-            .min(from + 0.5 * (LAMBDA_MAX - from))
-            .max(from)
-    };
+    let up = |from: f64, step: f64| (guess + step).min(from + 0.5 * (LAMBDA_MAX - from)).max(from);
     let (mut lo, mut hi) = (guess - step, up(guess, step));
     let (mut flo, mut fhi) = (f(lo)?, f(hi)?);
     let mut it = 0;
@@ -856,17 +756,11 @@ fn parabola_lambda(
         hi = lo;
         fhi = flo;
         step *= 8.0;
-        lo = if guess - step > 0.0 {
-            guess - step
-        } else {
-            0.5 * lo
-        };
+        lo = if guess - step > 0.0 { guess - step } else { 0.5 * lo };
         flo = f(lo)?;
         it += 1;
         if it > 400 {
-            return Err(SlidingF64Error::NoConvergence {
-                reason: "could not bracket lambda from below".into(),
-            });
+            return Err(SlidingF64Error::NoConvergence { reason: "could not bracket lambda from below".into() });
         }
     }
     while fhi < 0.0 {
@@ -914,13 +808,7 @@ enum Candidate {
 /// Builds the state of a candidate at n nodes (re-solving the scalar equation when P2 is given).
 /// With `resolve` the scalar equation in lambda is solved again at n nodes (check run); without
 /// it the candidate's lambda (already solved at n nodes) is used.
-fn state_of(
-    prm: &Params,
-    target: Target,
-    cand: Candidate,
-    n: usize,
-    resolve: bool,
-) -> Result<State> {
+fn state_of(prm: &Params, target: Target, cand: Candidate, n: usize, resolve: bool) -> Result<State> {
     let col = collocation(prm.theta, n)?;
     match (cand, prm.shape) {
         (Candidate::ParabolaSingle, Shape::Parabolic { k }) => {
@@ -951,25 +839,18 @@ fn state_of(
                     let map = Map::periodic(big_l, PI * l / big_l);
                     let (bx, by) = sinusoid_bases(&col, &map)?;
                     let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
-                    let (x, y) = pick_branch(&pts, branch).ok_or_else(|| {
-                        SlidingF64Error::NoConvergence {
-                            reason: "the solution branch disappeared in the check run".into(),
-                        }
+                    let (x, y) = pick_branch(&pts, branch).ok_or_else(|| SlidingF64Error::NoConvergence {
+                        reason: "the solution branch disappeared in the check run".into(),
                     })?;
                     Ok(sinusoid_state(map, big_l, s, &bx, &by, x, y))
                 }
                 Target::Load(p2) => {
-                    let lam = if resolve {
-                        refine_sinusoid_lambda(&col, prm, big_l, s, p2, lambda)?
-                    } else {
-                        lambda
-                    };
+                    let lam = if resolve { refine_sinusoid_lambda(&col, prm, big_l, s, p2, lambda)? } else { lambda };
                     let map = Map::periodic(big_l, lam);
                     let (bx, by) = sinusoid_bases(&col, &map)?;
-                    let (x, y) = sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s)
-                        .ok_or_else(|| SlidingF64Error::NoConvergence {
-                            reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into(),
-                        })?;
+                    let (x, y) = sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s).ok_or_else(|| {
+                        SlidingF64Error::NoConvergence { reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into() }
+                    })?;
                     let r = x.hypot(y);
                     Ok(sinusoid_state(map, big_l, s, &bx, &by, x / r, y / r))
                 }
@@ -1007,40 +888,21 @@ fn sinusoid_xy(bx: &Basis, by: &Basis, r1: f64, r2: f64) -> Option<(f64, f64)> {
     if det == 0.0 || !det.is_finite() {
         return None;
     }
-    Some((
-        (r1 * by.p2 - by.cond * r2) / det,
-        (bx.cond * r2 - bx.p2 * r1) / det,
-    ))
+    Some(((r1 * by.p2 - by.cond * r2) / det, (bx.cond * r2 - bx.p2 * r1) / det))
 }
 
 /// h(lambda) = X^2 + Y^2 - 1 for the sinusoid at load P2 (zero at a solution).
-fn sinusoid_h(
-    col: &Collocation,
-    prm: &Params,
-    big_l: f64,
-    s: f64,
-    p2: f64,
-    lam: f64,
-) -> Result<f64> {
+fn sinusoid_h(col: &Collocation, prm: &Params, big_l: f64, s: f64, p2: f64, lam: f64) -> Result<f64> {
     let map = Map::periodic(big_l, lam);
     let (bx, by) = sinusoid_bases(col, &map)?;
     let (x, y) = sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s).ok_or_else(|| {
-        SlidingF64Error::NoConvergence {
-            reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into(),
-        }
+        SlidingF64Error::NoConvergence { reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into() }
     })?;
     Ok(x.hypot(y).ln())
 }
 
 /// Refines a root of ln|(X, Y)| near `lam0` at the nodes of `col`.
-fn refine_sinusoid_lambda(
-    col: &Collocation,
-    prm: &Params,
-    big_l: f64,
-    s: f64,
-    p2: f64,
-    lam0: f64,
-) -> Result<f64> {
+fn refine_sinusoid_lambda(col: &Collocation, prm: &Params, big_l: f64, s: f64, p2: f64, lam0: f64) -> Result<f64> {
     let f = |lam: f64| sinusoid_h(col, prm, big_l, s, p2, lam);
     let f0 = f(lam0)?;
     if f0 == 0.0 {
@@ -1065,29 +927,17 @@ fn refine_sinusoid_lambda(
 }
 
 /// All candidates of the problem (main-run accuracy), with the nodes to use for each.
-fn candidates(
-    prm: &Params,
-    target: Target,
-    options: &SolverOptions,
-) -> Result<Vec<(Candidate, usize)>> {
+fn candidates(prm: &Params, target: Target, options: &SolverOptions) -> Result<Vec<(Candidate, usize)>> {
     let pick = |lam: f64| options.nodes.unwrap_or_else(|| nodes_for(lam, options));
     match (prm.shape, prm.period) {
-        (Shape::Parabolic { .. }, None) => Ok(vec![(
-            Candidate::ParabolaSingle,
-            options.nodes.unwrap_or(8),
-        )]),
+        (Shape::Parabolic { .. }, None) => Ok(vec![(Candidate::ParabolaSingle, options.nodes.unwrap_or(8))]),
         (Shape::Parabolic { k }, Some(big_l)) => {
             match target {
-                Target::HalfLength(l) => Ok(vec![(
-                    Candidate::ParabolaPeriodic(PI * l / big_l),
-                    pick(PI * l / big_l),
-                )]),
+                Target::HalfLength(l) => Ok(vec![(Candidate::ParabolaPeriodic(PI * l / big_l), pick(PI * l / big_l))]),
                 Target::Load(p2) => {
                     // Nodes for the Kuznetsov-type guess of lambda (parabola_lambda), then for the
                     // solved lambda until the node count settles (at most 3 more solves).
-                    let mut n = options
-                        .nodes
-                        .unwrap_or_else(|| pick(kuznetsov_guess(prm, k, big_l, p2)));
+                    let mut n = options.nodes.unwrap_or_else(|| pick(kuznetsov_guess(prm, k, big_l, p2)));
                     let mut lam = parabola_lambda(prm, k, big_l, p2, n, None)?;
                     if options.nodes.is_none() {
                         for _ in 0..3 {
@@ -1117,15 +967,7 @@ fn candidates(
                         .iter()
                         .enumerate()
                         .filter(|(_, (x, y))| x * bx.p2 + y * by.p2 > 0.0)
-                        .map(|(i, _)| {
-                            (
-                                Candidate::Sinusoid {
-                                    lambda: lam,
-                                    branch: i as i8,
-                                },
-                                n,
-                            )
-                        })
+                        .map(|(i, _)| (Candidate::Sinusoid { lambda: lam, branch: i as i8 }, n))
                         .collect())
                 }
                 Target::Load(p2) => sinusoid_scan(prm, big_l, s, p2, options),
@@ -1175,13 +1017,7 @@ fn sinusoid_scan(
                 } else {
                     refine_sinusoid_lambda(&colr, prm, big_l, s, p2, 0.5 * (lp + lam))?
                 };
-                out.push((
-                    Candidate::Sinusoid {
-                        lambda: root,
-                        branch: 0,
-                    },
-                    n,
-                ));
+                out.push((Candidate::Sinusoid { lambda: root, branch: 0 }, n));
             }
         }
         prev = Some((lam, h));
@@ -1229,21 +1065,10 @@ fn outputs(col: &Collocation, prm: &Params, st: &State, points: &[f64]) -> Outpu
         let u = st.map.u_of_xh(xh);
         omega(u, prm.theta) * g_at(col, st, u)
     };
-    let grid_p: Vec<f64> = (0..GRID)
-        .map(|i| p_at(-1.0 + 2.0 * (i as f64 + 0.5) / GRID as f64))
-        .collect();
-    let pressure: Vec<PressurePoint> = points
-        .iter()
-        .map(|&xh| PressurePoint {
-            xh,
-            x: c + l * xh,
-            p: p_at(xh),
-        })
-        .collect();
-    let max_p = grid_p
-        .iter()
-        .chain(pressure.iter().map(|p| &p.p))
-        .fold(0.0f64, |m, v| m.max(*v));
+    let grid_p: Vec<f64> = (0..GRID).map(|i| p_at(-1.0 + 2.0 * (i as f64 + 0.5) / GRID as f64)).collect();
+    let pressure: Vec<PressurePoint> =
+        points.iter().map(|&xh| PressurePoint { xh, x: c + l * xh, p: p_at(xh) }).collect();
+    let max_p = grid_p.iter().chain(pressure.iter().map(|p| &p.p)).fold(0.0f64, |m, v| m.max(*v));
     let mut f_def = 0.0;
     for ((t, w), gk) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
         f_def += w * gk * prm.slope(c + st.map.offset(*t)) * st.map.jac(*t);
@@ -1288,9 +1113,7 @@ fn hilbert_outside(col: &Collocation, prm: &Params, st: &State, c0: f64, x: f64)
             let xi = st.c + st.map.offset(*t);
             let jac = st.map.jac(*t);
             s += match st.map {
-                Map::Periodic { big_l, .. } => {
-                    w * g * jac / (big_l * (PI * (x - xi) / big_l).tan())
-                }
+                Map::Periodic { big_l, .. } => w * g * jac / (big_l * (PI * (x - xi) / big_l).tan()),
                 Map::Single { .. } => w * g * jac / (PI * (x - xi)),
             };
         }
@@ -1300,13 +1123,7 @@ fn hilbert_outside(col: &Collocation, prm: &Params, st: &State, c0: f64, x: f64)
 
 /// C0[p] = sum_k W_k G_k (1/pi) m^2 t_k/(1 + m^2 t_k^2) (THEORY.md section 2); 0 for a single punch.
 fn c0_of(col: &Collocation, st: &State) -> f64 {
-    col.rule
-        .nodes
-        .iter()
-        .zip(&col.rule.weights)
-        .zip(&st.g)
-        .map(|((t, w), g)| w * g * st.map.c0_weight(*t))
-        .sum()
+    col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g).map(|((t, w), g)| w * g * st.map.c0_weight(*t)).sum()
 }
 
 /// Checks p >= 0 on the contact and the gap >= 0 outside it. The gap h = g - delta - v has
@@ -1328,26 +1145,17 @@ fn c0_of(col: &Collocation, st: &State) -> f64 {
 /// (E*/2) h' = E* k l (X(u) - T), X(1) = 0), i.e. it is slightly negative over a short stretch.
 /// That is inherent in the model of THEORY.md section 3; the solution is returned and the most
 /// negative gap is reported in [`SlidingSolutionF64::min_gap`].
-fn physicality(
-    col: &Collocation,
-    prm: &Params,
-    st: &State,
-    out: &Outputs,
-) -> std::result::Result<GapCheck, String> {
+fn physicality(col: &Collocation, prm: &Params, st: &State, out: &Outputs) -> std::result::Result<GapCheck, String> {
     // p >= 0: G at the nodes, at +-1, and p on the grid.
     let gmax = st.g.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let tol_g = 1e-9 * gmax;
     for (u, gu) in [(-1.0, g_at(col, st, -1.0)), (1.0, g_at(col, st, 1.0))] {
         if gu < -tol_g {
-            return Err(format!(
-                "p < 0 next to the contact end u = {u} (p/omega = {gu:e})"
-            ));
+            return Err(format!("p < 0 next to the contact end u = {u} (p/omega = {gu:e})"));
         }
     }
     if let Some((k, g)) = st.g.iter().enumerate().find(|(_, g)| **g < -tol_g) {
-        return Err(format!(
-            "p < 0 inside the contact at node {k} (p/omega = {g:e})"
-        ));
+        return Err(format!("p < 0 inside the contact at node {k} (p/omega = {g:e})"));
     }
     if let Some(p) = out.grid_p.iter().find(|p| **p < -1e-9 * out.max_p) {
         return Err(format!("p = {p:e} < 0 inside the contact"));
@@ -1393,10 +1201,7 @@ fn physicality(
         None => 0.0,
     };
     let hmax = samples.iter().fold(0.0f64, |m, v| m.max(v.1.abs()));
-    let worst = samples.iter().fold(
-        (0.0f64, out.b),
-        |w, v| if v.1 < w.0 { (v.1, v.0) } else { w },
-    );
+    let worst = samples.iter().fold((0.0f64, out.b), |w, v| if v.1 < w.0 { (v.1, v.0) } else { w });
     let negative = worst.0 < -1e-7 * hmax.max(f64::MIN_POSITIVE);
     // Reject only a violation that the convention cannot explain: deeper than the closure
     // mismatch |(2 beta/E*) P1 - cW P2| (zero for frictionless, wear-free contact, where the
@@ -1408,11 +1213,7 @@ fn physicality(
             worst.0, worst.1
         ));
     }
-    Ok(GapCheck {
-        min_gap: if negative { worst.0 } else { 0.0 },
-        at: worst.1,
-        closure,
-    })
+    Ok(GapCheck { min_gap: if negative { worst.0 } else { 0.0 }, at: worst.1, closure })
 }
 
 /// Result of the gap check: the most negative gap found (0 when none beyond round-off) and where.
@@ -1499,9 +1300,7 @@ pub fn solve_sliding_f64(
     let mut solutions = Vec::new();
     let mut reasons = Vec::new();
     if cands.is_empty() {
-        reasons.push(
-            "the side conditions have no solution with P2 > 0 at this contact size".to_string(),
-        );
+        reasons.push("the side conditions have no solution with P2 > 0 at this contact size".to_string());
     }
     for (cand, n) in cands {
         let col = collocation(prm.theta, n)?;
@@ -1509,11 +1308,7 @@ pub fn solve_sliding_f64(
         let out = outputs(&col, &prm, &st, points);
         if let (Shape::Parabolic { .. }, Some(big_l)) = (prm.shape, prm.period) {
             if out.a >= 0.5 * big_l || out.b >= 0.5 * big_l {
-                return Err(SlidingF64Error::ContactLeavesCell {
-                    neg_a: -out.a,
-                    b: out.b,
-                    half_period: 0.5 * big_l,
-                });
+                return Err(SlidingF64Error::ContactLeavesCell { neg_a: -out.a, b: out.b, half_period: 0.5 * big_l });
             }
         }
         let gap = match physicality(&col, &prm, &st, &out) {
@@ -1528,48 +1323,27 @@ pub fn solve_sliding_f64(
         let n2 = n + (n / 4).max(8);
         let col2 = collocation(prm.theta, n2)?;
         let cand2 = match cand {
-            Candidate::Sinusoid { branch, .. } => Candidate::Sinusoid {
-                lambda: out.lambda,
-                branch,
-            },
+            Candidate::Sinusoid { branch, .. } => Candidate::Sinusoid { lambda: out.lambda, branch },
             other => other,
         };
         let st2 = state_of(&prm, target, cand2, n2, true)?;
         let out2 = outputs(&col2, &prm, &st2, points);
         let l = out.l;
-        let geometry = ((out.a - out2.a).abs())
-            .max((out.b - out2.b).abs())
-            .max((out.c - out2.c).abs())
-            / l;
+        let geometry = ((out.a - out2.a).abs()).max((out.b - out2.b).abs()).max((out.c - out2.c).abs()) / l;
         let pressure = out
             .pressure
             .iter()
             .zip(&out2.pressure)
             .map(|(p, q)| (p.p - q.p).abs())
-            .chain(
-                out.grid_p
-                    .iter()
-                    .zip(&out2.grid_p)
-                    .map(|(p, q)| (p - q).abs()),
-            )
+            .chain(out.grid_p.iter().zip(&out2.grid_p).map(|(p, q)| (p - q).abs()))
             .fold(0.0f64, f64::max)
             / out.max_p;
         let load = ((out.p2 - out2.p2).abs()).max((out.p1 - out2.p1).abs()) / out.p2;
         let f_def = (out.f_def - out2.f_def).abs() / (prm.k_scale() * l * out.p2);
-        let accuracy = AccuracyEstimate {
-            geometry,
-            pressure,
-            load,
-            f_def,
-            check_nodes: n2,
-        };
-        let all = [
-            out.lambda, out.l, out.a, out.b, out.c, out.p1, out.p2, out.f_def, out.max_p,
-        ];
+        let accuracy = AccuracyEstimate { geometry, pressure, load, f_def, check_nodes: n2 };
+        let all = [out.lambda, out.l, out.a, out.b, out.c, out.p1, out.p2, out.f_def, out.max_p];
         if all.iter().any(|v| !v.is_finite()) || out.pressure.iter().any(|p| !p.p.is_finite()) {
-            return Err(SlidingF64Error::NoConvergence {
-                reason: format!("non-finite result at n = {n}"),
-            });
+            return Err(SlidingF64Error::NoConvergence { reason: format!("non-finite result at n = {n}") });
         }
         if !(accuracy.max() <= options.accept) {
             return Err(SlidingF64Error::NoConvergence {
@@ -1622,9 +1396,7 @@ pub fn solve_sliding_f64(
                 }
             }
         }
-        return Err(SlidingF64Error::NotPhysical {
-            reason: reasons.join("; "),
-        });
+        return Err(SlidingF64Error::NotPhysical { reason: reasons.join("; ") });
     }
     solutions.sort_by(|x, y| x.l.total_cmp(&y.l));
     Ok(SlidingSolutionsF64 { solutions })
@@ -1672,23 +1444,11 @@ mod tests {
     fn hertz_single_punch() {
         // Hertz (THEORY.md section 6): P2 = (pi/2) E* k a^2, p = E* k sqrt(a^2 - x^2).
         let pts = [-0.9, -0.3, 0.0, 0.5, 0.99];
-        let pb = problem(
-            r(1, 2),
-            None,
-            parabola(r(3, 1)),
-            r(0, 1),
-            r(0, 1),
-            r(0, 1),
-            SlidingLoad::NormalLoad(r(2, 1)),
-        );
+        let pb = problem(r(1, 2), None, parabola(r(3, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(2, 1)));
         let s = solve_sliding_f64(&pb, &pts, &SolverOptions::default()).unwrap();
         let s = s.primary();
         let a = (2.0 * 2.0 / (PI * 3.0)).sqrt();
-        assert!(
-            rel(s.l, a, a) < TOL && s.c.abs() < TOL * a,
-            "{} vs {a}",
-            s.l
-        );
+        assert!(rel(s.l, a, a) < TOL && s.c.abs() < TOL * a, "{} vs {a}", s.l);
         for p in &s.pressure {
             let exact = 3.0 * (a * a - p.x * p.x).sqrt();
             assert!(rel(p.p, exact, 3.0 * a) < TOL, "{} vs {exact}", p.p);
@@ -1701,21 +1461,10 @@ mod tests {
         // l_s = a0/sqrt(1 - 4 theta^2), rbar_s = 2 theta - T, T = beta tau0/(E* k l_s),
         // F_def = 2 pi E* k^2 l^3 (1 - 4 theta^2) (rbar/2 + theta/3) (THEORY.md [3.10]; F_def from
         // p = E* k l cos(pi theta) omega(xh) and the moments of omega).
-        for (mu, cw, tau0) in [
-            (r(3, 10), r(0, 1), r(1, 20)),
-            (r(0, 1), r(7, 5), r(0, 1)),
-            (r(1, 2), r(2, 5), r(1, 7)),
-        ] {
+        for (mu, cw, tau0) in [(r(3, 10), r(0, 1), r(1, 20)), (r(0, 1), r(7, 5), r(0, 1)), (r(1, 2), r(2, 5), r(1, 7))]
+        {
             let (k, p2) = (2.0, 0.7);
-            let pb = problem(
-                r(1, 4),
-                None,
-                parabola(r(2, 1)),
-                mu,
-                tau0,
-                cw,
-                SlidingLoad::NormalLoad(r(7, 10)),
-            );
+            let pb = problem(r(1, 4), None, parabola(r(2, 1)), mu, tau0, cw, SlidingLoad::NormalLoad(r(7, 10)));
             let (prm, _) = params_of(&pb).unwrap();
             let th = prm.theta;
             let s = solve_sliding_f64(&pb, &[0.2], &SolverOptions::default()).unwrap();
@@ -1724,24 +1473,9 @@ mod tests {
             let ls = a0 / (1.0 - 4.0 * th * th).sqrt();
             let t = prm.beta * prm.tau0 / (k * ls);
             assert!(rel(s.l, ls, ls) < TOL, "theta {th}: {} vs {ls}", s.l);
-            assert!(
-                rel(s.c / s.l, 2.0 * th - t, 1.0) < TOL,
-                "theta {th}: {} vs {}",
-                s.c / s.l,
-                2.0 * th - t
-            );
-            let fdef = 2.0
-                * PI
-                * k
-                * k
-                * ls.powi(3)
-                * (1.0 - 4.0 * th * th)
-                * ((2.0 * th - t) / 2.0 + th / 3.0);
-            assert!(
-                rel(s.f_def, fdef, k * ls * p2) < TOL,
-                "{} vs {fdef}",
-                s.f_def
-            );
+            assert!(rel(s.c / s.l, 2.0 * th - t, 1.0) < TOL, "theta {th}: {} vs {}", s.c / s.l, 2.0 * th - t);
+            let fdef = 2.0 * PI * k * k * ls.powi(3) * (1.0 - 4.0 * th * th) * ((2.0 * th - t) / 2.0 + th / 3.0);
+            assert!(rel(s.f_def, fdef, k * ls * p2) < TOL, "{} vs {fdef}", s.f_def);
             let p = k * ls * (PI * th).cos() * omega(0.2, th);
             assert!(rel(s.pressure[0].p, p, s.max_pressure) < TOL);
             assert!(rel(s.p1, prm.mu * p2 + 2.0 * ls * prm.tau0, p2) < TOL);
@@ -1767,12 +1501,7 @@ mod tests {
             );
             let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
             let s = s.primary();
-            assert!(
-                rel(s.p2, p2, p2) < TOL,
-                "lambda {lam}: P2 {} vs {p2}, err {:e}",
-                s.p2,
-                rel(s.p2, p2, p2)
-            );
+            assert!(rel(s.p2, p2, p2) < TOL, "lambda {lam}: P2 {} vs {p2}, err {:e}", s.p2, rel(s.p2, p2, p2));
             assert!(s.c.abs() < TOL * a);
             let pb = problem(
                 r(1, 2),
@@ -1783,15 +1512,9 @@ mod tests {
                 r(0, 1),
                 SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()),
             );
-            let s = solve_sliding_f64(&pb, &[-0.99, -0.5, 0.0, 0.7], &SolverOptions::default())
-                .unwrap();
+            let s = solve_sliding_f64(&pb, &[-0.99, -0.5, 0.0, 0.7], &SolverOptions::default()).unwrap();
             let s = s.primary();
-            assert!(
-                rel(s.a, a, a) < TOL,
-                "lambda {lam}: a {} vs {a}, err {:e}",
-                s.a,
-                rel(s.a, a, a)
-            );
+            assert!(rel(s.a, a, a) < TOL, "lambda {lam}: a {} vs {a}, err {:e}", s.a, rel(s.a, a, a));
             // Pressure against the inversion formula [2.13] (no closed form is pinned).
             check_exact_reduction(&pb, s, TOL);
             assert!(s.accuracy.max() < 1e-12, "{:?}", s.accuracy);
@@ -1829,9 +1552,7 @@ mod tests {
             let pmax = 2.0 * PI * d / big_l * lam.sin();
             for p in &s.pressure {
                 let chi = PI * p.x / big_l;
-                let exact = 2.0 * PI * d / big_l
-                    * chi.cos()
-                    * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt();
+                let exact = 2.0 * PI * d / big_l * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt();
                 assert!(
                     rel(p.p, exact, pmax) < TOL,
                     "lambda {lam} xh {}: {} vs {exact}: {:e}",
@@ -1863,12 +1584,7 @@ mod tests {
         }
         let lhs = xz * integral * (prm.e_star * (PI * th).cos()) / Complex::new(0.0, 2.0 * PI);
         let scale = s.p2 / big_l;
-        assert!(
-            (lhs.re - s.p2 / big_l).abs() < tol * scale,
-            "[2.14] real part {} vs {}",
-            lhs.re,
-            s.p2 / big_l
-        );
+        assert!((lhs.re - s.p2 / big_l).abs() < tol * scale, "[2.14] real part {} vs {}", lhs.re, s.p2 / big_l);
         assert!(
             (lhs.im + prm.beta * prm.tau0).abs() < tol * scale,
             "[2.14] imaginary part {} vs {}",
@@ -1883,12 +1599,7 @@ mod tests {
                 acc += w * (f(*t) - f(u)) / (t - u);
             }
             let p = omega(u, th) * (PI * th).cos().powi(2) / PI * acc;
-            assert!(
-                (p - pp.p).abs() < tol * s.max_pressure,
-                "[2.13] at xh {}: {} vs {p}",
-                pp.xh,
-                pp.p
-            );
+            assert!((p - pp.p).abs() < tol * s.max_pressure, "[2.13] at xh {}: {} vs {p}", pp.xh, pp.p);
         }
     }
 
@@ -1900,25 +1611,14 @@ mod tests {
             (r(0, 1), r(1, 2), r(0, 1), r(1, 10)),
             (r(1, 2), r(2, 5), r(1, 7), r(3, 20)),
         ] {
-            let pb = problem(
-                r(1, 4),
-                Some(r(1, 1)),
-                parabola(r(1, 1)),
-                mu,
-                tau0,
-                cw,
-                SlidingLoad::NormalLoad(p2),
-            );
+            let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), mu, tau0, cw, SlidingLoad::NormalLoad(p2));
             let sols = solve_sliding_f64(&pb, &pts, &SolverOptions::default()).unwrap();
             assert_eq!(sols.solutions.len(), 1);
             let s = sols.primary();
             check_exact_reduction(&pb, s, TOL);
             assert!(s.accuracy.max() < TOL, "{:?}", s.accuracy);
             // The direct problem at the same l gives the same P2 and c.
-            let pd = SlidingProblem {
-                load: SlidingLoad::HalfLength(Exact::from_float(s.l).unwrap()),
-                ..pb.clone()
-            };
+            let pd = SlidingProblem { load: SlidingLoad::HalfLength(Exact::from_float(s.l).unwrap()), ..pb.clone() };
             let d = solve_sliding_f64(&pd, &[], &SolverOptions::default()).unwrap();
             let d = d.primary();
             assert!(rel(d.p2, s.p2, s.p2) < TOL && rel(d.c, s.c, s.l) < TOL);
@@ -1930,15 +1630,7 @@ mod tests {
         // THEORY.md section 3: for the parabola lambda does not depend on tau0; c is explicit,
         // and from the solvability condition dc = -beta dtau0/(E* k).
         let mk = |tau0: Exact| {
-            problem(
-                r(1, 4),
-                Some(r(2, 1)),
-                parabola(r(3, 1)),
-                r(2, 5),
-                tau0,
-                r(1, 3),
-                SlidingLoad::NormalLoad(r(1, 1)),
-            )
+            problem(r(1, 4), Some(r(2, 1)), parabola(r(3, 1)), r(2, 5), tau0, r(1, 3), SlidingLoad::NormalLoad(r(1, 1)))
         };
         let s0 = solve_sliding_f64(&mk(r(0, 1)), &[], &SolverOptions::default()).unwrap();
         let s1 = solve_sliding_f64(&mk(r(1, 10)), &[], &SolverOptions::default()).unwrap();
@@ -1962,74 +1654,33 @@ mod tests {
         );
         let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
         let s = s.primary();
-        let single = SlidingProblem {
-            period: Period::Infinite,
-            ..pb.clone()
-        };
+        let single = SlidingProblem { period: Period::Infinite, ..pb.clone() };
         let t = solve_sliding_f64(&single, &[], &SolverOptions::default()).unwrap();
         let t = t.primary();
         let lam2 = (PI * t.l / 1000.0).powi(2);
-        assert!(
-            rel(s.l, t.l, t.l) < lam2 && rel(s.c, t.c, t.l) < lam2,
-            "{} {} {} {}",
-            s.l,
-            t.l,
-            s.c,
-            t.c
-        );
+        assert!(rel(s.l, t.l, t.l) < lam2 && rel(s.c, t.c, t.l) < lam2, "{} {} {} {}", s.l, t.l, s.c, t.c);
     }
 
     #[test]
     fn sinusoid_with_wear_matches_exact_reduction_and_reports_maximum_load() {
         let shape = || PunchShape::sinusoidal(r(1, 10)).unwrap();
         // theta = 0.148 (cW = 1, nu = 1/4): P2 at most about 0.43 pi E* D.
-        let pb = problem(
-            r(1, 4),
-            Some(r(1, 1)),
-            shape(),
-            r(0, 1),
-            r(0, 1),
-            r(1, 1),
-            SlidingLoad::NormalLoad(r(1, 20)),
-        );
+        let pb = problem(r(1, 4), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(1, 1), SlidingLoad::NormalLoad(r(1, 20)));
         let sols = solve_sliding_f64(&pb, &[-0.5, 0.0, 0.7], &SolverOptions::default()).unwrap();
         assert_eq!(sols.solutions.len(), 1);
         check_exact_reduction(&pb, sols.primary(), TOL);
-        let pb = problem(
-            r(1, 4),
-            Some(r(1, 1)),
-            shape(),
-            r(0, 1),
-            r(0, 1),
-            r(1, 1),
-            SlidingLoad::NormalLoad(r(3, 20)),
-        );
+        let pb = problem(r(1, 4), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(1, 1), SlidingLoad::NormalLoad(r(3, 20)));
         match solve_sliding_f64(&pb, &[], &SolverOptions::default()) {
-            Err(SlidingF64Error::LoadExceedsMaximum {
-                max_load,
-                max_fraction,
-                ..
-            }) => {
+            Err(SlidingF64Error::LoadExceedsMaximum { max_load, max_fraction, .. }) => {
                 // Observed: 0.426 pi E* D at 2l/L = 0.59, where p < 0 starts at the leading end
                 // (chart_sinusoid_load_curve); the exact value awaits the MPFR solver.
-                assert!(
-                    max_load > 0.40 * PI * 0.1 && max_load < 0.45 * PI * 0.1,
-                    "{max_load} {max_fraction}"
-                );
+                assert!(max_load > 0.40 * PI * 0.1 && max_load < 0.45 * PI * 0.1, "{max_load} {max_fraction}");
                 assert!(max_fraction > 0.5 && max_fraction < 0.7, "{max_fraction}");
             }
             other => panic!("expected LoadExceedsMaximum, got {other:?}"),
         }
         // Frictionless: above the full-contact load pi E* D.
-        let pb = problem(
-            r(1, 2),
-            Some(r(1, 1)),
-            shape(),
-            r(0, 1),
-            r(0, 1),
-            r(0, 1),
-            SlidingLoad::NormalLoad(r(4, 10)),
-        );
+        let pb = problem(r(1, 2), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(4, 10)));
         assert!(matches!(
             solve_sliding_f64(&pb, &[], &SolverOptions::default()),
             Err(SlidingF64Error::LoadExceedsMaximum { .. })
@@ -2038,15 +1689,7 @@ mod tests {
 
     #[test]
     fn invalid_inputs_are_typed_errors() {
-        let pb = problem(
-            r(1, 2),
-            None,
-            parabola(r(1, 1)),
-            r(0, 1),
-            r(0, 1),
-            r(0, 1),
-            SlidingLoad::NormalLoad(r(1, 1)),
-        );
+        let pb = problem(r(1, 2), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(1, 1)));
         assert_eq!(
             solve_sliding_f64(&pb, &[1.0], &SolverOptions::default()),
             Err(SlidingF64Error::InvalidPoint { value: 1.0 })
@@ -2076,21 +1719,10 @@ mod tests {
         );
         assert!(matches!(
             solve_sliding_f64(&pb, &[], &SolverOptions::default()),
-            Err(SlidingF64Error::InvalidParameter {
-                parameter: "kappa",
-                ..
-            })
+            Err(SlidingF64Error::InvalidParameter { parameter: "kappa", .. })
         ));
         let huge = Exact::from_integer(BigInt::from(10).pow(400));
-        let pb = problem(
-            r(1, 2),
-            None,
-            parabola(huge),
-            r(0, 1),
-            r(0, 1),
-            r(0, 1),
-            SlidingLoad::NormalLoad(r(1, 1)),
-        );
+        let pb = problem(r(1, 2), None, parabola(huge), r(0, 1), r(0, 1), r(0, 1), SlidingLoad::NormalLoad(r(1, 1)));
         assert!(matches!(
             solve_sliding_f64(&pb, &[], &SolverOptions::default()),
             Err(SlidingF64Error::NotRepresentable { parameter: "k", .. })
@@ -2114,11 +1746,7 @@ mod tests {
                 r(0, 1),
                 SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()),
             );
-            let opts = SolverOptions {
-                nodes: Some(n),
-                accept: 1.0,
-                ..Default::default()
-            };
+            let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
             let s = solve_sliding_f64(&pb, &[0.0, 0.5, -0.8], &opts).unwrap();
             let s = s.primary();
             let pmax = 2.0 * PI * 0.1 * lam.sin();
@@ -2127,13 +1755,7 @@ mod tests {
                 .iter()
                 .map(|p| {
                     let chi = PI * p.x;
-                    (p.p - 2.0
-                        * PI
-                        * 0.1
-                        * chi.cos()
-                        * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt())
-                    .abs()
-                        / pmax
+                    (p.p - 2.0 * PI * 0.1 * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt()).abs() / pmax
                 })
                 .fold(0.0, f64::max);
             if let Some((n0, e0)) = prev {
@@ -2164,12 +1786,7 @@ mod tests {
             SlidingLoad::NormalLoad(Exact::from_float(0.40 * PI * 0.1).unwrap()),
         );
         let (prm, target) = params_of(&pb).unwrap();
-        assert_eq!(
-            candidates(&prm, target, &SolverOptions::default())
-                .unwrap()
-                .len(),
-            2
-        );
+        assert_eq!(candidates(&prm, target, &SolverOptions::default()).unwrap().len(), 2);
         let sols = solve_sliding_f64(&pb, &[0.0], &SolverOptions::default()).unwrap();
         assert_eq!(sols.solutions.len(), 1);
         let s = sols.primary();
@@ -2200,15 +1817,8 @@ mod tests {
     #[test]
     fn theta_near_one_half_single_punch() {
         // cW = 100, nu = 1/4: theta = 0.4936; l_s = a0/sqrt(1 - 4 theta^2) (THEORY.md [3.10]).
-        let pb = problem(
-            r(1, 4),
-            None,
-            parabola(r(1, 1)),
-            r(0, 1),
-            r(0, 1),
-            r(100, 1),
-            SlidingLoad::NormalLoad(r(1, 100)),
-        );
+        let pb =
+            problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(100, 1), SlidingLoad::NormalLoad(r(1, 100)));
         let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
         let s = s.primary();
         let a0 = (2.0 * 0.01 / PI).sqrt();
@@ -2239,22 +1849,13 @@ mod tests {
                     r(0, 1),
                     SlidingLoad::HalfLength(Exact::from_float(a).unwrap()),
                 );
-                let opts = SolverOptions {
-                    nodes: Some(n),
-                    accept: 1.0,
-                    ..Default::default()
-                };
+                let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
                 let s = solve_sliding_f64(&pb, &[], &opts).unwrap();
                 line += &format!("{n}:{:.1e} ", rel(s.primary().p2, p2, p2));
             }
-            println!(
-                "{line}  auto n = {}",
-                nodes_for(lam, &SolverOptions::default())
-            );
+            println!("{line}  auto n = {}", nodes_for(lam, &SolverOptions::default()));
         }
-        println!(
-            "Westergaard: relative error of p (scale max p) at xh in {{-0.9,0,0.5,0.99}} vs n"
-        );
+        println!("Westergaard: relative error of p (scale max p) at xh in {{-0.9,0,0.5,0.99}} vs n");
         for lam in [0.3f64, 0.7, 1.0, 1.3, 1.45] {
             let p2 = PI * 0.1 * lam.sin().powi(2);
             let mut line = format!("lambda {lam:5}: ");
@@ -2269,11 +1870,7 @@ mod tests {
                     r(0, 1),
                     SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()),
                 );
-                let opts = SolverOptions {
-                    nodes: Some(n),
-                    accept: 1.0,
-                    ..Default::default()
-                };
+                let opts = SolverOptions { nodes: Some(n), accept: 1.0, ..Default::default() };
                 let s = match solve_sliding_f64(&pb, &pts, &opts) {
                     Ok(s) => s,
                     Err(e) => {
@@ -2288,13 +1885,7 @@ mod tests {
                     .iter()
                     .map(|p| {
                         let chi = PI * p.x;
-                        (p.p - 2.0
-                            * PI
-                            * 0.1
-                            * chi.cos()
-                            * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt())
-                        .abs()
-                            / pmax
+                        (p.p - 2.0 * PI * 0.1 * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt()).abs() / pmax
                     })
                     .fold(rel(s.p2, p2, p2), f64::max);
                 line += &format!("{n}:{:.1e} ", e);
@@ -2335,20 +1926,12 @@ mod tests {
                 .iter()
                 .map(|p| {
                     let chi = PI * p.x;
-                    (p.p - 2.0
-                        * PI
-                        * 0.1
-                        * chi.cos()
-                        * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt())
-                    .abs()
-                        / pmax
+                    (p.p - 2.0 * PI * 0.1 * chi.cos() * (lam.sin().powi(2) - chi.sin().powi(2)).sqrt()).abs() / pmax
                 })
                 .fold(0.0, f64::max);
             println!("lambda {lam}: Kuznetsov a {:.1e} (n {}, est {:.1e}); Westergaard a {:.1e}, p {:.1e} (n {}, est {:.1e})", rel(s.a, a, a), s.nodes, s.accuracy.max(), rel(w.a, a, a), ep, w.nodes, w.accuracy.max());
         }
-        println!(
-            "Timing per case (P2 given, automatic nodes, check run and physicality check included;"
-        );
+        println!("Timing per case (P2 given, automatic nodes, check run and physicality check included;");
         println!("cold = empty rule/LU cache, warm = cached, minimum of 30 runs):");
         for (name, lam, theta_case) in [
             ("kuznetsov", 0.5, false),
@@ -2422,7 +2005,15 @@ mod tests {
                 warm = warm.min(t0.elapsed());
             }
             let s = s.primary();
-            println!("westergaard              lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}", s.lambda, s.nodes, s.accuracy.check_nodes, s.accuracy.max(), cold, warm);
+            println!(
+                "westergaard              lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}",
+                s.lambda,
+                s.nodes,
+                s.accuracy.check_nodes,
+                s.accuracy.max(),
+                cold,
+                warm
+            );
         }
     }
 
@@ -2431,12 +2022,7 @@ mod tests {
     #[test]
     #[ignore]
     fn chart_sinusoid_two_roots() {
-        for (cw, frac) in [
-            (r(1, 1), 0.40),
-            (r(1, 1), 0.42),
-            (r(4, 1), 0.2),
-            (r(4, 1), 0.25),
-        ] {
+        for (cw, frac) in [(r(1, 1), 0.40), (r(1, 1), 0.42), (r(4, 1), 0.2), (r(4, 1), 0.25)] {
             let shape = PunchShape::sinusoidal(r(1, 10)).unwrap();
             let pb = problem(
                 r(1, 4),
@@ -2554,10 +2140,7 @@ mod tests {
                 r(0, 1),
                 SlidingLoad::NormalLoad(p2.clone()),
             );
-            show(
-                &format!("periodic, tau0 = 1/100, P2 {p2} (c -> -beta tau0/(E* k) = -1/300)"),
-                &pb,
-            );
+            show(&format!("periodic, tau0 = 1/100, P2 {p2} (c -> -beta tau0/(E* k) = -1/300)"), &pb);
         }
     }
 
@@ -2583,10 +2166,7 @@ mod tests {
                     cw.clone(),
                     SlidingLoad::HalfLength(Exact::from_float(lam / PI).unwrap()),
                 );
-                let opts = SolverOptions {
-                    accept: 1.0,
-                    ..Default::default()
-                };
+                let opts = SolverOptions { accept: 1.0, ..Default::default() };
                 match solve_sliding_f64(&pb, &[], &opts) {
                     Ok(s) => {
                         let v: Vec<String> = s
@@ -2602,11 +2182,7 @@ mod tests {
                                 )
                             })
                             .collect();
-                        println!(
-                            "  lambda {lam:.4} theta {:.3}: {}",
-                            s.primary().theta,
-                            v.join(" | ")
-                        );
+                        println!("  lambda {lam:.4} theta {:.3}: {}", s.primary().theta, v.join(" | "));
                     }
                     Err(e) => println!("  lambda {lam:.4}: {e}"),
                 }

@@ -66,7 +66,9 @@ impl Size {
                 let b1 = Float::with_val(wp, &s * 2u32) / den;
                 [b0, b1]
             }
-            (Shape::Sinusoidal { .. }, None) => unreachable!("a sinusoid needs a finite period (validated by the model)"),
+            (Shape::Sinusoidal { .. }, None) => {
+                unreachable!("a sinusoid needs a finite period (validated by the model)")
+            }
         }
     }
 

@@ -141,10 +141,7 @@ pub fn shift_solutions(setup: &Setup, size: &Size, terms: &EquationTerms) -> Vec
             }
             let psi = Float::with_val(p, b.atan2_ref(&a));
             let asn = Float::with_val(p, &bt / &r).asin();
-            let phis = [
-                Float::with_val(p, -&asn) - &psi,
-                Float::with_val(p, &setup.pi + &asn) - &psi,
-            ];
+            let phis = [Float::with_val(p, -&asn) - &psi, Float::with_val(p, &setup.pi + &asn) - &psi];
             let two_pi = Float::with_val(p, &setup.pi * 2u32);
             phis.into_iter()
                 .map(|mut phi| {

@@ -49,9 +49,9 @@ pub mod solve;
 pub mod verify;
 
 pub use error::SlidingError;
+pub use setup::Convention;
 pub use solution::{Accuracy, PressurePoint, SlidingSolution, VerifiedSolution};
 pub use solve::{solve_at, NodeRule};
-pub use setup::Convention;
 pub use verify::{precision_for, solve_verified, solve_verified_with};
 
 #[cfg(test)]

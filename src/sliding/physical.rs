@@ -37,9 +37,8 @@ pub fn check_pressure(setup: &Setup, pressure: &Pressure<'_>) -> Result<Float, S
     // -cos(pi k/67): 67 is prime, so these points miss the Gauss–Chebyshev-like nodes
     // cos((2i+1) pi/(2n)) of theta = 0 for every n not a multiple of 67 (a coincidence is handled
     // by `Pressure::d`, only more slowly).
-    let mut us: Vec<Float> = (0..=67u32)
-        .map(|k| -Float::with_val(p, Float::with_val(p, &setup.pi * k) / 67u32).cos())
-        .collect();
+    let mut us: Vec<Float> =
+        (0..=67u32).map(|k| -Float::with_val(p, Float::with_val(p, &setup.pi * k) / 67u32).cos()).collect();
     for j in 2..=10u32 {
         let e = Float::with_val(p, 10u32).pow(-(j as i32));
         us.push(Float::with_val(p, 1u32 - Float::with_val(p, &e)));

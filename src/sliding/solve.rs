@@ -268,7 +268,10 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
 
 /// The largest load on a physical solution of the sinusoid (low precision, for error messages):
 /// (P2_max, lambda) over a 64-point scan of both branches, refined by golden-section search.
-pub fn sinusoid_max_physical_load(problem: &SlidingProblem, convention: Convention) -> Result<Option<(f64, f64)>, SlidingError> {
+pub fn sinusoid_max_physical_load(
+    problem: &SlidingProblem,
+    convention: Convention,
+) -> Result<Option<(f64, f64)>, SlidingError> {
     let setup = Setup::with_convention(problem, LOCATE_PREC, convention)?;
     let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
     let grid = 64;
@@ -338,7 +341,8 @@ fn refine(setup: &Setup, s0: f64, br: usize, p2: &Float, n: usize) -> Result<Flo
     let p = setup.prec;
     let f = |s: &Float| -> Result<Float, SlidingError> {
         let b = branches(setup, s, n)?;
-        let v = b.get(br).ok_or_else(|| SlidingError::NoConvergence(format!("the centre branch vanished at size {s}")))?;
+        let v =
+            b.get(br).ok_or_else(|| SlidingError::NoConvergence(format!("the centre branch vanished at size {s}")))?;
         Ok(Float::with_val(p, &v.p2 - p2))
     };
     let mut x0 = Float::with_val(p, s0);
@@ -409,7 +413,10 @@ pub fn solve_located(
             return Err(SlidingError::parameter(
                 "lambda = pi l/L",
                 format!("{lam:.6}"),
-                format!("too close to pi/2 (full contact): {} digits would need more than {NODE_CAP} nodes", nodes.digits),
+                format!(
+                    "too close to pi/2 (full contact): {} digits would need more than {NODE_CAP} nodes",
+                    nodes.digits
+                ),
             ));
         }
         Ok((n as usize).div_ceil(4) * 4)
@@ -431,7 +438,9 @@ pub fn solve_located(
                 }
             }
             if cands.is_empty() {
-                return Err(SlidingError::NotPhysical { why: "no centre of the contact gives a positive load at this half-length".into() });
+                return Err(SlidingError::NotPhysical {
+                    why: "no centre of the contact gives a positive load at this half-length".into(),
+                });
             }
         }
         SlidingLoad::NormalLoad(p2) => {
@@ -458,7 +467,8 @@ pub fn solve_located(
                 let n = n_for(lambda_of(&setup, s0))?;
                 let s = refine(&setup, s0, br, &p2f, n)?;
                 let b = branches(&setup, &s, n)?;
-                let mut sol = b.get(br).cloned().ok_or_else(|| SlidingError::NoConvergence("centre branch lost".into()))?;
+                let mut sol =
+                    b.get(br).cloned().ok_or_else(|| SlidingError::NoConvergence("centre branch lost".into()))?;
                 sol.p2 = p2f.clone();
                 cands.push((s, sol, n, (s0, br)));
             }
@@ -500,7 +510,14 @@ pub fn solve_located(
 }
 
 /// Everything about one contact: validity, physicality, pressure, loads.
-fn build(setup: &Setup, s: &Float, sh: ShiftSolution, n: usize, points: &[Exact], check: bool) -> Result<SlidingSolution, SlidingError> {
+fn build(
+    setup: &Setup,
+    s: &Float,
+    sh: ShiftSolution,
+    n: usize,
+    points: &[Exact],
+    check: bool,
+) -> Result<SlidingSolution, SlidingError> {
     let p = setup.prec;
     let size = Size::new(setup, s);
     let contact = Contact::new(setup, &size, sh.c.clone());
@@ -550,7 +567,10 @@ fn build(setup: &Setup, s: &Float, sh: ShiftSolution, n: usize, points: &[Exact]
     let finite = [&l, &a, &b, &sh.c, &p1, &p2, &f_def, &max_pressure].iter().all(|v| v.is_finite())
         && pts.iter().all(|q| q.p.is_finite() && q.x.is_finite());
     if !finite {
-        return Err(SlidingError::NoConvergence(format!("a non-finite value arose for the contact of half-length {:.12}", l)));
+        return Err(SlidingError::NoConvergence(format!(
+            "a non-finite value arose for the contact of half-length {:.12}",
+            l
+        )));
     }
     Ok(SlidingSolution {
         theta: setup.theta.clone(),

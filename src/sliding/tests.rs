@@ -15,7 +15,16 @@ fn q(s: &str) -> Exact {
 
 /// Problem builder: nu, E*, period ("inf" or a ratio), shape, mu, tau0, cW, load.
 #[allow(clippy::too_many_arguments)]
-fn problem(nu: &str, e: &str, period: &str, shape: PunchShape, mu: &str, tau0: &str, cw: &str, load: SlidingLoad) -> SlidingProblem {
+fn problem(
+    nu: &str,
+    e: &str,
+    period: &str,
+    shape: PunchShape,
+    mu: &str,
+    tau0: &str,
+    cw: &str,
+    load: SlidingLoad,
+) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(nu), q(e)).unwrap();
     let period = if period == "inf" { Period::Infinite } else { Period::finite(q(period)).unwrap() };
     SlidingProblem::new(material, period, shape, q(mu), q(tau0), q(cw), Some(q("2")), load).unwrap()
@@ -39,7 +48,16 @@ fn float_to_exact(x: &Float) -> Exact {
 fn kuznetsov_periodic_parabola_frictionless() {
     // P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], THEORY.md section 6. nu = 1/2: beta = 0, theta = 0.
     for a in ["1/10", "1/4", "3/10"] {
-        let pb = problem("1/2", "3", "1", PunchShape::parabolic(q("2")).unwrap(), "1/5", "0", "0", SlidingLoad::HalfLength(q(a)));
+        let pb = problem(
+            "1/2",
+            "3",
+            "1",
+            PunchShape::parabolic(q("2")).unwrap(),
+            "1/5",
+            "0",
+            "0",
+            SlidingLoad::HalfLength(q(a)),
+        );
         let v = solve_verified(&pb, &[q("1/2")], 30).unwrap();
         assert_eq!(v.len(), 1);
         let s = &v[0].solution;
@@ -58,7 +76,16 @@ fn kuznetsov_periodic_parabola_frictionless() {
 fn westergaard_sinusoid_frictionless() {
     // P2 = pi E* D sin^2(pi a/L) [2.17].
     for a in ["1/20", "1/5", "2/5"] {
-        let pb = problem("1/2", "2", "3/2", PunchShape::sinusoidal(q("1/7")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q(a)));
+        let pb = problem(
+            "1/2",
+            "2",
+            "3/2",
+            PunchShape::sinusoidal(q("1/7")).unwrap(),
+            "0",
+            "0",
+            "0",
+            SlidingLoad::HalfLength(q(a)),
+        );
         let v = solve_verified(&pb, &[], 30).unwrap();
         assert_eq!(v.len(), 1);
         let s = &v[0].solution;
@@ -74,7 +101,16 @@ fn westergaard_sinusoid_frictionless() {
 
 #[test]
 fn westergaard_inverse_problem() {
-    let pb = problem("1/2", "2", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/5")));
+    let pb = problem(
+        "1/2",
+        "2",
+        "1",
+        PunchShape::sinusoidal(q("1/10")).unwrap(),
+        "0",
+        "0",
+        "0",
+        SlidingLoad::NormalLoad(q("1/5")),
+    );
     let v = solve_verified(&pb, &[], 30).unwrap();
     assert_eq!(v.len(), 1);
     let s = &v[0].solution;
@@ -90,7 +126,16 @@ fn single_punch_limit_with_friction_wear_and_adhesion() {
     // l_s = a0/sqrt(1 - 4 theta^2), rbar_s = 2 theta - T, a0 = sqrt(2 P2/(pi E* k)),
     // T = beta tau0/(E* k l_s) [3.10]. nu = 1/4: beta = 1/3.
     for (mu, cw, tau0) in [("3/10", "0", "1/100"), ("0", "1/2", "1/50"), ("1/2", "1/10", "0"), ("0", "0", "1/20")] {
-        let pb = problem("1/4", "2", "inf", PunchShape::parabolic(q("1/2")).unwrap(), mu, tau0, cw, SlidingLoad::NormalLoad(q("1")));
+        let pb = problem(
+            "1/4",
+            "2",
+            "inf",
+            PunchShape::parabolic(q("1/2")).unwrap(),
+            mu,
+            tau0,
+            cw,
+            SlidingLoad::NormalLoad(q("1")),
+        );
         let v = solve_verified(&pb, &[q("0")], 30).unwrap();
         let s = &v[0].solution;
         assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
@@ -108,7 +153,8 @@ fn single_punch_limit_with_friction_wear_and_adhesion() {
         let got = Float::with_val(p, &s.c / &s.l);
         assert!(digits(&got, &rbar, &Float::with_val(p, 1)) >= 30.0, "rbar {got} vs {rbar}");
         // P1 = mu P2 + 2 l tau0.
-        let p1 = Float::with_val(p, crate::numerics::exact::to_rational(&q(mu))) + Float::with_val(p, &s.l * &tau) * 2u32;
+        let p1 =
+            Float::with_val(p, crate::numerics::exact::to_rational(&q(mu))) + Float::with_val(p, &s.l * &tau) * 2u32;
         assert!(digits(&s.p1, &p1, &s.p2) >= 30.0);
     }
 }
@@ -116,7 +162,16 @@ fn single_punch_limit_with_friction_wear_and_adhesion() {
 #[test]
 fn hertz_pressure() {
     // p = E* k sqrt(a^2 - x^2), P2 = (pi/2) E* k a^2.
-    let pb = problem("1/2", "5", "inf", PunchShape::parabolic(q("3")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("7")));
+    let pb = problem(
+        "1/2",
+        "5",
+        "inf",
+        PunchShape::parabolic(q("3")).unwrap(),
+        "0",
+        "0",
+        "0",
+        SlidingLoad::NormalLoad(q("7")),
+    );
     let pts = [q("-9/10"), q("-1/3"), q("0"), q("1/2"), q("99/100")];
     let v = solve_verified(&pb, &pts, 40).unwrap();
     let s = &v[0].solution;
@@ -136,9 +191,36 @@ fn hertz_pressure() {
 fn load_is_the_integral_of_the_pressure() {
     // P2 from [2.14] (given) against int p dx by a separate Gauss–Jacobi rule for omega.
     let cases = [
-        problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10"))),
-        problem("0", "1", "1", PunchShape::sinusoidal(q("1/20")).unwrap(), "1/5", "1/100", "0", SlidingLoad::HalfLength(q("1/5"))),
-        problem("1/3", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "1/2", "1/10", "1", SlidingLoad::NormalLoad(q("1"))),
+        problem(
+            "1/4",
+            "2",
+            "1",
+            PunchShape::parabolic(q("1")).unwrap(),
+            "3/10",
+            "1/50",
+            "1/5",
+            SlidingLoad::NormalLoad(q("1/10")),
+        ),
+        problem(
+            "0",
+            "1",
+            "1",
+            PunchShape::sinusoidal(q("1/20")).unwrap(),
+            "1/5",
+            "1/100",
+            "0",
+            SlidingLoad::HalfLength(q("1/5")),
+        ),
+        problem(
+            "1/3",
+            "1",
+            "inf",
+            PunchShape::parabolic(q("1")).unwrap(),
+            "1/2",
+            "1/10",
+            "1",
+            SlidingLoad::NormalLoad(q("1")),
+        ),
     ];
     for pb in cases {
         let sols = solve_at(&pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap();
@@ -172,7 +254,8 @@ fn direct_and_inverse_problems_agree() {
         let inv = problem("1/4", "1", period, shape.clone(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q(load)));
         let s1 = solve_at(&inv, &[q("1/3")], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap();
         let s1 = &s1[0];
-        let dir = problem("1/4", "1", period, shape, "1/5", "1/100", "1/10", SlidingLoad::HalfLength(float_to_exact(&s1.l)));
+        let dir =
+            problem("1/4", "1", period, shape, "1/5", "1/100", "1/10", SlidingLoad::HalfLength(float_to_exact(&s1.l)));
         let s2 = solve_at(&dir, &[q("1/3")], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap();
         let s2 = &s2[0];
         assert!(digits(&s1.p2, &s2.p2, &s1.p2) >= 30.0, "{} vs {}", s1.p2, s2.p2);
@@ -183,7 +266,18 @@ fn direct_and_inverse_problems_agree() {
 
 #[test]
 fn adhesive_friction_does_not_change_lambda_for_the_parabola() {
-    let mk = |tau0: &str| problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", tau0, "1/10", SlidingLoad::NormalLoad(q("1/20")));
+    let mk = |tau0: &str| {
+        problem(
+            "1/4",
+            "1",
+            "1",
+            PunchShape::parabolic(q("1")).unwrap(),
+            "1/5",
+            tau0,
+            "1/10",
+            SlidingLoad::NormalLoad(q("1/20")),
+        )
+    };
     let s0 = &solve_at(&mk("0"), &[], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap()[0];
     let s1 = &solve_at(&mk("1/100"), &[], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30)).unwrap()[0];
     let (l0, l1) = (s0.lambda.as_ref().unwrap(), s1.lambda.as_ref().unwrap());
@@ -194,21 +288,57 @@ fn adhesive_friction_does_not_change_lambda_for_the_parabola() {
 #[test]
 fn contact_leaving_the_period_is_an_error() {
     // Parabola with wear (theta ~ 0.1, rbar ~ 2 theta), large contact: b = l + c reaches L/2.
-    let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "13/20", SlidingLoad::HalfLength(q("9/20")));
+    let pb = problem(
+        "1/2",
+        "1",
+        "1",
+        PunchShape::parabolic(q("1")).unwrap(),
+        "0",
+        "0",
+        "13/20",
+        SlidingLoad::HalfLength(q("9/20")),
+    );
     let e = solve_verified(&pb, &[], 20).unwrap_err();
     assert!(matches!(e, SlidingError::ContactOutsidePeriod { .. }), "{e}");
     // Strong adhesive friction pushes the contact out of the period.
-    let pb = problem("0", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "1", "0", SlidingLoad::HalfLength(q("1/4")));
+    let pb = problem(
+        "0",
+        "1",
+        "1",
+        PunchShape::parabolic(q("1")).unwrap(),
+        "0",
+        "1",
+        "0",
+        SlidingLoad::HalfLength(q("1/4")),
+    );
     let e = solve_verified(&pb, &[], 20).unwrap_err();
     assert!(matches!(e, SlidingError::ContactOutsidePeriod { .. }), "{e}");
 }
 
 #[test]
 fn theta_too_close_to_one_half_and_bad_points_are_errors() {
-    let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "100000000", SlidingLoad::NormalLoad(q("1/100")));
+    let pb = problem(
+        "1/2",
+        "1",
+        "1",
+        PunchShape::parabolic(q("1")).unwrap(),
+        "0",
+        "0",
+        "100000000",
+        SlidingLoad::NormalLoad(q("1/100")),
+    );
     let e = solve_verified(&pb, &[], 20).unwrap_err();
     assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter.starts_with("theta")), "{e}");
-    let pb = problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/100")));
+    let pb = problem(
+        "1/2",
+        "1",
+        "1",
+        PunchShape::parabolic(q("1")).unwrap(),
+        "0",
+        "0",
+        "0",
+        SlidingLoad::NormalLoad(q("1/100")),
+    );
     let e = solve_verified(&pb, &[q("1")], 20).unwrap_err();
     assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter == "points"), "{e}");
     // A point that rounds to 1 in f64 is still inside (-1, 1): compared exactly.
@@ -230,15 +360,123 @@ fn theta_too_close_to_one_half_and_bad_points_are_errors() {
 #[ignore]
 fn timing() {
     let cases: Vec<(&str, SlidingProblem)> = vec![
-        ("parabola periodic, theta=0, P2=1/20", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/20")))),
-        ("parabola periodic, mu, cW, tau0, P2=1/20", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/20")))),
-        ("parabola periodic, l=0.318 (lambda=1)", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "0", "1/10", SlidingLoad::HalfLength(q("318/1000")))),
-        ("parabola single, mu, cW, tau0", problem("1/4", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1")))),
-        ("sinusoid, theta=0, P2=1/5", problem("1/2", "2", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1/5")))),
-        ("sinusoid, mu, cW, tau0, l=1/4", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::HalfLength(q("1/4")))),
-        ("parabola periodic, mu, cW, P2=1/5 (lambda~1)", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("1/5")))),
-        ("sinusoid, mu=1/5, cW=1/10, P2=17/100 (lambda~0.9)", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("17/100")))),
-        ("sinusoid, mu, cW, tau0, P2=1/10", problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/10")))),
+        (
+            "parabola periodic, theta=0, P2=1/20",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::NormalLoad(q("1/20")),
+            ),
+        ),
+        (
+            "parabola periodic, mu, cW, tau0, P2=1/20",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "1/5",
+                "1/100",
+                "1/10",
+                SlidingLoad::NormalLoad(q("1/20")),
+            ),
+        ),
+        (
+            "parabola periodic, l=0.318 (lambda=1)",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "1/5",
+                "0",
+                "1/10",
+                SlidingLoad::HalfLength(q("318/1000")),
+            ),
+        ),
+        (
+            "parabola single, mu, cW, tau0",
+            problem(
+                "1/4",
+                "1",
+                "inf",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "1/5",
+                "1/100",
+                "1/10",
+                SlidingLoad::NormalLoad(q("1")),
+            ),
+        ),
+        (
+            "sinusoid, theta=0, P2=1/5",
+            problem(
+                "1/2",
+                "2",
+                "1",
+                PunchShape::sinusoidal(q("1/10")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::NormalLoad(q("1/5")),
+            ),
+        ),
+        (
+            "sinusoid, mu, cW, tau0, l=1/4",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::sinusoidal(q("1/10")).unwrap(),
+                "1/5",
+                "1/100",
+                "1/10",
+                SlidingLoad::HalfLength(q("1/4")),
+            ),
+        ),
+        (
+            "parabola periodic, mu, cW, P2=1/5 (lambda~1)",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "1/5",
+                "0",
+                "1/10",
+                SlidingLoad::NormalLoad(q("1/5")),
+            ),
+        ),
+        (
+            "sinusoid, mu=1/5, cW=1/10, P2=17/100 (lambda~0.9)",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::sinusoidal(q("1/10")).unwrap(),
+                "1/5",
+                "0",
+                "1/10",
+                SlidingLoad::NormalLoad(q("17/100")),
+            ),
+        ),
+        (
+            "sinusoid, mu, cW, tau0, P2=1/10",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::sinusoidal(q("1/10")).unwrap(),
+                "1/5",
+                "1/100",
+                "1/10",
+                SlidingLoad::NormalLoad(q("1/10")),
+            ),
+        ),
     ];
     let pts = [q("-1/2"), q("0"), q("1/2")];
     for (name, pb) in &cases {
@@ -270,12 +508,24 @@ fn timing() {
 #[test]
 #[ignore]
 fn explore_sinusoid_load_curve() {
-    let convention = if std::env::var("PERIODIC_SURFACE").is_ok() { Convention::PeriodicSurface } else { Convention::Paper };
-    for (mu, cw, tau0) in [("0", "0", "0"), ("1/5", "1/10", "1/100"), ("0", "1", "0"), ("1", "0", "0"), ("0", "0", "1/20")] {
+    let convention =
+        if std::env::var("PERIODIC_SURFACE").is_ok() { Convention::PeriodicSurface } else { Convention::Paper };
+    for (mu, cw, tau0) in
+        [("0", "0", "0"), ("1/5", "1/10", "1/100"), ("0", "1", "0"), ("1", "0", "0"), ("0", "0", "1/20")]
+    {
         println!("{convention:?}: mu = {mu}, cW = {cw}, tau0 = {tau0}");
         for i in 1..=30 {
             let l = format!("{}/62", i);
-            let pb = problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), mu, tau0, cw, SlidingLoad::HalfLength(q(&l)));
+            let pb = problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::sinusoidal(q("1/10")).unwrap(),
+                mu,
+                tau0,
+                cw,
+                SlidingLoad::HalfLength(q(&l)),
+            );
             let setup = Setup::with_convention(&pb, 64, convention).unwrap();
             let lam = Float::with_val(64, std::f64::consts::PI * i as f64 / 62.0);
             let size = Size::new(&setup, &lam);
@@ -288,8 +538,18 @@ fn explore_sinusoid_load_curve() {
             for s in br {
                 let contact = Contact::new(&setup, &size, s.c.clone());
                 let pr = Pressure::new(&setup, &contact, &rule);
-                let ok = super::physical::check_pressure(&setup, &pr).map(|_| ()).and_then(|_| super::physical::check_gap(&setup, &contact, &pr));
-                line += &format!(" [P2 {:.6} c {:.4} {}]", s.p2.to_f64(), s.c.to_f64(), match ok { Ok(_) => "ok".to_string(), Err(e) => e.to_string().chars().skip(30).take(110).collect::<String>() });
+                let ok = super::physical::check_pressure(&setup, &pr)
+                    .map(|_| ())
+                    .and_then(|_| super::physical::check_gap(&setup, &contact, &pr));
+                line += &format!(
+                    " [P2 {:.6} c {:.4} {}]",
+                    s.p2.to_f64(),
+                    s.c.to_f64(),
+                    match ok {
+                        Ok(_) => "ok".to_string(),
+                        Err(e) => e.to_string().chars().skip(30).take(110).collect::<String>(),
+                    }
+                );
             }
             println!("{line}");
         }
@@ -303,7 +563,8 @@ fn explore_sinusoid_load_curve() {
 /// states the maximum physical load.
 #[test]
 fn non_monotone_sinusoid() {
-    let mk = |load: SlidingLoad| problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1", "0", "0", load);
+    let mk =
+        |load: SlidingLoad| problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1", "0", "0", load);
     // Two roots of the equations at P2 = 1/10; the physical one is returned.
     let v = solve_verified(&mk(SlidingLoad::NormalLoad(q("1/10"))), &[q("0")], 30).unwrap();
     assert_eq!(v.len(), 1);
@@ -311,7 +572,9 @@ fn non_monotone_sinusoid() {
     let lam = v[0].solution.lambda.as_ref().unwrap().to_f64();
     assert!(lam > 0.5 && lam < 0.8, "lambda = {lam}");
     // All roots of the equations, physical or not (run without the checks): two, sorted by size.
-    let all = solve_at(&mk(SlidingLoad::NormalLoad(q("1/10"))), &[], NodeRule { digits: 20.0, factor: 1.0 }, false, 128).unwrap();
+    let all =
+        solve_at(&mk(SlidingLoad::NormalLoad(q("1/10"))), &[], NodeRule { digits: 20.0, factor: 1.0 }, false, 128)
+            .unwrap();
     assert_eq!(all.len(), 2);
     assert!(all[0].l < all[1].l);
     let lam2 = all[1].lambda.as_ref().unwrap().to_f64();
@@ -338,9 +601,36 @@ fn non_monotone_sinusoid() {
 #[test]
 fn original_cot_kernel_equation_is_satisfied() {
     let cases = [
-        problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10"))),
-        problem("0", "1", "1", PunchShape::sinusoidal(q("1/20")).unwrap(), "1/5", "1/100", "1/2", SlidingLoad::HalfLength(q("1/5"))),
-        problem("1/3", "1", "2", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "1", SlidingLoad::HalfLength(q("3/10"))),
+        problem(
+            "1/4",
+            "2",
+            "1",
+            PunchShape::parabolic(q("1")).unwrap(),
+            "3/10",
+            "1/50",
+            "1/5",
+            SlidingLoad::NormalLoad(q("1/10")),
+        ),
+        problem(
+            "0",
+            "1",
+            "1",
+            PunchShape::sinusoidal(q("1/20")).unwrap(),
+            "1/5",
+            "1/100",
+            "1/2",
+            SlidingLoad::HalfLength(q("1/5")),
+        ),
+        problem(
+            "1/3",
+            "1",
+            "2",
+            PunchShape::parabolic(q("1")).unwrap(),
+            "0",
+            "0",
+            "1",
+            SlidingLoad::HalfLength(q("3/10")),
+        ),
     ];
     for pb in cases {
         let prec = precision_for(30);
@@ -374,8 +664,11 @@ fn original_cot_kernel_equation_is_satisfied() {
                 let t = Float::with_val(prec, &h * k);
                 let sh = Float::with_val(prec, t.sinh_ref()) * &pi / 2u32;
                 let y = Float::with_val(prec, sh.tanh_ref());
-                let w = Float::with_val(prec, t.cosh_ref()) * &pi / 2u32 / Float::with_val(prec, sh.cosh_ref()).square();
-                if Float::with_val(prec, 1u32 - Float::with_val(prec, y.abs_ref())) < Float::with_val(53, 1e-35) || w.is_zero() {
+                let w =
+                    Float::with_val(prec, t.cosh_ref()) * &pi / 2u32 / Float::with_val(prec, sh.cosh_ref()).square();
+                if Float::with_val(prec, 1u32 - Float::with_val(prec, y.abs_ref())) < Float::with_val(53, 1e-35)
+                    || w.is_zero()
+                {
                     continue;
                 }
                 let dxi = Float::with_val(prec, &yx - &y) * &s.l; // x - xi
@@ -405,7 +698,16 @@ fn original_cot_kernel_equation_is_satisfied() {
 /// against H[p] = (1/L) int p(xi) cot(pi (x - xi)/L) dxi by tanh-sinh (regular integrand).
 #[test]
 fn outside_displacement_formula() {
-    let pb = problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10")));
+    let pb = problem(
+        "1/4",
+        "2",
+        "1",
+        PunchShape::parabolic(q("1")).unwrap(),
+        "3/10",
+        "1/50",
+        "1/5",
+        SlidingLoad::NormalLoad(q("1/10")),
+    );
     let prec = precision_for(30);
     let s = solve_at(&pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, prec).unwrap().remove(0);
     let setup = Setup::new(&pb, prec).unwrap();
@@ -441,7 +743,8 @@ fn outside_displacement_formula() {
         let e1 = Float::with_val(prec, &setup.theta + 0.5f64);
         let e2 = Float::with_val(prec, 0.5f64 - Float::with_val(prec, &setup.theta));
         use rug::ops::Pow;
-        let mut xt = Float::with_val(prec, Float::with_val(prec, &t + 1u32).abs().pow(&e1)) * Float::with_val(prec, &t - 1u32).abs().pow(&e2);
+        let mut xt = Float::with_val(prec, Float::with_val(prec, &t + 1u32).abs().pow(&e1))
+            * Float::with_val(prec, &t - 1u32).abs().pow(&e2);
         if t.is_sign_negative() {
             xt = -xt;
         }
@@ -458,16 +761,136 @@ fn outside_displacement_formula() {
 #[ignore]
 fn explore_edge_cases() {
     let cases: Vec<(&str, SlidingProblem)> = vec![
-        ("single, tiny load, tau0", problem("1/4", "1", "inf", PunchShape::parabolic(q("1")).unwrap(), "0", "1/100", "0", SlidingLoad::NormalLoad(q("1/1000000")))),
-        ("periodic, tiny load, tau0", problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "1/100", "0", SlidingLoad::NormalLoad(q("1/1000000")))),
-        ("periodic, theta=0.49 (wear)", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "6000/37", SlidingLoad::NormalLoad(q("1/100")))),
-        ("periodic, theta=-0.45 (friction)", problem("0", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "63/5", "0", "0", SlidingLoad::NormalLoad(q("1/100")))),
-        ("periodic, lambda=1.4", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q("4456/10000")))),
-        ("periodic, lambda=1.5", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q("4775/10000")))),
-        ("periodic, lambda -> pi/2", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::HalfLength(q("4999999/10000000")))),
-        ("periodic, huge load", problem("1/2", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("1000")))),
-        ("sinusoid, load above pi E* D", problem("1/2", "1", "1", PunchShape::sinusoidal(q("1")).unwrap(), "0", "0", "0", SlidingLoad::NormalLoad(q("4")))),
-        ("sinusoid, wear theta=0.3", problem("1/2", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "0", "0", "11/2", SlidingLoad::NormalLoad(q("1/100")))),
+        (
+            "single, tiny load, tau0",
+            problem(
+                "1/4",
+                "1",
+                "inf",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "1/100",
+                "0",
+                SlidingLoad::NormalLoad(q("1/1000000")),
+            ),
+        ),
+        (
+            "periodic, tiny load, tau0",
+            problem(
+                "1/4",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "1/100",
+                "0",
+                SlidingLoad::NormalLoad(q("1/1000000")),
+            ),
+        ),
+        (
+            "periodic, theta=0.49 (wear)",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "0",
+                "6000/37",
+                SlidingLoad::NormalLoad(q("1/100")),
+            ),
+        ),
+        (
+            "periodic, theta=-0.45 (friction)",
+            problem(
+                "0",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "63/5",
+                "0",
+                "0",
+                SlidingLoad::NormalLoad(q("1/100")),
+            ),
+        ),
+        (
+            "periodic, lambda=1.4",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::HalfLength(q("4456/10000")),
+            ),
+        ),
+        (
+            "periodic, lambda=1.5",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::HalfLength(q("4775/10000")),
+            ),
+        ),
+        (
+            "periodic, lambda -> pi/2",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::HalfLength(q("4999999/10000000")),
+            ),
+        ),
+        (
+            "periodic, huge load",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::parabolic(q("1")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::NormalLoad(q("1000")),
+            ),
+        ),
+        (
+            "sinusoid, load above pi E* D",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::sinusoidal(q("1")).unwrap(),
+                "0",
+                "0",
+                "0",
+                SlidingLoad::NormalLoad(q("4")),
+            ),
+        ),
+        (
+            "sinusoid, wear theta=0.3",
+            problem(
+                "1/2",
+                "1",
+                "1",
+                PunchShape::sinusoidal(q("1/10")).unwrap(),
+                "0",
+                "0",
+                "11/2",
+                SlidingLoad::NormalLoad(q("1/100")),
+            ),
+        ),
     ];
     for (name, pb) in &cases {
         let t = std::time::Instant::now();
@@ -496,7 +919,10 @@ fn explore_edge_cases() {
 /// solution and the setup.
 fn free_interval_gap_integral(pb: &SlidingProblem, convention: Convention) -> (Float, SlidingSolution, Setup) {
     let prec = precision_for(30);
-    let (s, _) = super::solve::solve_located(pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, prec, None, convention).unwrap().remove(0);
+    let (s, _) =
+        super::solve::solve_located(pb, &[], NodeRule { digits: 30.0, factor: 1.0 }, true, prec, None, convention)
+            .unwrap()
+            .remove(0);
     let setup = Setup::with_convention(pb, prec, convention).unwrap();
     let size = Size::new(&setup, s.lambda.as_ref().unwrap());
     let contact = Contact::new(&setup, &size, s.c.clone());
@@ -539,14 +965,26 @@ fn free_interval_gap_integral(pb: &SlidingProblem, convention: Convention) -> (F
 /// the surface closes (M = 0).
 #[test]
 fn paper_convention_gap_mismatch() {
-    let pb = problem("1/4", "2", "1", PunchShape::parabolic(q("1")).unwrap(), "3/10", "1/50", "1/5", SlidingLoad::NormalLoad(q("1/10")));
+    let pb = problem(
+        "1/4",
+        "2",
+        "1",
+        PunchShape::parabolic(q("1")).unwrap(),
+        "3/10",
+        "1/50",
+        "1/5",
+        SlidingLoad::NormalLoad(q("1/10")),
+    );
     for convention in [Convention::Paper, Convention::PeriodicSurface] {
         let (integral, s, setup) = free_interval_gap_integral(&pb, convention);
         let prec = s.prec;
         let span = Float::with_val(prec, setup.period.as_ref().unwrap() - Float::with_val(prec, &s.l * 2u32));
         let step = Float::with_val(prec, &setup.beta * &setup.tau0) * 2u32 * &span / &setup.e_star;
         let m = match convention {
-            Convention::Paper => Float::with_val(prec, &setup.beta * &s.p1) * 2u32 / &setup.e_star - Float::with_val(prec, &setup.wear * &s.p2),
+            Convention::Paper => {
+                Float::with_val(prec, &setup.beta * &s.p1) * 2u32 / &setup.e_star
+                    - Float::with_val(prec, &setup.wear * &s.p2)
+            }
             Convention::PeriodicSurface => Float::with_val(prec, 0),
         };
         let expect = Float::with_val(prec, &m + &step);
@@ -564,7 +1002,18 @@ fn paper_convention_gap_mismatch() {
 /// friction, wear and tau0 (K = 0) both conventions give the same contact.
 #[test]
 fn periodic_surface_convention() {
-    let mk = |mu: &str, load: &str| problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), mu, "0", "0", SlidingLoad::NormalLoad(q(load)));
+    let mk = |mu: &str, load: &str| {
+        problem(
+            "1/4",
+            "1",
+            "1",
+            PunchShape::sinusoidal(q("1/10")).unwrap(),
+            mu,
+            "0",
+            "0",
+            SlidingLoad::NormalLoad(q(load)),
+        )
+    };
     let v = solve_verified_with(&mk("1", "1/5"), &[q("0")], 30, Convention::PeriodicSurface).unwrap();
     assert_eq!(v.len(), 1);
     assert!(v[0].accuracy.digits_verified >= 30.0, "{:?}", v[0].accuracy);
@@ -578,16 +1027,41 @@ fn periodic_surface_convention() {
 #[test]
 #[ignore]
 fn profile_phases() {
-    let pb = problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("17/100")));
+    let pb = problem(
+        "1/4",
+        "1",
+        "1",
+        PunchShape::sinusoidal(q("1/10")).unwrap(),
+        "1/5",
+        "0",
+        "1/10",
+        SlidingLoad::NormalLoad(q("17/100")),
+    );
     let _ = solve_verified(&pb, &[q("0")], 30);
     let t = std::time::Instant::now();
     let found = super::solve::locate_for_profile(&pb, &q("17/100"));
     println!("locate: {:.1} ms -> {:?}", t.elapsed().as_secs_f64() * 1e3, found);
     let t = std::time::Instant::now();
-    let r = super::solve::solve_located(&pb, &[q("0")], NodeRule { digits: 30.0, factor: 1.0 }, true, precision_for(30), Some(&found), Convention::Paper);
+    let r = super::solve::solve_located(
+        &pb,
+        &[q("0")],
+        NodeRule { digits: 30.0, factor: 1.0 },
+        true,
+        precision_for(30),
+        Some(&found),
+        Convention::Paper,
+    );
     println!("run 1 given located: {:.1} ms ({} ok)", t.elapsed().as_secs_f64() * 1e3, r.map(|v| v.len()).unwrap_or(0));
     let t = std::time::Instant::now();
-    let r = super::solve::solve_located(&pb, &[q("0")], NodeRule { digits: 30.0, factor: 1.5 }, false, precision_for(30) + 32, Some(&found[..1]), Convention::Paper);
+    let r = super::solve::solve_located(
+        &pb,
+        &[q("0")],
+        NodeRule { digits: 30.0, factor: 1.5 },
+        false,
+        precision_for(30) + 32,
+        Some(&found[..1]),
+        Convention::Paper,
+    );
     println!("run 2 given located: {:.1} ms ({} ok)", t.elapsed().as_secs_f64() * 1e3, r.map(|v| v.len()).unwrap_or(0));
 }
 
@@ -596,14 +1070,37 @@ fn profile_phases() {
 #[test]
 fn verified_digits_are_honest() {
     let cases = [
-        problem("1/4", "1", "1", PunchShape::parabolic(q("1")).unwrap(), "1/5", "1/100", "1/10", SlidingLoad::NormalLoad(q("1/5"))),
-        problem("1/4", "1", "1", PunchShape::sinusoidal(q("1/10")).unwrap(), "1/5", "0", "1/10", SlidingLoad::NormalLoad(q("17/100"))),
+        problem(
+            "1/4",
+            "1",
+            "1",
+            PunchShape::parabolic(q("1")).unwrap(),
+            "1/5",
+            "1/100",
+            "1/10",
+            SlidingLoad::NormalLoad(q("1/5")),
+        ),
+        problem(
+            "1/4",
+            "1",
+            "1",
+            PunchShape::sinusoidal(q("1/10")).unwrap(),
+            "1/5",
+            "0",
+            "1/10",
+            SlidingLoad::NormalLoad(q("17/100")),
+        ),
     ];
     for pb in cases {
         let v = solve_verified(&pb, &[q("1/3")], 30).unwrap().remove(0);
-        let r = solve_at(&pb, &[q("1/3")], NodeRule { digits: 60.0, factor: 1.0 }, true, precision_for(60)).unwrap().remove(0);
+        let r = solve_at(&pb, &[q("1/3")], NodeRule { digits: 60.0, factor: 1.0 }, true, precision_for(60))
+            .unwrap()
+            .remove(0);
         let s = &v.solution;
-        let kl = Float::with_val(s.prec, Float::with_val(s.prec, &s.l * &s.p2) * Setup::new(&pb, s.prec).unwrap().osculating_k());
+        let kl = Float::with_val(
+            s.prec,
+            Float::with_val(s.prec, &s.l * &s.p2) * Setup::new(&pb, s.prec).unwrap().osculating_k(),
+        );
         let got = [
             ("a", digits(&s.a, &r.a, &s.l)),
             ("c", digits(&s.c, &r.c, &s.l)),
@@ -612,7 +1109,11 @@ fn verified_digits_are_honest() {
             ("p", digits(&s.pressure[0].p, &r.pressure[0].p, &s.max_pressure)),
         ];
         for (name, d) in got {
-            assert!(d >= v.accuracy.digits_verified - 1.0, "{name}: true digits {d:.1} < verified {:.1}", v.accuracy.digits_verified);
+            assert!(
+                d >= v.accuracy.digits_verified - 1.0,
+                "{name}: true digits {d:.1} < verified {:.1}",
+                v.accuracy.digits_verified
+            );
         }
     }
 }

@@ -4,10 +4,10 @@
 //! l for a, b, c; max p for p(x); P2 for P1 and P2; k l P2 for F_def (for the sinusoid the
 //! osculating k = 2 pi^2 D/L^2). The headline is the minimum.
 
+use super::error::SlidingError;
 use super::setup::{Convention, Setup};
 use super::solution::{Accuracy, SlidingSolution, VerifiedSolution};
 use super::solve::{solve_located, NodeRule};
-use super::error::SlidingError;
 use crate::model::{Exact, SlidingProblem};
 use rug::Float;
 
@@ -52,7 +52,11 @@ pub fn compare(setup: &Setup, s1: &SlidingSolution, s2: &SlidingSolution) -> Acc
 /// Solves Problem 1 to `digits` digits and verifies them: run 1 at [`precision_for`]`(digits)`
 /// bits with the error-model node count, run 2 with [`VERIFY_EXTRA_BITS`] more bits and 1.5x the
 /// nodes. Returns every physical solution (smallest contact first) with its accuracy.
-pub fn solve_verified(problem: &SlidingProblem, points: &[Exact], digits: u32) -> Result<Vec<VerifiedSolution>, SlidingError> {
+pub fn solve_verified(
+    problem: &SlidingProblem,
+    points: &[Exact],
+    digits: u32,
+) -> Result<Vec<VerifiedSolution>, SlidingError> {
     solve_verified_with(problem, points, digits, Convention::Paper)
 }
 
@@ -71,11 +75,18 @@ pub fn solve_verified_with(
     let run1 = solve_located(problem, points, NodeRule { digits: d, factor: 1.0 }, true, prec, None, convention)?;
     // Run 2 refines, independently at its own precision and rule, the sizes run 1 located.
     let located: Vec<_> = run1.iter().map(|x| x.1).collect();
-    let run2: Vec<SlidingSolution> =
-        solve_located(problem, points, NodeRule { digits: d, factor: 1.5 }, false, prec + VERIFY_EXTRA_BITS, Some(&located), convention)?
-            .into_iter()
-            .map(|x| x.0)
-            .collect();
+    let run2: Vec<SlidingSolution> = solve_located(
+        problem,
+        points,
+        NodeRule { digits: d, factor: 1.5 },
+        false,
+        prec + VERIFY_EXTRA_BITS,
+        Some(&located),
+        convention,
+    )?
+    .into_iter()
+    .map(|x| x.0)
+    .collect();
     let run1: Vec<SlidingSolution> = run1.into_iter().map(|x| x.0).collect();
     // Run 2 skips the physicality checks, so it may list extra (non-physical) roots: each
     // solution of run 1 is paired with the run-2 solution nearest in (l, c).
@@ -83,7 +94,8 @@ pub fn solve_verified_with(
     let mut out = vec![];
     for s1 in run1 {
         let dist = |s2: &SlidingSolution| -> f64 {
-            (Float::with_val(64, &s1.l - &s2.l).to_f64().abs() + Float::with_val(64, &s1.c - &s2.c).to_f64().abs()) / s1.l.to_f64()
+            (Float::with_val(64, &s1.l - &s2.l).to_f64().abs() + Float::with_val(64, &s1.c - &s2.c).to_f64().abs())
+                / s1.l.to_f64()
         };
         let s2 = run2
             .iter()

@@ -1,0 +1,347 @@
+//! `periodic-contact solve SCENE`: runs a scene with a method and renders the result as JSON with
+//! string values. Every number carries its accuracy: `digits_requested`, `digits_verified` (by a
+//! second run with more bits and 1.5x the nodes for MPFR, more nodes for f64) and `accuracy` per
+//! quantity. A value is printed with only as many significant digits as were verified (and no
+//! more than requested); the series method states estimated, not verified, digits.
+
+pub mod format;
+pub mod series_method;
+
+use crate::adhesion::{self, AdhesionError};
+use crate::cli::InvalidInput;
+use crate::model::{ModelError, Period, SlidingProblem};
+use crate::scene::{Method, Scene, SceneProblem};
+use crate::sliding::{self, collocation_f64, SlidingError};
+use format::{digits_in_value, fmt_f64, fmt_float, AccuracyTable};
+use serde_json::{json, Map, Value};
+
+/// Why a solve did not produce an answer.
+#[derive(Debug, thiserror::Error)]
+pub enum SolveError {
+    /// Invalid input (exit code 2).
+    #[error(transparent)]
+    Invalid(#[from] InvalidInput),
+    /// No solution, no convergence (exit code 1).
+    #[error("{0}")]
+    Failed(String),
+}
+
+impl From<ModelError> for SolveError {
+    fn from(e: ModelError) -> Self {
+        SolveError::Invalid(e.into())
+    }
+}
+
+impl From<SlidingError> for SolveError {
+    fn from(e: SlidingError) -> Self {
+        match e {
+            SlidingError::Parameter { parameter, value, expected } => {
+                SolveError::Invalid(InvalidInput::new(parameter, value, expected))
+            }
+            other => SolveError::Failed(other.to_string()),
+        }
+    }
+}
+
+impl From<collocation_f64::SlidingF64Error> for SolveError {
+    fn from(e: collocation_f64::SlidingF64Error) -> Self {
+        use collocation_f64::SlidingF64Error as E;
+        match &e {
+            E::NotRepresentable { .. } | E::InvalidParameter { .. } | E::InvalidPoint { .. } => {
+                SolveError::Invalid(InvalidInput::new("scene", "(f64 method)", e.to_string()))
+            }
+            _ => SolveError::Failed(e.to_string()),
+        }
+    }
+}
+
+impl From<AdhesionError> for SolveError {
+    fn from(e: AdhesionError) -> Self {
+        match e {
+            AdhesionError::Model(m) => m.into(),
+            AdhesionError::InvalidArgument { parameter, value, expected } => {
+                SolveError::Invalid(InvalidInput::new(parameter, value, expected))
+            }
+            other => SolveError::Failed(other.to_string()),
+        }
+    }
+}
+
+/// How to run a scene.
+#[derive(Debug, Clone, Copy)]
+pub struct SolveRequest {
+    /// Method.
+    pub method: Method,
+    /// Digits requested.
+    pub digits: u32,
+    /// Order of the truncated series (series method).
+    pub series_order: usize,
+}
+
+/// Default digits when neither the scene nor the command line gives them.
+pub const DEFAULT_DIGITS: u32 = 30;
+
+/// Runs the scene and renders the JSON result.
+pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
+    match &scene.problem {
+        SceneProblem::Sliding(p) => match req.method {
+            Method::Mpfr => sliding_mpfr(p, scene, req),
+            Method::F64 => sliding_f64(p, scene, req),
+            Method::Series => series_method::sliding_series(p, scene, req),
+        },
+        SceneProblem::Adhesion(p) => match req.method {
+            Method::Mpfr => adhesion_mpfr(p, scene, req),
+            Method::F64 => adhesion_f64(p, scene, req),
+            Method::Series => Err(SolveError::Invalid(InvalidInput::new(
+                "--method",
+                "series",
+                "the adhesion problem is solved by \"mpfr\" or \"f64\"",
+            ))),
+        },
+    }
+}
+
+fn provenance(method: &str, bits: Option<u32>, nodes: Option<usize>) -> Value {
+    json!({
+        "version": env!("CARGO_PKG_VERSION"),
+        "method": method,
+        "bits": bits.map(|b| b.to_string()),
+        "nodes": nodes.map(|n| n.to_string()),
+    })
+}
+
+/// One sliding solution (MPFR) as a JSON object.
+fn sliding_solution_json(v: &sliding::VerifiedSolution, digits: u32) -> Map<String, Value> {
+    let s = &v.solution;
+    let acc = AccuracyTable::from_pairs(&v.accuracy.digits);
+    let d = |name: &str| acc.get(name).unwrap_or(v.accuracy.digits_verified);
+    // Quantities without their own comparison inherit the weakest related one.
+    let geom = ["a", "b", "c"].iter().map(|n| d(n)).fold(f64::INFINITY, f64::min);
+    let put = |m: &mut Map<String, Value>, key: &str, x: &rug::Float, dv: f64, scale: &rug::Float| {
+        m.insert(key.into(), Value::String(fmt_float(x, digits_in_value(x, scale, dv, digits))));
+    };
+    let mut m = Map::new();
+    m.insert("theta".into(), Value::String(fmt_float(&s.theta, digits as usize)));
+    m.insert("kappa".into(), Value::String(fmt_float(&s.kappa, digits as usize)));
+    match &s.lambda {
+        Some(l) => put(&mut m, "lambda", l, geom, l),
+        None => {
+            m.insert("lambda".into(), Value::Null);
+        }
+    }
+    put(&mut m, "l", &s.l, geom, &s.l);
+    put(&mut m, "a", &s.a, d("a"), &s.l);
+    put(&mut m, "b", &s.b, d("b"), &s.l);
+    put(&mut m, "c", &s.c, d("c"), &s.l);
+    put(&mut m, "P1", &s.p1, d("P1"), &s.p2);
+    put(&mut m, "P2", &s.p2, d("P2"), &s.p2);
+    let f_scale = rug::Float::with_val(s.prec, s.f_def.clone().abs().max(&rug::Float::with_val(s.prec, 1e-300)));
+    let fdef_digits = d("F_def");
+    m.insert(
+        "F_def".into(),
+        Value::String(fmt_float(&s.f_def, digits_in_value(&s.f_def, &f_scale, fdef_digits, digits).max(1))),
+    );
+    for (key, val) in [("wear_per_distance", &s.wear_per_distance), ("wear_rate", &s.wear_rate)] {
+        match val {
+            Some(x) => put(&mut m, key, x, d("P2"), x),
+            None => {
+                m.insert(key.into(), Value::Null);
+            }
+        }
+    }
+    put(&mut m, "worn_area_per_distance", &s.worn_area_per_distance, d("P2"), &s.worn_area_per_distance);
+    m.insert("digits_requested".into(), Value::String(digits.to_string()));
+    m.insert("digits_verified".into(), Value::String(format!("{:.1}", v.accuracy.digits_verified)));
+    m.insert("accuracy".into(), acc.to_json());
+    let pressure: Vec<Value> = s
+        .pressure
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let dv = d(&format!("p[{i}]"));
+            json!({
+                "xh": fmt_float(&p.xh, digits as usize),
+                "x": fmt_float(&p.x, digits_in_value(&p.x, &s.l, geom, digits)),
+                "p": fmt_float(&p.p, digits_in_value(&p.p, &s.max_pressure, dv, digits)),
+            })
+        })
+        .collect();
+    m.insert("pressure".into(), Value::Array(pressure));
+    m.insert("provenance".into(), provenance("mpfr", Some(s.prec), Some(s.nodes)));
+    m
+}
+
+fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
+    let sols = sliding::solve_verified(p, &scene.output.points, req.digits)?;
+    let first = sols.first().ok_or_else(|| SolveError::Failed("no physical solution was found".into()))?;
+    let mut top = Map::new();
+    top.insert("problem".into(), Value::String("sliding".into()));
+    top.extend(sliding_solution_json(first, req.digits));
+    if sols.len() > 1 {
+        let all: Vec<Value> = sols.iter().map(|s| Value::Object(sliding_solution_json(s, req.digits))).collect();
+        top.insert("solutions".into(), Value::Array(all));
+    }
+    Ok(Value::Object(top))
+}
+
+/// Digits verified from an f64 relative error estimate: capped at 15 (round-off floor).
+fn f64_digits(rel_err: f64) -> f64 {
+    if rel_err <= 1e-15 {
+        15.0
+    } else {
+        (-rel_err.log10()).clamp(0.0, 15.0)
+    }
+}
+
+fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
+    let points: Vec<f64> =
+        scene.output.points.iter().map(|x| crate::numerics::exact::to_f64(x).unwrap_or(f64::NAN)).collect();
+    let sols = collocation_f64::solve_sliding_f64(p, &points, &collocation_f64::SolverOptions::default())?;
+    let render = |s: &collocation_f64::SlidingSolutionF64| {
+        let digits = req.digits.min(15);
+        let g = f64_digits(s.accuracy.geometry);
+        let pd = f64_digits(s.accuracy.pressure);
+        let ld = f64_digits(s.accuracy.load);
+        let fd = f64_digits(s.accuracy.f_def);
+        let v = |x: f64, scale: f64, dv: f64| {
+            let extra = if x == 0.0 { 0.0 } else { (scale.abs() / x.abs()).log10().max(0.0) };
+            fmt_f64(x, ((dv - extra).floor() as i64).clamp(1, digits as i64) as usize)
+        };
+        let mut m = Map::new();
+        m.insert("theta".into(), json!(fmt_f64(s.theta, 16)));
+        m.insert("kappa".into(), json!(fmt_f64(s.kappa, 16)));
+        m.insert(
+            "lambda".into(),
+            if matches!(p.period, Period::Infinite) { Value::Null } else { json!(v(s.lambda, s.lambda, g)) },
+        );
+        m.insert("l".into(), json!(v(s.l, s.l, g)));
+        m.insert("a".into(), json!(v(s.a, s.l, g)));
+        m.insert("b".into(), json!(v(s.b, s.l, g)));
+        m.insert("c".into(), json!(v(s.c, s.l, g)));
+        m.insert("P1".into(), json!(v(s.p1, s.p2, ld)));
+        m.insert("P2".into(), json!(v(s.p2, s.p2, ld)));
+        m.insert("F_def".into(), json!(v(s.f_def, s.f_def, fd)));
+        m.insert("wear_per_distance".into(), s.wear_per_distance.map_or(Value::Null, |w| json!(v(w, w, ld))));
+        m.insert("wear_rate".into(), s.wear_rate.map_or(Value::Null, |w| json!(v(w, w, ld))));
+        let headline = g.min(pd).min(ld).min(fd);
+        m.insert("digits_requested".into(), json!(req.digits.to_string()));
+        m.insert("digits_verified".into(), json!(format!("{headline:.1}")));
+        m.insert(
+            "accuracy".into(),
+            json!({"a": format!("{g:.1}"), "b": format!("{g:.1}"), "c": format!("{g:.1}"), "P1": format!("{ld:.1}"),
+                   "P2": format!("{ld:.1}"), "F_def": format!("{fd:.1}"), "p": format!("{pd:.1}")}),
+        );
+        let pressure: Vec<Value> = s
+            .pressure
+            .iter()
+            .map(|q| json!({"xh": fmt_f64(q.xh, 16), "x": v(q.x, s.l, g), "p": v(q.p, s.max_pressure, pd)}))
+            .collect();
+        m.insert("pressure".into(), Value::Array(pressure));
+        m.insert("provenance".into(), provenance("f64", Some(53), Some(s.nodes)));
+        m
+    };
+    let mut top = Map::new();
+    top.insert("problem".into(), json!("sliding"));
+    top.extend(render(sols.primary()));
+    if sols.solutions.len() > 1 {
+        top.insert("solutions".into(), Value::Array(sols.solutions.iter().map(|s| Value::Object(render(s))).collect()));
+    }
+    Ok(Value::Object(top))
+}
+
+fn adhesion_mpfr(p: &crate::model::AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
+    let v = adhesion::verified::solve_verified(p, &scene.output.points, req.digits)?;
+    let s = &v.solution;
+    let dv = &v.digits_verified;
+    let digits = req.digits;
+    let prec = s.prec;
+    let k = match &p.shape {
+        crate::model::PunchShape::Parabolic { k } => crate::numerics::exact::to_float(k, prec),
+        crate::model::PunchShape::Sinusoidal { .. } => unreachable!("validated: adhesion is parabolic only"),
+    };
+    let e_star = crate::numerics::exact::to_float(&p.material.contact_modulus, prec);
+    let a = &s.half_width;
+    let ka = rug::Float::with_val(prec, &k * a);
+    let ka2 = rug::Float::with_val(prec, &ka * a);
+    let eka = rug::Float::with_val(prec, &e_star * &ka);
+    let field = |name: &str,
+                 get: &dyn Fn(&adhesion::solution::PointValues) -> &rug::Float,
+                 scale: &rug::Float,
+                 d: f64| {
+        let list: Vec<Value> = s
+            .points
+            .iter()
+            .map(|pt| {
+                let x = get(pt);
+                json!({"x_over_a": exact_series::q_text(&pt.x_over_a), name: fmt_float(x, digits_in_value(x, scale, d, digits))})
+            })
+            .collect();
+        Value::Array(list)
+    };
+    let mut m = Map::new();
+    m.insert("problem".into(), json!("adhesion"));
+    m.insert(
+        "lambda".into(),
+        if matches!(p.period, Period::Infinite) {
+            Value::Null
+        } else {
+            json!(fmt_float(&s.lambda, digits_in_value(&s.lambda, &s.lambda, dv.size, digits)))
+        },
+    );
+    m.insert(
+        "P2".into(),
+        json!(fmt_float(&s.normal_load, digits_in_value(&s.normal_load, &s.normal_load, dv.size, digits))),
+    );
+    m.insert("half_width".into(), json!(fmt_float(a, digits_in_value(a, a, dv.size, digits))));
+    m.insert("digits_requested".into(), json!(digits.to_string()));
+    m.insert("digits_verified".into(), json!(format!("{:.1}", dv.headline)));
+    m.insert(
+        "accuracy".into(),
+        json!({"size": format!("{:.1}", dv.size), "psi": format!("{:.1}", dv.psi), "phi": format!("{:.1}", dv.phi),
+               "q1": format!("{:.1}", dv.q1), "q2": format!("{:.1}", dv.q2)}),
+    );
+    m.insert("psi".into(), field("psi", &|pt| &pt.psi, &ka, dv.psi));
+    m.insert("phi".into(), field("phi", &|pt| &pt.phi, &ka2, dv.phi));
+    m.insert("q1".into(), field("q1", &|pt| &pt.q1, &eka, dv.q1));
+    m.insert("q2".into(), field("q2", &|pt| &pt.q2, &eka, dv.q2));
+    let zones: Vec<Value> = s
+        .tension
+        .zones
+        .iter()
+        .map(|z| json!({"from_x_over_a": fmt_float(&z.from_x_over_a, 6), "to_x_over_a": fmt_float(&z.to_x_over_a, 6), "refined": z.refined}))
+        .collect();
+    m.insert("tension_zones".into(), Value::Array(zones));
+    m.insert("warnings".into(), Value::Array(v.warnings.iter().map(|w| json!(w)).collect()));
+    m.insert("provenance".into(), provenance("mpfr", Some(prec), Some(s.nodes)));
+    Ok(Value::Object(m))
+}
+
+fn adhesion_f64(p: &crate::model::AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
+    let s = adhesion::solution::solve_f64(p, &scene.output.points)?;
+    // A second f64 run is the same series; its accuracy is stated against the MPFR method in the
+    // test suite (agreement to 1e-12), so here the digits are estimated, not verified.
+    let digits = req.digits.min(12) as usize;
+    let list = |get: &dyn Fn(&adhesion::solution::PointValuesF64) -> f64, name: &str| {
+        Value::Array(
+            s.points
+                .iter()
+                .map(|pt| json!({"x_over_a": fmt_f64(pt.x_over_a, 16), name: fmt_f64(get(pt), digits)}))
+                .collect(),
+        )
+    };
+    Ok(json!({
+        "problem": "adhesion",
+        "lambda": if matches!(p.period, Period::Infinite) { Value::Null } else { json!(fmt_f64(s.lambda, digits)) },
+        "P2": fmt_f64(s.normal_load, digits),
+        "half_width": fmt_f64(s.half_width, digits),
+        "digits_requested": req.digits.to_string(),
+        "digits_verified": Value::Null,
+        "digits_estimated": "12",
+        "accuracy": {"note": "f64 lambda^2-series method: agreement with the MPFR method to 1e-12 is tested, not re-verified per run; use --method mpfr for verified digits"},
+        "psi": list(&|pt| pt.psi, "psi"),
+        "phi": list(&|pt| pt.phi, "phi"),
+        "q1": list(&|pt| pt.q1, "q1"),
+        "q2": list(&|pt| pt.q2, "q2"),
+        "provenance": provenance("f64", Some(53), Some(s.terms)),
+    }))
+}
