@@ -22,3 +22,4 @@ pub mod report;
 pub mod scene;
 pub mod sliding;
 pub mod solve;
+pub mod verification;

@@ -1,0 +1,3 @@
+//! Verification: the exact series against the full solutions, term by term.
+
+pub mod convergence;
