@@ -130,6 +130,7 @@ impl Tables {
 /// section 5), symbolic in theta and T.
 ///
 /// ```
+/// use exact_series::Ring;
 /// use periodic_contact::asymptotics::sliding::{sliding_expansion, SlidingShape};
 /// let e = sliding_expansion(SlidingShape::Parabolic, 2).unwrap();
 /// // Frictionless check (Kuznetsov): a = a0 (1 - Lambda^2/12 + ...) at theta = T = 0.
