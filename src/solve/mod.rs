@@ -81,8 +81,33 @@ pub struct SolveRequest {
 /// Default digits when neither the scene nor the command line gives them.
 pub const DEFAULT_DIGITS: u32 = 30;
 
-/// Runs the scene and renders the JSON result.
+/// Runs the scene and renders the JSON result. A non-finite number anywhere in the result is
+/// refused (exit code 1) rather than printed.
 pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
+    let v = solve_scene_unchecked(scene, req)?;
+    if let Some(path) = first_non_finite("", &v) {
+        return Err(SolveError::Failed(format!(
+            "the {} method produced a non-finite value at {path}",
+            req.method.name()
+        )));
+    }
+    Ok(v)
+}
+
+/// The path of the first string value that is not a finite number's text (NaN, inf).
+fn first_non_finite(path: &str, v: &Value) -> Option<String> {
+    match v {
+        Value::String(s) => {
+            let t = s.trim().trim_start_matches(['-', '+']).to_ascii_lowercase();
+            matches!(t.as_str(), "nan" | "inf" | "infinity" | "@nan@" | "@inf@").then(|| path.to_string())
+        }
+        Value::Object(m) => m.iter().find_map(|(k, x)| first_non_finite(&format!("{path}.{k}"), x)),
+        Value::Array(a) => a.iter().enumerate().find_map(|(i, x)| first_non_finite(&format!("{path}[{i}]"), x)),
+        _ => None,
+    }
+}
+
+fn solve_scene_unchecked(scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
     match &scene.problem {
         SceneProblem::Sliding(p) => match req.method {
             Method::Mpfr => sliding_mpfr(p, scene, req),
