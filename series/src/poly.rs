@@ -273,6 +273,34 @@ impl Poly {
                 || self.terms.iter().fold(self.den.clone(), |g, (_, n)| g.gcd(n)).is_one())
     }
 
+    /// Prints the terms in print order with the given forms of a rational and of a monomial,
+    /// joined as `c<sep>m` (the coefficient 1 is omitted), signs pulled out as " + " / " - ".
+    fn render(&self, coeff: fn(&Q) -> String, mono: fn(&Monomial) -> String, sep: &str) -> String {
+        if self.terms.is_empty() {
+            return "0".to_string();
+        }
+        let mut s = String::new();
+        for (i, (m, q)) in self.print_order().into_iter().enumerate() {
+            let neg = q.is_negative();
+            let a = q.abs();
+            if i == 0 {
+                if neg {
+                    s.push('-');
+                }
+            } else {
+                s.push_str(if neg { " - " } else { " + " });
+            }
+            if m.0.is_empty() {
+                s.push_str(&coeff(&a));
+            } else if One::is_one(&a) {
+                s.push_str(&mono(m));
+            } else {
+                s.push_str(&format!("{}{sep}{}", coeff(&a), mono(m)));
+            }
+        }
+        s
+    }
+
     /// Terms in print order: higher total degree first, then reverse internal order.
     fn print_order(&self) -> Vec<(&Monomial, Q)> {
         let mut v: Vec<(&Monomial, Q)> = self.terms().collect();
@@ -465,54 +493,10 @@ impl Ring for Poly {
         self.as_q().filter(|q| !Zero::is_zero(q)).map(|q| Poly::from_q(&q.recip()))
     }
     fn text(&self) -> String {
-        if self.terms.is_empty() {
-            return "0".to_string();
-        }
-        let mut s = String::new();
-        for (i, (m, q)) in self.print_order().into_iter().enumerate() {
-            let neg = q.is_negative();
-            let a = q.abs();
-            if i == 0 {
-                if neg {
-                    s.push('-');
-                }
-            } else {
-                s.push_str(if neg { " - " } else { " + " });
-            }
-            if m.0.is_empty() {
-                s.push_str(&q_text(&a));
-            } else if One::is_one(&a) {
-                s.push_str(&m.text());
-            } else {
-                s.push_str(&format!("{}*{}", q_text(&a), m.text()));
-            }
-        }
-        s
+        self.render(q_text, Monomial::text, "*")
     }
     fn latex(&self) -> String {
-        if self.terms.is_empty() {
-            return "0".to_string();
-        }
-        let mut s = String::new();
-        for (i, (m, q)) in self.print_order().into_iter().enumerate() {
-            let neg = q.is_negative();
-            let a = q.abs();
-            if i == 0 {
-                if neg {
-                    s.push('-');
-                }
-            } else {
-                s.push_str(if neg { " - " } else { " + " });
-            }
-            if m.0.is_empty() {
-                s.push_str(&q_latex(&a));
-            } else if One::is_one(&a) {
-                s.push_str(&m.latex());
-            } else {
-                s.push_str(&format!("{} {}", q_latex(&a), m.latex()));
-            }
-        }
-        s
+        self.render(q_latex, Monomial::latex, " ")
     }
     fn is_sum(&self) -> bool {
         self.terms.len() > 1

@@ -199,7 +199,7 @@ fn orthonormal_eval(a: &[f64], sq: &[f64], x: f64) -> (f64, f64, f64) {
 /// `e[0..n-1]` (`e[n-1]` ignored): implicit QL with Wilkinson shifts (Numerical Recipes 11.4,
 /// `tqli` without eigenvectors). The eigenvalues overwrite `d`, unsorted. Meant for Jacobi
 /// matrices (entries of size <= 1): rotations use sqrt(f^2 + g^2), not hypot.
-fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<(), ()> {
+pub(crate) fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<(), ()> {
     let n = d.len();
     if n == 0 {
         return Ok(());

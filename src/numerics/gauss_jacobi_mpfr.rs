@@ -167,65 +167,12 @@ fn recurrence(alpha: &Float, beta: &Float, n: usize, prec: u32) -> (Vec<Float>, 
     (a, b)
 }
 
-/// Eigenvalues of the symmetric tridiagonal matrix (diagonal `d`, off-diagonal `e[i]` between
-/// i and i+1) by the implicit QL method with Wilkinson shifts (Numerical Recipes `tqli`,
-/// eigenvalues only). Returns them increasing.
+/// Eigenvalues of the Jacobi matrix in f64 (the starting nodes), increasing; `None` if the QL
+/// iteration fails or produces a non-finite value. Uses the f64 module's implicit QL.
 fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Option<Vec<f64>> {
-    let n = d.len();
-    let mut e = vec![0.0; n];
-    e[..n - 1].copy_from_slice(&off[..n - 1]);
-    for l in 0..n {
-        let mut iter = 0;
-        loop {
-            let mut m = l;
-            while m + 1 < n {
-                let dd = d[m].abs() + d[m + 1].abs();
-                if e[m].abs() <= f64::EPSILON * dd {
-                    break;
-                }
-                m += 1;
-            }
-            if m == l {
-                break;
-            }
-            iter += 1;
-            if iter > 100 {
-                return None;
-            }
-            let mut g = (d[l + 1] - d[l]) / (2.0 * e[l]);
-            let mut r = g.hypot(1.0);
-            g = d[m] - d[l] + e[l] / (g + r.copysign(g));
-            let (mut s, mut c, mut p) = (1.0f64, 1.0f64, 0.0f64);
-            let mut i = m;
-            let mut early = false;
-            while i > l {
-                i -= 1;
-                let f = s * e[i];
-                let bb = c * e[i];
-                r = f.hypot(g);
-                e[i + 1] = r;
-                if r == 0.0 {
-                    d[i + 1] -= p;
-                    e[m] = 0.0;
-                    early = true;
-                    break;
-                }
-                s = f / r;
-                c = g / r;
-                g = d[i + 1] - p;
-                r = (d[i] - g) * s + 2.0 * c * bb;
-                p = s * r;
-                d[i + 1] = g + p;
-                g = c * r - bb;
-            }
-            if early {
-                continue;
-            }
-            d[l] -= p;
-            e[l] = g;
-            e[m] = 0.0;
-        }
-    }
+    let mut e = off.to_vec();
+    e.resize(d.len(), 0.0);
+    crate::numerics::gauss_jacobi_f64::tridiagonal_eigenvalues(&mut d, &mut e).ok()?;
     if d.iter().any(|x| !x.is_finite()) {
         return None;
     }
