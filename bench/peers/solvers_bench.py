@@ -9,6 +9,7 @@ import os
 import platform
 import subprocess
 import sys
+import time
 
 from mpmath import mp, mpf
 
@@ -81,6 +82,23 @@ for digits in DIGITS:
 print(f"   mpmath backend: {m['backend']}; ratio range {min(ratios1):.1f}x .. {max(ratios1):.1f}x, "
       f"geometric mean {math.exp(sum(map(math.log, ratios1)) / len(ratios1)):.1f}x")
 print(f"   every case agrees to at least the requested digits: {'yes' if agree_ok else 'NO'}")
+
+# Whole processes, for reference: the CLI on scenes/sliding_friction.toml (the "friction" case above)
+# runs the solver twice (main run + verification run at 32 more bits and 1.5x the nodes) and parses
+# the scene; the mpmath script solves once. Wall time of the process, best of 3, interleaved.
+cli = os.path.join(os.path.dirname(ours_bin), "..", "periodic-contact")
+scene = os.path.join(here, "..", "..", "scenes", "sliding_friction.toml")
+t_cli, t_mpm = [], []
+for _ in range(3):
+    t0 = time.perf_counter()
+    subprocess.run([cli, "solve", scene, "--json", "--digits", "30"], check=True, capture_output=True)
+    t_cli.append(time.perf_counter() - t0)
+    t0 = time.perf_counter()
+    peer("sliding_mpmath.py", "3/10", "1", "1", "1", "1/100", "3/10", "0", "0", 30, 1)
+    t_mpm.append(time.perf_counter() - t0)
+print(f"   whole processes, friction case, 30 digits: mpmath script (one solve, Python start-up and imports)")
+print(f"   {min(t_mpm):.3f} s; `periodic-contact solve scenes/sliding_friction.toml --json --digits 30` (solve +")
+print(f"   verification run) {min(t_cli):.3f} s: mpmath/ours {min(t_mpm) / min(t_cli):.1f}x")
 
 # ---------------------------------------------------------------------------------------------
 # 2. Westergaard contact width: Tamaas PolonskyKeerRey vs ours (f64 collocation, MPFR).
