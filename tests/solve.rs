@@ -91,9 +91,30 @@ fn exit_codes() {
     let (code, _, err) = run(&["solve", bad.to_str().unwrap()]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("poisson_ratio = 7/10: must lie in [0, 1/2]"), "{err}");
-    let (code, _, err) = run(&["solve", SCENE, "--digits", "1000000000"]);
-    assert_eq!(code, 2);
-    assert!(err.contains("--digits"));
+    for digits in ["0", "1000000000", "-5", "many"] {
+        let (code, _, err) = run(&["solve", SCENE, "--digits", digits]);
+        assert_eq!(code, 2, "{digits}: {err}");
+        assert!(err.contains("--digits"), "{err}");
+    }
+    // lambda -> pi/2 (a sinusoid's contact all but closing the period): an answer with verified
+    // digits, or a clear refusal; never a panic or a silent NaN.
+    let near_full = scene_file(
+        "near_full.toml",
+        &std::fs::read_to_string(SCENE)
+            .unwrap()
+            .replace("shape = \"parabolic\"\nk = \"1\"", "shape = \"sinusoidal\"\namplitude = \"0.01\"")
+            .replace("normal_load = \"0.01\"", "half_length = \"0.4999\""),
+    );
+    let (code, out, err) = run(&["solve", near_full.to_str().unwrap(), "--digits", "20", "--json"]);
+    // (2: the derived lambda is outside the method's valid range, named with its value.)
+    assert!((0..=2).contains(&code), "{err}");
+    assert!(!err.contains("panicked") && !out.contains("NaN"), "{out}{err}");
+    if code == 0 {
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert!(num(&v, "digits_verified") >= 1.0);
+    } else {
+        assert!(err.contains("lambda") || err.contains("load"), "{err}");
+    }
     // No solution: 1, with the reason. A sinusoid with wear cannot carry an arbitrary load.
     let heavy = scene_file(
         "heavy.toml",

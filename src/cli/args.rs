@@ -66,7 +66,7 @@ pub enum RawCommand {
         /// The object to derive.
         object: ObjectName,
         /// Keep every term through power N (for jacobi: j_0 .. j_N).
-        #[arg(long, value_name = "N")]
+        #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: String,
         /// Substitute an exact rational for theta (e.g. 1/10), |theta| < 1/2.
         #[arg(long, value_name = "R", allow_hyphen_values = true)]
@@ -89,13 +89,13 @@ pub enum RawCommand {
         /// Scene file (TOML).
         scene: PathBuf,
         /// Digits requested (overrides [output] digits; default 30).
-        #[arg(long, value_name = "N")]
+        #[arg(long, value_name = "N", allow_hyphen_values = true)]
         digits: Option<String>,
         /// Method (overrides [output] method; default mpfr).
         #[arg(long, value_enum)]
         method: Option<MethodName>,
         /// Series order for --method series (default 12).
-        #[arg(long, value_name = "N")]
+        #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: Option<String>,
         /// Output format.
         #[arg(long, value_enum)]
