@@ -13,6 +13,7 @@
 //! - [`report`]: data -> Markdown / LaTeX (pure), and the report writer.
 //! - [`cli`]: raw arguments -> validated configuration.
 
+pub mod adhesion;
 pub mod asymptotics;
 pub mod cli;
 pub mod model;

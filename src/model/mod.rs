@@ -5,11 +5,13 @@
 //! Validation happens when a problem is built ([`ModelError`] names the parameter, its value and
 //! the valid range); solvers may assume a validated problem.
 
+pub mod adhesion;
 pub mod error;
 pub mod material;
 pub mod punch;
 pub mod sliding;
 
+pub use adhesion::{AdhesionProblem, AdhesionSize};
 pub use error::ModelError;
 pub use material::Material;
 pub use punch::{Period, PunchShape};

@@ -1,0 +1,86 @@
+//! Chebyshev interpolation on tau in [0, 1] (x = 2 tau - 1) in MPFR: nodes of the first kind,
+//! coefficients, Clenshaw evaluation, and the integral int_0^T.
+
+use rug::Float;
+
+/// Chebyshev points of the first kind mapped to (0, 1): tau_i = (1 + cos(pi (i + 1/2)/n))/2.
+pub fn nodes(n: usize, prec: u32) -> Vec<Float> {
+    let pi = Float::with_val(prec, rug::float::Constant::Pi);
+    (0..n)
+        .map(|i| {
+            let ang = Float::with_val(prec, &pi * (2 * i + 1) as u32) / (2 * n) as u32;
+            (ang.cos() + 1u32) / 2u32
+        })
+        .collect()
+}
+
+/// Coefficients c_j of the interpolant sum_j c_j T_j(2 tau - 1) through values at [`nodes`].
+pub fn coefficients(values: &[Float], prec: u32) -> Vec<Float> {
+    let n = values.len();
+    let pi = Float::with_val(prec, rug::float::Constant::Pi);
+    (0..n)
+        .map(|j| {
+            let mut acc = Float::with_val(prec, 0);
+            for (i, v) in values.iter().enumerate() {
+                let ang = Float::with_val(prec, &pi * (j * (2 * i + 1)) as u32) / (2 * n) as u32;
+                acc += ang.cos() * v;
+            }
+            let scale = if j == 0 { 1u32 } else { 2u32 };
+            acc * scale / n as u32
+        })
+        .collect()
+}
+
+/// Clenshaw evaluation of sum_j c_j T_j(x).
+pub fn evaluate(coeffs: &[Float], x: &Float, prec: u32) -> Float {
+    let mut b1 = Float::with_val(prec, 0);
+    let mut b2 = Float::with_val(prec, 0);
+    let two_x = Float::with_val(prec, x * 2u32);
+    for c in coeffs.iter().skip(1).rev() {
+        let b0 = Float::with_val(prec, &two_x * &b1) - &b2 + c;
+        b2 = b1;
+        b1 = b0;
+    }
+    match coeffs.first() {
+        Some(c0) => Float::with_val(prec, x * &b1) - &b2 + c0,
+        None => Float::with_val(prec, 0),
+    }
+}
+
+/// int_0^T sum_j c_j T_j(2 tau - 1) d tau for T in [0, 1].
+pub fn integral(coeffs: &[Float], t_upper: &Float, prec: u32) -> Float {
+    // Antiderivative in x of sum c_j T_j: coefficients d_k, then (1/2)(D(x_T) - D(-1)).
+    let n = coeffs.len();
+    let mut d = vec![Float::with_val(prec, 0); n + 2];
+    for (j, c) in coeffs.iter().enumerate() {
+        match j {
+            0 => d[1] += c,
+            1 => d[2] += Float::with_val(prec, c / 4u32),
+            _ => {
+                d[j + 1] += Float::with_val(prec, c / (2 * (j + 1)) as u32);
+                d[j - 1] -= Float::with_val(prec, c / (2 * (j - 1)) as u32);
+            }
+        }
+    }
+    let x = Float::with_val(prec, t_upper * 2u32) - 1u32;
+    let m1 = Float::with_val(prec, -1);
+    (evaluate(&d, &x, prec) - evaluate(&d, &m1, prec)) / 2u32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn adhesion_chebyshev_interpolates_and_integrates_exp() {
+        let prec = 128;
+        let t = nodes(30, prec);
+        let v: Vec<Float> = t.iter().map(|x| x.clone().exp()).collect();
+        let c = coefficients(&v, prec);
+        let x = Float::with_val(prec, 0.3);
+        let y = evaluate(&c, &(Float::with_val(prec, &x * 2u32) - 1u32), prec);
+        assert!(Float::with_val(prec, y - x.clone().exp()).abs().to_f64() < 1e-35);
+        let i = integral(&c, &x, prec);
+        assert!(Float::with_val(prec, i - (x.exp() - 1u32)).abs().to_f64() < 1e-35);
+    }
+}

@@ -1,0 +1,247 @@
+//! The regularised kernels of the incremental (Mossakovskii) method, THEORY.md section 4.
+//!
+//! With chi = pi x/L, eta = chi s (s in (0, 1)) and sinc z = sin z/z, the kernel of the Volterra
+//! equation factors as
+//!   K(chi, chi s) chi = w(s) G(chi, s),  w(s) = (1+s)^{-1/2+i eps} (1-s)^{-1/2-i eps},
+//!   G(chi, s) = cos(chi (1 - 2 i eps s)) (sinc(chi(1+s))/sinc(chi(1-s)))^{i eps}
+//!               / sqrt(sinc(chi(1+s)) sinc(chi(1-s))),
+//! where w is the half-range weight of the moments M_m (THEORY.md section 5) and G is analytic,
+//! even in chi, G(0, s) = 1. Likewise the flat-punch stress sigma_flat(x; a') of THEORY.md
+//! section 4, integrated against dP2(a') over a' = a r, r in (sigma, 1), sigma = x/a, becomes after
+//! r = sqrt(sigma^2 + (1 - sigma^2) y^2) (which removes the inverse square root)
+//!   (q2 + i q1)/(E* k a) = (cosh(pi eps)/pi) sqrt(1 - sigma^2)
+//!      int_0^1 cos(lambda(sigma - 2 i eps r)) (r + sigma)^{2 i eps} ((1 - sigma^2) y^2)^{-i eps}
+//!      (sinc(lambda(r+sigma))/sinc(lambda(r-sigma)))^{i eps}
+//!      / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) F(r^2) dy,
+//! with P'(eta) = eta f(eta^2), F(tau) = f(lambda^2 tau). At lambda = 0 (single punch) and eps = 0
+//! this is Hertz: F = pi, q2 = E* k a sqrt(1 - sigma^2).
+
+use rug::Float;
+
+/// sinc z = sin z / z (1 at z = 0).
+pub fn sinc(z: &Float, prec: u32) -> Float {
+    if z.is_zero() {
+        return Float::with_val(prec, 1u32);
+    }
+    Float::with_val(prec, z.sin_ref()) / z
+}
+
+/// s w(s) G(chi, s) as (re, im) for s with complement c = 1 - s (both accurate).
+pub fn volterra_integrand(s: &Float, c: &Float, chi: &Float, eps: &Float, prec: u32) -> (Float, Float) {
+    let one_p = Float::with_val(prec, s + 1u32);
+    let a = sinc(&Float::with_val(prec, chi * &one_p), prec);
+    let b = sinc(&Float::with_val(prec, chi * c), prec);
+    let mag = Float::with_val(prec, &one_p * c) * &a * &b;
+    let mag = Float::with_val(prec, s / mag.sqrt());
+    let theta = Float::with_val(prec, one_p.ln_ref()) - Float::with_val(prec, c.ln_ref())
+        + Float::with_val(prec, a.ln_ref())
+        - Float::with_val(prec, b.ln_ref());
+    let theta = theta * eps;
+    let y = Float::with_val(prec, chi * s) * eps * 2u32;
+    let (cr, ci) = cos_minus_i(chi, &y, prec);
+    rotate(&mag, &theta, &cr, &ci, prec)
+}
+
+/// cos(x - i y) = cos x cosh y + i sin x sinh y.
+fn cos_minus_i(x: &Float, y: &Float, prec: u32) -> (Float, Float) {
+    let (sx, cx) = x.clone().sin_cos(Float::new(prec));
+    let (shy, chy) = y.clone().sinh_cosh(Float::new(prec));
+    (cx * chy, sx * shy)
+}
+
+/// mag e^{i theta} (cr + i ci).
+fn rotate(mag: &Float, theta: &Float, cr: &Float, ci: &Float, prec: u32) -> (Float, Float) {
+    let (st, ct) = theta.clone().sin_cos(Float::new(prec));
+    let re = Float::with_val(prec, &ct * cr) - Float::with_val(prec, &st * ci);
+    let im = Float::with_val(prec, &ct * ci) + Float::with_val(prec, &st * cr);
+    (re * mag, im * mag)
+}
+
+/// The stress integrand without F(r^2), at node y (complement of y not needed), as
+/// (re, im, r^2). `one_minus_sigma_sq` = 1 - sigma^2 > 0 (rounded once from the exact point).
+pub fn stress_integrand(
+    sigma: &Float,
+    one_minus_sigma_sq: &Float,
+    y: &Float,
+    lambda: &Float,
+    eps: &Float,
+    prec: u32,
+) -> (Float, Float, Float) {
+    let y2d = Float::with_val(prec, y * y) * one_minus_sigma_sq; // r^2 - sigma^2
+    let r2 = Float::with_val(prec, sigma * sigma) + &y2d;
+    let r = Float::with_val(prec, r2.sqrt_ref());
+    let rps = Float::with_val(prec, &r + sigma);
+    let rms = Float::with_val(prec, &y2d / &rps);
+    let a = sinc(&Float::with_val(prec, lambda * &rps), prec);
+    let b = sinc(&Float::with_val(prec, lambda * &rms), prec);
+    let mag = Float::with_val(prec, &a * &b).sqrt().recip();
+    let theta = Float::with_val(prec, rps.ln_ref()) * 2u32 - Float::with_val(prec, y2d.ln_ref())
+        + Float::with_val(prec, a.ln_ref())
+        - Float::with_val(prec, b.ln_ref());
+    let theta = theta * eps;
+    let x = Float::with_val(prec, lambda * sigma);
+    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    let (cr, ci) = cos_minus_i(&x, &yy, prec);
+    let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
+    (re, im, r2)
+}
+
+/// f64 versions of the two integrands (method 2).
+pub mod f64k {
+    fn sinc(z: f64) -> f64 {
+        if z == 0.0 {
+            1.0
+        } else {
+            z.sin() / z
+        }
+    }
+    fn rotate(mag: f64, theta: f64, cr: f64, ci: f64) -> (f64, f64) {
+        let (st, ct) = theta.sin_cos();
+        (mag * (ct * cr - st * ci), mag * (ct * ci + st * cr))
+    }
+    /// s w(s) (no G): the lambda -> 0 factor, with complement c.
+    pub fn weight_s(s: f64, c: f64, eps: f64) -> (f64, f64) {
+        let one_p = 1.0 + s;
+        let mag = s / (one_p * c).sqrt();
+        let theta = eps * (one_p.ln() - c.ln());
+        rotate(mag, theta, 1.0, 0.0)
+    }
+    /// v-form of the stress integrand (see [`super::stress_integrand_v`]): (re, im, r^2).
+    pub fn stress_integrand_v(sigma: f64, v: f64, lambda: f64, eps: f64) -> (f64, f64, f64) {
+        let (sh, ch) = ((0.5 * v).sinh(), (0.5 * v).cosh());
+        let r = sigma * v.cosh();
+        let (rps, rms) = (2.0 * sigma * ch * ch, 2.0 * sigma * sh * sh);
+        let a = sinc(lambda * rps);
+        let b = sinc(lambda * rms);
+        let mag = r / (a * b).sqrt();
+        let theta = eps * (2.0 * (ch / sh).ln() + (a / b).ln());
+        let x = lambda * sigma;
+        let yy = 2.0 * eps * lambda * r;
+        let (cr, ci) = (x.cos() * yy.cosh(), x.sin() * yy.sinh());
+        let (re, im) = rotate(mag, theta, cr, ci);
+        (re, im, r * r)
+    }
+    /// Stress integrand without F(r^2): (re, im, r^2).
+    pub fn stress_integrand(sigma: f64, omss: f64, y: f64, lambda: f64, eps: f64) -> (f64, f64, f64) {
+        let y2d = y * y * omss;
+        let r2 = sigma * sigma + y2d;
+        let r = r2.sqrt();
+        let rps = r + sigma;
+        let rms = y2d / rps;
+        let a = sinc(lambda * rps);
+        let b = sinc(lambda * rms);
+        let mag = 1.0 / (a * b).sqrt();
+        let theta = eps * (2.0 * rps.ln() - y2d.ln() + a.ln() - b.ln());
+        let x = lambda * sigma;
+        let yy = 2.0 * eps * lambda * r;
+        let (cr, ci) = (x.cos() * yy.cosh(), x.sin() * yy.sinh());
+        let (re, im) = rotate(mag, theta, cr, ci);
+        (re, im, r2)
+    }
+}
+
+/// L sigma_flat(x; a) for the unit-load adhesive flat punch on [-a, a] (THEORY.md section 4):
+/// cosh(pi eps) cos(chi - 2 i eps lambda) (sin(lambda+chi)/sin(lambda-chi))^{i eps}
+/// / sqrt(sin^2 lambda - sin^2 chi), |chi| < lambda, in f64 as (re, im) = (q2, q1) part;
+/// `lp` = lambda + chi and `lm` = lambda - chi are passed separately (accurate near the ends).
+/// At eps = 0 it is Sadowsky's cos(chi)/sqrt(sin^2 lambda - sin^2 chi).
+pub fn flat_punch_stress_f64(chi: f64, lp: f64, lm: f64, lambda: f64, eps: f64) -> (f64, f64) {
+    let ch = (std::f64::consts::PI * eps).cosh();
+    let (sp, sm) = (lp.sin(), lm.sin());
+    let mag = ch / (sp * sm).sqrt();
+    let theta = eps * (sp.ln() - sm.ln());
+    let (cr, ci) = (chi.cos() * (2.0 * eps * lambda).cosh(), chi.sin() * (2.0 * eps * lambda).sinh());
+    let (st, ct) = theta.sin_cos();
+    (mag * (ct * cr - st * ci), mag * (ct * ci + st * cr))
+}
+
+/// Per-node constants of the Volterra integrand (independent of chi): s^2,
+/// ln((1+s)/(1-s)) and s/sqrt((1+s)(1-s)), to evaluate [`volterra_integrand`] with fewer
+/// transcendental calls.
+#[derive(Debug, Clone)]
+pub struct VolterraNodes {
+    /// s^2.
+    pub s2: Vec<Float>,
+    /// ln((1+s)/(1-s)).
+    pub log_ratio: Vec<Float>,
+    /// s/sqrt((1+s)(1-s)).
+    pub amp: Vec<Float>,
+    /// 1 + s.
+    pub one_p: Vec<Float>,
+}
+
+impl VolterraNodes {
+    /// From the nodes s and complements c.
+    pub fn new(s: &[Float], c: &[Float], prec: u32) -> Self {
+        let mut out = VolterraNodes { s2: vec![], log_ratio: vec![], amp: vec![], one_p: vec![] };
+        for (sj, cj) in s.iter().zip(c) {
+            let one_p = Float::with_val(prec, sj + 1u32);
+            out.s2.push(Float::with_val(prec, sj * sj));
+            out.log_ratio.push(Float::with_val(prec, &one_p / cj).ln());
+            out.amp.push(Float::with_val(prec, sj / Float::with_val(prec, &one_p * cj).sqrt()));
+            out.one_p.push(one_p);
+        }
+        out
+    }
+
+    /// Same value as [`volterra_integrand`] at node j; `sc_chi` = (sin chi, cos chi).
+    pub fn integrand(&self, j: usize, s: &Float, c: &Float, chi: &Float, sc_chi: &(Float, Float), eps: &Float, prec: u32) -> (Float, Float) {
+        let a = sinc(&Float::with_val(prec, chi * &self.one_p[j]), prec);
+        let b = sinc(&Float::with_val(prec, chi * c), prec);
+        let ab = Float::with_val(prec, &a * &b);
+        let mag = Float::with_val(prec, &self.amp[j] / ab.sqrt());
+        let theta = (Float::with_val(prec, &a / &b).ln() + &self.log_ratio[j]) * eps;
+        let y = Float::with_val(prec, chi * s) * eps * 2u32;
+        let (shy, chy) = y.sinh_cosh(Float::new(prec));
+        let cr = Float::with_val(prec, &sc_chi.1 * &chy);
+        let ci = Float::with_val(prec, &sc_chi.0 * &shy);
+        rotate(&mag, &theta, &cr, &ci, prec)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn adhesion_precomputed_integrand_matches_direct() {
+        let prec = 128;
+        let s = Float::with_val(prec, 0.7);
+        let c = Float::with_val(prec, 1u32) - &s;
+        let chi = Float::with_val(prec, 0.9);
+        let eps = Float::with_val(prec, 0.17);
+        let pre = VolterraNodes::new(&[s.clone()], &[c.clone()], prec);
+        let sc = chi.clone().sin_cos(Float::new(prec));
+        let (r1, i1) = pre.integrand(0, &s, &c, &chi, &sc, &eps, prec);
+        let (r2, i2) = volterra_integrand(&s, &c, &chi, &eps, prec);
+        assert!(Float::with_val(prec, r1 - r2).abs().to_f64() < 1e-35);
+        assert!(Float::with_val(prec, i1 - i2).abs().to_f64() < 1e-35);
+    }
+}
+
+/// The stress integrand in the variable v, r = sigma cosh v (0 < sigma < 1, v in (0, acosh(1/sigma))),
+/// used for small sigma where the y-form of [`stress_integrand`] has branch points at
+/// y = +-i sigma/sqrt(1 - sigma^2) close to its end y = 0 (slow tanh-sinh convergence). Here
+/// r dr/sqrt(r^2 - sigma^2) = r dv and ((r+sigma)/(r-sigma))^{i eps} = coth(v/2)^{2 i eps}, so
+///   (q2 + i q1)/(E* k a) = (cosh(pi eps)/pi) int_0^{acosh(1/sigma)} cos(lambda(sigma - 2 i eps r))
+///       coth(v/2)^{2 i eps} (sinc(lambda(r+sigma))/sinc(lambda(r-sigma)))^{i eps}
+///       / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) r F(r^2) dv,
+/// whose singularities in v lie at distance pi from the real axis. Returns (re, im, r^2) without
+/// F(r^2) and without the prefactor, times r.
+pub fn stress_integrand_v(sigma: &Float, v: &Float, lambda: &Float, eps: &Float, prec: u32) -> (Float, Float, Float) {
+    let half = Float::with_val(prec, v / 2u32);
+    let (sh, ch) = half.sinh_cosh(Float::new(prec));
+    let r = Float::with_val(prec, &ch * &ch) * sigma * 2u32 - sigma; // sigma cosh v
+    let rps = Float::with_val(prec, &ch * &ch) * sigma * 2u32;
+    let rms = Float::with_val(prec, &sh * &sh) * sigma * 2u32;
+    let a = sinc(&Float::with_val(prec, lambda * &rps), prec);
+    let b = sinc(&Float::with_val(prec, lambda * &rms), prec);
+    let mag = Float::with_val(prec, &a * &b).sqrt().recip() * &r;
+    let theta = (Float::with_val(prec, &ch / &sh).ln() * 2u32 + Float::with_val(prec, &a / &b).ln()) * eps;
+    let x = Float::with_val(prec, lambda * sigma);
+    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    let (cr, ci) = cos_minus_i(&x, &yy, prec);
+    let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
+    let r2 = Float::with_val(prec, &r * &r);
+    (re, im, r2)
+}
