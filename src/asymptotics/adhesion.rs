@@ -45,7 +45,8 @@
 //!    triangular, p_N divides by D_N = Re M_{2N+1}; it is solved over polynomials with the
 //!    common denominator D_0 ... D_N (`p_N = n_N/(D_0 ... D_N)`,
 //!    `n_N = -Re sum_n n_{N-n} T_{n,N-n} D_{N-n+1} ... D_{N-1}`) and reduced once at the end.
-//! 4. The slope (Psi): `psi = -(2 k/pi) (pi/L)^... ` gives, power by power,
+//! 4. The slope (Psi): with chi = pi x/L, `psi = -(2 k L/pi^2) pi sum_J chi^(2J+1) Im I_J`
+//!    gives, power by power, the recurrence's second half [3.17]
 //!    `psi_J = -2 Im I_J = -2 Im sum_{j=0}^{J} p_j T_{J-j,j}` and `A_{2J+1} = k (pi/L)^(2J) psi_J`,
 //!    `A_{2J} = 0`: psi is a fixed function of x (it is frozen when x enters the contact), so the
 //!    A_n do not depend on lambda. `psi_0 = -2 Im M_1/Re M_1 = -2 eps B/(1 - 2 eps S)`: the
@@ -68,7 +69,7 @@
 //! Suggested JSON (strings for every number; exact forms as `Frac` text, `(num)/(den)`):
 //! ```text
 //! { "object": "adhesion", "order": N, "symbols": ["eps", "B", "S"],
-//!   "C_P": "pi*(-1/2)/(S*eps - 1/2)"            // C_P = pi * load_constant
+//!   "C_P": "pi*(-1/4)/(S*eps - 1/2)",           // C_P = pi * load_constant
 //!   "A": [ {"n": 1, "coefficient": "<psi_0>", "scale": "k"},
 //!          {"n": 3, "coefficient": "<psi_1>", "scale": "k (pi/L)^2"}, ... ],   // A_n, n <= N+1
 //!   "c": [ {"power": 0, "value": "1"}, {"power": 2, "value": "<c_2>"}, ... ],  // through lambda^N
@@ -79,8 +80,30 @@
 //! 30-digit value appended when nu is given ([`AdhesionValues`]).
 //!
 //! # Cost
-//! See the tests: order 12 (A_n through n = 13, c_n through lambda^12) takes a few seconds in the
-//! test profile, dominated by the final gcd reductions.
+//! Order 12 (A_n through n = 13, c_n through lambda^12): about 15 s without the stress kernels,
+//! 60 s with them (test profile, opt-level 2, 2 shared cores; `cargo test -p periodic-contact
+//! --lib asymptotics::adhesion`). The time is in the reductions of the rational functions; the
+//! engine's gcd certifies coprime pairs by univariate images (`exact_series::frac`), and the
+//! known denominator factors D_i are cancelled by exact division before (`frac`).
+//!
+//! # Verification (tests, each against an independent computation)
+//! - nu = 1/2: c_n equal the coefficients of ln sec(lambda)/(lambda^2/2) (Kuznetsov [2.15],
+//!   computed from -log cos over Q) through lambda^12, psi = 0, h_0 = tau (Hertz).
+//! - C_P and A_1 equal the single-punch check values of THEORY.md section 5 exactly; A_1 also
+//!   satisfies the fixed-a solvability condition of the single punch, int (2y - i A_1 |y|)
+//!   dy/omega(y) = 0, evaluated by MPFR quadrature (no moments, no recurrence), to 2^-(prec-16).
+//! - Signs stated in the paper's text: A_1 < 0, A_3 < 0 (delta_{1,3} > 0) and c_2 > 0 on [0, 1/2).
+//! - p_j and psi_J agree to 1e-11 with method 2 of `crate::adhesion` (f64, numerical Taylor
+//!   coefficients of G at quadrature nodes) at nu = 0, 1/4, 9/20, 1/2 through order 12.
+//! - Against method 1 of `crate::adhesion` (full MPFR solution, 30 digits): the remainders of
+//!   P2, psi and q2 + i q1 (x/a = 1/2) after m = 0..4 corrections have observed orders
+//!   2m+2 +- 0.01 between lambda = pi/32 and pi/64, at nu = 0, 0.3, 0.45.
+//!
+//! # Convergence (observed, not proven)
+//! The lambda^2-series of P2 has radius pi/2 at nu = 1/2 (ln sec); for nu < 1/2 the recurrence
+//! divides by D_N = Re M_{2N+1}, which method 2 of `crate::adhesion` observed to change sign near
+//! N ~ 302 at nu = 0 (see `crate::adhesion::series_f64`): the exact coefficients then have a pole
+//! in nu, and the series is at best slowly convergent at small nu.
 
 use crate::adhesion::constants;
 use crate::model::Material;
@@ -121,7 +144,8 @@ pub struct AdhesionExpansion {
     /// `p_j` of step 2 (`P'(eta) = pi sum_j p_j eta^(2j+1)`), j = 0..=N/2.
     pub volterra: Vec<Frac>,
     /// Stress kernels h_N(xi, tau) (coefficient of lambda^(2N) at index 2N; odd indices zero),
-    /// over Q(i)(eps, B, S)[xi, tau] [3.19]; see the module doc for the integral.
+    /// over Q(i)(eps, B, S)[xi, tau] [3.19]; see the module doc for the integral. Empty
+    /// (`prec() == 0`) when built without stresses ([`adhesion_expansion_with`]).
     pub stress: Series<Gaussian<Frac>>,
 }
 
@@ -219,16 +243,28 @@ fn frac(num: Poly, dens: &[Poly]) -> Frac {
     Frac::new(num, product(&rest)).expect("the denominators D_i = Re M_(2i+1) are non-zero polynomials")
 }
 
-/// The exact expansion through lambda^order (module doc, steps 1-6).
+/// The exact expansion through lambda^order (module doc, steps 1-6), stress kernels included.
+/// Cost (test profile, 2 shared cores): order 8 about 1.3 s, order 10 about 12-18 s, order 12
+/// about 60 s, three quarters of it in the stress kernels; see [`adhesion_expansion_with`].
 ///
 /// ```
 /// use periodic_contact::asymptotics::adhesion::adhesion_expansion;
 /// use exact_series::Ring;
 /// let e = adhesion_expansion(2).unwrap();
-/// assert_eq!(e.load_constant.text(), "(-1/2)/(S*eps - 1/2)");
+/// assert_eq!(e.load_constant.text(), "(-1/4)/(S*eps - 1/2)");
 /// assert_eq!(e.a_coefficient(1).unwrap().text(), "(B*eps)/(S*eps - 1/2)");
 /// ```
 pub fn adhesion_expansion(order: usize) -> Result<AdhesionExpansion, SeriesError> {
+    adhesion_expansion_with(order, true)
+}
+
+/// As [`adhesion_expansion`]; with `with_stress = false` the stress kernels are skipped
+/// ([`AdhesionExpansion::stress`] is then the empty series, `prec() == 0`): what a table of A_n
+/// and c_n needs (order 12 in about 15 s instead of 60 s).
+pub fn adhesion_expansion_with(
+    order: usize,
+    with_stress: bool,
+) -> Result<AdhesionExpansion, SeriesError> {
     let jmax = order / 2;
     let prec = 2 * jmax + 1;
     let s_sym = symbol(SVAR)?;
@@ -276,8 +312,8 @@ pub fn adhesion_expansion(order: usize) -> Result<AdhesionExpansion, SeriesError
     let xi = Poly::symbol(symbol(XI)?);
     let tau = Poly::symbol(symbol(TAU)?);
     let h = kernel_factor(prec, &xi, &tau)?;
-    let mut stress = vec![Gaussian::<Frac>::zero(); prec];
-    for nn in 0..=jmax {
+    let mut stress = vec![Gaussian::<Frac>::zero(); if with_stress { prec } else { 0 }];
+    for nn in (0..=jmax).filter(|_| with_stress) {
         let mut acc = GPoly::zero();
         let mut tau_pow = tau.clone();
         for (j, nj) in num.iter().enumerate().take(nn + 1) {

@@ -243,3 +243,33 @@ fn stress_leading_term_is_hertz_at_nu_half() {
         }
     }
 }
+
+/// Without stresses the same A_n, c_n, p_j.
+#[test]
+fn without_stress_same_coefficients() {
+    let a = adhesion_expansion_with(6, false).unwrap();
+    let b = adhesion_expansion(6).unwrap();
+    assert_eq!(a.load, b.load);
+    assert_eq!(a.slope, b.slope);
+    assert_eq!(a.volterra, b.volterra);
+    assert_eq!(a.stress.prec(), 0);
+    assert_eq!(b.stress.prec(), 7);
+}
+
+/// The MPFR values are correct to the requested precision (30+ digits): the order-12 values at
+/// 128 bits agree with those at 256 bits to 2^-120 relative, at nu = 0 (largest eps) and 0.3.
+#[test]
+fn values_stable_across_precisions() {
+    let e = order12();
+    for nu_v in [nu(0, 1), nu(3, 10)] {
+        let lo = adhesion_values(e, &nu_v, 128).unwrap();
+        let hi = adhesion_values(e, &nu_v, 256).unwrap();
+        let pairs = lo.load.iter().zip(&hi.load).chain(lo.slope.iter().zip(&hi.slope));
+        for (x, y) in pairs {
+            let d = Float::with_val(256, x - y).abs().to_f64();
+            assert!(d <= 2f64.powi(-120) * y.clone().abs().to_f64().max(1e-300), "{x} vs {y}");
+        }
+        // 30 digits printed for the CLI: e.g. c_2 at nu = 0.
+        eprintln!("nu {nu_v}: C_P = {:.32}, c_2 = {:.32}, A_1/k = {:.32}", hi.load_constant, hi.load[2], hi.slope[1]);
+    }
+}
