@@ -145,7 +145,7 @@ fn dense_univariate(p: &Poly, x: Symbol) -> Vec<Q> {
 fn univariate_gcd_degree(a: Vec<Q>, b: Vec<Q>) -> usize {
     let (mut a, mut b) = if a.len() >= b.len() { (a, b) } else { (b, a) };
     loop {
-        while b.last().is_some_and(|c| Zero::is_zero(c)) {
+        while b.last().is_some_and(<Q as Zero>::is_zero) {
             b.pop();
         }
         if b.is_empty() {
@@ -160,7 +160,7 @@ fn univariate_gcd_degree(a: Vec<Q>, b: Vec<Q>) -> usize {
             for (k, c) in b[..b.len() - 1].iter().enumerate() {
                 a[off + k] -= &lead * c;
             }
-            while a.last().is_some_and(|c| Zero::is_zero(c)) {
+            while a.last().is_some_and(<Q as Zero>::is_zero) {
                 a.pop();
             }
         }

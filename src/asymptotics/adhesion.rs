@@ -284,10 +284,10 @@ pub fn adhesion_expansion_with(
     let mut num: Vec<Poly> = vec![Poly::one()];
     for nn in 1..=jmax {
         let mut acc = Poly::zero();
-        for n in 1..=nn {
+        for (n, tn) in t.iter().enumerate().take(nn + 1).skip(1) {
             let j = nn - n;
             let f = num[j].mul(&product(&d[j + 1..nn]));
-            acc = acc.add(&f.mul(&t[n][j].re));
+            acc = acc.add(&f.mul(&tn[j].re));
         }
         num.push(acc.neg());
     }

@@ -1,3 +1,4 @@
+#![allow(clippy::needless_range_loop)] // index loops over coefficient tables read best here
 use super::*;
 use std::sync::OnceLock;
 
@@ -138,7 +139,7 @@ fn against_f64_series_method() {
     let order = 12;
     let e = order12();
     for nu_v in [nu(0, 1), nu(1, 4), nu(9, 20), nu(1, 2)] {
-        let v = adhesion_values(&e, &nu_v, 64).unwrap();
+        let v = adhesion_values(e, &nu_v, 64).unwrap();
         let sol = crate::adhesion::series_f64::solve(&material(&nu_v), 0.3).unwrap();
         let pi = std::f64::consts::PI;
         for j in 0..=order / 2 {
@@ -190,7 +191,7 @@ fn remainders_against_full_solution() {
                 AdhesionSize::HalfWidth(a.clone()),
             )
             .unwrap();
-            let sol = solve_mpfr_with(&problem, &[xi.clone()], VolterraParams::for_digits(30), false).unwrap();
+            let sol = solve_mpfr_with(&problem, std::slice::from_ref(&xi), VolterraParams::for_digits(30), false).unwrap();
             let lambda = Float::with_val(prec, &sol.lambda);
             let a_f = crate::numerics::exact::to_float(&a, prec);
             let load = Float::with_val(prec, &sol.normal_load / (Float::with_val(prec, &a_f * &a_f) * &v.load_constant));
