@@ -274,3 +274,21 @@ fn values_stable_across_precisions() {
         eprintln!("nu {nu_v}: C_P = {:.32}, c_2 = {:.32}, A_1/k = {:.32}", hi.load_constant, hi.load[2], hi.slope[1]);
     }
 }
+
+/// Timing of the table the CLI prints (run with `--ignored --nocapture`).
+#[test]
+#[ignore]
+fn timing_order_12_without_stress() {
+    let t0 = std::time::Instant::now();
+    let e = adhesion_expansion_with(12, false).unwrap();
+    eprintln!("order 12 without stress: {:?}", t0.elapsed());
+    let t0 = std::time::Instant::now();
+    let v = adhesion_values(&e, &nu(0, 1), 100).unwrap();
+    eprintln!("values at 100 bits: {:?}", t0.elapsed());
+    for n in (1..=13).step_by(2) {
+        eprintln!("A_{n}/k(pi/L)^{} at nu = 0: {:.30}", n - 1, v.slope[n]);
+    }
+    for n in (0..=12).step_by(2) {
+        eprintln!("c_{n} at nu = 0: {:.30}", v.load[n]);
+    }
+}
