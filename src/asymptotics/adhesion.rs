@@ -15,7 +15,7 @@
 //! Coefficients are exact elements of Q(eps, B, S) (B = pi/cosh(pi eps), S = S(eps), both kept as
 //! symbols: they are transcendental in eps), the stress kernels of Q(i)(eps, B, S)[xi, tau].
 //!
-//! # Derivation [reconstructed] (the paper prints only A1, A3 and c2; its formulas are lost)
+//! # Derivation \[reconstructed\] (the paper prints only A1, A3 and c2; its formulas are lost)
 //! Start from the incremental (Mossakovskii) form of THEORY.md section 4: with
 //! `P2 = E* k (L/pi)^2 P(lambda)`,
 //! ```text
@@ -23,21 +23,21 @@
 //!   (Psi) psi(x) = -(2 k x/(pi chi)) Im I(chi) = -(2 k L/pi^2) Im I(chi),
 //!   K(chi, eta) = cos(chi - 2 i eps eta) sin(chi+eta)^(-1/2+i eps) sin(chi-eta)^(-1/2-i eps).
 //! ```
-//! 1. Scaling eta = chi s, s in (0, 1) [reconstructed]: since sin z = z sinc z,
+//! 1. Scaling eta = chi s, s in (0, 1) \[reconstructed\]: since sin z = z sinc z,
 //!    `K(chi, chi s) chi = w(s) G(chi, s)` with the half-range weight
 //!    `w(s) = (1+s)^(-1/2+i eps) (1-s)^(-1/2-i eps)` (THEORY.md section 5, the weight of M_m) and
 //!    `G(chi, s) = cos(chi (1 - 2 i eps s)) sinc(chi (1+s))^(-1/2+i eps) sinc(chi (1-s))^(-1/2-i eps)
 //!     = sum_n G_n(s) chi^(2n)`,
-//!    G_0 = 1, G_n a polynomial of degree 2n in s over Q(i)[eps] (even in chi: sinc and cos are
+//!    G_0 = 1, G_n a polynomial of degree 2n in s over Q(i)\[eps\] (even in chi: sinc and cos are
 //!    even). Computed by the engine ([`kernel_factor`]).
 //! 2. Ansatz `P'(eta) = pi sum_j p_j eta^(2j+1)` (P2 is even in lambda, THEORY.md section 2)
-//!    [reconstructed]. Then
+//!    \[reconstructed\]. Then
 //!    `I(chi) = pi sum_N chi^(2N+1) I_N`, `I_N = sum_{n+j=N} p_j T_{n,j}`,
 //!    `T_{n,j} = int_0^1 w(s) G_n(s) s^(2j+1) ds = sum_m [s^m]G_n M_{m+2j+1}`,
 //!    with the half-range moments M_m (THEORY.md section 4): `M_0 = B/2 + i S`,
 //!    `M_1 = 1 + 2 i eps M_0`, `(m+1) M_{m+1} = m M_{m-1} + 2 i eps M_m` — the only place where B
 //!    and S enter. T_{0,j} = M_{2j+1}.
-//! 3. The recurrence (equating powers of chi in (V)) [reconstructed]:
+//! 3. The recurrence (equating powers of chi in (V)) \[reconstructed\]:
 //!    ```text
 //!      p_0 = 1/Re M_1,
 //!      p_N Re M_{2N+1} = - Re sum_{n=1}^{N} p_{N-n} T_{n,N-n}      (N >= 1),
@@ -57,7 +57,7 @@
 //!    `c_{2j} = p_j/((j+1) p_0)`.
 //! 6. The stresses: `q2 + i q1 = int_{a'=|x|}^{a} sigma_flat(x; a') dP2(a')` (THEORY.md section 4),
 //!    sigma_flat = (ch/L) K(eta, chi) (the flat-punch stress is K with its arguments swapped),
-//!    ch = cosh(pi eps) = pi/B. Scaling chi = lambda xi, eta = lambda tau [reconstructed]:
+//!    ch = cosh(pi eps) = pi/B. Scaling chi = lambda xi, eta = lambda tau \[reconstructed\]:
 //!    `K(lambda tau, lambda xi) lambda = (tau+xi)^(-1/2+i eps) (tau-xi)^(-1/2-i eps) H(lambda; xi, tau)`,
 //!    `H = cos(lambda (xi - 2 i eps tau)) sinc(lambda (tau+xi))^(-1/2+i eps)
 //!    sinc(lambda (tau-xi))^(-1/2-i eps) = sum_n H_n(xi, tau) lambda^(2n)` (the same
