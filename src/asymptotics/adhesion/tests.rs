@@ -292,3 +292,20 @@ fn timing_order_12_without_stress() {
         eprintln!("c_{n} at nu = 0: {:.30}", v.load[n]);
     }
 }
+
+/// The B-structure of the module doc: c_n and p_j free of B, A_{2J+1}/B free of B, h_N free of B.
+#[test]
+fn b_enters_only_as_factor_of_the_slope() {
+    let e = adhesion_expansion(8).unwrap();
+    let b = sym(B);
+    let free = |f: &Frac| f.numer().degree_in(b) == 0 && f.denom().degree_in(b) == 0;
+    assert!(e.load.coeffs().iter().all(free));
+    assert!(e.volterra.iter().all(free));
+    assert!(e.stress.coeffs().iter().all(|h| free(&h.re) && free(&h.im)));
+    for n in (1..=9).step_by(2) {
+        let a = e.slope.coeff(n).unwrap();
+        assert!(a.numer().degree_in(b) == 1 && a.denom().degree_in(b) == 0, "A_{n}");
+        let over_b = a.numer().div_exact(&Poly::symbol(b)).unwrap();
+        assert_eq!(over_b.degree_in(b), 0);
+    }
+}
