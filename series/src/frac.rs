@@ -118,6 +118,83 @@ fn monic(p: &Poly) -> Poly {
     p.scale(&lc.recip())
 }
 
+/// Dense coefficients (index = exponent) of a polynomial in `x` alone.
+fn dense_univariate(p: &Poly, x: Symbol) -> Vec<Q> {
+    let mut out = vec![<Q as Zero>::zero(); p.degree_in(x) as usize + 1];
+    for (m, q) in p.terms() {
+        let (_, e) = m.remove(x);
+        out[e as usize] += q;
+    }
+    out
+}
+
+/// Degree of the gcd of two univariate polynomials over Q (dense, non-zero leading
+/// coefficients): Euclid with monic remainders.
+fn univariate_gcd_degree(a: Vec<Q>, b: Vec<Q>) -> usize {
+    let (mut a, mut b) = if a.len() >= b.len() { (a, b) } else { (b, a) };
+    loop {
+        while b.last().is_some_and(<Q as Zero>::is_zero) {
+            b.pop();
+        }
+        if b.is_empty() {
+            return a.len().saturating_sub(1);
+        }
+        let lb = b.last().expect("non-empty").recip();
+        b.iter_mut().for_each(|c| *c *= &lb);
+        // a mod b (b monic).
+        while a.len() >= b.len() {
+            let lead = a.pop().expect("non-empty");
+            let off = a.len() + 1 - b.len();
+            for (k, c) in b[..b.len() - 1].iter().enumerate() {
+                a[off + k] -= &lead * c;
+            }
+            while a.last().is_some_and(<Q as Zero>::is_zero) {
+                a.pop();
+            }
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+}
+
+/// A proof that `gcd(a, b)` is a constant, or `false` (inconclusive). For each symbol `x` of
+/// both, the other symbols are set to fixed rationals at which neither leading coefficient in `x`
+/// vanishes; a non-constant common factor `g` involving `x` would survive with its full degree in
+/// `x` (its leading coefficient divides theirs) and divide both images, so a constant univariate
+/// gcd of the images excludes every factor involving `x`. Cheap (univariate Euclid), it spares
+/// the primitive PRS of [`gcd`] on the coprime pairs that dominate fraction arithmetic.
+fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
+    let (sa, sb) = (a.symbols(), b.symbols());
+    let common: Vec<Symbol> = sa.iter().copied().filter(|s| sb.contains(s)).collect();
+    let mut others: Vec<Symbol> = sa.clone();
+    others.extend(sb.iter().copied());
+    others.sort();
+    others.dedup();
+    'vars: for &x in &common {
+        let (da, db) = (a.degree_in(x), b.degree_in(x));
+        for attempt in 0..4i64 {
+            let (mut ia, mut ib) = (a.clone(), b.clone());
+            for (k, &y) in others.iter().filter(|&&y| y != x).enumerate() {
+                // Small, distinct, non-integer points: 3/7, 5/11, 7/13, ... shifted by attempt.
+                let v = Q::new(
+                    (2 * (k as i64 + attempt) + 3).into(),
+                    (4 * (k as i64 + attempt) + 7).into(),
+                );
+                ia = ia.subs(y, &v);
+                ib = ib.subs(y, &v);
+            }
+            if ia.degree_in(x) != da || ib.degree_in(x) != db || ia.is_zero() || ib.is_zero() {
+                continue; // a leading coefficient vanished there: try another point
+            }
+            if univariate_gcd_degree(dense_univariate(&ia, x), dense_univariate(&ib, x)) == 0 {
+                continue 'vars;
+            }
+            return false;
+        }
+        return false;
+    }
+    true
+}
+
 /// The monic gcd of two polynomials in Q[symbols] (gcd(0, 0) = 0).
 pub fn gcd(a: &Poly, b: &Poly) -> Poly {
     if a.is_zero() {
@@ -125,6 +202,9 @@ pub fn gcd(a: &Poly, b: &Poly) -> Poly {
     }
     if b.is_zero() {
         return monic(a);
+    }
+    if coprime_certificate(a, b) {
+        return Poly::one();
     }
     let mut syms = a.symbols();
     syms.extend(b.symbols());
@@ -272,5 +352,35 @@ impl Ring for Frac {
             return Frac::zero();
         }
         Frac { num: self.num.scale(q), den: self.den.clone() }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(s: &str) -> Poly {
+        Poly::var(s).unwrap()
+    }
+
+    /// The coprimality certificate never claims coprime for a common factor, and the gcd is
+    /// unchanged by it.
+    #[test]
+    fn certificate_is_sound() {
+        let (x, y, z) = (p("x"), p("y"), p("z"));
+        let g = x.mul(&y).sub(&z.mul_int(3)).add(&Poly::one()); // xy - 3z + 1
+        let a = g.mul(&x.add(&y.mul(&y)));
+        let b = g.mul(&z.sub(&x));
+        assert!(!coprime_certificate(&a, &b));
+        assert_eq!(gcd(&a, &b), monic(&g));
+        let c = x.mul(&x).add(&y).add(&Poly::one());
+        assert!(coprime_certificate(&a, &c.mul(&z)) || gcd(&a, &c.mul(&z)).is_one());
+        assert!(gcd(&a, &c).is_one());
+        // a factor in one variable only: y^2 - 2 divides both.
+        let h = y.mul(&y).sub(&Poly::from_int(2));
+        assert!(!coprime_certificate(&h.mul(&x), &h.mul(&z)));
+        assert_eq!(gcd(&h.mul(&x), &h.mul(&z)), h);
+        // symbols in neither in common: coprime.
+        assert!(coprime_certificate(&x.add(&Poly::one()), &z));
     }
 }

@@ -2,6 +2,7 @@
 //!
 //! Order convention (THEORY.md section 5): "order N" keeps every term through lambda^N.
 
+pub mod adhesion;
 pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;
