@@ -38,6 +38,8 @@ fn bad_input_is_exit_code_2_with_a_message_naming_the_parameter() {
         (vec!["series", "jacobi", "--order", "4", "--xh", "0"], "--xh"),
         (vec!["series", "nothing", "--order", "4"], "possible values"),
         (vec!["series", "kernel"], "--order"),
+        (vec!["series", "adhesion", "--order", "2", "--nu", "0.6"], "--nu = 3/5: must lie in [0, 1/2]"),
+        (vec!["series", "kernel", "--order", "2", "--nu", "0.3"], "only the adhesion series"),
     ] {
         let (code, out, err) = run(&args);
         assert_eq!(code, 2, "{args:?}: {err}");

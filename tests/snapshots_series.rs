@@ -37,7 +37,7 @@ fn weight_order12() {
 
 #[test]
 fn weight_order12_theta_1_10() {
-    let subs = Substitutions { theta: Some(exact_series::Q::new(1.into(), 10.into())), xh: None, t: None };
+    let subs = Substitutions { theta: Some(exact_series::Q::new(1.into(), 10.into())), xh: None, t: None, nu: None };
     snap("weight_order12_theta_1_10", SeriesObject::Weight, subs);
 }
 
@@ -54,4 +54,11 @@ fn sliding_parabolic_order12() {
 #[test]
 fn sliding_sinusoidal_order12() {
     snap("sliding_sinusoidal_order12", SeriesObject::Sliding(SlidingShape::Sinusoidal), Substitutions::default());
+}
+
+#[test]
+fn adhesion_order12_nu_3_10() {
+    // A_n through n = 13 and c_n through lambda^12, exact in eps, B, S, with their values at nu = 3/10.
+    let subs = Substitutions { nu: Some(exact_series::Q::new(3.into(), 10.into())), ..Substitutions::default() };
+    snap("adhesion_order12_nu_3_10", SeriesObject::Adhesion, subs);
 }

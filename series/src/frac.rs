@@ -175,10 +175,7 @@ fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
             let (mut ia, mut ib) = (a.clone(), b.clone());
             for (k, &y) in others.iter().filter(|&&y| y != x).enumerate() {
                 // Small, distinct, non-integer points: 3/7, 5/11, 7/13, ... shifted by attempt.
-                let v = Q::new(
-                    (2 * (k as i64 + attempt) + 3).into(),
-                    (4 * (k as i64 + attempt) + 7).into(),
-                );
+                let v = Q::new((2 * (k as i64 + attempt) + 3).into(), (4 * (k as i64 + attempt) + 7).into());
                 ia = ia.subs(y, &v);
                 ib = ib.subs(y, &v);
             }

@@ -184,13 +184,7 @@ pub fn kernel_factor(prec: usize, u: &Poly, v: &Poly) -> Result<Series<GPoly>, S
     let sinc = Series::<GPoly>::sinc_series(prec);
     let plus = sinc.rescale_var(&GPoly::real(v.add(u))).pow(&alpha)?;
     let minus = sinc.rescale_var(&GPoly::real(v.sub(u))).pow(&alpha_bar)?;
-    let arg = Series::new(
-        vec![
-            GPoly::zero(),
-            GPoly::new(u.clone(), eps.mul(v).mul_int(-2)),
-        ],
-        prec,
-    );
+    let arg = Series::new(vec![GPoly::zero(), GPoly::new(u.clone(), eps.mul(v).mul_int(-2))], prec);
     Ok(arg.cos()?.mul(&plus).mul(&minus))
 }
 
@@ -221,11 +215,7 @@ fn moment_integral(g: &GPoly, shift: usize, s: Symbol, moments: &[GPoly]) -> GPo
         for (mono, q) in part.terms() {
             let (rest, e) = mono.remove(s);
             let c = Poly::term(&q, rest);
-            let c = if is_im {
-                GPoly::new(Poly::zero(), c)
-            } else {
-                GPoly::real(c)
-            };
+            let c = if is_im { GPoly::new(Poly::zero(), c) } else { GPoly::real(c) };
             out = out.add(&c.mul(&moments[e as usize + shift]));
         }
     }
@@ -269,10 +259,7 @@ pub fn adhesion_expansion(order: usize) -> Result<AdhesionExpansion, SeriesError
 /// As [`adhesion_expansion`]; with `with_stress = false` the stress kernels are skipped
 /// ([`AdhesionExpansion::stress`] is then the empty series, `prec() == 0`): what a table of A_n
 /// and c_n needs (order 12 in about 12 s instead of 60 s; the MPFR values then take 10 ms).
-pub fn adhesion_expansion_with(
-    order: usize,
-    with_stress: bool,
-) -> Result<AdhesionExpansion, SeriesError> {
+pub fn adhesion_expansion_with(order: usize, with_stress: bool) -> Result<AdhesionExpansion, SeriesError> {
     let jmax = order / 2;
     let prec = 2 * jmax + 1;
     let s_sym = symbol(SVAR)?;
@@ -281,11 +268,7 @@ pub fn adhesion_expansion_with(
     let moments = half_range_moments(2 * jmax + 2)?;
     // t[n][j] = T_{n,j}, n + j <= jmax.
     let t: Vec<Vec<GPoly>> = (0..=jmax)
-        .map(|n| {
-            (0..=jmax - n)
-                .map(|j| moment_integral(&g.coeffs()[2 * n], 2 * j + 1, s_sym, &moments))
-                .collect()
-        })
+        .map(|n| (0..=jmax - n).map(|j| moment_integral(&g.coeffs()[2 * n], 2 * j + 1, s_sym, &moments)).collect())
         .collect();
     let d: Vec<Poly> = (0..=jmax).map(|i| moments[2 * i + 1].re.clone()).collect();
     // Numerators n_N of p_N = n_N/(D_0 ... D_N).
@@ -299,9 +282,7 @@ pub fn adhesion_expansion_with(
         }
         num.push(acc.neg());
     }
-    let volterra: Vec<Frac> = (0..=jmax)
-        .map(|j| frac(num[j].clone(), &d[..=j]))
-        .collect();
+    let volterra: Vec<Frac> = (0..=jmax).map(|j| frac(num[j].clone(), &d[..=j])).collect();
     // Load: c_{2j} = n_j/((j+1) D_1 ... D_j).
     let mut load = vec![Frac::zero(); order + 1];
     for (j, nj) in num.iter().enumerate() {
@@ -398,11 +379,7 @@ pub fn symbol_values(nu: &Q, w: u32) -> Result<Vec<(Symbol, Float)>, AdhesionEva
 }
 
 /// Every coefficient of `exp` at Poisson's ratio `nu` (exact), to `prec` bits.
-pub fn adhesion_values(
-    exp: &AdhesionExpansion,
-    nu: &Q,
-    prec: u32,
-) -> Result<AdhesionValues, AdhesionEvalError> {
+pub fn adhesion_values(exp: &AdhesionExpansion, nu: &Q, prec: u32) -> Result<AdhesionValues, AdhesionEvalError> {
     let w = prec + GUARD_BITS;
     let values = symbol_values(nu, w)?;
     let round = |x: Float| Float::with_val(prec, x);
@@ -457,13 +434,7 @@ pub fn stress_coefficient_mpfr(
         let im = Float::with_val(w, &lp - &lm) * &eps;
         let weight = Complex::with_val(w, (re, im)).exp();
         values[4].1 = tau;
-        let hv = Complex::with_val(
-            w,
-            (
-                frac_mpfr(&h.re, &values, w)?,
-                frac_mpfr(&h.im, &values, w)?,
-            ),
-        );
+        let hv = Complex::with_val(w, (frac_mpfr(&h.re, &values, w)?, frac_mpfr(&h.im, &values, w)?));
         acc += weight * hv * &rule.w[k];
     }
     Ok(Some(Complex::with_val(prec, acc * one_m_xi)))

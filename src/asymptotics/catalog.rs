@@ -20,6 +20,9 @@ pub struct Derived {
     pub series: Series<Frac>,
     /// Symbols that may occur in the coefficients.
     pub symbols: Vec<Symbol>,
+    /// Numerical values of the coefficients at a material, when asked for (Problem 2 with
+    /// `--nu`): the parameter as text, and `(power, value to 30 digits)`.
+    pub values: Option<(String, Vec<(usize, String)>)>,
 }
 
 /// The objects that need no physics (foundation issue).
@@ -33,6 +36,8 @@ pub enum SeriesObject {
     Jacobi,
     /// Problem 1 expansions in Lambda (l/l_s, rbar - rbar_s, F_def/F_def,s, pi_j).
     Sliding(SlidingShape),
+    /// Problem 2 expansions: c_n of the load [3.18] and A_n of the slope [3.16]-[3.17].
+    Adhesion,
 }
 
 /// Exact values substituted for symbols before printing.
@@ -44,7 +49,12 @@ pub struct Substitutions {
     pub xh: Option<Q>,
     /// T = beta tau0 / (E* k l_s) (Problem 1).
     pub t: Option<Q>,
+    /// Poisson's ratio, for numerical values of the Problem 2 coefficients.
+    pub nu: Option<Q>,
 }
+
+/// Digits of the numerical values printed beside the exact Problem 2 coefficients.
+pub const VALUE_DIGITS: usize = 30;
 
 /// Applies the substitutions to a series and drops the substituted symbols from the list.
 fn substitute(
@@ -101,6 +111,37 @@ impl SeriesObject {
                 frac(jacobi_moments(order)?),
                 vec![theta],
             )],
+            SeriesObject::Adhesion => {
+                let e = crate::asymptotics::adhesion::adhesion_expansion_with(order, false)?;
+                let (eps, b, sy) = (Symbol::new("eps")?, Symbol::new("B")?, Symbol::new("S")?);
+                let src = "THEORY.md section 5, paper [3.13]-[3.19]";
+                vec![
+                    (
+                        "C_P_over_pi",
+                        "C_P/pi, P2 = C_P E* k a^2 (1 + c_2 lambda^2 + ...) for the single punch; C_P = pi/(2 (1 - 2 eps S))",
+                        src,
+                        "lambda",
+                        Series::from_coeffs(vec![e.load_constant.clone()]),
+                        vec![eps, sy],
+                    ),
+                    (
+                        "load_c",
+                        "c_n: P2(a) = C_P E* k a^2 (1 + c_2 lambda^2 + c_4 lambda^4 + ...), lambda = pi a/L [3.18]",
+                        src,
+                        "lambda",
+                        e.load.clone(),
+                        vec![eps, sy],
+                    ),
+                    (
+                        "slope_A",
+                        "A_n: psi(x) = sum_n A_n |x|^n [3.16]; coefficient of chi^n is A_n/(k (pi/L)^(n-1)), chi = pi x/L; even A_n vanish",
+                        src,
+                        "chi",
+                        e.slope.clone(),
+                        vec![eps, b, sy],
+                    ),
+                ]
+            }
             SeriesObject::Sliding(shape) => {
                 let e = sliding_expansion(shape, order)?;
                 let f0 = e.f_def_scaled.coeff(0).cloned().unwrap_or_else(Poly::zero);
@@ -131,14 +172,44 @@ impl SeriesObject {
                 parts
             }
         };
-        parts
+        let mut out: Vec<Derived> = parts
             .into_iter()
             .map(|(object, formula, source, variable, series, mut symbols)| {
                 let series = substitute(series, &mut symbols, subs)?;
-                Ok(Derived { object, formula, source, variable, series, symbols })
+                Ok(Derived { object, formula, source, variable, series, symbols, values: None })
             })
-            .collect()
+            .collect::<Result<_, SeriesError>>()?;
+        if let (SeriesObject::Adhesion, Some(nu)) = (self, &subs.nu) {
+            add_values(&mut out, nu)?;
+        }
+        Ok(out)
     }
+}
+
+/// The 30-digit values of the Problem 2 coefficients at Poisson's ratio `nu` (eps, B, S evaluated
+/// in MPFR; S by its accelerated sum).
+fn add_values(parts: &mut [Derived], nu: &Q) -> Result<(), SeriesError> {
+    let prec = (VALUE_DIGITS as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 16;
+    let values = crate::asymptotics::adhesion::symbol_values(nu, prec + crate::asymptotics::adhesion::GUARD_BITS)
+        .map_err(|e| SeriesError::NotInvertible { operation: "evaluation at nu", value: e.to_string() })?;
+    let w = prec + crate::asymptotics::adhesion::GUARD_BITS;
+    for d in parts.iter_mut() {
+        let mut list = Vec::new();
+        for (k, c) in d.series.coeffs().iter().enumerate() {
+            if c.is_zero() {
+                continue;
+            }
+            let n = crate::numerics::evaluate::poly_mpfr(c.numer(), &values, w);
+            let m = crate::numerics::evaluate::poly_mpfr(c.denom(), &values, w);
+            let (Ok(n), Ok(m)) = (n, m) else {
+                return Err(SeriesError::NotInvertible { operation: "evaluation at nu", value: c.text() });
+            };
+            let v = rug::Float::with_val(prec, n / m);
+            list.push((k, v.to_string_radix(10, Some(VALUE_DIGITS))));
+        }
+        d.values = Some((exact_series::q_text(nu), list));
+    }
+    Ok(())
 }
 
 impl Derived {
@@ -155,6 +226,12 @@ impl Derived {
             if !c.is_zero() {
                 let label = if self.object == "jacobi" { format!("j_{k}") } else { format!("[{}^{k}]", self.variable) };
                 s.push_str(&format!("{label} {}\n", c.text()));
+            }
+        }
+        if let Some((nu, vals)) = &self.values {
+            s.push_str(&format!("values at nu = {nu} ({VALUE_DIGITS} digits):\n"));
+            for (k, v) in vals {
+                s.push_str(&format!("[{}^{k}] {v}\n", self.variable));
             }
         }
         s
@@ -185,7 +262,14 @@ impl Derived {
 
     /// JSON in the layout `{"object", "variable", "order", "symbols", "coefficients"}`.
     pub fn json(&self) -> serde_json::Value {
-        self.series.to_json(self.object, self.variable, &self.symbols)
+        let mut v = self.series.to_json(self.object, self.variable, &self.symbols);
+        if let Some((nu, vals)) = &self.values {
+            v["nu"] = serde_json::json!(nu);
+            v["values"] = serde_json::Value::Array(
+                vals.iter().map(|(k, x)| serde_json::json!({"power": k, "value": x})).collect(),
+            );
+        }
+        v
     }
 }
 
@@ -205,7 +289,7 @@ mod tests {
 
     #[test]
     fn weight_substitution_is_exact() {
-        let subs = Substitutions { theta: Some(q(1, 10)), xh: Some(q(0, 1)), t: None };
+        let subs = Substitutions { theta: Some(q(1, 10)), xh: Some(q(0, 1)), t: None, nu: None };
         let d = SeriesObject::Weight.derive(2, &subs).unwrap().remove(0);
         // At xh = 0: Y = sinc(lambda) = 1 - lambda^2/6 + ..., independent of theta.
         assert_eq!(d.series.coeff(2).unwrap().as_q(), Some(q(-1, 6)));
@@ -221,6 +305,7 @@ impl SeriesObject {
             SeriesObject::Weight => "weight",
             SeriesObject::Jacobi => "jacobi",
             SeriesObject::Sliding(_) => "sliding",
+            SeriesObject::Adhesion => "adhesion",
         }
     }
 }

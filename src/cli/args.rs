@@ -36,6 +36,8 @@ pub enum ObjectName {
     Jacobi,
     /// Problem 1 expansions in Lambda [3.7]-[3.12]: l_over_ls, rbar_minus_rbar_s, F_def, pi_j.
     Sliding,
+    /// Problem 2 expansions [3.16]-[3.18]: A_n and c_n, exact in eps, B, S.
+    Adhesion,
 }
 
 /// Solution methods.
@@ -77,6 +79,9 @@ pub enum RawCommand {
         /// Substitute an exact rational for T = beta tau0/(E* k l_s) (sliding), T >= 0.
         #[arg(long = "T", value_name = "R", allow_hyphen_values = true)]
         t: Option<String>,
+        /// Poisson's ratio in [0, 1/2] (adhesion): also print the coefficients' values to 30 digits.
+        #[arg(long, value_name = "R", allow_hyphen_values = true)]
+        nu: Option<String>,
         /// Punch shape (sliding).
         #[arg(long, value_enum, default_value_t = ShapeName::Parabolic)]
         shape: ShapeName,

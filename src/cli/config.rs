@@ -49,6 +49,7 @@ pub fn max_order(object: SeriesObject) -> usize {
         SeriesObject::Kernel | SeriesObject::Jacobi => 2000,
         SeriesObject::Weight => 80,
         SeriesObject::Sliding(_) => 24,
+        SeriesObject::Adhesion => 16,
     }
 }
 
@@ -72,11 +73,12 @@ impl RunConfig {
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, InvalidInput> {
         match args.command {
-            RawCommand::Series { object, order, theta, xh, t, shape, format } => {
+            RawCommand::Series { object, order, theta, xh, t, nu, shape, format } => {
                 let object = match object {
                     ObjectName::Kernel => SeriesObject::Kernel,
                     ObjectName::Weight => SeriesObject::Weight,
                     ObjectName::Jacobi => SeriesObject::Jacobi,
+                    ObjectName::Adhesion => SeriesObject::Adhesion,
                     ObjectName::Sliding => SeriesObject::Sliding(match shape {
                         ShapeName::Parabolic => SlidingShape::Parabolic,
                         ShapeName::Sinusoidal => SlidingShape::Sinusoidal,
@@ -110,7 +112,16 @@ impl RunConfig {
                         return Err(InvalidInput::new("--T", v, "only the sliding series has T"));
                     }
                 }
-                Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t }, format })
+                let nu = nu.map(|v| parse_exact("--nu", &v)).transpose()?;
+                if let Some(v) = &nu {
+                    if v.is_negative() || *v > Q::new(1.into(), 2.into()) {
+                        return Err(InvalidInput::new("--nu", v, "must lie in [0, 1/2]"));
+                    }
+                    if object != SeriesObject::Adhesion {
+                        return Err(InvalidInput::new("--nu", v, "only the adhesion series takes nu"));
+                    }
+                }
+                Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t, nu }, format })
             }
             RawCommand::Solve { scene, digits, method, order, format, json } => {
                 let text = std::fs::read_to_string(&scene)

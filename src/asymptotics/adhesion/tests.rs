@@ -153,7 +153,6 @@ fn against_f64_series_method() {
     }
 }
 
-
 /// Observed order log2(r(2 lambda)/r(lambda)) of a remainder.
 fn observed_order(r_coarse: f64, r_fine: f64) -> f64 {
     (r_coarse / r_fine).log2()
@@ -191,17 +190,21 @@ fn remainders_against_full_solution() {
                 AdhesionSize::HalfWidth(a.clone()),
             )
             .unwrap();
-            let sol = solve_mpfr_with(&problem, std::slice::from_ref(&xi), VolterraParams::for_digits(30), false).unwrap();
+            let sol =
+                solve_mpfr_with(&problem, std::slice::from_ref(&xi), VolterraParams::for_digits(30), false).unwrap();
             let lambda = Float::with_val(prec, &sol.lambda);
             let a_f = crate::numerics::exact::to_float(&a, prec);
-            let load = Float::with_val(prec, &sol.normal_load / (Float::with_val(prec, &a_f * &a_f) * &v.load_constant));
+            let load =
+                Float::with_val(prec, &sol.normal_load / (Float::with_val(prec, &a_f * &a_f) * &v.load_constant));
             let pt = &sol.points[0];
             let psi = Float::with_val(prec, &pt.psi / &a_f);
-            let sig = Complex::with_val(prec, (Float::with_val(prec, &pt.q2 / &a_f), Float::with_val(prec, &pt.q1 / &a_f)));
+            let sig =
+                Complex::with_val(prec, (Float::with_val(prec, &pt.q2 / &a_f), Float::with_val(prec, &pt.q1 / &a_f)));
             let chi = Float::with_val(prec, &lambda * &xi_f);
             let l2 = Float::with_val(prec, &lambda * &lambda);
             let mut per_m = Vec::new();
-            let (mut s_load, mut s_psi, mut s_sig) = (Float::with_val(prec, 0), Float::with_val(prec, 0), Complex::with_val(prec, 0));
+            let (mut s_load, mut s_psi, mut s_sig) =
+                (Float::with_val(prec, 0), Float::with_val(prec, 0), Complex::with_val(prec, 0));
             let mut lp = Float::with_val(prec, 1); // lambda^(2m)
             for m in 0..=order / 2 {
                 s_load += Float::with_val(prec, &v.load[2 * m] * &lp);
