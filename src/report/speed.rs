@@ -86,7 +86,8 @@ pub fn section(ctx: &mut Ctx) -> Section {
          MPFR run at higher precision; wall time of one run on this machine (times: charts, their CSV and \
          `timings.md`; they are not in this text). The series' time excludes the one-off exact derivation of \
          its coefficients. MPFR here is one run at the precision and node count for the digits asked (`solve` \
-         adds a second, verifying run). Problem 2 has no exact-series curve yet: {}\n",
+         adds a second, verifying run). Errors below 1e-70 (agreement to the reference's last digit) are drawn at \
+         1e-70. Problem 2 has no exact-series curve yet: {}\n",
         super::sweeps::adhesion_series_hook_note()
     );
     for st in studies {
