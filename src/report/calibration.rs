@@ -15,6 +15,7 @@
 //!   size no method but verified MPFR is admissible;
 //! - verified MPFR at the target always qualifies (it verifies its digits at run time and says so
 //!   when it falls short); its cost is two single runs at the next calibrated precision.
+//!
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 
 use super::runner::{self, ExpansionCache, Knob, Outcome};
@@ -357,8 +358,8 @@ pub fn rational(x: f64) -> Exact {
 /// P2 = 1/100, period set so that Lambda = pi l_s/L ~ `big_lambda`.
 pub fn sliding_case(big_lambda: f64) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).expect("valid");
-    let beta = 0.4 / 1.4;
-    let theta = (-(0.3 * beta) as f64).atan() / std::f64::consts::PI;
+    let beta: f64 = 0.4 / 1.4;
+    let theta = (-(0.3 * beta)).atan() / std::f64::consts::PI;
     let a0 = (2.0 * 0.01 / std::f64::consts::PI).sqrt();
     let l_s = a0 / (1.0 - 4.0 * theta * theta).sqrt();
     let period = rational(std::f64::consts::PI * l_s / big_lambda);
@@ -381,8 +382,8 @@ pub fn sliding_case(big_lambda: f64) -> SlidingProblem {
 pub fn sinusoid_case(big_lambda: f64) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).expect("valid");
     let pi = std::f64::consts::PI;
-    let beta = 0.4 / 1.4;
-    let theta = (-(0.3 * beta) as f64).atan() / pi;
+    let beta: f64 = 0.4 / 1.4;
+    let theta = (-(0.3 * beta)).atan() / pi;
     let k = 2.0 * pi * pi * 0.01;
     let a0 = big_lambda / pi * (1.0 - 4.0 * theta * theta).sqrt();
     let p2 = pi * k * a0 * a0 / 2.0;
@@ -438,8 +439,8 @@ pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table,
         }
         Ok(o)
     };
-    let sliding_cases: [(&str, fn(f64) -> SlidingProblem); 2] =
-        [("sliding-parabolic", sliding_case), ("sliding-sinusoidal", sinusoid_case)];
+    type Case = fn(f64) -> SlidingProblem;
+    let sliding_cases: [(&str, Case); 2] = [("sliding-parabolic", sliding_case), ("sliding-sinusoidal", sinusoid_case)];
     for (key, case) in sliding_cases {
         for &lam in &SLIDING_LAMBDAS {
             let p = SceneProblem::Sliding(case(lam));

@@ -122,11 +122,12 @@ pub struct ExpansionCache {
 impl ExpansionCache {
     fn get(&mut self, shape: SlidingShape, order: usize) -> Result<&SlidingExpansion, String> {
         let key = (shape == SlidingShape::Parabolic, order);
-        if !self.map.contains_key(&key) {
-            let e = sliding_expansion(shape, order).map_err(|e| e.to_string())?;
-            self.map.insert(key, e);
+        match self.map.entry(key) {
+            std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
+            std::collections::hash_map::Entry::Vacant(v) => {
+                Ok(v.insert(sliding_expansion(shape, order).map_err(|e| e.to_string())?))
+            }
         }
-        Ok(&self.map[&key])
     }
 }
 

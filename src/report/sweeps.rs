@@ -31,8 +31,11 @@ fn f(x: &Exact) -> f64 {
 }
 
 /// A closed form beside the computed curve: (legend, size as a function of P2).
-fn closed_forms(problem: &SceneProblem) -> Vec<(String, Box<dyn Fn(f64) -> f64>)> {
-    let mut out: Vec<(String, Box<dyn Fn(f64) -> f64>)> = Vec::new();
+/// A closed form: legend and the size as a function of P2.
+type ClosedForm = (String, Box<dyn Fn(f64) -> f64>);
+
+fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
+    let mut out: Vec<ClosedForm> = Vec::new();
     match problem {
         SceneProblem::Sliding(p) => {
             let e = f(&p.material.contact_modulus);
@@ -183,13 +186,14 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
                     let size = o.size.to_f64();
                     let load = o.load.to_f64();
                     let mut row = format!(
-                        "| {:.*e} | {:.*e} | {} | {:.1} |",
+                        "| {:.*e} | {:.*e} | {} | {:.1} {} |",
                         sig(d) - 1,
                         load,
                         sig(d) - 1,
                         size / scale,
                         knob.label(),
-                        d
+                        d,
+                        if o.verified_digits.is_some() { "verified" } else { "predicted" }
                     );
                     for (_, form) in &forms {
                         let c = form(load);
