@@ -37,11 +37,42 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }
-        RunConfig::Report { out, order } => {
-            let files = periodic_contact::report::write_report(&out, order)?;
-            for f in files.files {
-                eprintln!("wrote {}", f.display());
+        RunConfig::Report { out, scenes, order, fast } => {
+            use periodic_contact::report::{section::Profile, write_report, ReportError, ReportOptions};
+            let opts = ReportOptions {
+                out: out.clone(),
+                scenes,
+                order,
+                profile: if fast { Profile::Fast } else { Profile::Full },
+                progress: true,
+            };
+            let files = write_report(&opts).map_err(|e| match e {
+                ReportError::Scene { path, error } => anyhow::Error::new(InvalidInput::new(
+                    format!("{path}: {}", error.parameter),
+                    error.value,
+                    error.expected,
+                )),
+                other => anyhow::Error::new(other),
+            })?;
+            eprintln!(
+                "wrote {} files into {} (report.md, timings.md, charts as SVG + CSV)",
+                files.files.len(),
+                out.display()
+            );
+        }
+        RunConfig::Calibrate { out } => {
+            let pb = indicatif::ProgressBar::new(10);
+            let table = periodic_contact::report::calibration::calibrate(&periodic_contact::report::machine(), |m| {
+                pb.set_message(m.to_string());
+                pb.inc(1);
+            })
+            .map_err(|e| anyhow::anyhow!("calibration failed: {e}"))?;
+            pb.finish_and_clear();
+            if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir)?;
             }
+            std::fs::write(&out, table.to_csv())?;
+            eprintln!("wrote {} ({} rows); review and commit it, then rebuild", out.display(), table.rows.len());
         }
     }
     Ok(())

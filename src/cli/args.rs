@@ -109,13 +109,28 @@ pub enum RawCommand {
         #[arg(long)]
         json: bool,
     },
-    /// Write the report (coefficient tables, Markdown and LaTeX) into a folder: the main job.
+    /// Write the report into a folder: the main job. Coefficient tables, method choice per scene,
+    /// convergence orders, speed against accuracy, stability maps, load-size curves (Markdown,
+    /// SVG charts with their CSV data, timings apart).
     Report {
         /// Output folder.
         #[arg(long, value_name = "DIR", default_value = "report")]
         out: PathBuf,
+        /// Scene folder (every *.toml in it).
+        #[arg(long, value_name = "DIR", default_value = "scenes")]
+        scenes: PathBuf,
         /// Order of the coefficient tables.
         #[arg(long, value_name = "N", default_value = "12")]
         order: String,
+        /// Small grids (seconds instead of minutes): the fixed set of the snapshot test.
+        #[arg(long)]
+        fast: bool,
+    },
+    /// Measure each method's cost and accuracy and write the calibration table that the method
+    /// choice reads (review and commit it; the binary compiles the committed table in).
+    Calibrate {
+        /// Output file.
+        #[arg(long, value_name = "FILE", default_value = "calibration/methods.csv")]
+        out: PathBuf,
     },
 }

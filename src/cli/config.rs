@@ -33,12 +33,21 @@ pub enum RunConfig {
         /// Output format.
         format: Format,
     },
-    /// `report --out DIR`
+    /// `report --out DIR --scenes DIR`
     Report {
         /// Output folder.
         out: PathBuf,
+        /// Scene folder.
+        scenes: PathBuf,
         /// Order of the coefficient tables.
         order: usize,
+        /// Small grids.
+        fast: bool,
+    },
+    /// `calibrate --out FILE`
+    Calibrate {
+        /// Output file.
+        out: PathBuf,
     },
 }
 
@@ -162,10 +171,14 @@ impl RunConfig {
                     format,
                 })
             }
-            RawCommand::Report { out, order } => {
+            RawCommand::Report { out, scenes, order, fast } => {
                 let order = parse_order(&order, 40)?;
-                Ok(RunConfig::Report { out, order })
+                if !scenes.is_dir() {
+                    return Err(InvalidInput::new("--scenes", scenes.display(), "must be a folder of *.toml scenes"));
+                }
+                Ok(RunConfig::Report { out, scenes, order, fast })
             }
+            RawCommand::Calibrate { out } => Ok(RunConfig::Calibrate { out }),
         }
     }
 }

@@ -1,23 +1,217 @@
-//! The report (`periodic-contact report`): pure functions from data to text, and the writer.
+//! The report (`periodic-contact report`): the main job. Sections (each a module, data -> text
+//! and charts; the runs are in [`runner`]):
+//! 1. exact coefficient tables ([`coefficients`]);
+//! - method choice by accuracy target ([`choice`], from the calibration table [`calibration`]);
+//! 2. convergence orders of the series against the MPFR solution ([`orders`]);
+//! 3. speed against accuracy ([`speed`]);
+//! 4. stability maps from actual runs ([`stability`]);
+//! 5. load-size curves from the scenes' sweeps with closed forms ([`sweeps`]);
+//! 6. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
+//!    deterministic and snapshot-tested).
+//!
+//! Every chart is written as SVG ([`chart`], plotters) with the CSV of its data beside it.
 
+pub mod calibration;
+pub mod chart;
+pub mod choice;
 pub mod coefficients;
+pub mod orders;
+pub mod runner;
+pub mod section;
+pub mod speed;
+pub mod stability;
+pub mod sweeps;
 
+use crate::scene::{parse::parse_scene, Scene};
+use indicatif::{ProgressBar, ProgressStyle};
+use section::{Ctx, Profile, Section};
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 /// What a report run wrote.
 #[derive(Debug, Clone)]
 pub struct ReportFiles {
     /// Files written, in order.
     pub files: Vec<PathBuf>,
+    /// The Markdown text of `report.md` (deterministic).
+    pub markdown: String,
 }
 
-/// Writes the report into `out` (created if missing): `report.md` and `coefficients.tex`.
-pub fn write_report(out: &Path, order: usize) -> anyhow::Result<ReportFiles> {
-    std::fs::create_dir_all(out)?;
-    let tables = coefficients::coefficient_tables(order)?;
-    let md = out.join("report.md");
-    let tex = out.join("coefficients.tex");
-    std::fs::write(&md, coefficients::markdown(&tables, order))?;
-    std::fs::write(&tex, coefficients::latex(&tables))?;
-    Ok(ReportFiles { files: vec![md, tex] })
+/// How to run the report.
+#[derive(Debug, Clone)]
+pub struct ReportOptions {
+    /// Output folder (created if missing).
+    pub out: PathBuf,
+    /// Scene folder (`*.toml`, read in file-name order).
+    pub scenes: PathBuf,
+    /// Order of the coefficient tables.
+    pub order: usize,
+    /// Size of the run.
+    pub profile: Profile,
+    /// Show a progress bar on stderr.
+    pub progress: bool,
+}
+
+/// Why a report could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    /// A scene file is invalid (exit code 2).
+    #[error("scene {path}: {error}")]
+    Scene {
+        /// The file.
+        path: String,
+        /// What is wrong.
+        error: crate::model::ModelError,
+    },
+    /// Reading or writing failed.
+    #[error("{path}: {error}")]
+    Io {
+        /// The file or folder.
+        path: String,
+        /// The I/O error.
+        error: std::io::Error,
+    },
+    /// The series engine failed (coefficient tables).
+    #[error("coefficient tables: {0}")]
+    Series(#[from] exact_series::SeriesError),
+    /// The calibration table is malformed.
+    #[error(transparent)]
+    Calibration(#[from] calibration::TableError),
+    /// A chart could not be drawn.
+    #[error("chart {stem}: {why}")]
+    Chart {
+        /// The chart.
+        stem: String,
+        /// Why.
+        why: String,
+    },
+}
+
+fn io(path: &Path) -> impl Fn(std::io::Error) -> ReportError + '_ {
+    move |error| ReportError::Io { path: path.display().to_string(), error }
+}
+
+/// Reads every `*.toml` scene of `dir`, sorted by file name; the name is the file stem.
+pub fn load_scenes(dir: &Path) -> Result<Vec<(String, Scene)>, ReportError> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(io(dir))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    let mut out = Vec::new();
+    for p in paths {
+        let text = std::fs::read_to_string(&p).map_err(io(&p))?;
+        let scene = parse_scene(&text).map_err(|error| ReportError::Scene { path: p.display().to_string(), error })?;
+        let name = p.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        out.push((name, scene));
+    }
+    Ok(out)
+}
+
+/// The machine, as stated in `timings.md`: architecture, CPU model, logical CPUs.
+pub fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let n = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    format!("{} {}, {cpu}, {n} logical CPUs", std::env::consts::ARCH, std::env::consts::OS)
+}
+
+/// Writes the report into `opts.out`: `report.md`, `coefficients.tex`, `timings.md`, and for
+/// every chart `<stem>.svg` and `<stem>.csv`.
+pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
+    let start = Instant::now();
+    std::fs::create_dir_all(&opts.out).map_err(io(&opts.out))?;
+    let scenes = load_scenes(&opts.scenes)?;
+    let progress = if opts.progress {
+        let pb = ProgressBar::new(6);
+        pb.set_style(
+            ProgressStyle::with_template("{spinner} [{elapsed_precise}] section {pos}/{len} {wide_msg}")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        pb.enable_steady_tick(std::time::Duration::from_millis(200));
+        pb
+    } else {
+        ProgressBar::hidden()
+    };
+    let mut ctx =
+        Ctx { profile: opts.profile, cache: Default::default(), progress, table: calibration::Table::committed()? };
+    let mut files = Vec::new();
+    let mut timings = String::new();
+    let mut sections: Vec<Section> = Vec::new();
+    let mut timed = |name: &str, ctx: &mut Ctx, f: &mut dyn FnMut(&mut Ctx) -> Result<Section, ReportError>| {
+        let t0 = Instant::now();
+        let r = f(ctx);
+        let _ = writeln!(timings, "| {name} | {:.2} |", t0.elapsed().as_secs_f64());
+        ctx.progress.inc(1);
+        r
+    };
+    ctx.step("coefficient tables");
+    let order = opts.order;
+    let mut tex = String::new();
+    let coeff = timed("1. coefficient tables", &mut ctx, &mut |_| {
+        let tables = coefficients::coefficient_tables(order)?;
+        tex = coefficients::latex(&tables);
+        Ok(Section { markdown: coefficients::markdown(&tables, order), ..Default::default() })
+    })?;
+    sections.push(coeff);
+    sections.push(timed("method choice", &mut ctx, &mut |c| Ok(choice::section(c, &scenes)))?);
+    sections.push(timed("2. convergence orders", &mut ctx, &mut |c| Ok(orders::section(c, &scenes)))?);
+    sections.push(timed("3. speed against accuracy", &mut ctx, &mut |c| Ok(speed::section(c)))?);
+    sections.push(timed("4. stability maps", &mut ctx, &mut |c| Ok(stability::section(c)))?);
+    sections.push(timed("5. load-size curves", &mut ctx, &mut |c| Ok(sweeps::section(c, &scenes)))?);
+    ctx.progress.finish_and_clear();
+
+    let mut md = String::new();
+    let names: Vec<&str> = scenes.iter().map(|s| s.0.as_str()).collect();
+    for (i, s) in sections.iter().enumerate() {
+        if i == 1 {
+            let _ = writeln!(
+                md,
+                "Scenes: {}. Timings of this run and the machine: `timings.md` (section 6; kept out of this \
+                 text, which is deterministic).\n",
+                names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+            );
+        }
+        md.push_str(&s.markdown);
+    }
+    let _ = writeln!(md, "## 6. Timings\n\nSee `timings.md`: measured in the run that wrote this report.");
+    let write = |files: &mut Vec<PathBuf>, name: &str, text: &str| -> Result<(), ReportError> {
+        let p = opts.out.join(name);
+        std::fs::write(&p, text).map_err(io(&p))?;
+        files.push(p);
+        Ok(())
+    };
+    write(&mut files, "report.md", &md)?;
+    write(&mut files, "coefficients.tex", &tex)?;
+    for s in &sections {
+        for c in &s.charts {
+            let svg = c.svg().map_err(|why| ReportError::Chart { stem: c.stem.clone(), why })?;
+            write(&mut files, &format!("{}.svg", c.stem), &svg)?;
+            write(&mut files, &format!("{}.csv", c.stem), &c.csv())?;
+        }
+    }
+    let mut t = format!(
+        "# Timings of this report run\n\nMachine: {}. Build: {}. Profile: {:?}. Total wall time: {:.1} s.\n\n\
+         | section | seconds |\n|---|---:|\n{timings}",
+        machine(),
+        if cfg!(debug_assertions) { "debug" } else { "release" },
+        opts.profile,
+        start.elapsed().as_secs_f64()
+    );
+    for s in &sections {
+        if !s.timings.is_empty() {
+            t.push('\n');
+            t.push_str(&s.timings);
+        }
+    }
+    write(&mut files, "timings.md", &t)?;
+    Ok(ReportFiles { files, markdown: md })
 }

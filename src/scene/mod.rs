@@ -33,6 +33,20 @@
 //! [output]
 //! points = ["0", "0.5", "0.9"]   # x/a in [0, 1]
 //! ```
+//!
+//! Either problem may add a sweep for load-size curves (`periodic-contact report`): one key, an
+//! array of exact values, each replacing the scene's own load or size in turn (the scene's own
+//! value is kept for `solve`).
+//!
+//! ```toml
+//! [sweep]
+//! normal_load = ["0.001", "0.01", "0.1"]   # sliding or adhesion; or half_length (sliding),
+//!                                          # or half_width (adhesion)
+//! ```
+//!
+//! `[output] target_digits = 12` asks for the cheapest method meeting 12 digits (chosen by the
+//! report from the committed calibration table, `calibration/methods.csv`); `digits` forces a
+//! working precision instead.
 
 pub mod parse;
 
@@ -93,6 +107,37 @@ pub enum SceneProblem {
     Adhesion(AdhesionProblem),
 }
 
+/// The quantity a `[sweep]` varies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SweepParameter {
+    /// Load per punch P2 (either problem).
+    NormalLoad,
+    /// Half-length l of the sliding contact (Problem 1, direct problem).
+    HalfLength,
+    /// Half-width a of the adhesive contact (Problem 2).
+    HalfWidth,
+}
+
+impl SweepParameter {
+    /// The TOML key.
+    pub fn key(self) -> &'static str {
+        match self {
+            SweepParameter::NormalLoad => "normal_load",
+            SweepParameter::HalfLength => "half_length",
+            SweepParameter::HalfWidth => "half_width",
+        }
+    }
+}
+
+/// A sweep: the scene's load or size replaced by each value in turn (every value validated).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sweep {
+    /// What is varied.
+    pub parameter: SweepParameter,
+    /// The values, in the order given (at least one).
+    pub values: Vec<Exact>,
+}
+
 /// A parsed, validated scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
@@ -100,4 +145,52 @@ pub struct Scene {
     pub problem: SceneProblem,
     /// The output request.
     pub output: OutputSpec,
+    /// Optional sweep for load-size curves.
+    pub sweep: Option<Sweep>,
+}
+
+impl Scene {
+    /// The problems of the sweep, one per value (empty without a sweep).
+    pub fn sweep_problems(&self) -> Vec<SceneProblem> {
+        let Some(sw) = &self.sweep else { return Vec::new() };
+        sw.values.iter().filter_map(|v| with_value(&self.problem, sw.parameter, v)).collect()
+    }
+}
+
+/// The problem with its load or size replaced by `v` (None if the parameter does not apply or the
+/// value is invalid; the parser rejects both).
+pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
+    use crate::model::{AdhesionSize, SlidingLoad};
+    match (problem, parameter) {
+        (SceneProblem::Sliding(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
+            let load = if parameter == SweepParameter::NormalLoad {
+                SlidingLoad::NormalLoad(v.clone())
+            } else {
+                SlidingLoad::HalfLength(v.clone())
+            };
+            SlidingProblem::new(
+                p.material.clone(),
+                p.period.clone(),
+                p.shape.clone(),
+                p.friction.clone(),
+                p.adhesive_friction.clone(),
+                p.wear.clone(),
+                p.speed.clone(),
+                load,
+            )
+            .ok()
+            .map(SceneProblem::Sliding)
+        }
+        (SceneProblem::Adhesion(p), SweepParameter::NormalLoad | SweepParameter::HalfWidth) => {
+            let size = if parameter == SweepParameter::NormalLoad {
+                AdhesionSize::NormalLoad(v.clone())
+            } else {
+                AdhesionSize::HalfWidth(v.clone())
+            };
+            AdhesionProblem::new(p.material.clone(), p.period.clone(), p.shape.clone(), size)
+                .ok()
+                .map(SceneProblem::Adhesion)
+        }
+        _ => None,
+    }
 }

@@ -1,6 +1,6 @@
 //! Strict scene parser (toml_edit keeps each literal's text, so numbers are read exactly).
 
-use super::{Method, OutputSpec, Scene, SceneProblem};
+use super::{with_value, Method, OutputSpec, Scene, SceneProblem, Sweep, SweepParameter};
 use crate::model::{
     AdhesionProblem, AdhesionSize, Exact, Material, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem,
 };
@@ -27,14 +27,18 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
                 return Err(ModelError::new("adhesion", "(table)", "not allowed in a sliding scene"));
             }
             let output = parse_output(root, PointRange::OpenUnit)?;
-            Ok(Scene { problem: SceneProblem::Sliding(parse_sliding(root)?), output })
+            let problem = SceneProblem::Sliding(parse_sliding(root)?);
+            let sweep = parse_sweep(root, &problem)?;
+            Ok(Scene { problem, output, sweep })
         }
         "adhesion" => {
             if root.contains_key("sliding") {
                 return Err(ModelError::new("sliding", "(table)", "not allowed in an adhesion scene"));
             }
             let output = parse_output(root, PointRange::ClosedHalf)?;
-            Ok(Scene { problem: SceneProblem::Adhesion(parse_adhesion(root)?), output })
+            let problem = SceneProblem::Adhesion(parse_adhesion(root)?);
+            let sweep = parse_sweep(root, &problem)?;
+            Ok(Scene { problem, output, sweep })
         }
         other => Err(ModelError::new("problem.kind", other, "must be \"sliding\" or \"adhesion\"")),
     }
@@ -275,4 +279,56 @@ fn parse_output(root: &Table, range: PointRange) -> Result<OutputSpec, ModelErro
         }
     }
     Ok(out)
+}
+
+/// Most values of one sweep (each is a full solve in the report).
+pub const MAX_SWEEP_VALUES: usize = 64;
+
+/// `[sweep]`: exactly one key, an array of exact values, each valid for the problem.
+fn parse_sweep(root: &Table, problem: &SceneProblem) -> Result<Option<Sweep>, ModelError> {
+    let Some(item) = root.get("sweep") else {
+        return Ok(None);
+    };
+    let Item::Table(t) = item else {
+        return Err(ModelError::new("sweep", "(not a table)", "must be a [sweep] table"));
+    };
+    let allowed: &[&str] = match problem {
+        SceneProblem::Sliding(_) => &["normal_load", "half_length"],
+        SceneProblem::Adhesion(_) => &["normal_load", "half_width"],
+    };
+    allow_keys(t, "sweep", allowed)?;
+    let keys: Vec<&str> = t.iter().map(|(k, _)| k).collect();
+    let [key] = keys.as_slice() else {
+        return Err(ModelError::new(
+            "sweep",
+            format!("{} keys", keys.len()),
+            format!("give exactly one of: {}", allowed.join(", ")),
+        ));
+    };
+    let parameter = match *key {
+        "normal_load" => SweepParameter::NormalLoad,
+        "half_length" => SweepParameter::HalfLength,
+        _ => SweepParameter::HalfWidth,
+    };
+    let name = path("sweep", key);
+    let Some(Value::Array(a)) = value(t, "sweep", key)? else {
+        return Err(ModelError::new(&name, "(not an array)", "must be an array of exact numbers"));
+    };
+    if a.is_empty() || a.len() > MAX_SWEEP_VALUES {
+        return Err(ModelError::new(&name, a.len(), format!("must hold 1 to {MAX_SWEEP_VALUES} values")));
+    }
+    let mut values = Vec::new();
+    for (i, v) in a.iter().enumerate() {
+        let item = format!("{name}[{i}]");
+        let x = exact_value(v, &item)?;
+        if with_value(problem, parameter, &x).is_none() {
+            return Err(ModelError::new(
+                item,
+                &x,
+                "is not a valid value for this problem (must be > 0 and admissible)",
+            ));
+        }
+        values.push(x);
+    }
+    Ok(Some(Sweep { parameter, values }))
 }

@@ -1,0 +1,296 @@
+//! One run of one method with one knob, timed, and its error against a reference run.
+//!
+//! The quantities compared are those a load-size curve needs: for Problem 1 the contact
+//! half-length l and centre c (error max(|dl|, |dc|)/l_ref) when the load is given, the load P2
+//! (|dP2|/P2_ref) when l is given; for Problem 2 the load P2 when a is given, a when P2 is given.
+//! Values are kept as MPFR floats so that errors far below f64 round-off are measured.
+
+use crate::adhesion::{self, volterra_mpfr::VolterraParams};
+use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
+use crate::model::{AdhesionProblem, AdhesionSize, PunchShape, SlidingLoad, SlidingProblem};
+use crate::numerics::evaluate;
+use crate::scene::SceneProblem;
+use crate::sliding::{self, collocation_f64, NodeRule};
+use crate::solve::series_method::series_point;
+use exact_series::Symbol;
+use rug::Float;
+use std::collections::HashMap;
+use std::time::Instant;
+
+/// Working precision of comparisons (bits): errors down to 1e-70 are resolved.
+pub const COMPARE_BITS: u32 = 256;
+
+/// A method and its knob.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Knob {
+    /// The truncated exact series through Lambda^N (Problem 1), evaluated at 128 bits.
+    Series(usize),
+    /// The f64 solver; `Some(n)`: n collocation nodes forced (Problem 1), `None`: automatic.
+    F64(Option<usize>),
+    /// MPFR, one run at the precision and node count for this many digits (not verified).
+    Mpfr(u32),
+    /// MPFR, two runs (verified digits): what `solve` uses.
+    MpfrVerified(u32),
+}
+
+impl Knob {
+    /// Method name as in the calibration table.
+    pub fn method(&self) -> &'static str {
+        match self {
+            Knob::Series(_) => "series",
+            Knob::F64(_) => "f64",
+            Knob::Mpfr(_) => "mpfr",
+            Knob::MpfrVerified(_) => "mpfr-verified",
+        }
+    }
+    /// The knob's value as text (`auto` for automatic f64 nodes).
+    pub fn value(&self) -> String {
+        match self {
+            Knob::Series(n) => n.to_string(),
+            Knob::F64(Some(n)) => n.to_string(),
+            Knob::F64(None) => "auto".into(),
+            Knob::Mpfr(d) | Knob::MpfrVerified(d) => d.to_string(),
+        }
+    }
+    /// Legend/label text, e.g. "series order 8", "f64 64 nodes", "MPFR 40 digits".
+    pub fn label(&self) -> String {
+        match self {
+            Knob::Series(n) => format!("series order {n}"),
+            Knob::F64(Some(n)) => format!("f64, {n} nodes"),
+            Knob::F64(None) => "f64, automatic nodes".into(),
+            Knob::Mpfr(d) => format!("MPFR, {d} digits"),
+            Knob::MpfrVerified(d) => format!("MPFR verified, {d} digits"),
+        }
+    }
+}
+
+/// What a run produced: the size/load quantities at [`COMPARE_BITS`].
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// Problem 1: l; Problem 2: a.
+    pub size: Float,
+    /// Problem 1: c (0 for Problem 2).
+    pub centre: Float,
+    /// P2.
+    pub load: Float,
+    /// lambda = pi l/L or pi a/L (0 for a single punch), f64.
+    pub lambda: f64,
+    /// Verified digits when the method verifies itself (MPFR verified).
+    pub verified_digits: Option<f64>,
+    /// Wall time of the run in seconds.
+    pub seconds: f64,
+}
+
+/// Relative error of `o` against `reference` (see module doc); `given_size` says which quantity
+/// the problem fixes.
+pub fn error(o: &Outcome, reference: &Outcome, given_size: bool) -> f64 {
+    let p = COMPARE_BITS;
+    if given_size {
+        let d = Float::with_val(p, &o.load - &reference.load).abs();
+        (d / reference.load.clone().abs()).to_f64()
+    } else {
+        let dl = Float::with_val(p, &o.size - &reference.size).abs();
+        let dc = Float::with_val(p, &o.centre - &reference.centre).abs();
+        (dl.max(&dc) / reference.size.clone().abs()).to_f64()
+    }
+}
+
+/// Digits from a relative error: -log10(err), capped at `cap`.
+pub fn digits_of(err: f64, cap: f64) -> f64 {
+    if err <= 0.0 {
+        cap
+    } else {
+        (-err.log10()).clamp(0.0, cap)
+    }
+}
+
+/// Whether the problem fixes the size (direct problem) rather than the load.
+pub fn given_size(p: &SceneProblem) -> bool {
+    match p {
+        SceneProblem::Sliding(s) => matches!(s.load, SlidingLoad::HalfLength(_)),
+        SceneProblem::Adhesion(a) => matches!(a.size, AdhesionSize::HalfWidth(_)),
+    }
+}
+
+/// Exact expansions, derived once per shape at the largest order used (derivation time is not
+/// part of a run's time: it is a one-off, like the coefficient tables).
+#[derive(Default)]
+pub struct ExpansionCache {
+    map: HashMap<(bool, usize), SlidingExpansion>,
+}
+
+impl ExpansionCache {
+    fn get(&mut self, shape: SlidingShape, order: usize) -> Result<&SlidingExpansion, String> {
+        let key = (shape == SlidingShape::Parabolic, order);
+        match self.map.entry(key) {
+            std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
+            std::collections::hash_map::Entry::Vacant(v) => {
+                Ok(v.insert(sliding_expansion(shape, order).map_err(|e| e.to_string())?))
+            }
+        }
+    }
+}
+
+/// Largest series order the report uses.
+pub const MAX_SERIES_ORDER: usize = 16;
+
+fn f(x: f64) -> Float {
+    Float::with_val(COMPARE_BITS, x)
+}
+
+/// Runs `knob` on `problem`. Errors are the method's own (no solution, no convergence, not
+/// applicable), as text for the report.
+pub fn run(problem: &SceneProblem, knob: Knob, cache: &mut ExpansionCache) -> Result<Outcome, String> {
+    match problem {
+        SceneProblem::Sliding(p) => run_sliding(p, knob, cache),
+        SceneProblem::Adhesion(p) => run_adhesion(p, knob),
+    }
+}
+
+fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Result<Outcome, String> {
+    let pi = std::f64::consts::PI;
+    let period = match &p.period {
+        crate::model::Period::Finite(l) => crate::numerics::exact::to_f64(l),
+        crate::model::Period::Infinite => None,
+    };
+    let lam = |l: f64| period.map_or(0.0, |big_l| pi * l / big_l);
+    match knob {
+        Knob::Series(n) => {
+            let shape = match p.shape {
+                PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
+                PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
+            };
+            let e = cache.get(shape, MAX_SERIES_ORDER.max(n))?;
+            let prec = 128;
+            let start = Instant::now();
+            let sp = series_point(p, prec).map_err(|e| e.to_string())?;
+            let bind = [
+                (Symbol::new("theta").expect("valid"), sp.theta.clone()),
+                (Symbol::new("T").expect("valid"), sp.t.clone()),
+            ];
+            let ev = |s: &exact_series::Series<exact_series::Poly>| {
+                evaluate::series_mpfr(&s.truncate(n + 1), &sp.big_lambda, &bind, prec).map_err(|e| e.to_string())
+            };
+            let rho = ev(&e.l_over_ls)?;
+            let dr = ev(&e.rbar_minus_rbar_s)?;
+            let l = Float::with_val(prec, &sp.l_s * &rho);
+            let rbar = Float::with_val(prec, 2 * sp.theta.clone() - &sp.t) + dr;
+            let c = Float::with_val(prec, &rbar * &l);
+            let seconds = start.elapsed().as_secs_f64();
+            let load = match &p.load {
+                SlidingLoad::NormalLoad(x) => crate::numerics::exact::to_float(x, COMPARE_BITS),
+                SlidingLoad::HalfLength(_) => return Err("the series expands at a given load".into()),
+            };
+            let lf = l.to_f64();
+            Ok(Outcome {
+                size: Float::with_val(COMPARE_BITS, &l),
+                centre: Float::with_val(COMPARE_BITS, &c),
+                load,
+                lambda: lam(lf),
+                verified_digits: None,
+                seconds,
+            })
+        }
+        Knob::F64(nodes) => {
+            let opts = collocation_f64::SolverOptions {
+                nodes,
+                accept: if nodes.is_some() { 1.0 } else { 1e-8 },
+                ..Default::default()
+            };
+            let start = Instant::now();
+            let s = collocation_f64::solve_sliding_f64(p, &[], &opts).map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            let s = s.primary();
+            Ok(Outcome {
+                size: f(s.l),
+                centre: f(s.c),
+                load: f(s.p2),
+                lambda: lam(s.l),
+                verified_digits: None,
+                seconds,
+            })
+        }
+        Knob::Mpfr(d) => {
+            let start = Instant::now();
+            let sols =
+                sliding::solve_at(p, &[], NodeRule { digits: d as f64, factor: 1.0 }, true, sliding::precision_for(d))
+                    .map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            let s = sols.first().ok_or("no physical solution")?;
+            Ok(Outcome {
+                size: Float::with_val(COMPARE_BITS, &s.l),
+                centre: Float::with_val(COMPARE_BITS, &s.c),
+                load: Float::with_val(COMPARE_BITS, &s.p2),
+                lambda: lam(s.l.to_f64()),
+                verified_digits: None,
+                seconds,
+            })
+        }
+        Knob::MpfrVerified(d) => {
+            let start = Instant::now();
+            let sols = sliding::solve_verified(p, &[], d).map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            let v = sols.first().ok_or("no physical solution")?;
+            let s = &v.solution;
+            Ok(Outcome {
+                size: Float::with_val(COMPARE_BITS, &s.l),
+                centre: Float::with_val(COMPARE_BITS, &s.c),
+                load: Float::with_val(COMPARE_BITS, &s.p2),
+                lambda: lam(s.l.to_f64()),
+                verified_digits: Some(v.accuracy.digits_verified),
+                seconds,
+            })
+        }
+    }
+}
+
+fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
+    let zero = Float::with_val(COMPARE_BITS, 0);
+    match knob {
+        Knob::Series(_) => {
+            Err("the exact series of Problem 2 are not wired yet (hook: report::sections::adhesion_series_hook)".into())
+        }
+        Knob::F64(Some(_)) => Err("the f64 method of Problem 2 has no node knob".into()),
+        Knob::F64(None) => {
+            let start = Instant::now();
+            let s = adhesion::solution::solve_f64(p, &[]).map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            Ok(Outcome {
+                size: f(s.half_width),
+                centre: zero,
+                load: f(s.normal_load),
+                lambda: s.lambda,
+                verified_digits: None,
+                seconds,
+            })
+        }
+        Knob::Mpfr(d) => {
+            let start = Instant::now();
+            let s = adhesion::solution::solve_mpfr_with(p, &[], VolterraParams::for_digits(d), false)
+                .map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            Ok(Outcome {
+                size: Float::with_val(COMPARE_BITS, &s.half_width),
+                centre: zero,
+                load: Float::with_val(COMPARE_BITS, &s.normal_load),
+                lambda: s.lambda.to_f64(),
+                verified_digits: None,
+                seconds,
+            })
+        }
+        Knob::MpfrVerified(d) => {
+            let start = Instant::now();
+            let v = adhesion::verified::solve_verified(p, &[], d.clamp(5, 300)).map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            let s = &v.solution;
+            Ok(Outcome {
+                size: Float::with_val(COMPARE_BITS, &s.half_width),
+                centre: zero,
+                load: Float::with_val(COMPARE_BITS, &s.normal_load),
+                lambda: s.lambda.to_f64(),
+                verified_digits: Some(v.digits_verified.headline),
+                seconds,
+            })
+        }
+    }
+}

@@ -1,0 +1,54 @@
+//! What every report section returns, and the state the sections share.
+
+use super::calibration::Table;
+use super::chart::Chart;
+use super::runner::ExpansionCache;
+use indicatif::ProgressBar;
+
+/// Size of the run: the default report, or the fixed fast set of the snapshot test.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Profile {
+    /// The default report (under 5 minutes on 2 cores, release build).
+    Full,
+    /// Small grids (snapshot test, seconds).
+    Fast,
+}
+
+/// One section: Markdown (deterministic: no timings), charts (SVG + CSV), timings (separate file).
+#[derive(Debug, Default)]
+pub struct Section {
+    /// Markdown text.
+    pub markdown: String,
+    /// Charts.
+    pub charts: Vec<Chart>,
+    /// Timing lines for `timings.md` (Markdown).
+    pub timings: String,
+}
+
+/// Shared state of a report run.
+pub struct Ctx {
+    /// Size of the run.
+    pub profile: Profile,
+    /// Derived expansions.
+    pub cache: ExpansionCache,
+    /// Progress (stderr).
+    pub progress: ProgressBar,
+    /// The calibration table.
+    pub table: Table,
+}
+
+impl Ctx {
+    /// Shows what is being computed.
+    pub fn step(&self, msg: impl Into<String>) {
+        self.progress.set_message(msg.into());
+        self.progress.tick();
+    }
+}
+
+/// Formats digits for the text: one decimal, or "fail".
+pub fn fmt_digits(d: Option<f64>) -> String {
+    match d {
+        Some(x) => format!("{x:.1}"),
+        None => "fail".into(),
+    }
+}
