@@ -13,6 +13,7 @@ pub fn coefficient_tables(order: usize) -> Result<Vec<Derived>, SeriesError> {
         SeriesObject::Jacobi,
         SeriesObject::Sliding(SlidingShape::Parabolic),
         SeriesObject::Sliding(SlidingShape::Sinusoidal),
+        SeriesObject::Adhesion,
     ] {
         out.extend(o.derive(order, &Substitutions::default())?);
     }
