@@ -70,6 +70,6 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
         }
         let _ = writeln!(s.timings, "| convergence orders, `{name}` | {:.2} |", t0.elapsed().as_secs_f64());
     }
-    let _ = writeln!(s.markdown, "### Problem 2\n\n{}\n", super::sweeps::adhesion_series_hook_note());
+    let _ = writeln!(s.markdown, "### Problem 2\n\n{}\n", super::sweeps::adhesion_series_note());
     s
 }

@@ -244,12 +244,88 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
     }
 }
 
+/// Largest order of the Problem 2 series in the report (its exact derivation at order 12 takes a
+/// few seconds; it is built once per process).
+pub const ADHESION_SERIES_ORDER: usize = 12;
+
+fn adhesion_expansion_cached() -> Result<&'static crate::asymptotics::adhesion::AdhesionExpansion, String> {
+    use std::sync::OnceLock;
+    static CELL: OnceLock<Result<crate::asymptotics::adhesion::AdhesionExpansion, String>> = OnceLock::new();
+    CELL.get_or_init(|| {
+        crate::asymptotics::adhesion::adhesion_expansion_with(ADHESION_SERIES_ORDER, false).map_err(|e| e.to_string())
+    })
+    .as_ref()
+    .map_err(|e| e.clone())
+}
+
+/// Problem 2 by its truncated exact series [3.18]: P2 = C_P E* k a^2 sum_{2j <= n} c_2j lambda^2j,
+/// coefficients evaluated at the scene's nu; given P2, a is found by the fixed point
+/// a = sqrt(P2 / (C_P E* k S(lambda))), lambda = pi a/L (a contraction for small lambda).
+fn adhesion_series(p: &AdhesionProblem, n: usize) -> Result<Outcome, String> {
+    if n > ADHESION_SERIES_ORDER {
+        return Err(format!("the report builds the Problem 2 series through order {ADHESION_SERIES_ORDER}"));
+    }
+    let e = adhesion_expansion_cached()?;
+    let prec = 128;
+    let start = Instant::now();
+    let v =
+        crate::asymptotics::adhesion::adhesion_values(e, &p.material.poisson_ratio, prec).map_err(|e| e.to_string())?;
+    let to = |q: &crate::model::Exact| crate::numerics::exact::to_float(q, prec);
+    let k = match &p.shape {
+        PunchShape::Parabolic { k } => to(k),
+        PunchShape::Sinusoidal { .. } => return Err("the adhesion problem is parabolic only".into()),
+    };
+    let pi = Float::with_val(prec, rug::float::Constant::Pi);
+    let big_l = match &p.period {
+        crate::model::Period::Finite(l) => Some(to(l)),
+        crate::model::Period::Infinite => None,
+    };
+    let ck = Float::with_val(prec, &v.load_constant * to(&p.material.contact_modulus)) * &k;
+    let lambda_of = |a: &Float| big_l.as_ref().map_or(Float::with_val(prec, 0), |l| Float::with_val(prec, &pi * a) / l);
+    let bracket = |lam: &Float| {
+        let l2 = Float::with_val(prec, lam * lam);
+        let mut acc = Float::with_val(prec, 0);
+        for j in (0..=n / 2).rev() {
+            acc *= &l2;
+            acc += &v.load[2 * j];
+        }
+        acc
+    };
+    let (a, load) = match &p.size {
+        AdhesionSize::HalfWidth(a) => {
+            let a = to(a);
+            let load = Float::with_val(prec, &ck * Float::with_val(prec, &a * &a)) * bracket(&lambda_of(&a));
+            (a, load)
+        }
+        AdhesionSize::NormalLoad(p2) => {
+            let p2 = to(p2);
+            let mut a = Float::with_val(prec, &p2 / &ck).sqrt();
+            for _ in 0..200 {
+                let next = Float::with_val(prec, &p2 / Float::with_val(prec, &ck * bracket(&lambda_of(&a)))).sqrt();
+                let done = Float::with_val(prec, &next - &a).abs() <= Float::with_val(prec, &a * 1e-36);
+                a = next;
+                if done {
+                    break;
+                }
+            }
+            (a, p2)
+        }
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    Ok(Outcome {
+        size: Float::with_val(COMPARE_BITS, &a),
+        centre: Float::with_val(COMPARE_BITS, 0),
+        load: Float::with_val(COMPARE_BITS, &load),
+        lambda: lambda_of(&a).to_f64(),
+        verified_digits: None,
+        seconds,
+    })
+}
+
 fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
     let zero = Float::with_val(COMPARE_BITS, 0);
     match knob {
-        Knob::Series(_) => {
-            Err("the exact series of Problem 2 are not wired yet (hook: report::sections::adhesion_series_hook)".into())
-        }
+        Knob::Series(n) => adhesion_series(p, n),
         Knob::F64(Some(_)) => Err("the f64 method of Problem 2 has no node knob".into()),
         Knob::F64(None) => {
             let start = Instant::now();

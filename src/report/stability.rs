@@ -235,7 +235,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
             cells.push(run_cell(ctx, &SceneProblem::Adhesion(p), &adhesion_knobs, nu, lam));
         }
     }
-    let _ = writeln!(s.markdown, "Problem 2 exact series: {}\n", super::sweeps::adhesion_series_hook_note());
+    let _ = writeln!(s.markdown, "Problem 2 exact series: {}\n", super::sweeps::adhesion_series_note());
     map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &cells);
     s
 }

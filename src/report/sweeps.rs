@@ -16,14 +16,14 @@ use crate::scene::{Scene, SceneProblem};
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 
-/// HOOK for the exact series of Problem 2 (`src/asymptotics/adhesion.rs`, another engineer's
-/// work, not on main yet): the lead wires it here. Until then the report states that the series
-/// curve is missing. To wire it: return the P2(a) series value for the speed chart, the stability
-/// map and the load-size curves (knob [`Knob::Series`] in [`super::runner`] for Problem 2).
-pub fn adhesion_series_hook_note() -> &'static str {
-    "the exact series of Problem 2 ([3.13]-[3.19], `src/asymptotics/adhesion.rs`) are not wired into the \
-     report yet (hook: `report::sweeps::adhesion_series_hook_note` and the `Knob::Series` arm of \
-     `report::runner` for Problem 2)."
+/// Where the report shows the exact series of Problem 2 (knob [`Knob::Series`] of
+/// [`super::runner`], section 3) and where their term-by-term orders are checked.
+pub fn adhesion_series_note() -> &'static str {
+    "the exact series of Problem 2 ([3.18], `src/asymptotics/adhesion.rs`) are compared with the full \
+     solution in section 3 (speed against accuracy); their term-by-term orders (remainders after m = 0..4 \
+     corrections scale like lambda^(2m+2) at nu = 0, 0.3, 0.45) are checked by the test \
+     `asymptotics::adhesion::tests::remainders_against_full_solution`; the load-size curves here show the \
+     full solutions."
 }
 
 fn f(x: &Exact) -> f64 {
@@ -123,7 +123,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
          (section above), the closed forms drawn beside them (dashed) where they exist. Sizes are contact \
          half-lengths l (Problem 1) or half-widths a (Problem 2), over the period L. Digits: verified (MPFR) or \
          predicted from the calibration (series, f64), and printed values carry no more. Problem 2 series: {}\n",
-        adhesion_series_hook_note()
+        adhesion_series_note()
     );
     for (name, scene) in scenes {
         let Some(sw) = &scene.sweep else { continue };
