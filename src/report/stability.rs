@@ -150,7 +150,8 @@ fn map_section(s: &mut Section, stem: &str, title: &str, x_name: &str, knobs: &[
             stem: stem_i,
             title: format!("{title}: {}", k.label()),
             x_label: format!("{x_name} [-]"),
-            y_label: "lambda = pi l/L [-]".into(),
+            // Problem 2 maps have nu on the x axis; their contact size is the half-width a.
+            y_label: if x_name == "nu" { "lambda = pi a/L [-]".into() } else { "lambda = pi l/L [-]".into() },
             x_log: false,
             y_log: false,
             curves,
