@@ -8,11 +8,9 @@
 use crate::adhesion::{self, volterra_mpfr::VolterraParams};
 use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
 use crate::model::{AdhesionProblem, AdhesionSize, PunchShape, SlidingLoad, SlidingProblem};
-use crate::numerics::evaluate;
 use crate::scene::SceneProblem;
 use crate::sliding::{self, collocation_f64, NodeRule};
 use crate::solve::series_method::series_point;
-use exact_series::Symbol;
 use rug::Float;
 use std::collections::HashMap;
 use std::time::Instant;
@@ -164,18 +162,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
             let prec = 128;
             let start = Instant::now();
             let sp = series_point(p, prec).map_err(|e| e.to_string())?;
-            let bind = [
-                (Symbol::new("theta").expect("valid"), sp.theta.clone()),
-                (Symbol::new("T").expect("valid"), sp.t.clone()),
-            ];
-            let ev = |s: &exact_series::Series<exact_series::Poly>| {
-                evaluate::series_mpfr(&s.truncate(n + 1), &sp.big_lambda, &bind, prec).map_err(|e| e.to_string())
-            };
-            let rho = ev(&e.l_over_ls)?;
-            let dr = ev(&e.rbar_minus_rbar_s)?;
-            let l = Float::with_val(prec, &sp.l_s * &rho);
-            let rbar = Float::with_val(prec, 2 * sp.theta.clone() - &sp.t) + dr;
-            let c = Float::with_val(prec, &rbar * &l);
+            let (l, c) = sp.contact(e, n, prec);
             let seconds = start.elapsed().as_secs_f64();
             let load = match &p.load {
                 SlidingLoad::NormalLoad(x) => crate::numerics::exact::to_float(x, COMPARE_BITS),

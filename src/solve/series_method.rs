@@ -39,6 +39,33 @@ pub struct SeriesPoint {
     pub k: Float,
 }
 
+impl SeriesPoint {
+    /// The values of the symbols theta and T of the Problem 1 expansions.
+    pub fn bindings(&self) -> [(Symbol, Float); 2] {
+        [(Symbol::new("theta").expect("valid"), self.theta.clone()), (Symbol::new("T").expect("valid"), self.t.clone())]
+    }
+
+    /// A Lambda-series over Q[theta, T], truncated after Lambda^order, at this point.
+    ///
+    /// # Panics
+    /// When `s` holds a symbol other than theta and T (a bug: the expansions' l/l_s,
+    /// rbar - rbar_s and F_def series hold only these).
+    pub fn eval(&self, s: &Series<Poly>, order: usize, prec: u32) -> Float {
+        evaluate::series_mpfr(&s.truncate(order + 1), &self.big_lambda, &self.bindings(), prec)
+            .expect("the expansions hold only theta and T")
+    }
+
+    /// The contact half-length l = l_s (l/l_s) and centre c = rbar l from the series truncated
+    /// after Lambda^order, rbar = 2 theta - T + (rbar - rbar_s) [3.10].
+    pub fn contact(&self, e: &SlidingExpansion, order: usize, prec: u32) -> (Float, Float) {
+        let l = Float::with_val(prec, &self.l_s * self.eval(&e.l_over_ls, order, prec));
+        let rbar =
+            Float::with_val(prec, 2 * self.theta.clone() - &self.t) + self.eval(&e.rbar_minus_rbar_s, order, prec);
+        let c = Float::with_val(prec, &rbar * &l);
+        (l, c)
+    }
+}
+
 /// theta, T, Lambda, l_s for a problem given by its load (THEORY.md [3.10]).
 pub fn series_point(p: &SlidingProblem, prec: u32) -> Result<SeriesPoint, SolveError> {
     let big_l = match &p.period {
@@ -91,18 +118,9 @@ fn eval(e: &SlidingExpansion, n: usize, sp: &SeriesPoint, xh: &[Float], prec: u3
     let theta_s = Symbol::new("theta").expect("valid");
     let t_s = Symbol::new("T").expect("valid");
     let xh_s = Symbol::new("xh").expect("valid");
-    let bind = [(theta_s, sp.theta.clone()), (t_s, sp.t.clone())];
-    let ev = |s: &Series<Poly>| {
-        evaluate::series_mpfr(&s.truncate(n + 1), &sp.big_lambda, &bind, prec)
-            .map_err(|e| SolveError::Failed(format!("series evaluation: {e}")))
-    };
-    let rho = ev(&e.l_over_ls)?;
-    let dr = ev(&e.rbar_minus_rbar_s)?;
-    let fds = ev(&e.f_def_scaled)?;
+    let (l, c) = sp.contact(e, n, prec);
+    let fds = sp.eval(&e.f_def_scaled, n, prec);
     let pi = Float::with_val(prec, rug::float::Constant::Pi);
-    let l = Float::with_val(prec, &sp.l_s * &rho);
-    let rbar = Float::with_val(prec, 2 * sp.theta.clone() - &sp.t + dr);
-    let c = Float::with_val(prec, &rbar * &l);
     let ls3 = Float::with_val(prec, sp.l_s.clone().square() * &sp.l_s);
     let f_def = Float::with_val(prec, &pi * &sp.e_k) * &sp.k * ls3 * fds;
     // p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)), j <= n/2.

@@ -6,12 +6,11 @@
 //! Varying P2 at fixed L would make T = beta tau0/(E* k l_s) change with the load and spoil the
 //! slope; fixing P2 keeps theta and T fixed while Lambda = pi l_s / L varies.
 
-use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
+use crate::asymptotics::sliding::{sliding_expansion, SlidingShape};
 use crate::model::{Exact, Period, PunchShape, SlidingLoad, SlidingProblem};
-use crate::numerics::evaluate;
 use crate::sliding::{self, SlidingError};
 use crate::solve::series_method::series_point;
-use exact_series::{Symbol, Q};
+use exact_series::Q;
 use rug::Float;
 
 /// One row of a convergence table.
@@ -94,7 +93,7 @@ pub fn sliding_convergence(
         t = sp.t.to_f64();
         lambdas.push(sp.big_lambda.to_f64());
         for m in 1..=max_corrections {
-            let (l, c) = series_lc(&expansion, 2 * m, &sp, prec);
+            let (l, c) = sp.contact(&expansion, 2 * m, prec);
             let el = Float::with_val(prec, &l - &sol.solution.l).abs() / &sp.l_s;
             let ec = Float::with_val(prec, &c - &sol.solution.c).abs() / &sp.l_s;
             rem_l[m].push(el.to_f64());
@@ -124,24 +123,6 @@ pub fn sliding_convergence(
 fn l_s_of(single: &SlidingProblem, prec: u32) -> Result<f64, SlidingError> {
     let s = sliding::solve_verified(single, &[], (prec as f64 * 0.3) as u32)?;
     Ok(s.first().map(|v| v.solution.l.to_f64()).unwrap_or(f64::NAN))
-}
-
-/// l and c from the series truncated at `order`.
-fn series_lc(
-    e: &SlidingExpansion,
-    order: usize,
-    sp: &crate::solve::series_method::SeriesPoint,
-    prec: u32,
-) -> (Float, Float) {
-    let bind =
-        [(Symbol::new("theta").expect("valid"), sp.theta.clone()), (Symbol::new("T").expect("valid"), sp.t.clone())];
-    let rho = evaluate::series_mpfr(&e.l_over_ls.truncate(order + 1), &sp.big_lambda, &bind, prec).expect("bound");
-    let dr =
-        evaluate::series_mpfr(&e.rbar_minus_rbar_s.truncate(order + 1), &sp.big_lambda, &bind, prec).expect("bound");
-    let l = Float::with_val(prec, &sp.l_s * &rho);
-    let rbar = Float::with_val(prec, 2 * sp.theta.clone() - &sp.t) + dr;
-    let c = Float::with_val(prec, &rbar * &l);
-    (l, c)
 }
 
 /// A sliding problem on a parabola with the given material and friction data, load P2, period 1
