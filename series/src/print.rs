@@ -49,47 +49,42 @@ fn signed<R: Ring>(c: &R, printed: String) -> (bool, String) {
 impl<R: Ring> Series<R> {
     /// Plain text: `1 + (-1/6*theta - 1/12)*x^2 + O(x^4)`.
     pub fn text(&self, var: &str) -> String {
-        let mut terms = Vec::new();
-        for (k, c) in self.coeffs.iter().enumerate() {
-            if c.is_zero() {
-                continue;
-            }
-            let (neg, mag) = signed(c, c.text());
-            let t = if k == 0 {
-                mag
-            } else if mag == "1" {
-                power_text(var, k)
-            } else if c.is_sum() {
-                format!("({mag})*{}", power_text(var, k))
-            } else {
-                format!("{mag}*{}", power_text(var, k))
-            };
-            terms.push((neg, t));
-        }
-        terms.push((false, format!("O({})", power_text(var, self.prec()).replace("^0", "")).replace("O()", "O(1)")));
-        join_terms(terms)
+        self.render(var, R::text, power_text, |m| format!("({m})"), "*")
     }
 
     /// LaTeX: `1 + \left(-\frac{1}{6} \theta - \frac{1}{12}\right) x^{2} + O(x^{4})`.
     pub fn latex(&self, var: &str) -> String {
+        self.render(var, R::latex, power_latex, |m| format!("\\left({m}\\right)"), " ")
+    }
+
+    /// The non-zero terms `c<sep>x^k` (a sum coefficient wrapped by `wrap`, a unit one omitted),
+    /// signs pulled out as " + " / " - ", then the order term `O(x^prec)`.
+    fn render(
+        &self,
+        var: &str,
+        coeff: fn(&R) -> String,
+        power: fn(&str, usize) -> String,
+        wrap: fn(&str) -> String,
+        sep: &str,
+    ) -> String {
         let mut terms = Vec::new();
         for (k, c) in self.coeffs.iter().enumerate() {
             if c.is_zero() {
                 continue;
             }
-            let (neg, mag) = signed(c, c.latex());
+            let (neg, mag) = signed(c, coeff(c));
             let t = if k == 0 {
                 mag
             } else if mag == "1" {
-                power_latex(var, k)
+                power(var, k)
             } else if c.is_sum() {
-                format!("\\left({mag}\\right) {}", power_latex(var, k))
+                format!("{}{sep}{}", wrap(&mag), power(var, k))
             } else {
-                format!("{mag} {}", power_latex(var, k))
+                format!("{mag}{sep}{}", power(var, k))
             };
             terms.push((neg, t));
         }
-        let o = if self.prec() == 0 { "O(1)".to_string() } else { format!("O({})", power_latex(var, self.prec())) };
+        let o = if self.prec() == 0 { "O(1)".to_string() } else { format!("O({})", power(var, self.prec())) };
         terms.push((false, o));
         join_terms(terms)
     }
