@@ -1830,6 +1830,32 @@ mod tests {
 
     /// Convergence and timing chart (run with
     /// `cargo test -p periodic-contact --lib collocation_f64::tests::chart -- --ignored --nocapture`).
+
+    /// Cold (empty rule cache) and warm (minimum over 30 runs: the machine is shared; the minimum
+    /// is the least disturbed) times of one case, printed with its node counts and error estimate.
+    fn time_case(name: &str, pb: &SlidingProblem) {
+        CACHE.with(|c| c.borrow_mut().clear());
+        let t0 = std::time::Instant::now();
+        let s = solve_sliding_f64(pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+        let cold = t0.elapsed();
+        let mut warm = std::time::Duration::MAX;
+        for _ in 0..30 {
+            let t0 = std::time::Instant::now();
+            solve_sliding_f64(pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
+            warm = warm.min(t0.elapsed());
+        }
+        let s = s.primary();
+        println!(
+            "{name:24} lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}",
+            s.lambda,
+            s.nodes,
+            s.accuracy.check_nodes,
+            s.accuracy.max(),
+            cold,
+            warm
+        );
+    }
+
     #[test]
     #[ignore]
     fn chart_convergence_and_timing() {
@@ -1961,27 +1987,7 @@ mod tests {
                     SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()),
                 )
             };
-            CACHE.with(|c| c.borrow_mut().clear());
-            let t0 = std::time::Instant::now();
-            let s = solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
-            let cold = t0.elapsed();
-            // Warm: minimum over 30 runs (the machine is shared; the minimum is the least disturbed).
-            let mut warm = std::time::Duration::MAX;
-            for _ in 0..30 {
-                let t0 = std::time::Instant::now();
-                solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
-                warm = warm.min(t0.elapsed());
-            }
-            let s = s.primary();
-            println!(
-                "{name:24} lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}",
-                s.lambda,
-                s.nodes,
-                s.accuracy.check_nodes,
-                s.accuracy.max(),
-                cold,
-                warm
-            );
+            time_case(name, &pb);
         }
         for lam in [0.5f64, 1.0, 1.3] {
             let p2 = PI * 0.1 * lam.sin().powi(2);
@@ -1994,26 +2000,7 @@ mod tests {
                 r(0, 1),
                 SlidingLoad::NormalLoad(Exact::from_float(p2).unwrap()),
             );
-            CACHE.with(|c| c.borrow_mut().clear());
-            let t0 = std::time::Instant::now();
-            let s = solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
-            let cold = t0.elapsed();
-            let mut warm = std::time::Duration::MAX;
-            for _ in 0..30 {
-                let t0 = std::time::Instant::now();
-                solve_sliding_f64(&pb, &[0.0, 0.5], &SolverOptions::default()).unwrap();
-                warm = warm.min(t0.elapsed());
-            }
-            let s = s.primary();
-            println!(
-                "westergaard              lambda {:.4} n {} (check {}) est {:.1e}: cold {:?}, warm {:?}",
-                s.lambda,
-                s.nodes,
-                s.accuracy.check_nodes,
-                s.accuracy.max(),
-                cold,
-                warm
-            );
+            time_case("westergaard", &pb);
         }
     }
 
