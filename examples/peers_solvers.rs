@@ -16,7 +16,7 @@
 //! exact f64 load, evaluated at 8192 bits. Values are printed with 80 significant digits..
 
 use num_rational::BigRational;
-use periodic_contact::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
+use periodic_contact::model::{Exact, Material, Period, PunchShape, SlidingProblem};
 use periodic_contact::numerics::gauss_jacobi_mpfr::clear_cache;
 use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, SolverOptions};
 use periodic_contact::sliding::{precision_for, solve_at, NodeRule, SlidingSolution};
@@ -62,17 +62,16 @@ fn sliding_problem(
 ) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(nu), q(es)).expect("material");
     let shape = if sinus { PunchShape::sinusoidal(q(k)) } else { PunchShape::parabolic(q(k)) }.expect("shape");
-    SlidingProblem::new(
-        material,
-        Period::finite(q(l)).expect("period"),
-        shape,
-        q(mu),
-        q(tau0),
-        q(cw),
-        None,
-        SlidingLoad::NormalLoad(p2),
-    )
-    .expect("problem")
+    SlidingProblem::builder()
+        .material(material)
+        .period(Period::finite(q(l)).expect("period"))
+        .shape(shape)
+        .friction(q(mu))
+        .adhesive_friction(q(tau0))
+        .wear(q(cw))
+        .normal_load(p2)
+        .build()
+        .expect("problem")
 }
 
 fn westergaard(a_over_l: f64) -> (SlidingProblem, Float) {

@@ -16,8 +16,10 @@
 pub mod adhesion;
 pub mod asymptotics;
 pub mod cli;
+pub mod error;
 pub mod model;
 pub mod numerics;
+pub mod params;
 pub mod report;
 pub mod scene;
 pub mod sliding;

@@ -6,7 +6,7 @@ use clap::Parser;
 use exact_series::Q;
 use periodic_contact::cli::{args::RawArgs, config::RunConfig};
 use periodic_contact::model::{
-    AdhesionProblem, AdhesionSize, Material, Period, PunchShape, SlidingLoad, SlidingProblem,
+    AdhesionProblem, AdhesionSize, Material, Period, PunchShape, SlidingProblem,
 };
 use periodic_contact::scene::parse::parse_scene;
 use proptest::prelude::*;
@@ -132,17 +132,16 @@ fn adversarial_sliding_grid_has_honest_digits_or_clear_errors() {
         let material = Material::from_contact_modulus(nu, q(1, 1)).unwrap();
         let shape =
             if sinus { PunchShape::Sinusoidal { amplitude: q(1, 1) } } else { PunchShape::Parabolic { k: q(1, 1) } };
-        let p = SlidingProblem::new(
-            material,
-            Period::Finite(q(1, 1)),
-            shape,
-            mu,
-            tau0,
-            cw,
-            None,
-            SlidingLoad::NormalLoad(load),
-        )
-        .unwrap();
+        let p = SlidingProblem::builder()
+            .material(material)
+            .period(Period::Finite(q(1, 1)))
+            .shape(shape)
+            .friction(mu)
+            .adhesive_friction(tau0)
+            .wear(cw)
+            .normal_load(load)
+            .build()
+            .unwrap();
         let pts = [q(-9, 10), q(0, 1), q(9, 10)];
         match periodic_contact::sliding::solve_verified(&p, &pts, 20) {
             Ok(sols) => {

@@ -35,10 +35,10 @@ fn sweep_values_are_exact_and_replace_the_load() {
     let probs = s.sweep_problems();
     assert_eq!(probs.len(), 3);
     let SceneProblem::Sliding(p) = &probs[1] else { panic!("sliding") };
-    assert_eq!(p.load, SlidingLoad::NormalLoad(q(3, 1000)));
+    assert_eq!(*p.load(), SlidingLoad::NormalLoad(q(3, 1000)));
     // The scene's own load is kept for `solve`.
     let SceneProblem::Sliding(p0) = &s.problem else { panic!("sliding") };
-    assert_eq!(p0.load, SlidingLoad::NormalLoad(q(1, 100)));
+    assert_eq!(*p0.load(), SlidingLoad::NormalLoad(q(1, 100)));
 }
 
 #[test]

@@ -30,12 +30,12 @@ fn q(n: i64, d: i64) -> Q {
 fn numbers_are_read_exactly_quoted_or_not() {
     let s = parse_scene(BASE).unwrap();
     let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
-    assert_eq!(p.material.poisson_ratio, q(1, 4));
-    assert_eq!(p.material.contact_modulus, q(2, 1));
-    assert_eq!(p.shape, PunchShape::Parabolic { k: q(1, 10) });
-    assert_eq!(p.period, Period::Finite(q(1, 3)));
-    assert_eq!(p.load, SlidingLoad::NormalLoad(q(1, 1000)));
-    assert_eq!(p.friction, q(3, 10));
+    assert_eq!(*p.material().poisson_ratio(), q(1, 4));
+    assert_eq!(*p.material().contact_modulus(), q(2, 1));
+    assert_eq!(*p.shape(), PunchShape::Parabolic { k: q(1, 10) });
+    assert_eq!(*p.period(), Period::Finite(q(1, 3)));
+    assert_eq!(*p.load(), SlidingLoad::NormalLoad(q(1, 1000)));
+    assert_eq!(*p.friction(), q(3, 10));
     assert_eq!(s.output.points, vec![q(-3, 5), q(1, 10), q(7, 10)]);
     assert_eq!(s.output.digits, Some(30));
 }
@@ -81,10 +81,10 @@ fn errors_name_the_parameter_value_and_range() {
 fn single_punch_and_sinusoid() {
     let s = parse_scene(&BASE.replace("\"1/3\"", "\"inf\"")).unwrap();
     let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
-    assert_eq!(p.period, Period::Infinite);
+    assert_eq!(*p.period(), Period::Infinite);
     let s =
         parse_scene(&BASE.replace("shape = \"parabolic\"\nk = 0.1", "shape = \"sinusoidal\"\namplitude = \"0.01\""))
             .unwrap();
     let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
-    assert_eq!(p.shape, PunchShape::Sinusoidal { amplitude: q(1, 100) });
+    assert_eq!(*p.shape(), PunchShape::Sinusoidal { amplitude: q(1, 100) });
 }

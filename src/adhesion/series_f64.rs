@@ -22,7 +22,7 @@
 //! the terms fall below 1e-18, and returns `IllConditioned` when lambda^2 is not well inside the
 //! observed ratio (lambda <= ~0.74 at nu = 0, ~1.2 at nu >= 0.3).
 
-use super::constants;
+use crate::params::adhesion as constants;
 use super::error::AdhesionError;
 use super::kernel::f64k;
 use super::tanh_sinh::tanh_sinh_f64;

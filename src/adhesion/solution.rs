@@ -5,7 +5,7 @@
 //! q = E* k a q~, where the dimensionless ~ quantities depend on nu and lambda = pi a/L only
 //! (lambda = 0 for a single punch: the self-similar solution of THEORY.md section 5).
 
-use super::constants;
+use crate::params::adhesion as constants;
 use super::error::AdhesionError;
 use super::series_f64;
 use super::volterra_mpfr::{self, VolterraParams, VolterraSolution};
@@ -95,7 +95,7 @@ pub fn check_points(points: &[Exact]) -> Result<(), AdhesionError> {
 }
 
 fn inputs(problem: &AdhesionProblem, prec: u32) -> (Float, Float) {
-    (to_float(&problem.material.contact_modulus, prec), to_float(problem.curvature(), prec))
+    (to_float(problem.material().contact_modulus(), prec), to_float(problem.curvature(), prec))
 }
 
 /// Method 1 (MPFR) at the given discretisation, with the tension report.
@@ -120,18 +120,18 @@ pub fn solve_mpfr_with(
     let (e_star, k) = inputs(problem, prec);
     let pi = Float::with_val(prec, Constant::Pi);
     let zero = Float::with_val(prec, 0);
-    let (lambda, a, sol) = match (&problem.size, &problem.period) {
+    let (lambda, a, sol) = match (problem.size(), problem.period()) {
         (AdhesionSize::HalfWidth(a), Period::Infinite) => {
-            let sol = volterra_mpfr::solve(&problem.material, &zero, params)?;
+            let sol = volterra_mpfr::solve(problem.material(), &zero, params)?;
             (zero.clone(), to_float(a, prec), sol)
         }
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
             let lam = volterra_mpfr::lambda_of(a, l, prec);
-            let sol = volterra_mpfr::solve(&problem.material, &lam, params)?;
+            let sol = volterra_mpfr::solve(problem.material(), &lam, params)?;
             (lam, to_float(a, prec), sol)
         }
         (AdhesionSize::NormalLoad(p2), Period::Infinite) => {
-            let sol = volterra_mpfr::solve(&problem.material, &zero, params)?;
+            let sol = volterra_mpfr::solve(problem.material(), &zero, params)?;
             let p = to_float(p2, prec);
             let a = Float::with_val(prec, p / (sol.load_ratio() * &e_star * &k)).sqrt();
             (zero.clone(), a, sol)
@@ -183,7 +183,7 @@ fn lambda_for_load(
     params: VolterraParams,
 ) -> Result<(Float, VolterraSolution), AdhesionError> {
     let prec = params.prec;
-    let cp = constants::single_punch_load_constant(&problem.material, 64).to_f64();
+    let cp = constants::single_punch_load_constant(problem.material(), 64).to_f64();
     let half_pi = std::f64::consts::FRAC_PI_2;
     // Kuznetsov-like first guess: P ~ 2 C_P ln sec(lambda).
     let t = target.to_f64();
@@ -194,7 +194,7 @@ fn lambda_for_load(
     for _attempt in 0..6 {
         let big = (lam0 * 1.15 + 0.02).min(0.5 * (lam0 + half_pi));
         let big_f = Float::with_val(prec, big);
-        let sol = volterra_mpfr::solve(&problem.material, &big_f, params)?;
+        let sol = volterra_mpfr::solve(problem.material(), &big_f, params)?;
         let big2 = Float::with_val(prec, &big_f * &big_f);
         let p_of = |sol: &VolterraSolution, lam: &Float| -> (Float, Float) {
             let tau = Float::with_val(prec, lam * lam) / &big2;
@@ -356,19 +356,19 @@ pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhesion
             expected: "must fit in f64".into(),
         })
     };
-    let e_star = conv(&problem.material.contact_modulus, "contact_modulus")?;
+    let e_star = conv(problem.material().contact_modulus(), "contact_modulus")?;
     let k = conv(problem.curvature(), "k")?;
     let pi = std::f64::consts::PI;
-    let (lambda, a, sol) = match (&problem.size, &problem.period) {
+    let (lambda, a, sol) = match (problem.size(), problem.period()) {
         (AdhesionSize::HalfWidth(a), Period::Infinite) => {
-            (0.0, conv(a, "half_width")?, series_f64::solve(&problem.material, 0.0)?)
+            (0.0, conv(a, "half_width")?, series_f64::solve(problem.material(), 0.0)?)
         }
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
             let lam = pi * conv(&(a / l), "half_width")?;
-            (lam, conv(a, "half_width")?, series_f64::solve(&problem.material, lam)?)
+            (lam, conv(a, "half_width")?, series_f64::solve(problem.material(), lam)?)
         }
         (AdhesionSize::NormalLoad(p2), Period::Infinite) => {
-            let sol = series_f64::solve(&problem.material, 0.0)?;
+            let sol = series_f64::solve(problem.material(), 0.0)?;
             let a = (conv(p2, "normal_load")? / (sol.load_ratio() * e_star * k)).sqrt();
             (0.0, a, sol)
         }
@@ -376,16 +376,16 @@ pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhesion
             let lf = conv(l, "period")?;
             let target = conv(p2, "normal_load")? * pi * pi / (e_star * k * lf * lf);
             // Newton on P(lambda) = lambda^2 P2~(lambda), re-solving the series each step.
-            let cp = constants::single_punch_load_constant(&problem.material, 64).to_f64();
+            let cp = constants::single_punch_load_constant(problem.material(), 64).to_f64();
             let mut lam = (-target / (2.0 * cp)).exp().acos().min(series_f64::SERIES_LAMBDA_MAX);
-            let mut sol = series_f64::solve(&problem.material, lam)?;
+            let mut sol = series_f64::solve(problem.material(), lam)?;
             for it in 0..60 {
                 let p = lam * lam * sol.load_ratio();
                 let d = lam * sol.f_at(1.0);
                 let next = (lam - (p - target) / d).clamp(0.5 * lam, series_f64::SERIES_LAMBDA_MAX);
                 let done = (next - lam).abs() <= 1e-15 * lam;
                 lam = next;
-                sol = series_f64::solve(&problem.material, lam)?;
+                sol = series_f64::solve(problem.material(), lam)?;
                 if done {
                     break;
                 }

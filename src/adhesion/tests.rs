@@ -2,7 +2,7 @@
 //! boundary conditions by an independent evaluation of the surface relations [1.6]-[1.8], load
 //! balance, MPFR vs f64, convergence with nodes, errors.
 
-use super::constants;
+use crate::params::adhesion as constants;
 use super::kernel;
 use super::series_f64;
 use super::solution::{solve_f64, solve_mpfr};
@@ -83,10 +83,10 @@ fn adhesion_single_punch_load_constant_and_slope() {
         let pr = problem(nu.clone(), None, AdhesionSize::HalfWidth(q(1, 2)));
         let s = solve_mpfr(&pr, &pts(), VolterraParams::for_digits(30)).unwrap();
         let prec = s.prec;
-        let cp = constants::single_punch_load_constant(&pr.material, prec);
+        let cp = constants::single_punch_load_constant(pr.material(), prec);
         let want = cp * 2u32 * 3u32 / 4u32;
         assert!(relerr(&s.normal_load, &want) < 1e-30, "nu {nu}");
-        let a1 = constants::single_punch_slope(&pr.material, prec) * 3u32;
+        let a1 = constants::single_punch_slope(pr.material(), prec) * 3u32;
         for p in &s.points[1..] {
             let x = crate::numerics::exact::to_float(&p.x_over_a, prec) / 2u32;
             let w = Float::with_val(prec, &a1 * &x);

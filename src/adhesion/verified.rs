@@ -86,13 +86,13 @@ pub fn solve_verified(
     let cap = (p1.prec as f64) * std::f64::consts::LOG10_2;
     let prec = p2.prec;
     let d = |x: &Float, y: &Float| Float::with_val(prec, x - y);
-    let size = match problem.size {
+    let size = match problem.size() {
         AdhesionSize::HalfWidth(_) => digits(&d(&s1.normal_load, &s2.normal_load), &s2.normal_load, cap),
         AdhesionSize::NormalLoad(_) => digits(&d(&s1.half_width, &s2.half_width), &s2.half_width, cap),
     };
     let a = &s2.half_width;
     let k = to_float(problem.curvature(), prec);
-    let e_star = to_float(&problem.material.contact_modulus, prec);
+    let e_star = to_float(problem.material().contact_modulus(), prec);
     let ka = Float::with_val(prec, &k * a);
     let ka2 = Float::with_val(prec, &ka * a);
     let eka = Float::with_val(prec, &ka * &e_star);

@@ -46,7 +46,7 @@
 //! `solve_verified` reports the loss (fewer verified digits, and a typed error below 2 digits).
 
 use super::chebyshev;
-use super::constants;
+use crate::params::adhesion as constants;
 use super::error::AdhesionError;
 use super::kernel;
 use super::tanh_sinh::TanhSinh;

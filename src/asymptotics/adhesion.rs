@@ -113,7 +113,7 @@
 //! N ~ 302 at nu = 0 (see `crate::adhesion::series_f64`): the exact coefficients then have a pole
 //! in nu, and the series is at best slowly convergent at small nu.
 
-use crate::adhesion::constants;
+use crate::params::adhesion as constants;
 use crate::model::Material;
 use crate::numerics::evaluate::{poly_mpfr, UnboundSymbol};
 use exact_series::{Frac, Gaussian, Poly, Ring, Series, SeriesError, Symbol, Q};

@@ -1,7 +1,7 @@
 //! Problem 2: monotone indentation of periodic punches with complete adhesion
 //! (THEORY.md section 4; the paper's (1.4), (2.18)-(2.26)).
 
-use super::{error::ModelError, Exact, Material, Period, PunchShape};
+use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
 use num_traits::Signed;
 
 /// What fixes the state of the monotone indentation.
@@ -16,14 +16,10 @@ pub enum AdhesionSize {
 /// A validated statement of Problem 2 (symmetric case, b = a, P1 = 0).
 #[derive(Debug, Clone, PartialEq)]
 pub struct AdhesionProblem {
-    /// Half-plane material.
-    pub material: Material,
-    /// Period L, or a single punch.
-    pub period: Period,
-    /// Punch shape (only the parabola g = k x^2 is supported).
-    pub shape: PunchShape,
-    /// Half-width or load.
-    pub size: AdhesionSize,
+    material: Material,
+    period: Period,
+    shape: PunchShape,
+    size: AdhesionSize,
 }
 
 impl AdhesionProblem {
@@ -38,21 +34,40 @@ impl AdhesionProblem {
                 "the adhesion problem supports only the parabolic punch g = k x^2",
             ));
         }
+        shape.validate()?;
+        period.validate()?;
         match &size {
             AdhesionSize::HalfWidth(a) if !a.is_positive() => {
-                return Err(ModelError::new("half_width", a, "must be > 0"))
+                return Err(ModelError::new("half_width", readable(a), "must be > 0"))
             }
             AdhesionSize::NormalLoad(p) if !p.is_positive() => {
-                return Err(ModelError::new("normal_load", p, "must be > 0"))
+                return Err(ModelError::new("normal_load", readable(p), "must be > 0"))
             }
             _ => {}
         }
         if let (AdhesionSize::HalfWidth(a), Period::Finite(l)) = (&size, &period) {
             if (a + a) >= *l {
-                return Err(ModelError::new("half_width", a, format!("must satisfy 2 a < L = {l}")));
+                return Err(ModelError::new("half_width", readable(a), format!("must satisfy 2 a < L = {}", readable(l))));
             }
         }
         Ok(AdhesionProblem { material, period, shape, size })
+    }
+
+    /// Half-plane material.
+    pub fn material(&self) -> &Material {
+        &self.material
+    }
+    /// Period L, or a single punch.
+    pub fn period(&self) -> &Period {
+        &self.period
+    }
+    /// Punch shape (only the parabola g = k x^2 is supported).
+    pub fn shape(&self) -> &PunchShape {
+        &self.shape
+    }
+    /// Half-width or load.
+    pub fn size(&self) -> &AdhesionSize {
+        &self.size
     }
 
     /// Curvature k of the parabola g = k x^2.

@@ -18,3 +18,29 @@ impl ModelError {
         ModelError { parameter: parameter.into(), value: value.to_string(), expected: expected.into() }
     }
 }
+
+/// An exact value for a message: its own text when short (`7/3`, `0.25` as `1/4`), otherwise 7
+/// significant digits (`1.000000e-400`), never a 400-digit expansion.
+pub fn readable(q: &super::Exact) -> String {
+    let text = q.to_string();
+    if text.len() <= 24 {
+        return text;
+    }
+    let r = rug::Rational::from((
+        rug::Integer::from_str_radix(&q.numer().to_str_radix(16), 16).unwrap_or_default(),
+        rug::Integer::from_str_radix(&q.denom().to_str_radix(16), 16).unwrap_or_else(|_| rug::Integer::from(1)),
+    ));
+    rug::Float::with_val(64, r).to_string_radix(10, Some(7))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_values_are_shortened() {
+        let tiny = exact_series::parse_rational("1e-400").unwrap();
+        assert_eq!(readable(&tiny), "1.000000e-400");
+        assert_eq!(readable(&exact_series::parse_rational("7/3").unwrap()), "7/3");
+    }
+}

@@ -7,10 +7,8 @@ use num_traits::{One, Signed, Zero};
 /// `E* = E/(1 - nu^2)` (plane strain), both exact.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
-    /// Poisson's ratio nu, in [0, 1/2].
-    pub poisson_ratio: Exact,
-    /// Contact modulus E* = E/(1 - nu^2) > 0.
-    pub contact_modulus: Exact,
+    poisson_ratio: Exact,
+    contact_modulus: Exact,
 }
 
 impl Material {
@@ -18,7 +16,7 @@ impl Material {
     pub fn from_contact_modulus(nu: Exact, e_star: Exact) -> Result<Self, ModelError> {
         check_nu(&nu)?;
         if !e_star.is_positive() {
-            return Err(ModelError::new("contact_modulus", &e_star, "must be > 0"));
+            return Err(ModelError::new("contact_modulus", super::readable(&e_star), "must be > 0"));
         }
         Ok(Material { poisson_ratio: nu, contact_modulus: e_star })
     }
@@ -27,10 +25,20 @@ impl Material {
     pub fn from_youngs_modulus(nu: Exact, e: Exact) -> Result<Self, ModelError> {
         check_nu(&nu)?;
         if !e.is_positive() {
-            return Err(ModelError::new("youngs_modulus", &e, "must be > 0"));
+            return Err(ModelError::new("youngs_modulus", super::readable(&e), "must be > 0"));
         }
         let e_star = &e / (Exact::one() - &nu * &nu);
         Ok(Material { poisson_ratio: nu, contact_modulus: e_star })
+    }
+
+    /// Poisson's ratio nu, in [0, 1/2].
+    pub fn poisson_ratio(&self) -> &Exact {
+        &self.poisson_ratio
+    }
+
+    /// Contact modulus E* = E/(1 - nu^2) > 0.
+    pub fn contact_modulus(&self) -> &Exact {
+        &self.contact_modulus
     }
 
     /// beta = (1 - 2 nu) / (2 (1 - nu)), in [0, 1/2] (THEORY.md section 1), exact.
@@ -49,7 +57,7 @@ impl Material {
 fn check_nu(nu: &Exact) -> Result<(), ModelError> {
     let half = Exact::new(1.into(), 2.into());
     if nu < &Exact::zero() || nu > &half {
-        return Err(ModelError::new("poisson_ratio", nu, "must lie in [0, 1/2]"));
+        return Err(ModelError::new("poisson_ratio", super::readable(nu), "must lie in [0, 1/2]"));
     }
     Ok(())
 }

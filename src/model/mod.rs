@@ -12,10 +12,10 @@ pub mod punch;
 pub mod sliding;
 
 pub use adhesion::{AdhesionProblem, AdhesionSize};
-pub use error::ModelError;
+pub use error::{readable, ModelError};
 pub use material::Material;
 pub use punch::{Period, PunchShape};
-pub use sliding::{SlidingLoad, SlidingProblem};
+pub use sliding::{Convention, SlidingLoad, SlidingProblem, SlidingProblemBuilder};
 
 /// Exact input number (a reduced rational).
 pub type Exact = num_rational::BigRational;

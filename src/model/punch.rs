@@ -16,9 +16,17 @@ impl Period {
     /// A finite period, validated (> 0).
     pub fn finite(l: Exact) -> Result<Self, ModelError> {
         if !l.is_positive() {
-            return Err(ModelError::new("period", &l, "must be > 0 (or \"inf\" for a single punch)"));
+            return Err(ModelError::new("period", super::readable(&l), "must be > 0 (or \"inf\" for a single punch)"));
         }
         Ok(Period::Finite(l))
+    }
+
+    /// Checks a period built from its variant directly (L > 0).
+    pub fn validate(&self) -> Result<(), ModelError> {
+        match self {
+            Period::Finite(l) => Period::finite(l.clone()).map(|_| ()),
+            Period::Infinite => Ok(()),
+        }
     }
 }
 
@@ -41,15 +49,23 @@ impl PunchShape {
     /// Parabolic punch, validated.
     pub fn parabolic(k: Exact) -> Result<Self, ModelError> {
         if !k.is_positive() {
-            return Err(ModelError::new("k", &k, "must be > 0"));
+            return Err(ModelError::new("k", super::readable(&k), "must be > 0"));
         }
         Ok(PunchShape::Parabolic { k })
+    }
+
+    /// Checks a shape built from its variant directly (k > 0, D > 0).
+    pub fn validate(&self) -> Result<(), ModelError> {
+        match self {
+            PunchShape::Parabolic { k } => PunchShape::parabolic(k.clone()).map(|_| ()),
+            PunchShape::Sinusoidal { amplitude } => PunchShape::sinusoidal(amplitude.clone()).map(|_| ()),
+        }
     }
 
     /// Sinusoidal punch, validated.
     pub fn sinusoidal(amplitude: Exact) -> Result<Self, ModelError> {
         if !amplitude.is_positive() {
-            return Err(ModelError::new("amplitude", &amplitude, "must be > 0"));
+            return Err(ModelError::new("amplitude", super::readable(&amplitude), "must be > 0"));
         }
         Ok(PunchShape::Sinusoidal { amplitude })
     }

@@ -237,9 +237,9 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
     let pi = std::f64::consts::PI;
     match problem {
         SceneProblem::Sliding(p) => {
-            let Period::Finite(big_l) = &p.period else { return 0.0 };
+            let Period::Finite(big_l) = p.period() else { return 0.0 };
             let big_l = to_f64(big_l).unwrap_or(f64::NAN);
-            match &p.load {
+            match p.load() {
                 SlidingLoad::HalfLength(l) => pi * to_f64(l).unwrap_or(f64::NAN) / big_l,
                 SlidingLoad::NormalLoad(_) => crate::solve::series_method::series_point(p, 64)
                     .map(|sp| sp.big_lambda.to_f64())
@@ -247,13 +247,13 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
             }
         }
         SceneProblem::Adhesion(p) => {
-            let Period::Finite(big_l) = &p.period else { return 0.0 };
+            let Period::Finite(big_l) = p.period() else { return 0.0 };
             let big_l = to_f64(big_l).unwrap_or(f64::NAN);
-            match &p.size {
+            match p.size() {
                 AdhesionSize::HalfWidth(a) => pi * to_f64(a).unwrap_or(f64::NAN) / big_l,
                 AdhesionSize::NormalLoad(p2) => {
-                    let cp = crate::adhesion::constants::single_punch_load_constant(&p.material, 64).to_f64();
-                    let ek = to_f64(&p.material.contact_modulus).unwrap_or(f64::NAN)
+                    let cp = crate::params::adhesion::single_punch_load_constant(p.material(), 64).to_f64();
+                    let ek = to_f64(p.material().contact_modulus()).unwrap_or(f64::NAN)
                         * to_f64(p.curvature()).unwrap_or(f64::NAN);
                     pi * (to_f64(p2).unwrap_or(f64::NAN) / (cp * ek)).sqrt() / big_l
                 }
@@ -266,7 +266,7 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
 /// every calibrated material (the prediction takes the worst of them: conservative in nu).
 fn keys_for(table: &Table, problem: &SceneProblem) -> Vec<String> {
     let want = match problem {
-        SceneProblem::Sliding(p) => match p.shape {
+        SceneProblem::Sliding(p) => match p.shape() {
             PunchShape::Parabolic { .. } => "sliding-parabolic",
             PunchShape::Sinusoidal { .. } => "sliding-sinusoidal",
         },
@@ -286,7 +286,7 @@ pub fn choose(table: &Table, problem: &SceneProblem, target: u32) -> Choice {
     let lambda = lambda_estimate(problem);
     let series_ok = match problem {
         SceneProblem::Sliding(p) => {
-            matches!(p.load, SlidingLoad::NormalLoad(_)) && matches!(p.period, Period::Finite(_))
+            matches!(p.load(), SlidingLoad::NormalLoad(_)) && matches!(p.period(), Period::Finite(_))
         }
         SceneProblem::Adhesion(_) => false,
     };
@@ -363,17 +363,14 @@ pub fn sliding_case(big_lambda: f64) -> SlidingProblem {
     let a0 = (2.0 * 0.01 / std::f64::consts::PI).sqrt();
     let l_s = a0 / (1.0 - 4.0 * theta * theta).sqrt();
     let period = rational(std::f64::consts::PI * l_s / big_lambda);
-    SlidingProblem::new(
-        material,
-        Period::Finite(period),
-        PunchShape::Parabolic { k: q(1, 1) },
-        q(3, 10),
-        q(0, 1),
-        q(0, 1),
-        None,
-        SlidingLoad::NormalLoad(q(1, 100)),
-    )
-    .expect("valid case")
+    SlidingProblem::builder()
+        .material(material)
+        .period(Period::Finite(period))
+        .shape(PunchShape::Parabolic { k: q(1, 1) })
+        .friction(q(3, 10))
+        .normal_load(q(1, 100))
+        .build()
+        .expect("valid case")
 }
 
 /// Calibration case of Problem 1 on the sinusoid: D = 1/100, L = 1, nu = 0.3, E* = 1,
@@ -387,17 +384,14 @@ pub fn sinusoid_case(big_lambda: f64) -> SlidingProblem {
     let k = 2.0 * pi * pi * 0.01;
     let a0 = big_lambda / pi * (1.0 - 4.0 * theta * theta).sqrt();
     let p2 = pi * k * a0 * a0 / 2.0;
-    SlidingProblem::new(
-        material,
-        Period::Finite(q(1, 1)),
-        PunchShape::Sinusoidal { amplitude: q(1, 100) },
-        q(3, 10),
-        q(0, 1),
-        q(0, 1),
-        None,
-        SlidingLoad::NormalLoad(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into())),
-    )
-    .expect("valid case")
+    SlidingProblem::builder()
+        .material(material)
+        .period(Period::Finite(q(1, 1)))
+        .shape(PunchShape::Sinusoidal { amplitude: q(1, 100) })
+        .friction(q(3, 10))
+        .normal_load(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into()))
+        .build()
+        .expect("valid case")
 }
 
 /// Calibration case of Problem 2: parabola, nu = 0.3, E* = k = L = 1, a = lambda/pi.

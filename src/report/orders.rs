@@ -13,9 +13,9 @@ use std::time::Instant;
 /// with L, so fixing P2 and varying L does not isolate Lambda).
 fn applies(scene: &Scene) -> bool {
     matches!(&scene.problem, SceneProblem::Sliding(p)
-        if matches!(p.shape, PunchShape::Parabolic { .. })
-        && matches!(p.period, Period::Finite(_))
-        && matches!(p.load, SlidingLoad::NormalLoad(_)))
+        if matches!(p.shape(), PunchShape::Parabolic { .. })
+        && matches!(p.period(), Period::Finite(_))
+        && matches!(p.load(), SlidingLoad::NormalLoad(_)))
 }
 
 /// Builds section 2 for the scenes.

@@ -105,8 +105,8 @@ pub fn digits_of(err: f64, cap: f64) -> f64 {
 /// Whether the problem fixes the size (direct problem) rather than the load.
 pub fn given_size(p: &SceneProblem) -> bool {
     match p {
-        SceneProblem::Sliding(s) => matches!(s.load, SlidingLoad::HalfLength(_)),
-        SceneProblem::Adhesion(a) => matches!(a.size, AdhesionSize::HalfWidth(_)),
+        SceneProblem::Sliding(s) => matches!(s.load(), SlidingLoad::HalfLength(_)),
+        SceneProblem::Adhesion(a) => matches!(a.size(), AdhesionSize::HalfWidth(_)),
     }
 }
 
@@ -147,14 +147,14 @@ pub fn run(problem: &SceneProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
 
 fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Result<Outcome, String> {
     let pi = std::f64::consts::PI;
-    let period = match &p.period {
+    let period = match p.period() {
         crate::model::Period::Finite(l) => crate::numerics::exact::to_f64(l),
         crate::model::Period::Infinite => None,
     };
     let lam = |l: f64| period.map_or(0.0, |big_l| pi * l / big_l);
     match knob {
         Knob::Series(n) => {
-            let shape = match p.shape {
+            let shape = match p.shape() {
                 PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
                 PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
             };
@@ -164,7 +164,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
             let sp = series_point(p, prec).map_err(|e| e.to_string())?;
             let (l, c) = sp.contact(e, n, prec);
             let seconds = start.elapsed().as_secs_f64();
-            let load = match &p.load {
+            let load = match p.load() {
                 SlidingLoad::NormalLoad(x) => crate::numerics::exact::to_float(x, COMPARE_BITS),
                 SlidingLoad::HalfLength(_) => return Err("the series expands at a given load".into()),
             };
@@ -256,18 +256,18 @@ fn adhesion_series(p: &AdhesionProblem, n: usize) -> Result<Outcome, String> {
     let prec = 128;
     let start = Instant::now();
     let v =
-        crate::asymptotics::adhesion::adhesion_values(e, &p.material.poisson_ratio, prec).map_err(|e| e.to_string())?;
+        crate::asymptotics::adhesion::adhesion_values(e, p.material().poisson_ratio(), prec).map_err(|e| e.to_string())?;
     let to = |q: &crate::model::Exact| crate::numerics::exact::to_float(q, prec);
-    let k = match &p.shape {
+    let k = match p.shape() {
         PunchShape::Parabolic { k } => to(k),
         PunchShape::Sinusoidal { .. } => return Err("the adhesion problem is parabolic only".into()),
     };
     let pi = Float::with_val(prec, rug::float::Constant::Pi);
-    let big_l = match &p.period {
+    let big_l = match p.period() {
         crate::model::Period::Finite(l) => Some(to(l)),
         crate::model::Period::Infinite => None,
     };
-    let ck = Float::with_val(prec, &v.load_constant * to(&p.material.contact_modulus)) * &k;
+    let ck = Float::with_val(prec, &v.load_constant * to(p.material().contact_modulus())) * &k;
     let lambda_of = |a: &Float| big_l.as_ref().map_or(Float::with_val(prec, 0), |l| Float::with_val(prec, &pi * a) / l);
     let bracket = |lam: &Float| {
         let l2 = Float::with_val(prec, lam * lam);
@@ -278,7 +278,7 @@ fn adhesion_series(p: &AdhesionProblem, n: usize) -> Result<Outcome, String> {
         }
         acc
     };
-    let (a, load) = match &p.size {
+    let (a, load) = match p.size() {
         AdhesionSize::HalfWidth(a) => {
             let a = to(a);
             let load = Float::with_val(prec, &ck * Float::with_val(prec, &a * &a)) * bracket(&lambda_of(&a));

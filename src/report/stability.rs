@@ -9,7 +9,7 @@ use super::calibration::rational;
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::runner::{self, Knob, Outcome};
 use super::section::{fmt_digits, Ctx, Profile, Section};
-use crate::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::scene::SceneProblem;
 use exact_series::Q;
 use std::fmt::Write as _;
@@ -39,17 +39,15 @@ fn sliding_at(shape: PunchShape, theta: f64, p2: f64) -> Option<SlidingProblem> 
     let beta = 0.4 / 1.4;
     let t = (std::f64::consts::PI * theta.abs()).tan();
     let (mu, cw) = if theta < 0.0 { (rational(t / beta), q(0, 1)) } else { (q(0, 1), rational(2.0 * t)) };
-    SlidingProblem::new(
-        Material::from_contact_modulus(q(3, 10), q(1, 1)).ok()?,
-        Period::Finite(q(1, 1)),
-        shape,
-        mu,
-        q(0, 1),
-        cw,
-        None,
-        SlidingLoad::NormalLoad(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into())),
-    )
-    .ok()
+    SlidingProblem::builder()
+        .material(Material::from_contact_modulus(q(3, 10), q(1, 1)).ok()?)
+        .period(Period::Finite(q(1, 1)))
+        .shape(shape)
+        .friction(mu)
+        .wear(cw)
+        .normal_load(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into()))
+        .build()
+        .ok()
 }
 
 struct Cell {

@@ -38,14 +38,14 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
     let mut out: Vec<ClosedForm> = Vec::new();
     match problem {
         SceneProblem::Sliding(p) => {
-            let e = f(&p.material.contact_modulus);
+            let e = f(p.material().contact_modulus());
             let frictionless =
-                p.kappa() == Exact::from_integer(0.into()) && p.adhesive_friction == Exact::from_integer(0.into());
-            let big_l = match &p.period {
+                p.kappa() == Exact::from_integer(0.into()) && *p.adhesive_friction() == Exact::from_integer(0.into());
+            let big_l = match p.period() {
                 Period::Finite(l) => Some(f(l)),
                 Period::Infinite => None,
             };
-            match &p.shape {
+            match p.shape() {
                 PunchShape::Parabolic { k } => {
                     let k = f(k);
                     let kappa = f(&p.kappa());
@@ -76,15 +76,15 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
             }
         }
         SceneProblem::Adhesion(p) => {
-            let e = f(&p.material.contact_modulus);
+            let e = f(p.material().contact_modulus());
             let k = f(p.curvature());
-            let cp = crate::adhesion::constants::single_punch_load_constant(&p.material, 64).to_f64();
+            let cp = crate::params::adhesion::single_punch_load_constant(p.material(), 64).to_f64();
             out.push((
                 "single punch P2 = C_P E* k a^2 [3.18]".into(),
                 Box::new(move |p2: f64| (p2 / (cp * e * k)).sqrt()),
             ));
-            if let Period::Finite(l) = &p.period {
-                if p.material.poisson_ratio == Exact::new(1.into(), 2.into()) {
+            if let Period::Finite(l) = p.period() {
+                if *p.material().poisson_ratio() == Exact::new(1.into(), 2.into()) {
                     let big_l = f(l);
                     out.push((
                         "Kuznetsov (nu = 1/2) [2.15]".into(),
@@ -99,8 +99,8 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
 
 fn period_of(problem: &SceneProblem) -> Option<f64> {
     let p = match problem {
-        SceneProblem::Sliding(p) => &p.period,
-        SceneProblem::Adhesion(p) => &p.period,
+        SceneProblem::Sliding(p) => p.period(),
+        SceneProblem::Adhesion(p) => p.period(),
     };
     match p {
         Period::Finite(l) => Some(f(l)),

@@ -168,17 +168,7 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
             } else {
                 SlidingLoad::HalfLength(v.clone())
             };
-            SlidingProblem::new(
-                p.material.clone(),
-                p.period.clone(),
-                p.shape.clone(),
-                p.friction.clone(),
-                p.adhesive_friction.clone(),
-                p.wear.clone(),
-                p.speed.clone(),
-                load,
-            )
-            .ok()
+            p.to_builder().load(load).build().ok()
             .map(SceneProblem::Sliding)
         }
         (SceneProblem::Adhesion(p), SweepParameter::NormalLoad | SweepParameter::HalfWidth) => {
@@ -187,7 +177,7 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
             } else {
                 AdhesionSize::HalfWidth(v.clone())
             };
-            AdhesionProblem::new(p.material.clone(), p.period.clone(), p.shape.clone(), size)
+            AdhesionProblem::new(p.material().clone(), p.period().clone(), p.shape().clone(), size)
                 .ok()
                 .map(SceneProblem::Adhesion)
         }

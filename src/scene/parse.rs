@@ -183,17 +183,17 @@ fn parse_sliding(root: &Table) -> Result<SlidingProblem, ModelError> {
         (None, Some(l)) => SlidingLoad::HalfLength(l),
         (None, None) => return Err(ModelError::new("sliding", "(missing)", "give normal_load or half_length")),
     };
-    SlidingProblem::new(
-        material,
-        period,
-        shape,
-        exact_opt(s, "sliding", "friction")?.unwrap_or_else(zero),
-        exact_opt(s, "sliding", "adhesive_friction")?.unwrap_or_else(zero),
-        exact_opt(s, "sliding", "wear")?.unwrap_or_else(zero),
-        exact_opt(s, "sliding", "speed")?,
-        load,
-    )
-    .map_err(|e| prefixed(e, "sliding"))
+    SlidingProblem::builder()
+        .material(material)
+        .period(period)
+        .shape(shape)
+        .friction(exact_opt(s, "sliding", "friction")?.unwrap_or_else(zero))
+        .adhesive_friction(exact_opt(s, "sliding", "adhesive_friction")?.unwrap_or_else(zero))
+        .wear(exact_opt(s, "sliding", "wear")?.unwrap_or_else(zero))
+        .speed(exact_opt(s, "sliding", "speed")?)
+        .load(load)
+        .build()
+        .map_err(|e| prefixed(e, "sliding"))
 }
 
 fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {

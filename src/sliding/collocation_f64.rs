@@ -335,17 +335,17 @@ fn exact_to_f64(q: &crate::model::Exact, name: &'static str, allow_zero: bool) -
 }
 
 fn params_of(problem: &SlidingProblem) -> Result<(Params, Target)> {
-    let e_star = exact_to_f64(&problem.material.contact_modulus, "contact_modulus", false)?;
-    let beta = exact_to_f64(&problem.material.beta(), "beta", true)?;
-    let mu = exact_to_f64(&problem.friction, "friction", true)?;
-    let tau0 = exact_to_f64(&problem.adhesive_friction, "adhesive_friction", true)?;
-    let cw = exact_to_f64(&problem.wear, "wear", true)?;
-    let speed = problem.speed.as_ref().map(|v| exact_to_f64(v, "speed", false)).transpose()?;
-    let period = match &problem.period {
+    let e_star = exact_to_f64(problem.material().contact_modulus(), "contact_modulus", false)?;
+    let beta = exact_to_f64(&problem.material().beta(), "beta", true)?;
+    let mu = exact_to_f64(problem.friction(), "friction", true)?;
+    let tau0 = exact_to_f64(problem.adhesive_friction(), "adhesive_friction", true)?;
+    let cw = exact_to_f64(problem.wear(), "wear", true)?;
+    let speed = problem.speed().as_ref().map(|v| exact_to_f64(v, "speed", false)).transpose()?;
+    let period = match problem.period() {
         Period::Finite(l) => Some(exact_to_f64(l, "period", false)?),
         Period::Infinite => None,
     };
-    let shape = match &problem.shape {
+    let shape = match problem.shape() {
         PunchShape::Parabolic { k } => Shape::Parabolic { k: exact_to_f64(k, "k", false)? },
         PunchShape::Sinusoidal { amplitude } => Shape::Sinusoidal { d: exact_to_f64(amplitude, "amplitude", false)? },
     };
@@ -370,7 +370,7 @@ fn params_of(problem: &SlidingProblem) -> Result<(Params, Target)> {
             ),
         });
     }
-    let target = match &problem.load {
+    let target = match problem.load() {
         SlidingLoad::NormalLoad(p) => Target::Load(exact_to_f64(p, "normal_load", false)?),
         SlidingLoad::HalfLength(l) => Target::HalfLength(exact_to_f64(l, "half_length", false)?),
     };
@@ -1427,7 +1427,16 @@ mod tests {
             Some(l) => Period::finite(l).unwrap(),
             None => Period::Infinite,
         };
-        SlidingProblem::new(mat, per, shape, mu, tau0, cw, None, load).unwrap()
+        SlidingProblem::builder()
+            .material(mat)
+            .period(per)
+            .shape(shape)
+            .friction(mu)
+            .adhesive_friction(tau0)
+            .wear(cw)
+            .load(load)
+            .build()
+            .unwrap()
     }
 
     fn parabola(k: Exact) -> PunchShape {
@@ -1618,7 +1627,7 @@ mod tests {
             check_exact_reduction(&pb, s, TOL);
             assert!(s.accuracy.max() < TOL, "{:?}", s.accuracy);
             // The direct problem at the same l gives the same P2 and c.
-            let pd = SlidingProblem { load: SlidingLoad::HalfLength(Exact::from_float(s.l).unwrap()), ..pb.clone() };
+            let pd = pb.to_builder().load(SlidingLoad::HalfLength(Exact::from_float(s.l).unwrap())).build().unwrap();
             let d = solve_sliding_f64(&pd, &[], &SolverOptions::default()).unwrap();
             let d = d.primary();
             assert!(rel(d.p2, s.p2, s.p2) < TOL && rel(d.c, s.c, s.l) < TOL);
@@ -1654,7 +1663,7 @@ mod tests {
         );
         let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
         let s = s.primary();
-        let single = SlidingProblem { period: Period::Infinite, ..pb.clone() };
+        let single = pb.to_builder().period(Period::Infinite).build().unwrap();
         let t = solve_sliding_f64(&single, &[], &SolverOptions::default()).unwrap();
         let t = t.primary();
         let lam2 = (PI * t.l / 1000.0).powi(2);

@@ -24,25 +24,7 @@ pub enum Shape {
     },
 }
 
-/// Which constant the surface relations carry on a periodic row (THEORY.md section 2).
-///
-/// The paper's symmetric summation of Flamant's solutions [1.6]-[1.8] with the wear law
-/// v' = g' - cW p leaves a surface that does not close over a period: the gap h = g - delta - v
-/// (+ wear) gains M = (2/E*) beta P1 - cW P2 per period (proved numerically by the test
-/// `paper_convention_gap_mismatch`). Requiring a periodic surface (mean of v' zero; mean wear slope
-/// cW P2/L in the co-descending frame, w' = cW (P2/L - p)) changes [2.8] to
-///     kappa p + H[p] = (E*/2) g' + beta tau0 + K,   K = (kappa P2 - 2 beta l tau0)/L   [reconstructed],
-/// i.e. beta tau0 -> beta tau0 + K in [2.14]. K -> 0 for a single punch and vanishes when kappa = 0
-/// and tau0 = 0; it is odd in lambda (K/(E* k l) ~ kappa lambda/2), so the paper's expansions in
-/// even powers of lambda belong to [`Convention::Paper`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Convention {
-    /// The paper's (THEORY.md's) convention: no constant K. The default.
-    #[default]
-    Paper,
-    /// The periodic-surface model: the constant K above.
-    PeriodicSurface,
-}
+pub use crate::model::Convention;
 
 /// Every input of Problem 1 rounded once to `prec` bits, plus the derived constants.
 #[derive(Debug, Clone)]
@@ -87,28 +69,17 @@ impl Setup {
     /// As [`Setup::new`], with the surface convention `convention`.
     pub fn with_convention(problem: &SlidingProblem, prec: u32, convention: Convention) -> Result<Self, SlidingError> {
         // The problem's fields are public: re-validate, so that no input can reach a panic or NaN.
-        let m = &problem.material;
-        crate::model::Material::from_contact_modulus(m.poisson_ratio.clone(), m.contact_modulus.clone())
-            .and_then(|_| match &problem.shape {
+        let m = problem.material();
+        crate::model::Material::from_contact_modulus(m.poisson_ratio().clone(), m.contact_modulus().clone())
+            .and_then(|_| match problem.shape() {
                 PunchShape::Parabolic { k } => PunchShape::parabolic(k.clone()),
                 PunchShape::Sinusoidal { amplitude } => PunchShape::sinusoidal(amplitude.clone()),
             })
-            .and_then(|_| match &problem.period {
+            .and_then(|_| match problem.period() {
                 Period::Finite(l) => Period::finite(l.clone()).map(|_| ()),
                 Period::Infinite => Ok(()),
             })
-            .and_then(|_| {
-                SlidingProblem::new(
-                    problem.material.clone(),
-                    problem.period.clone(),
-                    problem.shape.clone(),
-                    problem.friction.clone(),
-                    problem.adhesive_friction.clone(),
-                    problem.wear.clone(),
-                    problem.speed.clone(),
-                    problem.load.clone(),
-                )
-            })
+            .and_then(|_| problem.to_builder().build())
             .map_err(|e| SlidingError::Parameter { parameter: e.parameter, value: e.value, expected: e.expected })?;
         let pi = Float::with_val(prec, Constant::Pi);
         let kappa = to_float(&problem.kappa(), prec);
@@ -122,22 +93,22 @@ impl Setup {
             ));
         }
         let cos_pi_theta = Float::with_val(prec, &pi * &theta).cos();
-        let period = match &problem.period {
+        let period = match problem.period() {
             Period::Finite(l) => Some(to_float(l, prec)),
             Period::Infinite => None,
         };
-        let shape = match &problem.shape {
+        let shape = match problem.shape() {
             PunchShape::Parabolic { k } => Shape::Parabolic { k: to_float(k, prec) },
             PunchShape::Sinusoidal { amplitude } => Shape::Sinusoidal { d: to_float(amplitude, prec) },
         };
         Ok(Setup {
             prec,
-            e_star: to_float(&problem.material.contact_modulus, prec),
-            beta: to_float(&problem.material.beta(), prec),
-            mu: to_float(&problem.friction, prec),
-            tau0: to_float(&problem.adhesive_friction, prec),
-            wear: to_float(&problem.wear, prec),
-            speed: problem.speed.as_ref().map(|v| to_float(v, prec)),
+            e_star: to_float(problem.material().contact_modulus(), prec),
+            beta: to_float(&problem.material().beta(), prec),
+            mu: to_float(problem.friction(), prec),
+            tau0: to_float(problem.adhesive_friction(), prec),
+            wear: to_float(problem.wear(), prec),
+            speed: problem.speed().as_ref().map(|v| to_float(v, prec)),
             kappa,
             theta,
             cos_pi_theta,

@@ -424,7 +424,7 @@ pub fn solve_located(
     // Candidate (size, centre) pairs at working precision.
     let mut cands: Vec<(Float, ShiftSolution, usize, Located)> = vec![];
     let sinusoid = matches!(setup.shape, Shape::Sinusoidal { .. });
-    match &problem.load {
+    match problem.load() {
         SlidingLoad::HalfLength(l) => {
             let lf = to_float(l, prec);
             let s = match &setup.period {
@@ -493,7 +493,7 @@ pub fn solve_located(
         }
     }
     if out.is_empty() {
-        if let (SlidingLoad::NormalLoad(p2), true) = (&problem.load, sinusoid) {
+        if let (SlidingLoad::NormalLoad(p2), true) = (problem.load(), sinusoid) {
             let why = match sinusoid_max_physical_load(problem, convention)? {
                 Some((v, lam)) => format!(
                     "the solutions of the equations are not physical ({}); the sinusoid carries at most P2 = {v:.6e} (at lambda = {lam:.4}) at these friction and wear values",

@@ -27,7 +27,17 @@ fn problem(
 ) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(nu), q(e)).unwrap();
     let period = if period == "inf" { Period::Infinite } else { Period::finite(q(period)).unwrap() };
-    SlidingProblem::new(material, period, shape, q(mu), q(tau0), q(cw), Some(q("2")), load).unwrap()
+    SlidingProblem::builder()
+        .material(material)
+        .period(period)
+        .shape(shape)
+        .friction(q(mu))
+        .adhesive_friction(q(tau0))
+        .wear(q(cw))
+        .speed(Some(q("2")))
+        .load(load)
+        .build()
+        .unwrap()
 }
 
 /// -log10(|x - y|/|scale|).
@@ -343,15 +353,11 @@ fn theta_too_close_to_one_half_and_bad_points_are_errors() {
     assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter == "points"), "{e}");
     // A point that rounds to 1 in f64 is still inside (-1, 1): compared exactly.
     assert!(solve_verified(&pb, &[q("99999999999999999999/100000000000000000000")], 20).is_ok());
-    // Fields are public: a problem built without the model's validation is an error, not a panic.
-    let mut bad = pb.clone();
-    bad.shape = PunchShape::Sinusoidal { amplitude: q("1") };
-    bad.period = Period::Infinite;
-    let e = solve_verified(&bad, &[], 20).unwrap_err();
-    assert!(matches!(&e, SlidingError::Parameter { parameter, .. } if parameter == "period"), "{e}");
-    let mut bad = pb.clone();
-    bad.shape = PunchShape::Parabolic { k: q("-1") };
-    assert!(matches!(solve_verified(&bad, &[], 20), Err(SlidingError::Parameter { .. })));
+    // Variants built directly are validated once, when the problem is built.
+    let e = pb.to_builder().shape(PunchShape::Sinusoidal { amplitude: q("1") }).period(Period::Infinite).build();
+    assert_eq!(e.unwrap_err().parameter, "period");
+    let e = pb.to_builder().shape(PunchShape::Parabolic { k: q("-1") }).build();
+    assert_eq!(e.unwrap_err().parameter, "k");
 }
 
 /// Timings of `solve_verified` at 30 digits (first call builds the rules, later calls reuse them).

@@ -201,23 +201,20 @@ fn sliding_solution_json(v: &sliding::VerifiedSolution, digits: u32) -> Map<Stri
 /// Lets the MPFR path accept moduli and loads beyond the f64 range, where its f64 starting stage
 /// would otherwise overflow.
 fn in_modulus_units(p: &SlidingProblem) -> Result<(SlidingProblem, crate::model::Exact), SolveError> {
-    let e = p.material.contact_modulus.clone();
+    let e = p.material().contact_modulus().clone();
     let material =
-        crate::model::Material::from_contact_modulus(p.material.poisson_ratio.clone(), num_traits::One::one())?;
-    let load = match &p.load {
+        crate::model::Material::from_contact_modulus(p.material().poisson_ratio().clone(), num_traits::One::one())?;
+    let load = match p.load() {
         crate::model::SlidingLoad::NormalLoad(x) => crate::model::SlidingLoad::NormalLoad(x / &e),
         other => other.clone(),
     };
-    let scaled = SlidingProblem::new(
-        material,
-        p.period.clone(),
-        p.shape.clone(),
-        p.friction.clone(),
-        &p.adhesive_friction / &e,
-        &p.wear * &e,
-        p.speed.clone(),
-        load,
-    )?;
+    let scaled = p
+        .to_builder()
+        .material(material)
+        .adhesive_friction(p.adhesive_friction() / &e)
+        .wear(p.wear() * &e)
+        .load(load)
+        .build()?;
     Ok((scaled, e))
 }
 
@@ -274,7 +271,7 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<V
         m.insert("kappa".into(), json!(fmt_f64(s.kappa, 16)));
         m.insert(
             "lambda".into(),
-            if matches!(p.period, Period::Infinite) { Value::Null } else { json!(v(s.lambda, s.lambda, g)) },
+            if matches!(p.period(), Period::Infinite) { Value::Null } else { json!(v(s.lambda, s.lambda, g)) },
         );
         m.insert("l".into(), json!(v(s.l, s.l, g)));
         m.insert("a".into(), json!(v(s.a, s.l, g)));
@@ -317,11 +314,11 @@ fn adhesion_mpfr(p: &crate::model::AdhesionProblem, scene: &Scene, req: SolveReq
     let dv = &v.digits_verified;
     let digits = req.digits;
     let prec = s.prec;
-    let k = match &p.shape {
+    let k = match p.shape() {
         crate::model::PunchShape::Parabolic { k } => crate::numerics::exact::to_float(k, prec),
         crate::model::PunchShape::Sinusoidal { .. } => unreachable!("validated: adhesion is parabolic only"),
     };
-    let e_star = crate::numerics::exact::to_float(&p.material.contact_modulus, prec);
+    let e_star = crate::numerics::exact::to_float(p.material().contact_modulus(), prec);
     let a = &s.half_width;
     let ka = rug::Float::with_val(prec, &k * a);
     let ka2 = rug::Float::with_val(prec, &ka * a);
@@ -344,7 +341,7 @@ fn adhesion_mpfr(p: &crate::model::AdhesionProblem, scene: &Scene, req: SolveReq
     m.insert("problem".into(), json!("adhesion"));
     m.insert(
         "lambda".into(),
-        if matches!(p.period, Period::Infinite) {
+        if matches!(p.period(), Period::Infinite) {
             Value::Null
         } else {
             json!(fmt_float(&s.lambda, digits_in_value(&s.lambda, &s.lambda, dv.size, digits)))
@@ -393,7 +390,7 @@ fn adhesion_f64(p: &crate::model::AdhesionProblem, scene: &Scene, req: SolveRequ
     };
     Ok(json!({
         "problem": "adhesion",
-        "lambda": if matches!(p.period, Period::Infinite) { Value::Null } else { json!(fmt_f64(s.lambda, digits)) },
+        "lambda": if matches!(p.period(), Period::Infinite) { Value::Null } else { json!(fmt_f64(s.lambda, digits)) },
         "P2": fmt_f64(s.normal_load, digits),
         "half_width": fmt_f64(s.half_width, digits),
         "digits_requested": req.digits.to_string(),

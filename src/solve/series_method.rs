@@ -68,7 +68,7 @@ impl SeriesPoint {
 
 /// theta, T, Lambda, l_s for a problem given by its load (THEORY.md [3.10]).
 pub fn series_point(p: &SlidingProblem, prec: u32) -> Result<SeriesPoint, SolveError> {
-    let big_l = match &p.period {
+    let big_l = match p.period() {
         Period::Finite(l) => to_float(l, prec),
         Period::Infinite => {
             return Err(SolveError::Invalid(InvalidInput::new(
@@ -78,7 +78,7 @@ pub fn series_point(p: &SlidingProblem, prec: u32) -> Result<SeriesPoint, SolveE
             )))
         }
     };
-    let p2 = match &p.load {
+    let p2 = match p.load() {
         SlidingLoad::NormalLoad(x) => to_float(x, prec),
         SlidingLoad::HalfLength(_) => {
             return Err(SolveError::Invalid(InvalidInput::new(
@@ -89,8 +89,8 @@ pub fn series_point(p: &SlidingProblem, prec: u32) -> Result<SeriesPoint, SolveE
         }
     };
     let pi = Float::with_val(prec, rug::float::Constant::Pi);
-    let e_star = to_float(&p.material.contact_modulus, prec);
-    let k = match &p.shape {
+    let e_star = to_float(p.material().contact_modulus(), prec);
+    let k = match p.shape() {
         PunchShape::Parabolic { k } => to_float(k, prec),
         PunchShape::Sinusoidal { amplitude } => {
             // osculating parabola: k = 2 pi^2 D / L^2
@@ -107,8 +107,8 @@ pub fn series_point(p: &SlidingProblem, prec: u32) -> Result<SeriesPoint, SolveE
     let a0 = (Float::with_val(prec, 2 * &p2) / Float::with_val(prec, &pi * &e_k)).sqrt();
     let one_m = Float::with_val(prec, 1 - Float::with_val(prec, 4 * Float::with_val(prec, &theta * &theta)));
     let l_s = Float::with_val(prec, &a0 / one_m.sqrt());
-    let beta = to_float(&p.material.beta(), prec);
-    let tau0 = to_float(&p.adhesive_friction, prec);
+    let beta = to_float(&p.material().beta(), prec);
+    let tau0 = to_float(p.adhesive_friction(), prec);
     let t = Float::with_val(prec, beta * tau0 / Float::with_val(prec, &e_k * &l_s));
     let big_lambda = Float::with_val(prec, Float::with_val(prec, &pi * &l_s) / &big_l);
     Ok(SeriesPoint { theta, t, big_lambda, l_s, e_k, k })
@@ -167,7 +167,7 @@ pub fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> R
             fmt_float(&sp.big_lambda, 6)
         )));
     }
-    let shape = match p.shape {
+    let shape = match p.shape() {
         PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
         PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
     };
@@ -184,7 +184,7 @@ pub fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> R
     };
     let g = est(&hi.l, &lo.l, &hi.l).min(est(&hi.c, &lo.c, &hi.l));
     let pmax = hi.pressure.iter().fold(Float::with_val(prec, 0), |m, x| if *x > m { x.clone() } else { m });
-    let p2 = match &p.load {
+    let p2 = match p.load() {
         SlidingLoad::NormalLoad(x) => to_float(x, prec),
         SlidingLoad::HalfLength(_) => unreachable!("checked in series_point"),
     };
@@ -193,17 +193,17 @@ pub fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> R
     let pd = hi.pressure.iter().zip(&lo.pressure).map(|(x, y)| est(x, y, &pmax)).fold(f64::INFINITY, f64::min);
     let headline = g.min(fd).min(pd);
     let pi = Float::with_val(prec, rug::float::Constant::Pi);
-    let big_l = match &p.period {
+    let big_l = match p.period() {
         Period::Finite(l) => to_float(l, prec),
         Period::Infinite => unreachable!("checked in series_point"),
     };
     let lambda = Float::with_val(prec, &pi * &hi.l) / &big_l;
     let a = Float::with_val(prec, &hi.l - &hi.c);
     let b = Float::with_val(prec, &hi.l + &hi.c);
-    let mu = to_float(&p.friction, prec);
-    let tau0 = to_float(&p.adhesive_friction, prec);
+    let mu = to_float(p.friction(), prec);
+    let tau0 = to_float(p.adhesive_friction(), prec);
     let p1 = Float::with_val(prec, &mu * &p2) + Float::with_val(prec, 2 * &hi.l) * &tau0;
-    let cw = to_float(&p.wear, prec);
+    let cw = to_float(p.wear(), prec);
     let wear = Float::with_val(prec, &cw * &p2) / &big_l;
     let show = |x: &Float, scale: &Float, d: f64| Value::String(fmt_float(x, digits_in_value(x, scale, d, digits)));
     let mut m = Map::new();
@@ -221,7 +221,7 @@ pub fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> R
     m.insert("wear_per_distance".into(), json!(fmt_float(&wear, digits as usize)));
     m.insert(
         "wear_rate".into(),
-        match &p.speed {
+        match p.speed() {
             Some(v) => json!(fmt_float(&Float::with_val(prec, &wear * to_float(v, prec)), digits as usize)),
             None => Value::Null,
         },

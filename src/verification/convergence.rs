@@ -7,7 +7,7 @@
 //! slope; fixing P2 keeps theta and T fixed while Lambda = pi l_s / L varies.
 
 use crate::asymptotics::sliding::{sliding_expansion, SlidingShape};
-use crate::model::{Exact, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::model::{Exact, Period, PunchShape, SlidingProblem};
 use crate::sliding::{self, SlidingError};
 use crate::solve::series_method::series_point;
 use exact_series::Q;
@@ -62,7 +62,7 @@ pub fn sliding_convergence(
     max_corrections: usize,
     digits: u32,
 ) -> Result<ConvergenceStudy, SlidingError> {
-    let shape = match base.shape {
+    let shape = match base.shape() {
         PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
         PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
     };
@@ -70,8 +70,7 @@ pub fn sliding_convergence(
     let expansion = sliding_expansion(shape, order).map_err(|e| SlidingError::NoConvergence(e.to_string()))?;
     let prec = sliding::precision_for(digits);
     // l_s does not depend on L: take it from a single-punch statement of the same load.
-    let mut single = base.clone();
-    single.period = Period::Infinite;
+    let single = base.to_builder().period(Period::Infinite).build().map_err(|e| SlidingError::parameter(e.parameter, e.value, e.expected))?;
     let sp_inf = l_s_of(&single, prec)?;
     let mut lambdas = Vec::new();
     let mut rem_l: Vec<Vec<f64>> = vec![Vec::new(); max_corrections + 1];
@@ -81,8 +80,11 @@ pub fn sliding_convergence(
         // L = pi l_s / Lambda, rounded to an exact rational (Lambda is then recomputed exactly).
         let l_period = std::f64::consts::PI * sp_inf / target;
         let big_l = Q::new(((l_period * 1e6).round() as i64).into(), 1_000_000.into());
-        let mut p = base.clone();
-        p.period = Period::Finite(big_l);
+        let p = base
+            .to_builder()
+            .period(Period::Finite(big_l))
+            .build()
+            .map_err(|e| SlidingError::parameter(e.parameter, e.value, e.expected))?;
         let sol =
             sliding::solve_verified(&p, &[], digits)?.into_iter().next().ok_or_else(|| SlidingError::NoSolution {
                 load: "given".into(),
@@ -129,15 +131,14 @@ fn l_s_of(single: &SlidingProblem, prec: u32) -> Result<f64, SlidingError> {
 /// (replaced by the study).
 pub fn parabola_case(nu: Exact, mu: Exact, tau0: Exact, wear: Exact, p2: Exact) -> SlidingProblem {
     let material = crate::model::Material::from_contact_modulus(nu, Q::from_integer(1.into())).expect("valid nu");
-    SlidingProblem::new(
-        material,
-        Period::Finite(Q::from_integer(1.into())),
-        PunchShape::Parabolic { k: Q::from_integer(1.into()) },
-        mu,
-        tau0,
-        wear,
-        None,
-        SlidingLoad::NormalLoad(p2),
-    )
-    .expect("valid case")
+    SlidingProblem::builder()
+        .material(material)
+        .period(Period::Finite(Q::from_integer(1.into())))
+        .shape(PunchShape::Parabolic { k: Q::from_integer(1.into()) })
+        .friction(mu)
+        .adhesive_friction(tau0)
+        .wear(wear)
+        .normal_load(p2)
+        .build()
+        .expect("valid case")
 }

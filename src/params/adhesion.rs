@@ -11,8 +11,77 @@ use rug::float::Constant;
 use rug::ops::Pow;
 use rug::{Complex, Float};
 
-/// Guard bits added to every intermediate precision in this module.
-pub const GUARD_BITS: u32 = 24;
+use crate::numerics::precision::CONSTANT_GUARD_BITS as GUARD_BITS;
+
+/// The derived material constants of Problem 2 in MPFR, computed once per problem and precision:
+/// every solver, series evaluation and renderer of Problem 2 reads them from here.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AdhesionParamsMpfr {
+    /// Working precision in bits.
+    pub prec: u32,
+    /// beta = (1 - 2 nu)/(2 (1 - nu)), rounded once from its exact value.
+    pub beta: Float,
+    /// eps = ln(3 - 4 nu)/(2 pi).
+    pub eps: Float,
+    /// cosh(pi eps) = (kappa + 1)/(2 sqrt(kappa)), kappa = 3 - 4 nu.
+    pub cosh_pi_eps: Float,
+    /// B = pi/cosh(pi eps).
+    pub b: Float,
+    /// S(eps) = int_0^inf sin(2 eps y)/cosh y dy.
+    pub s: Float,
+}
+
+impl AdhesionParamsMpfr {
+    /// eps, cosh(pi eps), B and S(eps) of `material` at `prec` bits (each to < 1 ulp + the
+    /// proven bound of [`s_const`]).
+    pub fn new(material: &Material, prec: u32) -> Self {
+        let w = prec + GUARD_BITS;
+        let e = eps(material, w);
+        let s = s_const(&e, w);
+        AdhesionParamsMpfr {
+            prec,
+            beta: to_float(&material.beta(), prec),
+            eps: Float::with_val(prec, &e),
+            cosh_pi_eps: cosh_pi_eps(material, prec),
+            b: b_const(material, prec),
+            s: Float::with_val(prec, s),
+        }
+    }
+
+    /// The same constants rounded to `f64` (each rounded once from its MPFR value).
+    pub fn to_f64(&self) -> AdhesionParamsF64 {
+        AdhesionParamsF64 {
+            beta: self.beta.to_f64(),
+            eps: self.eps.to_f64(),
+            cosh_pi_eps: self.cosh_pi_eps.to_f64(),
+            b: self.b.to_f64(),
+            s: self.s.to_f64(),
+        }
+    }
+}
+
+/// The derived material constants of Problem 2 in `f64` ([`AdhesionParamsMpfr::to_f64`], or
+/// [`AdhesionParamsF64::new`] which rounds 64-bit values once).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdhesionParamsF64 {
+    /// beta.
+    pub beta: f64,
+    /// eps.
+    pub eps: f64,
+    /// cosh(pi eps).
+    pub cosh_pi_eps: f64,
+    /// B = pi/cosh(pi eps).
+    pub b: f64,
+    /// S(eps).
+    pub s: f64,
+}
+
+impl AdhesionParamsF64 {
+    /// The constants of `material`, computed in MPFR at 64 bits and rounded once to `f64`.
+    pub fn new(material: &Material) -> Self {
+        AdhesionParamsMpfr::new(material, 64).to_f64()
+    }
+}
 
 /// eps = ln(3 - 4 nu)/(2 pi) [THEORY.md section 1], rounded once from the exact kappa.
 pub fn eps(material: &Material, prec: u32) -> Float {

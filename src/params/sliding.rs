@@ -1,0 +1,421 @@
+//! Derived parameters of Problem 1, computed once from the exact problem (THEORY.md sections 1, 3,
+//! 5, 8): kappa, theta, beta, the osculating curvature k, the Hertz half-width a0 and the
+//! single-punch half-length l_s, in `f64` ([`SlidingParamsF64`]) and in MPFR
+//! ([`SlidingParamsMpfr`]). Every solver, series evaluation, report section and renderer reads
+//! them from here; each formula below is written once per number type.
+//!
+//! Formulas:
+//! - kappa = E* cW/2 - beta mu [2.8] (exact, [`SlidingProblem::kappa`]); theta = arctan(kappa)/pi;
+//! - beta = (1 - 2 nu)/(2 (1 - nu)) (exact, `Material::beta`);
+//! - osculating curvature: k for g = k x^2; 2 pi^2 D/L^2 for g = D (1 - cos(2 pi x/L)) [2.16];
+//! - a0 = sqrt(2 P2/(pi E* k)) (Hertz half-width), l_s = a0/sqrt(1 - 4 theta^2) [3.10];
+//! - T = beta tau0/(E* k l_s) [3.10].
+//!
+//! Units: the MPFR parameters also carry the problem in units of E* (E* -> 1, loads and stresses
+//! / E*, tau0 / E*, cW E*; kappa, theta, T and lengths unchanged), so that moduli and loads beyond
+//! the `f64` range reach the solvers' `f64` stages; [`SlidingParamsMpfr::unit`] converts back.
+
+use crate::error::Error;
+use crate::model::{Convention, Exact, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::numerics::exact::{to_f64, to_float};
+use rug::float::Constant;
+use rug::Float;
+use std::f64::consts::PI;
+
+/// Smallest allowed distance of |theta| from 1/2: the end exponents 1/2 -+ theta of the pressure
+/// reach 0 and the Gauss–Jacobi rules of 1/omega (exponents theta - 1/2, -theta - 1/2 > -1) need
+/// ever more nodes (THEORY.md section 7). |theta| <= 1/2 - 1e-6 means |kappa| <= about 3e5.
+pub const THETA_MARGIN: f64 = 1e-6;
+
+/// theta = arctan(kappa)/pi (THEORY.md section 3), `f64`.
+pub fn theta_f64(kappa: f64) -> f64 {
+    kappa.atan() / PI
+}
+
+/// theta = arctan(kappa)/pi (THEORY.md section 3), MPFR at the precision of `kappa`.
+pub fn theta_mpfr(kappa: &Float) -> Float {
+    let prec = kappa.prec();
+    Float::with_val(prec, kappa.atan_ref()) / Float::with_val(prec, Constant::Pi)
+}
+
+/// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (THEORY.md section 6), `f64`.
+pub fn hertz_half_width_f64(p2: f64, e_star: f64, k: f64) -> f64 {
+    (2.0 * p2 / (PI * e_star * k)).sqrt()
+}
+
+/// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (THEORY.md section 6), MPFR.
+pub fn hertz_half_width_mpfr(p2: &Float, e_star: &Float, k: &Float) -> Float {
+    let prec = p2.prec();
+    let pi = Float::with_val(prec, Constant::Pi);
+    let den = Float::with_val(prec, &pi * e_star) * k;
+    Float::with_val(prec, Float::with_val(prec, p2 * 2u32) / den).sqrt()
+}
+
+/// Single-punch half-length l_s = a0/sqrt(1 - 4 theta^2) [3.10], `f64`.
+pub fn single_punch_half_length_f64(a0: f64, theta: f64) -> f64 {
+    a0 / (1.0 - 4.0 * theta * theta).sqrt()
+}
+
+/// Single-punch half-length l_s = a0/sqrt(1 - 4 theta^2) [3.10], MPFR.
+pub fn single_punch_half_length_mpfr(a0: &Float, theta: &Float) -> Float {
+    let prec = a0.prec();
+    let t2 = Float::with_val(prec, theta * theta) * 4u32;
+    Float::with_val(prec, a0 / Float::with_val(prec, 1u32 - t2).sqrt())
+}
+
+/// Curvature of the (osculating) parabola: k, or 2 pi^2 D/L^2 for the sinusoid [2.16], `f64`.
+pub fn osculating_k_f64(shape: ShapeF64, period: Option<f64>) -> f64 {
+    match (shape, period) {
+        (ShapeF64::Parabolic { k }, _) => k,
+        (ShapeF64::Sinusoidal { d }, Some(l)) => 2.0 * PI * PI * d / (l * l),
+        (ShapeF64::Sinusoidal { .. }, None) => f64::NAN, // refused by the model: a sinusoid has a period
+    }
+}
+
+/// Curvature of the (osculating) parabola: k, or 2 pi^2 D/L^2 for the sinusoid [2.16], MPFR.
+pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
+    match (shape, period) {
+        (ShapeMpfr::Parabolic { k }, _) => k.clone(),
+        (ShapeMpfr::Sinusoidal { d }, Some(l)) => {
+            let prec = d.prec();
+            let pi = Float::with_val(prec, Constant::Pi);
+            Float::with_val(prec, &pi * &pi) * d * 2u32 / Float::with_val(prec, l * l)
+        }
+        (ShapeMpfr::Sinusoidal { d }, None) => Float::with_val(d.prec(), rug::float::Special::Nan),
+    }
+}
+
+/// Punch shape in `f64`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ShapeF64 {
+    /// g = k x^2.
+    Parabolic {
+        /// k.
+        k: f64,
+    },
+    /// g = D (1 - cos(2 pi x/L)) [2.16].
+    Sinusoidal {
+        /// D.
+        d: f64,
+    },
+}
+
+/// Punch shape in MPFR.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeMpfr {
+    /// g = k x^2.
+    Parabolic {
+        /// k.
+        k: Float,
+    },
+    /// g = D (1 - cos(2 pi x/L)) [2.16].
+    Sinusoidal {
+        /// D.
+        d: Float,
+    },
+}
+
+/// What fixes the contact, in `f64`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TargetF64 {
+    /// Given P2.
+    NormalLoad(f64),
+    /// Given l.
+    HalfLength(f64),
+}
+
+/// Problem 1 in `f64`: every input rounded once from its exact value, and the derived numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlidingParamsF64 {
+    /// E*.
+    pub e_star: f64,
+    /// beta (rounded once from its exact value).
+    pub beta: f64,
+    /// mu.
+    pub mu: f64,
+    /// tau0.
+    pub tau0: f64,
+    /// cW.
+    pub wear: f64,
+    /// V, if given.
+    pub speed: Option<f64>,
+    /// kappa (rounded once from its exact value).
+    pub kappa: f64,
+    /// theta = arctan(kappa)/pi.
+    pub theta: f64,
+    /// Period L (None: single punch).
+    pub period: Option<f64>,
+    /// Shape.
+    pub shape: ShapeF64,
+    /// Osculating curvature k.
+    pub k: f64,
+    /// Load or size.
+    pub target: TargetF64,
+    /// Surface convention (THEORY.md section 8).
+    pub convention: Convention,
+}
+
+fn f64_of(q: &Exact, parameter: &str, allow_zero: bool) -> Result<f64, Error> {
+    match to_f64(q) {
+        Some(v) if v.is_finite() && (allow_zero || v != 0.0) => Ok(v),
+        _ => Err(Error::Input(ModelError::new(
+            parameter,
+            crate::model::readable(q),
+            "must be representable in f64 (about 1e-308 to 1e308 in magnitude) for the f64 method; the mpfr method takes any value",
+        ))),
+    }
+}
+
+/// The theta margin check, shared by both number types.
+fn check_theta(theta_abs: f64, theta_text: String, problem: &SlidingProblem) -> Result<(), Error> {
+    if !(0.5 - theta_abs >= THETA_MARGIN) {
+        return Err(Error::Input(ModelError::new(
+            "theta = arctan(kappa)/pi",
+            format!("{theta_text} (kappa = E* cW/2 - beta mu = {})", crate::model::readable(&problem.kappa())),
+            format!("|theta| must be <= 1/2 - {THETA_MARGIN:e}: friction or wear too large for the quadrature"),
+        )));
+    }
+    Ok(())
+}
+
+impl SlidingParamsF64 {
+    /// Rounds the exact inputs once to `f64` and derives kappa, theta and k. Errors when an input
+    /// is outside the `f64` range or |theta| is within [`THETA_MARGIN`] of 1/2.
+    pub fn new(problem: &SlidingProblem) -> Result<Self, Error> {
+        let m = problem.material();
+        let e_star = f64_of(m.contact_modulus(), "contact_modulus", false)?;
+        let beta = f64_of(&m.beta(), "beta", true)?;
+        let mu = f64_of(problem.friction(), "friction", true)?;
+        let tau0 = f64_of(problem.adhesive_friction(), "adhesive_friction", true)?;
+        let wear = f64_of(problem.wear(), "wear", true)?;
+        let speed = problem.speed().map(|v| f64_of(v, "speed", false)).transpose()?;
+        let period = match problem.period() {
+            Period::Finite(l) => Some(f64_of(l, "period", false)?),
+            Period::Infinite => None,
+        };
+        let shape = match problem.shape() {
+            PunchShape::Parabolic { k } => ShapeF64::Parabolic { k: f64_of(k, "k", false)? },
+            PunchShape::Sinusoidal { amplitude } => ShapeF64::Sinusoidal { d: f64_of(amplitude, "amplitude", false)? },
+        };
+        let kappa = f64_of(&problem.kappa(), "kappa", true)?;
+        let theta = theta_f64(kappa);
+        check_theta(theta.abs(), crate::numerics::accuracy::readable_f64(theta), problem)?;
+        let target = match problem.load() {
+            SlidingLoad::NormalLoad(p) => TargetF64::NormalLoad(f64_of(p, "normal_load", false)?),
+            SlidingLoad::HalfLength(l) => TargetF64::HalfLength(f64_of(l, "half_length", false)?),
+        };
+        let k = osculating_k_f64(shape, period);
+        Ok(SlidingParamsF64 {
+            e_star,
+            beta,
+            mu,
+            tau0,
+            wear,
+            speed,
+            kappa,
+            theta,
+            period,
+            shape,
+            k,
+            target,
+            convention: problem.convention(),
+        })
+    }
+
+    /// Hertz half-width a0 at the load `p2` (osculating k for the sinusoid).
+    pub fn a0(&self, p2: f64) -> f64 {
+        hertz_half_width_f64(p2, self.e_star, self.k)
+    }
+
+    /// Single-punch half-length l_s at the load `p2` [3.10].
+    pub fn l_s(&self, p2: f64) -> f64 {
+        single_punch_half_length_f64(self.a0(p2), self.theta)
+    }
+
+    /// T = beta tau0/(E* k l_s) [3.10] at the load `p2`.
+    pub fn t(&self, p2: f64) -> f64 {
+        self.beta * self.tau0 / (self.e_star * self.k * self.l_s(p2))
+    }
+}
+
+/// Problem 1 in MPFR at `prec` bits, in units of E* (module doc): every input rounded once from
+/// its exact value, and the derived numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlidingParamsMpfr {
+    /// Working precision in bits.
+    pub prec: u32,
+    /// pi.
+    pub pi: Float,
+    /// E* of the problem as given: the unit of every load and stress below (the fields are in
+    /// units of E*, so E* itself is 1 in them); multiply a load or stress by `unit` to return.
+    pub unit: Float,
+    /// beta.
+    pub beta: Float,
+    /// mu.
+    pub mu: Float,
+    /// tau0 / E*.
+    pub tau0: Float,
+    /// cW E*.
+    pub wear: Float,
+    /// V, if given.
+    pub speed: Option<Float>,
+    /// kappa (from its exact value; unchanged by the units).
+    pub kappa: Float,
+    /// theta = arctan(kappa)/pi.
+    pub theta: Float,
+    /// cos(pi theta).
+    pub cos_pi_theta: Float,
+    /// Period L (None: single punch).
+    pub period: Option<Float>,
+    /// Shape.
+    pub shape: ShapeMpfr,
+    /// Osculating curvature k.
+    pub k: Float,
+    /// Load P2 / E* (given) or half-length l (given).
+    pub target: TargetMpfr,
+    /// Surface convention (THEORY.md section 8).
+    pub convention: Convention,
+}
+
+/// What fixes the contact, in MPFR (load in units of E*).
+#[derive(Debug, Clone, PartialEq)]
+pub enum TargetMpfr {
+    /// Given P2 / E*.
+    NormalLoad(Float),
+    /// Given l.
+    HalfLength(Float),
+}
+
+impl SlidingParamsMpfr {
+    /// Rounds the exact inputs once to `prec` bits (in units of E*) and derives kappa, theta,
+    /// cos(pi theta) and k. Errors when |theta| is within [`THETA_MARGIN`] of 1/2.
+    pub fn new(problem: &SlidingProblem, prec: u32) -> Result<Self, Error> {
+        let m = problem.material();
+        let e = m.contact_modulus();
+        let pi = Float::with_val(prec, Constant::Pi);
+        let kappa = to_float(&problem.kappa(), prec);
+        let theta = theta_mpfr(&kappa);
+        check_theta(Float::with_val(53, theta.abs_ref()).to_f64(), crate::numerics::accuracy::readable_mpfr(&theta), problem)?;
+        let cos_pi_theta = Float::with_val(prec, &pi * &theta).cos();
+        let period = match problem.period() {
+            Period::Finite(l) => Some(to_float(l, prec)),
+            Period::Infinite => None,
+        };
+        let shape = match problem.shape() {
+            PunchShape::Parabolic { k } => ShapeMpfr::Parabolic { k: to_float(k, prec) },
+            PunchShape::Sinusoidal { amplitude } => ShapeMpfr::Sinusoidal { d: to_float(amplitude, prec) },
+        };
+        let k = osculating_k_mpfr(&shape, period.as_ref());
+        let target = match problem.load() {
+            SlidingLoad::NormalLoad(p) => TargetMpfr::NormalLoad(to_float(&(p / e), prec)),
+            SlidingLoad::HalfLength(l) => TargetMpfr::HalfLength(to_float(l, prec)),
+        };
+        Ok(SlidingParamsMpfr {
+            prec,
+            unit: to_float(e, prec),
+            beta: to_float(&m.beta(), prec),
+            mu: to_float(problem.friction(), prec),
+            tau0: to_float(&(problem.adhesive_friction() / e), prec),
+            wear: to_float(&(problem.wear() * e), prec),
+            speed: problem.speed().map(|v| to_float(v, prec)),
+            kappa,
+            theta,
+            cos_pi_theta,
+            period,
+            shape,
+            k,
+            target,
+            pi,
+            convention: problem.convention(),
+        })
+    }
+
+    /// Hertz half-width a0 at the load `p2` given in units of E* (osculating k for the sinusoid).
+    pub fn a0(&self, p2_per_e_star: &Float) -> Float {
+        hertz_half_width_mpfr(p2_per_e_star, &Float::with_val(self.prec, 1u32), &self.k)
+    }
+
+    /// Single-punch half-length l_s at the load `p2` given in units of E* [3.10].
+    pub fn l_s(&self, p2_per_e_star: &Float) -> Float {
+        single_punch_half_length_mpfr(&self.a0(p2_per_e_star), &self.theta)
+    }
+
+    /// T = beta tau0/(E* k l_s) [3.10] at the load `p2` given in units of E*.
+    pub fn t(&self, p2_per_e_star: &Float) -> Float {
+        let num = Float::with_val(self.prec, &self.beta * &self.tau0);
+        num / Float::with_val(self.prec, &self.k * self.l_s(p2_per_e_star))
+    }
+
+    /// Exponents (alpha, beta) of the Jacobi weight 1/omega = (1-u)^{theta-1/2} (1+u)^{-theta-1/2}.
+    pub fn inverse_weight_exponents(&self) -> (Float, Float) {
+        let a = Float::with_val(self.prec, &self.theta - 0.5f64);
+        let b = Float::with_val(self.prec, -Float::with_val(self.prec, &self.theta + 0.5f64));
+        (a, b)
+    }
+
+    /// Exponents (alpha, beta) of omega = (1-u)^{1/2-theta} (1+u)^{1/2+theta} (THEORY.md section 2).
+    pub fn weight_exponents(&self) -> (Float, Float) {
+        let a = Float::with_val(self.prec, 0.5f64 - Float::with_val(self.prec, &self.theta));
+        let b = Float::with_val(self.prec, &self.theta + 0.5f64);
+        (a, b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Material;
+
+    fn q(s: &str) -> Exact {
+        exact_series::parse_rational(s).unwrap()
+    }
+
+    fn problem(mu: &str, tau0: &str, cw: &str, e: &str) -> SlidingProblem {
+        SlidingProblem::builder()
+            .material(Material::from_contact_modulus(q("0.3"), q(e)).unwrap())
+            .period(Period::finite(q("1")).unwrap())
+            .shape(PunchShape::parabolic(q("1")).unwrap())
+            .friction(q(mu))
+            .adhesive_friction(q(tau0))
+            .wear(q(cw))
+            .normal_load(q("0.05"))
+            .build()
+            .unwrap()
+    }
+
+    #[test]
+    fn both_number_types_agree_on_every_derived_parameter() {
+        let p = problem("0.4", "0.01", "0.02", "2");
+        let f = SlidingParamsF64::new(&p).unwrap();
+        let m = SlidingParamsMpfr::new(&p, 200).unwrap();
+        // kappa = E* cW/2 - beta mu = 0.02 - (0.4/1.4) 0.4
+        let kappa = 0.02 - 0.4 / 1.4 * 0.4;
+        assert!((f.kappa - kappa).abs() < 1e-16);
+        assert!((m.theta.to_f64() - f.theta).abs() < 1e-16);
+        assert!((f.theta - kappa.atan() / PI).abs() < 1e-16);
+        // l_s in units of E*: the MPFR target is P2/E*.
+        let TargetMpfr::NormalLoad(p2) = &m.target else { panic!() };
+        assert!((m.l_s(p2).to_f64() - f.l_s(0.05)).abs() < 1e-16);
+        assert!((m.t(p2).to_f64() - f.t(0.05)).abs() < 1e-15);
+        // Hertz: a0 = sqrt(2 P2/(pi E* k)) at P2 = 0.05, E* = 2, k = 1.
+        assert!((f.a0(0.05) - (0.05 / PI).sqrt()).abs() < 1e-16);
+    }
+
+    #[test]
+    fn osculating_curvature_of_the_sinusoid() {
+        let k = osculating_k_f64(ShapeF64::Sinusoidal { d: 0.01 }, Some(2.0));
+        assert!((k - 2.0 * PI * PI * 0.01 / 4.0).abs() < 1e-17);
+        let d = Float::with_val(100, 0.01f64);
+        let km = osculating_k_mpfr(&ShapeMpfr::Sinusoidal { d }, Some(&Float::with_val(100, 2u32)));
+        assert!((km.to_f64() - k).abs() < 1e-17);
+    }
+
+    #[test]
+    fn theta_too_close_to_one_half_is_refused_by_both() {
+        let p = problem("0", "0", "1000000", "1");
+        let e = SlidingParamsF64::new(&p).unwrap_err();
+        assert!(e.to_string().contains("theta"), "{e}");
+        let e = SlidingParamsMpfr::new(&p, 100).unwrap_err();
+        assert!(e.to_string().contains("theta"), "{e}");
+    }
+}
