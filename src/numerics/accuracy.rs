@@ -229,6 +229,6 @@ mod tests {
         assert_eq!(readable_f64(-0.0314159265), "-0.03141593");
         assert_eq!(readable_f64(12345678.0), "1.234568e7");
         let tiny = Float::with_val(64, Float::i_exp(1, -1400));
-        assert!(readable_mpfr(&tiny).starts_with("2.") && readable_mpfr(&tiny).contains("e-422"), "{}", readable_mpfr(&tiny));
+        assert_eq!(readable_mpfr(&tiny), "3.614149e-422");
     }
 }
