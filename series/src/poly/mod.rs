@@ -6,6 +6,8 @@
 //! denominator costs one content gcd per operation instead of a gcd per coefficient (FLINT's
 //! `fmpq_poly` does the same).
 
+mod gcd;
+
 use crate::ring::{q_latex, q_text, Q};
 use crate::{Ring, Symbol};
 use num_bigint::BigInt;
@@ -189,12 +191,21 @@ impl Poly {
     /// assert!(p.div_exact(&t).is_none());
     /// ```
     pub fn div_exact(&self, d: &Poly) -> Option<Poly> {
-        crate::frac::div_exact(self, d)
+        gcd::div_exact(self, d)
+    }
+
+    /// The coefficient of the leading monomial in pure lex order (symbols by name, the
+    /// alphabetically first most significant); 0 for the zero polynomial.
+    pub fn leading_coefficient_lex(&self) -> Q {
+        if self.is_zero() {
+            return <Q as Zero>::zero();
+        }
+        gcd::leading(self).1
     }
 
     /// The monic greatest common divisor (lex-leading coefficient 1; gcd(0, 0) = 0).
     pub fn gcd(&self, other: &Poly) -> Poly {
-        crate::frac::gcd(self, other)
+        gcd::gcd(self, other)
     }
 
     /// Substitutes the polynomial `value` for the symbol `s`.

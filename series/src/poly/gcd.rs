@@ -1,0 +1,264 @@
+//! Exact division and the multivariate gcd of [`Poly`] (used by its `div_exact` and `gcd` methods
+//! and by the fraction field [`crate::Frac`]).
+//!
+//! The gcd is the recursive primitive pseudo-remainder sequence (Collins / Brown; Geddes, Czapor,
+//! Labahn, "Algorithms for Computer Algebra", 1992, sec. 7.3), with a cheap coprimality
+//! certificate first, adequate for the small rational functions in eps, B, S that Problem 2 produces.
+
+use super::{Monomial, Poly};
+use crate::ring::Q;
+use crate::{Ring, Symbol};
+use num_traits::Zero;
+use std::cmp::Ordering;
+
+/// Pure lex comparison of monomials: the alphabetically first symbol is the most significant.
+fn lex_cmp(a: &Monomial, b: &Monomial) -> Ordering {
+    let (fa, fb) = (a.factors(), b.factors());
+    let (mut i, mut j) = (0, 0);
+    loop {
+        match (fa.get(i), fb.get(j)) {
+            (None, None) => return Ordering::Equal,
+            (Some(_), None) => return Ordering::Greater,
+            (None, Some(_)) => return Ordering::Less,
+            (Some(&(sa, ea)), Some(&(sb, eb))) => match sa.cmp(&sb) {
+                Ordering::Less => return Ordering::Greater, // a has a more significant symbol
+                Ordering::Greater => return Ordering::Less,
+                Ordering::Equal => match ea.cmp(&eb) {
+                    Ordering::Equal => {
+                        i += 1;
+                        j += 1;
+                    }
+                    o => return o,
+                },
+            },
+        }
+    }
+}
+
+/// The leading term (lex) of a non-zero polynomial.
+pub(super) fn leading(p: &Poly) -> (Monomial, Q) {
+    let mut best: Option<(&Monomial, Q)> = None;
+    for (m, q) in p.terms() {
+        if best.as_ref().is_none_or(|(bm, _)| lex_cmp(m, bm) == Ordering::Greater) {
+            best = Some((m, q));
+        }
+    }
+    let (m, q) = best.expect("leading term of a non-zero polynomial");
+    (m.clone(), q)
+}
+
+/// `m / d` when `d` divides `m`.
+fn mono_div(m: &Monomial, d: &Monomial) -> Option<Monomial> {
+    let mut out = Monomial::one();
+    for &(s, e) in m.factors() {
+        let f = d.exponent(s);
+        if f > e {
+            return None;
+        }
+        out = out.mul(&Monomial::power(s, e - f));
+    }
+    d.factors().iter().all(|&(s, _)| m.exponent(s) > 0).then_some(out)
+}
+
+/// Exact division `a / b` in Q[symbols], `None` if `b` does not divide `a`.
+pub(super) fn div_exact(a: &Poly, b: &Poly) -> Option<Poly> {
+    if b.is_zero() {
+        return None;
+    }
+    let (lm_b, lc_b) = leading(b);
+    let mut r = a.clone();
+    let mut q = Poly::zero();
+    while !r.is_zero() {
+        let (lm_r, lc_r) = leading(&r);
+        let m = mono_div(&lm_r, &lm_b)?;
+        let t = Poly::term(&(lc_r / &lc_b), m);
+        q = q.add(&t);
+        r = r.sub(&t.mul(b));
+    }
+    Some(q)
+}
+
+/// Coefficients of `p` as a polynomial in `x`: `p = sum_k c_k x^k`, `c_k` free of `x`.
+fn coeffs_in(p: &Poly, x: Symbol) -> Vec<Poly> {
+    let d = p.degree_in(x) as usize;
+    let mut parts: Vec<Vec<(Monomial, Q)>> = vec![Vec::new(); d + 1];
+    for (m, q) in p.terms() {
+        let (rest, e) = m.remove(x);
+        parts[e as usize].push((rest, q));
+    }
+    parts.into_iter().map(Poly::from_rational_terms).collect()
+}
+
+/// Content of `p` with respect to `x`: the gcd of its coefficients in `x`.
+fn content_in(p: &Poly, x: Symbol) -> Poly {
+    coeffs_in(p, x).iter().filter(|c| !c.is_zero()).fold(Poly::zero(), |g, c| gcd(&g, c))
+}
+
+/// Pseudo-remainder of `a` by `b` in `x` (deg_x b >= 0, b non-zero).
+fn prem(a: &Poly, b: &Poly, x: Symbol) -> Poly {
+    let cb = coeffs_in(b, x);
+    let n = cb.len() - 1;
+    let lcb = cb[n].clone();
+    let mut r = a.clone();
+    while !r.is_zero() && r.degree_in(x) as usize >= n {
+        let cr = coeffs_in(&r, x);
+        let m = cr.len() - 1;
+        let shift = Poly::term(&Q::from_integer(1.into()), Monomial::power(x, (m - n) as u32));
+        r = r.mul(&lcb).sub(&cr[m].mul(&shift).mul(b));
+    }
+    r
+}
+
+/// Makes the lex-leading coefficient 1 (the canonical associate over Q).
+fn monic(p: &Poly) -> Poly {
+    if p.is_zero() {
+        return p.clone();
+    }
+    let (_, lc) = leading(p);
+    p.scale(&lc.recip())
+}
+
+/// Dense coefficients (index = exponent) of a polynomial in `x` alone.
+fn dense_univariate(p: &Poly, x: Symbol) -> Vec<Q> {
+    let mut out = vec![<Q as Zero>::zero(); p.degree_in(x) as usize + 1];
+    for (m, q) in p.terms() {
+        let (_, e) = m.remove(x);
+        out[e as usize] += q;
+    }
+    out
+}
+
+/// Degree of the gcd of two univariate polynomials over Q (dense, non-zero leading
+/// coefficients): Euclid with monic remainders.
+fn univariate_gcd_degree(a: Vec<Q>, b: Vec<Q>) -> usize {
+    let (mut a, mut b) = if a.len() >= b.len() { (a, b) } else { (b, a) };
+    loop {
+        while b.last().is_some_and(<Q as Zero>::is_zero) {
+            b.pop();
+        }
+        if b.is_empty() {
+            return a.len().saturating_sub(1);
+        }
+        let lb = b.last().expect("non-empty").recip();
+        b.iter_mut().for_each(|c| *c *= &lb);
+        // a mod b (b monic).
+        while a.len() >= b.len() {
+            let lead = a.pop().expect("non-empty");
+            let off = a.len() + 1 - b.len();
+            for (k, c) in b[..b.len() - 1].iter().enumerate() {
+                a[off + k] -= &lead * c;
+            }
+            while a.last().is_some_and(<Q as Zero>::is_zero) {
+                a.pop();
+            }
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+}
+
+/// A proof that `gcd(a, b)` is a constant, or `false` (inconclusive). For each symbol `x` of
+/// both, the other symbols are set to fixed rationals at which neither leading coefficient in `x`
+/// vanishes; a non-constant common factor `g` involving `x` would survive with its full degree in
+/// `x` (its leading coefficient divides theirs) and divide both images, so a constant univariate
+/// gcd of the images excludes every factor involving `x`. Cheap (univariate Euclid), it spares
+/// the primitive PRS of [`gcd`] on the coprime pairs that dominate fraction arithmetic.
+fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
+    let (sa, sb) = (a.symbols(), b.symbols());
+    let common: Vec<Symbol> = sa.iter().copied().filter(|s| sb.contains(s)).collect();
+    let mut others: Vec<Symbol> = sa.clone();
+    others.extend(sb.iter().copied());
+    others.sort();
+    others.dedup();
+    'vars: for &x in &common {
+        let (da, db) = (a.degree_in(x), b.degree_in(x));
+        for attempt in 0..4i64 {
+            let (mut ia, mut ib) = (a.clone(), b.clone());
+            for (k, &y) in others.iter().filter(|&&y| y != x).enumerate() {
+                // Small, distinct, non-integer points: 3/7, 5/11, 7/13, ... shifted by attempt.
+                let v = Q::new((2 * (k as i64 + attempt) + 3).into(), (4 * (k as i64 + attempt) + 7).into());
+                ia = ia.subs(y, &v);
+                ib = ib.subs(y, &v);
+            }
+            if ia.degree_in(x) != da || ib.degree_in(x) != db || ia.is_zero() || ib.is_zero() {
+                continue; // a leading coefficient vanished there: try another point
+            }
+            if univariate_gcd_degree(dense_univariate(&ia, x), dense_univariate(&ib, x)) == 0 {
+                continue 'vars;
+            }
+            return false;
+        }
+        return false;
+    }
+    true
+}
+
+/// The monic gcd of two polynomials in Q[symbols] (gcd(0, 0) = 0).
+pub(super) fn gcd(a: &Poly, b: &Poly) -> Poly {
+    if a.is_zero() {
+        return monic(b);
+    }
+    if b.is_zero() {
+        return monic(a);
+    }
+    if coprime_certificate(a, b) {
+        return Poly::one();
+    }
+    let mut syms = a.symbols();
+    syms.extend(b.symbols());
+    syms.sort();
+    syms.dedup();
+    let Some(&x) = syms.first() else {
+        return Poly::one(); // two non-zero constants
+    };
+    let (da, db) = (a.degree_in(x), b.degree_in(x));
+    if da == 0 {
+        return gcd(a, &content_in(b, x));
+    }
+    if db == 0 {
+        return gcd(&content_in(a, x), b);
+    }
+    let (ca, cb) = (content_in(a, x), content_in(b, x));
+    let g_content = gcd(&ca, &cb);
+    let mut p = div_exact(a, &ca).expect("content divides");
+    let mut q = div_exact(b, &cb).expect("content divides");
+    if p.degree_in(x) < q.degree_in(x) {
+        std::mem::swap(&mut p, &mut q);
+    }
+    while !q.is_zero() && q.degree_in(x) > 0 {
+        let r = prem(&p, &q, x);
+        p = q;
+        q = if r.is_zero() { r } else { div_exact(&r, &content_in(&r, x)).expect("content divides") };
+    }
+    let g_prim = if q.is_zero() { p } else { Poly::one() };
+    monic(&g_content.mul(&g_prim))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(s: &str) -> Poly {
+        Poly::var(s).unwrap()
+    }
+
+    /// The coprimality certificate never claims coprime for a common factor, and the gcd is
+    /// unchanged by it.
+    #[test]
+    fn certificate_is_sound() {
+        let (x, y, z) = (p("x"), p("y"), p("z"));
+        let g = x.mul(&y).sub(&z.mul_int(3)).add(&Poly::one()); // xy - 3z + 1
+        let a = g.mul(&x.add(&y.mul(&y)));
+        let b = g.mul(&z.sub(&x));
+        assert!(!coprime_certificate(&a, &b));
+        assert_eq!(gcd(&a, &b), monic(&g));
+        let c = x.mul(&x).add(&y).add(&Poly::one());
+        assert!(coprime_certificate(&a, &c.mul(&z)) || gcd(&a, &c.mul(&z)).is_one());
+        assert!(gcd(&a, &c).is_one());
+        // a factor in one variable only: y^2 - 2 divides both.
+        let h = y.mul(&y).sub(&Poly::from_int(2));
+        assert!(!coprime_certificate(&h.mul(&x), &h.mul(&z)));
+        assert_eq!(gcd(&h.mul(&x), &h.mul(&z)), h);
+        // symbols in neither in common: coprime.
+        assert!(coprime_certificate(&x.add(&Poly::one()), &z));
+    }
+}
