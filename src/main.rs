@@ -2,7 +2,9 @@
 //! 0 success, 2 invalid input (clap errors too), 1 no solution, no convergence or I/O failure.
 
 use clap::Parser;
-use periodic_contact::cli::{args::Format, args::RawArgs, config::RunConfig, InvalidInput};
+use periodic_contact::cli::{args::Format, args::RawArgs, config::RunConfig};
+use periodic_contact::error::{Error, ErrorKind};
+use periodic_contact::model::ModelError;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -47,7 +49,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 progress: true,
             };
             let files = write_report(&opts).map_err(|e| match e {
-                ReportError::Scene { path, error } => anyhow::Error::new(InvalidInput::new(
+                ReportError::Scene { path, error } => anyhow::Error::new(ModelError::new(
                     format!("{path}: {}", error.parameter),
                     error.value,
                     error.expected,
@@ -78,6 +80,20 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The one mapping from errors to exit codes: 2 for invalid input, 1 for everything else (no
+/// solution, not physical, no convergence, I/O).
+fn exit_code(e: &anyhow::Error) -> u8 {
+    let input = match e.downcast_ref::<Error>() {
+        Some(err) => err.kind() == ErrorKind::Input,
+        None => e.downcast_ref::<ModelError>().is_some(),
+    };
+    if input {
+        2
+    } else {
+        1
+    }
+}
+
 fn main() -> ExitCode {
     let args = match RawArgs::try_parse() {
         Ok(a) => a,
@@ -89,15 +105,16 @@ fn main() -> ExitCode {
     let config = match RunConfig::from_args(args) {
         Ok(c) => c,
         Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
+            let e = anyhow::Error::new(e);
+            eprintln!("error: {e:#}");
+            return ExitCode::from(exit_code(&e));
         }
     };
     match run(config) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
-            ExitCode::from(if e.downcast_ref::<InvalidInput>().is_some() { 2 } else { 1 })
+            ExitCode::from(exit_code(&e))
         }
     }
 }

@@ -1,7 +1,7 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
 use super::args::{Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
-use super::InvalidInput;
+use crate::model::ModelError;
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
 use crate::asymptotics::sliding::SlidingShape;
 use crate::scene::{parse::parse_scene, Method, Scene};
@@ -63,24 +63,24 @@ pub fn max_order(object: SeriesObject) -> usize {
 }
 
 /// Parses `--order` (an integer in [0, max]).
-pub fn parse_order(text: &str, max: usize) -> Result<usize, InvalidInput> {
+pub fn parse_order(text: &str, max: usize) -> Result<usize, ModelError> {
     text.trim()
         .parse::<usize>()
         .ok()
         .filter(|&n| n <= max)
-        .ok_or_else(|| InvalidInput::new("--order", text, format!("must be an integer in [0, {max}]")))
+        .ok_or_else(|| ModelError::new("--order", text, format!("must be an integer in [0, {max}]")))
 }
 
 /// Parses an exact rational flag.
-pub fn parse_exact(flag: &str, text: &str) -> Result<Q, InvalidInput> {
+pub fn parse_exact(flag: &str, text: &str) -> Result<Q, ModelError> {
     parse_rational(text).map_err(|_| {
-        InvalidInput::new(flag, text, "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25")
+        ModelError::new(flag, text, "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25")
     })
 }
 
 impl RunConfig {
     /// Validates raw arguments.
-    pub fn from_args(args: RawArgs) -> Result<RunConfig, InvalidInput> {
+    pub fn from_args(args: RawArgs) -> Result<RunConfig, ModelError> {
         match args.command {
             RawCommand::Series { object, order, theta, xh, t, nu, shape, format } => {
                 let object = match object {
@@ -97,44 +97,44 @@ impl RunConfig {
                 let theta = theta.map(|t| parse_exact("--theta", &t)).transpose()?;
                 if let Some(t) = &theta {
                     if t.abs() >= Q::new(1.into(), 2.into()) {
-                        return Err(InvalidInput::new("--theta", t, "must satisfy |theta| < 1/2"));
+                        return Err(ModelError::new("--theta", t, "must satisfy |theta| < 1/2"));
                     }
                     if object == SeriesObject::Kernel {
-                        return Err(InvalidInput::new("--theta", t, "the kernel has no theta"));
+                        return Err(ModelError::new("--theta", t, "the kernel has no theta"));
                     }
                 }
                 let xh = xh.map(|t| parse_exact("--xh", &t)).transpose()?;
                 if let Some(x) = &xh {
                     if x.abs() > Q::from_integer(1.into()) {
-                        return Err(InvalidInput::new("--xh", x, "must lie in [-1, 1]"));
+                        return Err(ModelError::new("--xh", x, "must lie in [-1, 1]"));
                     }
                     if !matches!(object, SeriesObject::Weight | SeriesObject::Sliding(_)) {
-                        return Err(InvalidInput::new("--xh", x, "only the weight and sliding series have xh"));
+                        return Err(ModelError::new("--xh", x, "only the weight and sliding series have xh"));
                     }
                 }
                 let t = t.map(|v| parse_exact("--T", &v)).transpose()?;
                 if let Some(v) = &t {
                     if v.is_negative() {
-                        return Err(InvalidInput::new("--T", v, "must be >= 0 (T = beta tau0/(E* k l_s))"));
+                        return Err(ModelError::new("--T", v, "must be >= 0 (T = beta tau0/(E* k l_s))"));
                     }
                     if !matches!(object, SeriesObject::Sliding(_)) {
-                        return Err(InvalidInput::new("--T", v, "only the sliding series has T"));
+                        return Err(ModelError::new("--T", v, "only the sliding series has T"));
                     }
                 }
                 let nu = nu.map(|v| parse_exact("--nu", &v)).transpose()?;
                 if let Some(v) = &nu {
                     if v.is_negative() || *v > Q::new(1.into(), 2.into()) {
-                        return Err(InvalidInput::new("--nu", v, "must lie in [0, 1/2]"));
+                        return Err(ModelError::new("--nu", v, "must lie in [0, 1/2]"));
                     }
                     if object != SeriesObject::Adhesion {
-                        return Err(InvalidInput::new("--nu", v, "only the adhesion series takes nu"));
+                        return Err(ModelError::new("--nu", v, "only the adhesion series takes nu"));
                     }
                 }
                 Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t, nu }, format })
             }
             RawCommand::Solve { scene, digits, method, order, format, json } => {
                 let text = std::fs::read_to_string(&scene)
-                    .map_err(|e| InvalidInput::new("SCENE", scene.display(), format!("cannot be read: {e}")))?;
+                    .map_err(|e| ModelError::new("SCENE", scene.display(), format!("cannot be read: {e}")))?;
                 let parsed = parse_scene(&text)?;
                 let digits = match digits {
                     Some(d) => d
@@ -143,7 +143,7 @@ impl RunConfig {
                         .ok()
                         .filter(|d| (1..=crate::scene::parse::MAX_DIGITS).contains(d))
                         .ok_or_else(|| {
-                            InvalidInput::new(
+                            ModelError::new(
                                 "--digits",
                                 &d,
                                 format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
@@ -163,7 +163,7 @@ impl RunConfig {
                 };
                 let format = if json { Format::Json } else { format.unwrap_or(Format::Text) };
                 if format == Format::Latex {
-                    return Err(InvalidInput::new("--format", "latex", "solve prints text or json"));
+                    return Err(ModelError::new("--format", "latex", "solve prints text or json"));
                 }
                 Ok(RunConfig::Solve {
                     scene: Box::new(parsed),
@@ -174,7 +174,7 @@ impl RunConfig {
             RawCommand::Report { out, scenes, order, fast } => {
                 let order = parse_order(&order, 40)?;
                 if !scenes.is_dir() {
-                    return Err(InvalidInput::new("--scenes", scenes.display(), "must be a folder of *.toml scenes"));
+                    return Err(ModelError::new("--scenes", scenes.display(), "must be a folder of *.toml scenes"));
                 }
                 Ok(RunConfig::Report { out, scenes, order, fast })
             }

@@ -8,8 +8,8 @@ pub mod format;
 pub mod series_method;
 
 use crate::adhesion::{self, AdhesionError};
-use crate::cli::InvalidInput;
-use crate::model::{ModelError, Period, SlidingProblem};
+use crate::model::ModelError as InvalidInput;
+use crate::model::{Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64, SlidingError};
 use format::{digits_in_value, fmt_f64, fmt_float, AccuracyTable};
@@ -24,12 +24,6 @@ pub enum SolveError {
     /// No solution, no convergence (exit code 1).
     #[error("{0}")]
     Failed(String),
-}
-
-impl From<ModelError> for SolveError {
-    fn from(e: ModelError) -> Self {
-        SolveError::Invalid(e.into())
-    }
 }
 
 impl From<SlidingError> for SolveError {

@@ -6,7 +6,7 @@
 use super::format::{digits_in_value, fmt_float};
 use super::{provenance, SolveError, SolveRequest};
 use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
-use crate::cli::InvalidInput;
+use crate::model::ModelError as InvalidInput;
 use crate::model::{Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::{evaluate, exact::to_float};
 use crate::scene::Scene;
