@@ -18,6 +18,7 @@
 //!
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 
+use crate::params::sliding::{single_punch_half_length_f64, SlidingParamsF64};
 use super::runner::{self, ExpansionCache, Knob, Outcome};
 use crate::model::{AdhesionProblem, AdhesionSize};
 use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
@@ -241,9 +242,10 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
             let big_l = to_f64(big_l).unwrap_or(f64::NAN);
             match p.load() {
                 SlidingLoad::HalfLength(l) => pi * to_f64(l).unwrap_or(f64::NAN) / big_l,
-                SlidingLoad::NormalLoad(_) => crate::solve::series_method::series_point(p, 64)
-                    .map(|sp| sp.big_lambda.to_f64())
-                    .unwrap_or(f64::NAN),
+                SlidingLoad::NormalLoad(p2) => match (SlidingParamsF64::new(p), to_f64(p2)) {
+                    (Ok(prm), Some(p2)) => pi * prm.l_s(p2) / big_l,
+                    _ => f64::NAN,
+                },
             }
         }
         SceneProblem::Adhesion(p) => {
@@ -358,19 +360,16 @@ pub fn rational(x: f64) -> Exact {
 /// P2 = 1/100, period set so that Lambda = pi l_s/L ~ `big_lambda`.
 pub fn sliding_case(big_lambda: f64) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).expect("valid");
-    let beta: f64 = 0.4 / 1.4;
-    let theta = (-(0.3 * beta)).atan() / std::f64::consts::PI;
-    let a0 = (2.0 * 0.01 / std::f64::consts::PI).sqrt();
-    let l_s = a0 / (1.0 - 4.0 * theta * theta).sqrt();
-    let period = rational(std::f64::consts::PI * l_s / big_lambda);
-    SlidingProblem::builder()
+    let case = SlidingProblem::builder()
         .material(material)
-        .period(Period::Finite(period))
+        .period(Period::Infinite)
         .shape(PunchShape::Parabolic { k: q(1, 1) })
         .friction(q(3, 10))
-        .normal_load(q(1, 100))
-        .build()
-        .expect("valid case")
+        .normal_load(q(1, 100));
+    let single = case.clone().build().expect("valid case");
+    let l_s = SlidingParamsF64::new(&single).expect("f64 parameters").l_s(0.01);
+    let period = rational(std::f64::consts::PI * l_s / big_lambda);
+    case.period(Period::Finite(period)).build().expect("valid case")
 }
 
 /// Calibration case of Problem 1 on the sinusoid: D = 1/100, L = 1, nu = 0.3, E* = 1,
@@ -379,17 +378,17 @@ pub fn sliding_case(big_lambda: f64) -> SlidingProblem {
 pub fn sinusoid_case(big_lambda: f64) -> SlidingProblem {
     let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).expect("valid");
     let pi = std::f64::consts::PI;
-    let beta: f64 = 0.4 / 1.4;
-    let theta = (-(0.3 * beta)).atan() / pi;
-    let k = 2.0 * pi * pi * 0.01;
-    let a0 = big_lambda / pi * (1.0 - 4.0 * theta * theta).sqrt();
-    let p2 = pi * k * a0 * a0 / 2.0;
-    SlidingProblem::builder()
+    let case = SlidingProblem::builder()
         .material(material)
         .period(Period::Finite(q(1, 1)))
         .shape(PunchShape::Sinusoidal { amplitude: q(1, 100) })
-        .friction(q(3, 10))
-        .normal_load(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into()))
+        .friction(q(3, 10));
+    // l_s = Lambda L/pi with L = 1; P2 from the Hertz law of the osculating parabola: l_s/a0 is
+    // l_s at a0 = 1 ([3.10], [3.12]).
+    let prm = SlidingParamsF64::new(&case.clone().normal_load(q(1, 1)).build().expect("valid case")).expect("f64");
+    let a0 = big_lambda / pi / single_punch_half_length_f64(1.0, prm.theta);
+    let p2 = pi * prm.k * a0 * a0 / 2.0;
+    case.normal_load(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into()))
         .build()
         .expect("valid case")
 }

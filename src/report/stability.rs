@@ -36,11 +36,12 @@ fn q(n: i64, d: i64) -> Exact {
 /// Problem 1 at nu = 0.3, E* = 1, L = 1 with theta set by wear (theta > 0: cW = 2 tan(pi theta))
 /// or friction (theta < 0: mu = tan(pi |theta|)/beta), kappa = E* cW/2 - beta mu [2.8].
 fn sliding_at(shape: PunchShape, theta: f64, p2: f64) -> Option<SlidingProblem> {
-    let beta = 0.4 / 1.4;
+    let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).ok()?;
+    let beta = crate::numerics::exact::to_f64(&material.beta())?;
     let t = (std::f64::consts::PI * theta.abs()).tan();
     let (mu, cw) = if theta < 0.0 { (rational(t / beta), q(0, 1)) } else { (q(0, 1), rational(2.0 * t)) };
     SlidingProblem::builder()
-        .material(Material::from_contact_modulus(q(3, 10), q(1, 1)).ok()?)
+        .material(material)
         .period(Period::Finite(q(1, 1)))
         .shape(shape)
         .friction(mu)

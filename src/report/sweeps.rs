@@ -5,6 +5,7 @@
 //! single-punch laws: l_s = a0/sqrt(1 - 4 theta^2) [3.10] (Problem 1, parabola) and
 //! P2 = C_P E* k a^2 [3.18] (Problem 2).
 
+use crate::params::sliding::{hertz_half_width_f64, SlidingParamsF64};
 use super::calibration::choose;
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::choice::target_of;
@@ -48,17 +49,17 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
             match p.shape() {
                 PunchShape::Parabolic { k } => {
                     let k = f(k);
-                    let kappa = f(&p.kappa());
-                    let theta = kappa.atan() / PI;
-                    out.push((
-                        "single punch l_s = a0/sqrt(1-4 theta^2) [3.10]".into(),
-                        Box::new(move |p2: f64| (2.0 * p2 / (PI * e * k)).sqrt() / (1.0 - 4.0 * theta * theta).sqrt()),
-                    ));
+                    if let Ok(prm) = SlidingParamsF64::new(p) {
+                        out.push((
+                            "single punch l_s = a0/sqrt(1-4 theta^2) [3.10]".into(),
+                            Box::new(move |p2: f64| prm.l_s(p2)),
+                        ));
+                    }
                     if let (true, Some(big_l)) = (frictionless, big_l) {
                         out.push((
                             "Kuznetsov [2.15]".into(),
                             Box::new(move |p2: f64| {
-                                let a0sq = 2.0 * p2 / (PI * e * k);
+                                let a0sq = hertz_half_width_f64(p2, e, k).powi(2);
                                 big_l / PI * (-(PI * PI * a0sq) / (2.0 * big_l * big_l)).exp().acos()
                             }),
                         ));
