@@ -29,11 +29,55 @@ use std::fmt::Write as _;
 /// The committed table (compiled in, so the choice is the same wherever the binary runs).
 pub const COMMITTED: &str = include_str!("../../calibration/methods.csv");
 
+/// The calibrated case a row measures (the first CSV column).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Case {
+    /// Problem 1, parabola ([`sliding_case`]): `sliding-parabolic`.
+    SlidingParabolic,
+    /// Problem 1, sinusoid ([`sinusoid_case`]): `sliding-sinusoidal`.
+    SlidingSinusoidal,
+    /// Problem 2 at nu = 0 ([`adhesion_case_nu`]): `adhesion-nu0`.
+    AdhesionNu0,
+    /// Problem 2 at nu = 0.3: `adhesion-nu0.3`.
+    AdhesionNu03,
+}
+
+impl Case {
+    /// Every case, in table order.
+    pub const ALL: [Case; 4] = [Case::SlidingParabolic, Case::SlidingSinusoidal, Case::AdhesionNu0, Case::AdhesionNu03];
+
+    /// The CSV key.
+    pub fn key(self) -> &'static str {
+        match self {
+            Case::SlidingParabolic => "sliding-parabolic",
+            Case::SlidingSinusoidal => "sliding-sinusoidal",
+            Case::AdhesionNu0 => "adhesion-nu0",
+            Case::AdhesionNu03 => "adhesion-nu0.3",
+        }
+    }
+
+    fn parse(key: &str) -> Option<Case> {
+        Case::ALL.into_iter().find(|c| c.key() == key)
+    }
+
+    /// The cases a scene's problem is predicted from: Problem 1 by punch shape; Problem 2 by every
+    /// calibrated material (the prediction takes the worst of them: conservative in nu).
+    pub fn for_problem(problem: &SceneProblem) -> Vec<Case> {
+        match problem {
+            SceneProblem::Sliding(p) => match p.shape() {
+                PunchShape::Parabolic { .. } => vec![Case::SlidingParabolic],
+                PunchShape::Sinusoidal { .. } => vec![Case::SlidingSinusoidal],
+            },
+            SceneProblem::Adhesion(_) => vec![Case::AdhesionNu0, Case::AdhesionNu03],
+        }
+    }
+}
+
 /// One calibration measurement.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
-    /// "sliding" or "adhesion".
-    pub problem: String,
+    /// The calibrated case.
+    pub problem: Case,
     /// Method and knob.
     pub knob: Knob,
     /// Contact size lambda of the case.
@@ -96,7 +140,7 @@ impl Table {
             let knob = parse_knob(f[1], f[2]).ok_or_else(|| err("unknown method or knob"))?;
             let num = |s: &str| s.parse::<f64>().ok().filter(|x| x.is_finite());
             t.rows.push(Row {
-                problem: f[0].to_string(),
+                problem: Case::parse(f[0]).ok_or_else(|| err("unknown case (first column)"))?,
                 knob,
                 lambda: num(f[3]).ok_or_else(|| err("lambda"))?,
                 digits: num(f[4]).ok_or_else(|| err("digits"))?,
@@ -122,7 +166,7 @@ impl Table {
             let _ = writeln!(
                 s,
                 "{},{},{},{:.6},{:.2},{:.3e}",
-                r.problem,
+                r.problem.key(),
                 r.knob.method(),
                 r.knob.value(),
                 r.lambda,
@@ -133,14 +177,14 @@ impl Table {
         s
     }
 
-    fn series_of(&self, problem: &str, knob: Knob) -> Vec<&Row> {
+    fn series_of(&self, problem: Case, knob: Knob) -> Vec<&Row> {
         let mut v: Vec<&Row> = self.rows.iter().filter(|r| r.problem == problem && r.knob == knob).collect();
         v.sort_by(|a, b| a.lambda.total_cmp(&b.lambda));
         v
     }
 
     /// Knobs present for a problem, in table order, without duplicates.
-    pub fn knobs(&self, problem: &str) -> Vec<Knob> {
+    pub fn knobs(&self, problem: Case) -> Vec<Knob> {
         let mut out: Vec<Knob> = Vec::new();
         for r in self.rows.iter().filter(|r| r.problem == problem) {
             if !out.contains(&r.knob) {
@@ -264,23 +308,9 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
     }
 }
 
-/// The calibration problems a scene is predicted from: Problem 1 by punch shape; Problem 2 by
-/// every calibrated material (the prediction takes the worst of them: conservative in nu).
-fn keys_for(table: &Table, problem: &SceneProblem) -> Vec<String> {
-    let want = match problem {
-        SceneProblem::Sliding(p) => match p.shape() {
-            PunchShape::Parabolic { .. } => "sliding-parabolic",
-            PunchShape::Sinusoidal { .. } => "sliding-sinusoidal",
-        },
-        SceneProblem::Adhesion(_) => "adhesion",
-    };
-    let mut keys: Vec<String> = Vec::new();
-    for r in &table.rows {
-        if (r.problem == want || r.problem.starts_with(&format!("{want}-"))) && !keys.contains(&r.problem) {
-            keys.push(r.problem.clone());
-        }
-    }
-    keys
+/// The calibrated cases present in the table for a scene's problem.
+fn keys_for(table: &Table, problem: &SceneProblem) -> Vec<Case> {
+    Case::for_problem(problem).into_iter().filter(|c| table.rows.iter().any(|r| r.problem == *c)).collect()
 }
 
 /// Chooses the cheapest method predicted to meet `target` digits (see module doc).
@@ -295,7 +325,7 @@ pub fn choose(table: &Table, problem: &SceneProblem, target: u32) -> Choice {
     let keys = keys_for(table, problem);
     let mut knobs: Vec<Knob> = Vec::new();
     for k in &keys {
-        for knob in table.knobs(k) {
+        for knob in table.knobs(*k) {
             if !knobs.contains(&knob) {
                 knobs.push(knob);
             }
@@ -308,7 +338,7 @@ pub fn choose(table: &Table, problem: &SceneProblem, target: u32) -> Choice {
         let mut predicted = Some(f64::INFINITY);
         let mut cost: f64 = 0.0;
         for k in &keys {
-            let rows = table.series_of(k, knob);
+            let rows = table.series_of(*k, knob);
             if rows.is_empty() {
                 predicted = None;
                 continue;
@@ -432,8 +462,9 @@ pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table,
         }
         Ok(o)
     };
-    type Case = fn(f64) -> SlidingProblem;
-    let sliding_cases: [(&str, Case); 2] = [("sliding-parabolic", sliding_case), ("sliding-sinusoidal", sinusoid_case)];
+    type Builder = fn(f64) -> SlidingProblem;
+    let sliding_cases: [(Case, Builder); 2] =
+        [(Case::SlidingParabolic, sliding_case), (Case::SlidingSinusoidal, sinusoid_case)];
     for (key, case) in sliding_cases {
         for &lam in &SLIDING_LAMBDAS {
             let p = SceneProblem::Sliding(case(lam));
@@ -445,13 +476,13 @@ pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table,
                 if let Ok(o) = best_of(&p, knob, &mut cache) {
                     let digits = runner::digits_of(runner::error(&o, &reference, false), 70.0);
                     // Rows are keyed by Lambda = pi l_s/L, what the chooser computes before solving.
-                    rows.push(Row { problem: key.into(), knob, lambda: big_lambda, digits, seconds: o.seconds });
+                    rows.push(Row { problem: key, knob, lambda: big_lambda, digits, seconds: o.seconds });
                 }
             }
-            progress(&format!("{key}, Lambda = {lam}"));
+            progress(&format!("{}, Lambda = {lam}", key.key()));
         }
     }
-    for (key, nu) in [("adhesion-nu0", q(0, 1)), ("adhesion-nu0.3", q(3, 10))] {
+    for (key, nu) in [(Case::AdhesionNu0, q(0, 1)), (Case::AdhesionNu03, q(3, 10))] {
         for &lam in &ADHESION_LAMBDAS {
             let p = SceneProblem::Adhesion(adhesion_case_nu(nu.clone(), lam));
             // nu = 0 beyond lambda ~ 0.85: no reference (ill-conditioned), no row.
@@ -462,10 +493,10 @@ pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table,
             for knob in [Knob::F64(None), Knob::Mpfr(10), Knob::Mpfr(20), Knob::Mpfr(30)] {
                 if let Ok(o) = best_of(&p, knob, &mut cache) {
                     let digits = runner::digits_of(runner::error(&o, &reference, true), 70.0);
-                    rows.push(Row { problem: key.into(), knob, lambda: reference.lambda, digits, seconds: o.seconds });
+                    rows.push(Row { problem: key, knob, lambda: reference.lambda, digits, seconds: o.seconds });
                 }
             }
-            progress(&format!("{key}, lambda = {lam}"));
+            progress(&format!("{}, lambda = {lam}", key.key()));
         }
     }
     Ok(Table { rows, machine: machine.to_string() })
