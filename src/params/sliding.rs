@@ -361,6 +361,44 @@ impl SlidingParamsMpfr {
     }
 }
 
+/// The scale of every Problem 1 output, the one table used by every method's accuracy and by the
+/// renderer: digits of a, b, c, l, x are relative to l; of P1, P2 (and the wear outputs) to P2; of
+/// F_def to k l P2 (k osculating: F_def = int p g' ~ p k l . l); of p(x) to max p.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SlidingScale {
+    /// l: a, b, c, l, lambda (relative to itself), x.
+    Length,
+    /// P2: P1, P2, wear outputs (relative to themselves: each is a multiple of P2).
+    Load,
+    /// k l P2: F_def.
+    DeformationForce,
+    /// max p: p(x).
+    Pressure,
+}
+
+impl SlidingScale {
+    /// The scale in `f64` from the solution's l, P2, max p and the osculating k.
+    pub fn f64(self, k: f64, l: f64, p2: f64, max_p: f64) -> f64 {
+        match self {
+            SlidingScale::Length => l,
+            SlidingScale::Load => p2,
+            SlidingScale::DeformationForce => k * l * p2,
+            SlidingScale::Pressure => max_p,
+        }
+    }
+
+    /// The scale in MPFR (at the precision of `l`).
+    pub fn mpfr(self, k: &Float, l: &Float, p2: &Float, max_p: &Float) -> Float {
+        let prec = l.prec();
+        match self {
+            SlidingScale::Length => l.clone(),
+            SlidingScale::Load => p2.clone(),
+            SlidingScale::DeformationForce => Float::with_val(prec, k * l) * p2,
+            SlidingScale::Pressure => max_p.clone(),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,6 +5,7 @@
 //! more than requested); the series method states estimated, not verified, digits.
 
 pub mod format;
+pub mod render;
 pub mod series_method;
 
 use crate::adhesion::{self, AdhesionError};

@@ -1,0 +1,320 @@
+//! The one JSON renderer per problem. Every method (MPFR, f64, series) fills the same answer
+//! struct of (value, scale, digits) triples, and [`sliding_json`] / [`adhesion_json`] print it under
+//! the one accuracy rule of [`crate::numerics::accuracy`]: a value shows only the significant digits
+//! its digits of its scale cover (at most the digits requested), and a value below
+//! scale x 10^-digits (noise at this accuracy) prints as `0` with its accuracy stated.
+//!
+//! The scales are fixed per output in one table per problem: [`crate::params::sliding::SlidingScale`]
+//! and the Problem 2 scales of `crate::adhesion`.
+
+use crate::numerics::accuracy::{fmt_f64, fmt_mpfr, print_f64, print_mpfr};
+use rug::Float;
+use serde_json::{json, Map, Value};
+
+/// A number of either type.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Num {
+    /// An `f64`.
+    F64(f64),
+    /// An MPFR float.
+    Mpfr(Float),
+}
+
+impl Num {
+    /// Printed with `sig` significant digits (no accuracy rule: for inputs and derived exact-ish
+    /// parameters such as theta, rounded once from exact values).
+    pub fn fmt(&self, sig: usize) -> String {
+        match self {
+            Num::F64(x) => fmt_f64(*x, sig),
+            Num::Mpfr(x) => fmt_mpfr(x, sig),
+        }
+    }
+}
+
+/// A value known to `digits` digits of `scale` (|error| <= 10^-digits |scale|).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    /// The value.
+    pub value: Num,
+    /// Its scale (the table of scales of the problem).
+    pub scale: Num,
+    /// Digits relative to the scale.
+    pub digits: f64,
+}
+
+impl Measured {
+    /// An MPFR value.
+    pub fn mpfr(value: Float, scale: &Float, digits: f64) -> Self {
+        Measured { value: Num::Mpfr(value), scale: Num::Mpfr(scale.clone()), digits }
+    }
+
+    /// An `f64` value.
+    pub fn f64(value: f64, scale: f64, digits: f64) -> Self {
+        Measured { value: Num::F64(value), scale: Num::F64(scale), digits }
+    }
+
+    /// Printed under the accuracy rule, at most `requested` significant digits.
+    pub fn print(&self, requested: u32) -> String {
+        match (&self.value, &self.scale) {
+            (Num::F64(v), Num::F64(s)) => print_f64(*v, *s, self.digits, requested),
+            (Num::Mpfr(v), Num::Mpfr(s)) => print_mpfr(v, s, self.digits, requested),
+            (Num::F64(v), Num::Mpfr(s)) => print_f64(*v, s.to_f64(), self.digits, requested),
+            (Num::Mpfr(v), Num::F64(s)) => print_mpfr(v, &Float::with_val(v.prec(), *s), self.digits, requested),
+        }
+    }
+}
+
+/// Whether the digits of an answer were verified (by a second run) or estimated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DigitsKind {
+    /// Verified by a second run with more precision (MPFR) or more nodes (f64).
+    Verified,
+    /// Estimated (the truncated series' tail bound; the f64 method of Problem 2).
+    Estimated,
+}
+
+/// Where an answer came from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Provenance {
+    /// `mpfr`, `f64` or `series`.
+    pub method: &'static str,
+    /// Working precision in bits.
+    pub bits: Option<u32>,
+    /// Nodes (quadrature or collocation), or terms.
+    pub nodes: Option<usize>,
+    /// Order of the truncated series (series method).
+    pub order: Option<usize>,
+}
+
+impl Provenance {
+    fn json(&self) -> Value {
+        let mut v = json!({
+            "version": env!("CARGO_PKG_VERSION"),
+            "method": self.method,
+            "bits": self.bits.map(|b| b.to_string()),
+            "nodes": self.nodes.map(|n| n.to_string()),
+        });
+        if let Some(o) = self.order {
+            v["order"] = json!(o.to_string());
+        }
+        v
+    }
+}
+
+/// The pressure at one requested point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PressureRow {
+    /// xh = (x - c)/l as requested.
+    pub xh: Num,
+    /// x = c + l xh.
+    pub x: Measured,
+    /// p(x).
+    pub p: Measured,
+}
+
+/// One answer of Problem 1, from any method.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlidingAnswer {
+    /// Where it came from.
+    pub provenance: Provenance,
+    /// Verified or estimated digits.
+    pub kind: DigitsKind,
+    /// The digits the number type can show of an input-derived parameter (theta, kappa).
+    pub parameter_digits: usize,
+    /// theta = arctan(kappa)/pi.
+    pub theta: Num,
+    /// kappa.
+    pub kappa: Num,
+    /// lambda = pi l/L (None: single punch).
+    pub lambda: Option<Measured>,
+    /// l, a, b, c.
+    pub l: Measured,
+    /// a.
+    pub a: Measured,
+    /// b.
+    pub b: Measured,
+    /// c.
+    pub c: Measured,
+    /// P1.
+    pub p1: Measured,
+    /// P2.
+    pub p2: Measured,
+    /// F_def.
+    pub f_def: Measured,
+    /// cW P2/L (None: single punch).
+    pub wear_per_distance: Option<Measured>,
+    /// cW V P2/L (None without V or for a single punch).
+    pub wear_rate: Option<Measured>,
+    /// cW P2 per punch (None where the method does not report it).
+    pub worn_area_per_distance: Option<Measured>,
+    /// Per-quantity digits, in print order.
+    pub accuracy: Vec<(String, f64)>,
+    /// Extra keys printed after `accuracy` notes (e.g. the series method's `Lambda`), in order.
+    pub extra: Vec<(String, Value)>,
+    /// An explanatory note in `accuracy` (e.g. how the series estimate was made).
+    pub note: Option<String>,
+    /// Pressure at the requested points.
+    pub pressure: Vec<PressureRow>,
+}
+
+impl SlidingAnswer {
+    /// The headline digits: the minimum over the accuracy table.
+    pub fn headline(&self) -> f64 {
+        self.accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min)
+    }
+}
+
+fn digits_text(d: f64) -> String {
+    format!("{d:.1}")
+}
+
+fn opt(m: &Option<Measured>, requested: u32) -> Value {
+    m.as_ref().map_or(Value::Null, |x| Value::String(x.print(requested)))
+}
+
+/// The JSON object of one Problem 1 answer (string values; `digits_verified` or
+/// `digits_estimated` by [`DigitsKind`]).
+pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
+    let mut m = Map::new();
+    let par = (requested as usize).min(ans.parameter_digits).max(1);
+    m.insert("theta".into(), json!(ans.theta.fmt(par)));
+    m.insert("kappa".into(), json!(ans.kappa.fmt(par)));
+    m.insert("lambda".into(), opt(&ans.lambda, requested));
+    for (key, v) in [("l", &ans.l), ("a", &ans.a), ("b", &ans.b), ("c", &ans.c), ("P1", &ans.p1), ("P2", &ans.p2)] {
+        m.insert(key.into(), json!(v.print(requested)));
+    }
+    m.insert("F_def".into(), json!(ans.f_def.print(requested)));
+    m.insert("wear_per_distance".into(), opt(&ans.wear_per_distance, requested));
+    m.insert("wear_rate".into(), opt(&ans.wear_rate, requested));
+    if let Some(w) = &ans.worn_area_per_distance {
+        m.insert("worn_area_per_distance".into(), json!(w.print(requested)));
+    }
+    for (k, v) in &ans.extra {
+        m.insert(k.clone(), v.clone());
+    }
+    m.insert("digits_requested".into(), json!(requested.to_string()));
+    let head = digits_text(ans.headline());
+    match ans.kind {
+        DigitsKind::Verified => {
+            m.insert("digits_verified".into(), json!(head));
+        }
+        DigitsKind::Estimated => {
+            m.insert("digits_verified".into(), Value::Null);
+            m.insert("digits_estimated".into(), json!(head));
+        }
+    }
+    let mut acc = Map::new();
+    if let Some(n) = &ans.note {
+        acc.insert("note".into(), json!(n));
+    }
+    for (k, d) in &ans.accuracy {
+        acc.insert(k.clone(), json!(digits_text(*d)));
+    }
+    m.insert("accuracy".into(), Value::Object(acc));
+    let pressure: Vec<Value> = ans
+        .pressure
+        .iter()
+        .map(|r| json!({"xh": r.xh.fmt(par), "x": r.x.print(requested), "p": r.p.print(requested)}))
+        .collect();
+    m.insert("pressure".into(), Value::Array(pressure));
+    m.insert("provenance".into(), ans.provenance.json());
+    m
+}
+
+/// One field of Problem 2 at a point x/a.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FieldRow {
+    /// x/a as requested (exact text).
+    pub x_over_a: String,
+    /// The value.
+    pub value: Measured,
+}
+
+/// A tension zone (q2 < 0) of Problem 2, in x/a.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ZoneRow {
+    /// Start.
+    pub from: Num,
+    /// End.
+    pub to: Num,
+    /// Whether its ends were refined by bisection.
+    pub refined: bool,
+}
+
+/// One answer of Problem 2, from any method.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AdhesionAnswer {
+    /// Where it came from.
+    pub provenance: Provenance,
+    /// Verified or estimated digits.
+    pub kind: DigitsKind,
+    /// lambda = pi a/L (None: single punch).
+    pub lambda: Option<Measured>,
+    /// P2.
+    pub p2: Measured,
+    /// a.
+    pub half_width: Measured,
+    /// Per-quantity digits (size, psi, phi, q1, q2).
+    pub accuracy: Vec<(String, f64)>,
+    /// psi, phi, q1, q2 at the requested points.
+    pub fields: Vec<(String, Vec<FieldRow>)>,
+    /// Tension zones (None where the method does not locate them).
+    pub tension_zones: Option<Vec<ZoneRow>>,
+    /// Warnings (conditioning, tension).
+    pub warnings: Vec<String>,
+}
+
+/// The JSON object of one Problem 2 answer.
+pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("problem".into(), json!("adhesion"));
+    m.insert("lambda".into(), opt(&ans.lambda, requested));
+    m.insert("P2".into(), json!(ans.p2.print(requested)));
+    m.insert("half_width".into(), json!(ans.half_width.print(requested)));
+    m.insert("digits_requested".into(), json!(requested.to_string()));
+    let head = digits_text(ans.accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min));
+    match ans.kind {
+        DigitsKind::Verified => {
+            m.insert("digits_verified".into(), json!(head));
+        }
+        DigitsKind::Estimated => {
+            m.insert("digits_verified".into(), Value::Null);
+            m.insert("digits_estimated".into(), json!(head));
+        }
+    }
+    let acc: Map<String, Value> = ans.accuracy.iter().map(|(k, d)| (k.clone(), json!(digits_text(*d)))).collect();
+    m.insert("accuracy".into(), Value::Object(acc));
+    for (name, rows) in &ans.fields {
+        let list: Vec<Value> =
+            rows.iter().map(|r| json!({"x_over_a": r.x_over_a, name.as_str(): r.value.print(requested)})).collect();
+        m.insert(name.clone(), Value::Array(list));
+    }
+    if let Some(zones) = &ans.tension_zones {
+        let z: Vec<Value> = zones
+            .iter()
+            .map(|z| json!({"from_x_over_a": z.from.fmt(6), "to_x_over_a": z.to.fmt(6), "refined": z.refined}))
+            .collect();
+        m.insert("tension_zones".into(), Value::Array(z));
+    }
+    m.insert("warnings".into(), Value::Array(ans.warnings.iter().map(|w| json!(w)).collect()));
+    m.insert("provenance".into(), ans.provenance.json());
+    m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn noise_prints_as_zero_in_both_number_types() {
+        // The frictionless F_def: 2.85e-44 (MPFR) and -1.32e-19 (f64) at scale k l P2.
+        let p = 128;
+        let scale = Float::with_val(p, 2.3e-3);
+        let m = Measured::mpfr(Float::with_val(p, 2.85470179000802031743799538663e-44), &scale, 33.0);
+        assert_eq!(m.print(30), "0");
+        let f = Measured::f64(-1.32137139771671e-19, 2.3e-3, 14.0);
+        assert_eq!(f.print(15), "0");
+        let v = Measured::f64(0.123456789, 0.5, 6.0);
+        assert_eq!(v.print(15), "1.2346e-1");
+    }
+}
