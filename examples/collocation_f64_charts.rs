@@ -277,7 +277,14 @@ fn chart_sinusoid_two_roots() {
             cw.clone(),
             SlidingLoad::NormalLoad(Exact::from_float(frac * PI * 0.1).unwrap()),
         );
-        for root in candidate_roots(&pb, &SolverOptions::default()).unwrap() {
+        let roots = match candidate_roots(&pb, &SolverOptions::default()) {
+            Ok(roots) => roots,
+            Err(e) => {
+                println!("cW {cw} P2/(pi D) {frac}: {e}");
+                continue;
+            }
+        };
+        for root in roots {
             println!(
                 "cW {cw} P2/(pi D) {frac}: lambda {:.5} c/l {:.4} physical {:?}",
                 root.lambda,

@@ -99,9 +99,9 @@ fn single_punch_with_friction_wear_and_adhesive_friction() {
         let th = prm.theta;
         let s = solve_sliding_f64(&pb, &[0.2], &SolverOptions::default()).unwrap();
         let s = s.primary();
-        let a0 = (2.0 * p2 / (PI * k)).sqrt();
-        let ls = a0 / (1.0 - 4.0 * th * th).sqrt();
-        let t = prm.beta * prm.tau0 / (k * ls);
+        // l_s and T of [3.10] from the parameters (E* = 1).
+        let ls = prm.l_s(p2);
+        let t = prm.t(p2);
         assert!(rel(s.l, ls, ls) < TOL, "theta {th}: {} vs {ls}", s.l);
         assert!(rel(s.c / s.l, 2.0 * th - t, 1.0) < TOL, "theta {th}: {} vs {}", s.c / s.l, 2.0 * th - t);
         let fdef = 2.0 * PI * k * k * ls.powi(3) * (1.0 - 4.0 * th * th) * ((2.0 * th - t) / 2.0 + th / 3.0);
@@ -371,8 +371,7 @@ fn theta_near_one_half_single_punch() {
     let pb = problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(100, 1), load(r(1, 100)));
     let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
     let s = s.primary();
-    let a0 = (2.0 * 0.01 / PI).sqrt();
-    let ls = a0 / (1.0 - 4.0 * s.theta * s.theta).sqrt();
+    let ls = SlidingParamsF64::new(&pb).unwrap().l_s(0.01);
     // Tolerance 1e-11: the weight 1/omega ~ (1-u)^{theta - 1/2} is nearly non-integrable.
     assert!(rel(s.l, ls, ls) < 1e-11, "{:e}", rel(s.l, ls, ls));
     assert!(rel(s.c / s.l, 2.0 * s.theta, 1.0) < 1e-11);
