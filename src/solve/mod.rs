@@ -42,9 +42,8 @@ impl From<collocation_f64::SlidingF64Error> for SolveError {
     fn from(e: collocation_f64::SlidingF64Error) -> Self {
         use collocation_f64::SlidingF64Error as E;
         match &e {
-            E::NotRepresentable { .. } | E::InvalidParameter { .. } | E::InvalidPoint { .. } => {
-                SolveError::Invalid(InvalidInput::new("scene", "(f64 method)", e.to_string()))
-            }
+            E::Input(crate::error::Error::Input(m)) => m.clone().into(),
+            E::InvalidPoint { .. } => SolveError::Invalid(InvalidInput::new("scene", "(f64 method)", e.to_string())),
             _ => SolveError::Failed(e.to_string()),
         }
     }

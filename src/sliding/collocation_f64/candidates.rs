@@ -1,0 +1,152 @@
+//! Candidate solutions at the main run's accuracy: every root of the side conditions (contact
+//! size and, for the sinusoid, the branch of (X, Y)) with its number of nodes, and the discrete
+//! state of a candidate at any number of nodes.
+
+use super::error::{Result, SlidingF64Error};
+use super::interpolant::State;
+use super::operator::{collocation, collocation_nodes};
+use super::parabola::{kuznetsov_guess, parabola_lambda, parabola_state};
+use super::sinusoid::{
+    line_circle, refine_sinusoid_lambda, sinusoid_bases, sinusoid_scan, sinusoid_state, sinusoid_xy_at,
+};
+use super::solution::SolverOptions;
+use super::tangent_map::Map;
+use crate::params::sliding::{ShapeF64, SlidingParamsF64, TargetF64};
+use std::f64::consts::PI;
+
+/// Candidate contact sizes and centres: (lambda or l) for the main run.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Candidate {
+    /// Parabola, periodic: lambda.
+    ParabolaPeriodic(f64),
+    /// Parabola, single punch (l is explicit).
+    ParabolaSingle,
+    /// Sinusoid: lambda and (X, Y) branch sign (which intersection of line and circle).
+    Sinusoid { lambda: f64, branch: i8 },
+}
+
+/// Period L (infinite for a single punch).
+fn period(prm: &SlidingParamsF64) -> f64 {
+    prm.period.unwrap_or(f64::INFINITY)
+}
+
+/// Builds the state of a candidate at n nodes (re-solving the scalar equation when P2 is given).
+/// With `resolve` the scalar equation in lambda is solved again at n nodes (check run); without
+/// it the candidate's lambda (already solved at n nodes) is used.
+pub(super) fn state_of(
+    prm: &SlidingParamsF64,
+    target: TargetF64,
+    cand: Candidate,
+    n: usize,
+    resolve: bool,
+) -> Result<State> {
+    let col = collocation(prm.theta, n)?;
+    match (cand, prm.shape) {
+        (Candidate::ParabolaSingle, ShapeF64::Parabolic { .. }) => {
+            let l = match target {
+                TargetF64::HalfLength(l) => l,
+                TargetF64::NormalLoad(p2) => {
+                    // P2 scales as l^2: P2 = E* k l^2 P2_1 (P2_1 at l = 1).
+                    let unit = parabola_state(&col, prm, Map::Single { l: 1.0 })?;
+                    (p2 / unit.p2).sqrt()
+                }
+            };
+            parabola_state(&col, prm, Map::Single { l })
+        }
+        (Candidate::ParabolaPeriodic(lam0), ShapeF64::Parabolic { .. }) => {
+            let big_l = period(prm);
+            let lam = match target {
+                TargetF64::HalfLength(l) => PI * l / big_l,
+                TargetF64::NormalLoad(p2) if resolve => parabola_lambda(prm, big_l, p2, n, Some(lam0))?,
+                TargetF64::NormalLoad(_) => lam0,
+            };
+            parabola_state(&col, prm, Map::periodic(big_l, lam))
+        }
+        (Candidate::Sinusoid { lambda, branch }, ShapeF64::Sinusoidal { d }) => {
+            let big_l = period(prm);
+            let s = PI * prm.e_star * d / big_l;
+            match target {
+                TargetF64::HalfLength(l) => {
+                    let map = Map::periodic(big_l, PI * l / big_l);
+                    let (bx, by) = sinusoid_bases(&col, &map)?;
+                    let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
+                    let (x, y) = pts.get(branch as usize).copied().ok_or_else(|| SlidingF64Error::NoConvergence {
+                        reason: "the solution branch disappeared in the check run".into(),
+                    })?;
+                    Ok(sinusoid_state(map, big_l, s, &bx, &by, x, y))
+                }
+                TargetF64::NormalLoad(p2) => {
+                    let lam = if resolve { refine_sinusoid_lambda(&col, prm, big_l, s, p2, lambda)? } else { lambda };
+                    let map = Map::periodic(big_l, lam);
+                    let (bx, by) = sinusoid_bases(&col, &map)?;
+                    let (x, y) = sinusoid_xy_at(&bx, &by, prm, s, p2)?;
+                    let r = x.hypot(y);
+                    Ok(sinusoid_state(map, big_l, s, &bx, &by, x / r, y / r))
+                }
+            }
+        }
+        _ => unreachable!("candidate kind matches the shape"),
+    }
+}
+
+/// All candidates of the problem (main-run accuracy), with the nodes to use for each. For the
+/// sinusoid under a load no root may exist: [`SlidingF64Error::LoadExceedsMaximum`] with the
+/// largest load of the scan.
+pub(super) fn candidates(
+    prm: &SlidingParamsF64,
+    target: TargetF64,
+    options: &SolverOptions,
+) -> Result<Vec<(Candidate, usize)>> {
+    let pick = |lam: f64| options.nodes.unwrap_or_else(|| collocation_nodes(lam, options));
+    match (prm.shape, prm.period) {
+        (ShapeF64::Parabolic { .. }, None) => Ok(vec![(Candidate::ParabolaSingle, options.nodes.unwrap_or(8))]),
+        (ShapeF64::Parabolic { .. }, Some(big_l)) => {
+            match target {
+                TargetF64::HalfLength(l) => {
+                    Ok(vec![(Candidate::ParabolaPeriodic(PI * l / big_l), pick(PI * l / big_l))])
+                }
+                TargetF64::NormalLoad(p2) => {
+                    // Nodes for the Kuznetsov-type guess of lambda (parabola_lambda), then for the
+                    // solved lambda until the node count settles (at most 3 more solves).
+                    let mut n = options.nodes.unwrap_or_else(|| pick(kuznetsov_guess(prm, big_l, p2)));
+                    let mut lam = parabola_lambda(prm, big_l, p2, n, None)?;
+                    if options.nodes.is_none() {
+                        for _ in 0..3 {
+                            let n_new = pick(lam);
+                            if n_new == n {
+                                break;
+                            }
+                            n = n_new;
+                            lam = parabola_lambda(prm, big_l, p2, n, Some(lam))?;
+                        }
+                    }
+                    Ok(vec![(Candidate::ParabolaPeriodic(lam), n)])
+                }
+            }
+        }
+        (ShapeF64::Sinusoidal { d }, Some(big_l)) => {
+            let s = PI * prm.e_star * d / big_l;
+            match target {
+                TargetF64::HalfLength(l) => {
+                    let lam = PI * l / big_l;
+                    let n = pick(lam);
+                    let col = collocation(prm.theta, n)?;
+                    let map = Map::periodic(big_l, lam);
+                    let (bx, by) = sinusoid_bases(&col, &map)?;
+                    let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
+                    Ok(pts
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, (x, y))| x * bx.p2 + y * by.p2 > 0.0)
+                        .map(|(i, _)| (Candidate::Sinusoid { lambda: lam, branch: i as i8 }, n))
+                        .collect())
+                }
+                TargetF64::NormalLoad(p2) => Ok(sinusoid_scan(prm, big_l, s, p2, options)?
+                    .into_iter()
+                    .map(|(lambda, n)| (Candidate::Sinusoid { lambda, branch: 0 }, n))
+                    .collect()),
+            }
+        }
+        (ShapeF64::Sinusoidal { .. }, None) => unreachable!("refused by the model: a sinusoid has a period"),
+    }
+}

@@ -1,0 +1,106 @@
+//! Discrete solutions at fixed contact: the unit bases (one solve of the LU-factored system per
+//! right-hand side shape), the discrete state (map, centre, G at the nodes) and the Nyström
+//! interpolant G(u) between the nodes and off the contact.
+
+use super::error::Result;
+use super::operator::Collocation;
+use super::tangent_map::Map;
+use nalgebra::DVector;
+use std::f64::consts::PI;
+
+/// Discrete solution for one right-hand side shape F(u) (unit amplitude): G, K and the two
+/// functionals C0[p] - K and P2[p].
+pub(super) struct Basis {
+    pub(super) g: Vec<f64>,
+    pub(super) cond: f64,
+    pub(super) p2: f64,
+}
+
+/// Solves the collocation system for the right-hand side `f` and evaluates the two side
+/// functionals (module doc of `collocation_f64`).
+pub(super) fn basis(col: &Collocation, map: &Map, f: impl Fn(f64) -> f64) -> Result<Basis> {
+    let rhs = DVector::from_iterator(col.colloc.len(), col.colloc.iter().map(|&u| f(u)));
+    let (g, k) = col.solve(rhs)?;
+    let c0 = col.sum(&g, |t| map.c0_weight(t));
+    let p2 = col.sum(&g, |t| map.jac(t));
+    Ok(Basis { g, cond: c0 - k, p2 })
+}
+
+/// A discrete state: the map, the centre c, G in physical units at the nodes
+/// (p(u) = omega(u) G(u)) and the shape part of the right-hand side (for the Nyström interpolant).
+pub(super) struct State {
+    pub(super) map: Map,
+    pub(super) c: f64,
+    pub(super) g: Vec<f64>,
+    pub(super) p2: f64,
+    pub(super) rhs: Rhs,
+}
+
+/// The shape part F(u) of the right-hand side in physical units (constants are absorbed in K).
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Rhs {
+    /// F = s (x(u) - c): parabola, s = E* k.
+    Offset { s: f64 },
+    /// F = s (X sin 2phi + Y cos 2phi), phi = atan(m u): sinusoid, s = pi E* D/L.
+    Sinusoid { s: f64, x: f64, y: f64 },
+}
+
+impl Rhs {
+    /// (F(u) - F(v))/(u - v), in cancellation-free closed forms:
+    /// atan(mu) - atan(mv) = atan(m (u - v)/(1 + m^2 u v)) when 1 + m^2 u v > 0;
+    /// sin 2phi: 2m (u - v)(1 - m^2 u v)/((1 + m^2 u^2)(1 + m^2 v^2));
+    /// cos 2phi: -2 m^2 (u - v)(u + v)/((1 + m^2 u^2)(1 + m^2 v^2)).
+    fn divided_difference(&self, map: &Map, u: f64, v: f64) -> f64 {
+        let d = u - v;
+        match (*self, *map) {
+            (Rhs::Offset { s }, Map::Single { l }) => s * l,
+            (Rhs::Offset { s }, Map::Periodic { big_l, m, .. }) => {
+                let q = 1.0 + m * m * u * v;
+                let dd = if d == 0.0 {
+                    m / (1.0 + m * m * u * u)
+                } else if q > 0.0 {
+                    (m * d / q).atan() / d
+                } else {
+                    ((m * u).atan() - (m * v).atan()) / d
+                };
+                s * big_l / PI * dd
+            }
+            (Rhs::Sinusoid { s, x, y }, Map::Periodic { m, .. }) => {
+                let den = (1.0 + m * m * u * u) * (1.0 + m * m * v * v);
+                s * (x * 2.0 * m * (1.0 - m * m * u * v) - y * 2.0 * m * m * (u + v)) / den
+            }
+            (Rhs::Sinusoid { .. }, Map::Single { .. }) => unreachable!("sinusoid needs a period"),
+        }
+    }
+}
+
+/// G(u) by the Nyström interpolant of the collocation equation [reconstructed]: from
+/// G(u) D(u) = F(u) - K - (1/pi) sum_k W_k G_k/(u - t_k), D(u) = (u + 2 theta)/cos(pi theta)
+/// - (1/pi) sum_k W_k/(u - t_k) (the kappa-term plus the exact PV Cauchy transform of omega, see
+/// `gauss_jacobi_f64::omega_cauchy_exterior`, minus its quadrature), and D(x_r) = 0 = the
+/// residual at the collocation point x_r nearest to u, subtracting both at x_r gives
+///
+/// ```text
+/// G(u) = [ (F(u) - F(x_r))/(u - x_r) + (1/pi) sum_k W_k G_k / ((u - t_k)(x_r - t_k)) ]
+///      / [ 1/cos(pi theta)           + (1/pi) sum_k W_k     / ((u - t_k)(x_r - t_k)) ],
+/// ```
+///
+/// free of 0/0 at x_r and of K. Its error follows the quadrature, tan(lambda/2)^{2n}, instead of
+/// the interpolant's tan(lambda/2)^n; it is also the analytic continuation used off the contact.
+pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
+    let xs = &col.colloc;
+    let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
+    let xr = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { xs[i - 1] } else { xs[i] };
+    let mut num = st.rhs.divided_difference(&st.map, u, xr);
+    let mut den = 1.0 / (PI * col.theta).cos();
+    for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
+        let d = u - t;
+        if d == 0.0 {
+            return *g;
+        }
+        let q = w / (PI * d * (xr - t));
+        num += q * g;
+        den += q;
+    }
+    num / den
+}
