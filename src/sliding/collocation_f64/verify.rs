@@ -1,6 +1,7 @@
 //! The accuracy estimate of the f64 method: a second ("check") run with n + max(8, n/4) nodes,
 //! compared quantity by quantity with the main run on the scales of the accuracy rule.
 
+use crate::params::sliding::SlidingScale;
 use super::candidates::{state_of, Candidate};
 use super::error::Result;
 use super::operator::collocation;
@@ -50,7 +51,13 @@ pub(super) fn check_run(
         ]
         .map(f64::abs),
     );
-    let scales = Scales { length: l, load: out.p2, f_def: prm.k * l * out.p2, pressure: out.max_p };
+    let scale = |q: SlidingScale| q.f64(prm.k, l, out.p2, out.max_p);
+    let scales = Scales {
+        length: scale(SlidingScale::Length),
+        load: scale(SlidingScale::Load),
+        f_def: scale(SlidingScale::DeformationForce),
+        pressure: scale(SlidingScale::Pressure),
+    };
     let d = |q: Quantity| differences[q];
     Ok(AccuracyEstimate {
         geometry: d(Quantity::A).max(d(Quantity::B)).max(d(Quantity::C)) / l,
