@@ -5,6 +5,7 @@
 //! more than requested); the series method states estimated, not verified, digits.
 
 pub mod format;
+pub mod answer_f64;
 pub mod render;
 pub mod series_method;
 
@@ -237,65 +238,18 @@ fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<
     Ok(Value::Object(top))
 }
 
-/// Digits verified from an f64 relative error estimate: capped at 15 (round-off floor).
-fn f64_digits(rel_err: f64) -> f64 {
-    if rel_err <= 1e-15 {
-        15.0
-    } else {
-        (-rel_err.log10()).clamp(0.0, 15.0)
-    }
-}
-
 fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
     let points: Vec<f64> =
         scene.output.points.iter().map(|x| crate::numerics::exact::to_f64(x).unwrap_or(f64::NAN)).collect();
     let sols = collocation_f64::solve_sliding_f64(p, &points, &collocation_f64::SolverOptions::default())?;
-    let render = |s: &collocation_f64::SlidingSolutionF64| {
-        let digits = req.digits.min(15);
-        let g = f64_digits(s.accuracy.geometry);
-        let pd = f64_digits(s.accuracy.pressure);
-        let ld = f64_digits(s.accuracy.load);
-        let fd = f64_digits(s.accuracy.f_def);
-        let v = |x: f64, scale: f64, dv: f64| {
-            let extra = if x == 0.0 { 0.0 } else { (scale.abs() / x.abs()).log10().max(0.0) };
-            fmt_f64(x, ((dv - extra).floor() as i64).clamp(1, digits as i64) as usize)
-        };
-        let mut m = Map::new();
-        m.insert("theta".into(), json!(fmt_f64(s.theta, 16)));
-        m.insert("kappa".into(), json!(fmt_f64(s.kappa, 16)));
-        m.insert(
-            "lambda".into(),
-            if matches!(p.period(), Period::Infinite) { Value::Null } else { json!(v(s.lambda, s.lambda, g)) },
-        );
-        m.insert("l".into(), json!(v(s.l, s.l, g)));
-        m.insert("a".into(), json!(v(s.a, s.l, g)));
-        m.insert("b".into(), json!(v(s.b, s.l, g)));
-        m.insert("c".into(), json!(v(s.c, s.l, g)));
-        m.insert("P1".into(), json!(v(s.p1, s.p2, ld)));
-        m.insert("P2".into(), json!(v(s.p2, s.p2, ld)));
-        m.insert("F_def".into(), json!(v(s.f_def, s.f_def, fd)));
-        m.insert("wear_per_distance".into(), s.wear_per_distance.map_or(Value::Null, |w| json!(v(w, w, ld))));
-        m.insert("wear_rate".into(), s.wear_rate.map_or(Value::Null, |w| json!(v(w, w, ld))));
-        let headline = g.min(pd).min(ld).min(fd);
-        m.insert("digits_requested".into(), json!(req.digits.to_string()));
-        m.insert("digits_verified".into(), json!(format!("{headline:.1}")));
-        m.insert(
-            "accuracy".into(),
-            json!({"a": format!("{g:.1}"), "b": format!("{g:.1}"), "c": format!("{g:.1}"), "P1": format!("{ld:.1}"),
-                   "P2": format!("{ld:.1}"), "F_def": format!("{fd:.1}"), "p": format!("{pd:.1}")}),
-        );
-        let pressure: Vec<Value> = s
-            .pressure
-            .iter()
-            .map(|q| json!({"xh": fmt_f64(q.xh, 16), "x": v(q.x, s.l, g), "p": v(q.p, s.max_pressure, pd)}))
-            .collect();
-        m.insert("pressure".into(), Value::Array(pressure));
-        m.insert("provenance".into(), provenance("f64", Some(53), Some(s.nodes)));
-        m
-    };
+    let periodic = matches!(p.period(), Period::Finite(_));
+    let requested = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
+    let render = |s| render::sliding_json(&answer_f64::sliding_answer(s, periodic), requested);
     let mut top = Map::new();
     top.insert("problem".into(), json!("sliding"));
     top.extend(render(sols.primary()));
+    // digits_requested states what the user asked, not the f64 cap.
+    top.insert("digits_requested".into(), json!(req.digits.to_string()));
     if sols.solutions.len() > 1 {
         top.insert("solutions".into(), Value::Array(sols.solutions.iter().map(|s| Value::Object(render(s))).collect()));
     }
