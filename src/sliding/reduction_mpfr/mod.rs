@@ -30,10 +30,10 @@
 //!   The opt-in [`Convention::PeriodicSurface`] adds K = (kappa P2 - 2 beta l tau0)/L to the right
 //!   side of [2.8], which closes it (M = 0, checked to 1e-20 by `paper_convention_gap_mismatch`).
 //!   Under it the sinusoid's load curve with friction (tau0 = 0) has one physical solution beyond
-//!   the paper convention's maximum load (test `periodic_surface_convention`; the whole curve is
-//!   charted by `cargo run --release --example sinusoid_load_curve -- --periodic-surface`), while
-//!   under the paper's convention it is not monotone and loses physicality (gap, then p at the
-//!   trailing end) before its maximum (test `non_monotone_sinusoid`).
+//!   the paper convention's maximum load (test `periodic_surface_convention`), while under the
+//!   paper's convention it is not monotone and loses physicality (gap, then p at the trailing end)
+//!   before its maximum (test `non_monotone_sinusoid`). Both curves are charted by
+//!   `cargo run --release --example reduction_mpfr_explore -- load-curve [--periodic-surface]`.
 //!
 //! Independent checks (tests): closed forms of THEORY.md section 6 (Kuznetsov, Westergaard, Hertz)
 //! to 30-40 digits; single-punch limit [3.10]; the returned p satisfies the original cot-kernel

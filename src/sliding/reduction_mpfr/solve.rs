@@ -245,7 +245,7 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
 /// The largest load P2/E* on a physical solution of the sinusoid (low precision, `params` at the
 /// locating precision, for error messages): (P2_max/E*, lambda) over a 64-point scan of both
 /// branches, refined by golden-section search.
-pub fn sinusoid_max_physical_load(params: &SlidingParamsMpfr) -> Result<Option<(f64, f64)>, SlidingError> {
+fn sinusoid_max_physical_load(params: &SlidingParamsMpfr) -> Result<Option<(f64, f64)>, SlidingError> {
     let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
     let grid = 64;
     let mut best: Option<(f64, f64, usize)> = None;
