@@ -259,7 +259,7 @@ fn sinusoid_max_physical_load(params: &SlidingParamsMpfr) -> Result<Option<(f64,
                 continue;
             }
             let v = sol.p2.to_f64();
-            if best.map_or(true, |b| v > b.0) && physical_at(params, &sf, &sol, n).is_ok() {
+            if best.is_none_or(|b| v > b.0) && physical_at(params, &sf, &sol, n).is_ok() {
                 best = Some((v, s, br));
             }
         }

@@ -384,9 +384,10 @@ fn refusal_is_in_the_problems_units() {
 /// Independent check of the reduction [2.13]-[2.14] for theta != 0, tau0 > 0 on a periodic row:
 /// the pressure it returns satisfies the original equation [2.8]
 ///     kappa p(x) + H[p](x) = (E*/2) g'(x) + beta tau0,  H[p] = (1/L) PV int p(xi) cot(pi (x - xi)/L) dxi,
-/// with H evaluated directly (no tangent map): PV int = int [p(xi) - p(x)] cot(...) dxi
-/// + p(x) (L/pi) ln|sin(pi (x + a)/L)/sin(pi (b - x)/L)|, the regular integral by tanh-sinh
-/// quadrature in the linear variable (points off its nodes). Residuals below 1e-30 relative to E* k l.
+/// with H evaluated directly (no tangent map): PV int = int [p(xi) - p(x)] cot(...) dxi plus
+/// p(x) (L/pi) ln|sin(pi (x + a)/L)/sin(pi (b - x)/L)|, the regular integral by tanh-sinh
+/// quadrature in the linear variable (points off its nodes). Residuals below 1e-30 relative to
+/// E* k l.
 #[test]
 fn original_cot_kernel_equation_is_satisfied() {
     let cases = [
