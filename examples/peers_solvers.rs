@@ -19,7 +19,7 @@ use num_rational::BigRational;
 use periodic_contact::model::{Exact, Material, Period, PunchShape, SlidingProblem};
 use periodic_contact::numerics::gauss_jacobi_mpfr::clear_cache;
 use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, SolverOptions};
-use periodic_contact::sliding::{precision_for, solve_at, NodeRule, SlidingSolution};
+use periodic_contact::sliding::{precision_for, solve_at, Checks, NodeRule, SlidingSolution};
 use rug::{float::Constant, Float};
 use std::str::FromStr;
 use std::time::Instant;
@@ -105,7 +105,7 @@ fn main() {
             let repeat: usize = a[9].parse().expect("repeat");
             let prec = precision_for(digits);
             let rule = NodeRule { digits: digits as f64, factor: 1.0 };
-            let (t, sol) = best(repeat, || solve_at(&prob, &points, rule, false, prec).expect("solve"));
+            let (t, sol) = best(repeat, || solve_at(&prob, &points, rule, Checks::Skip, prec).expect("solve"));
             let x: &SlidingSolution = &sol[0];
             let lam = x.lambda.as_ref().expect("periodic");
             let p: Vec<String> = x.pressure.iter().map(|pp| s(&pp.p)).collect();
@@ -143,7 +143,7 @@ fn main() {
             let (prob, a_ref) = westergaard(a_over_l);
             let prec = precision_for(digits);
             let rule = NodeRule { digits: digits as f64, factor: 1.0 };
-            let (t, sol) = best(repeat, || solve_at(&prob, &[], rule, false, prec).expect("solve"));
+            let (t, sol) = best(repeat, || solve_at(&prob, &[], rule, Checks::Skip, prec).expect("solve"));
             let x = &sol[0];
             println!(
                 "{}",

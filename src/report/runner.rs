@@ -9,7 +9,7 @@ use crate::adhesion::{self, volterra_mpfr::VolterraParams};
 use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
 use crate::model::{AdhesionProblem, AdhesionSize, PunchShape, SlidingLoad, SlidingProblem};
 use crate::scene::SceneProblem;
-use crate::sliding::{self, collocation_f64, NodeRule};
+use crate::sliding::{self, collocation_f64, Checks, NodeRule};
 use crate::solve::series_method::series_point;
 use rug::Float;
 use std::collections::HashMap;
@@ -199,9 +199,14 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
         }
         Knob::Mpfr(d) => {
             let start = Instant::now();
-            let sols =
-                sliding::solve_at(p, &[], NodeRule { digits: d as f64, factor: 1.0 }, true, sliding::precision_for(d))
-                    .map_err(|e| e.to_string())?;
+            let sols = sliding::solve_at(
+                p,
+                &[],
+                NodeRule { digits: d as f64, factor: 1.0 },
+                Checks::Physical,
+                sliding::precision_for(d),
+            )
+            .map_err(|e| e.to_string())?;
             let seconds = start.elapsed().as_secs_f64();
             let s = sols.first().ok_or("no physical solution")?;
             Ok(Outcome {

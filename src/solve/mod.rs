@@ -191,42 +191,8 @@ fn sliding_solution_json(v: &sliding::VerifiedSolution, digits: u32) -> Map<Stri
     m
 }
 
-/// Problem 1 in units of the contact modulus: E* -> 1, P2 -> P2/E*, tau0 -> tau0/E*,
-/// cW -> cW E* (kappa, theta, T and every length are unchanged; stresses and loads scale by E*).
-/// Lets the MPFR path accept moduli and loads beyond the f64 range, where its f64 starting stage
-/// would otherwise overflow.
-fn in_modulus_units(p: &SlidingProblem) -> Result<(SlidingProblem, crate::model::Exact), SolveError> {
-    let e = p.material().contact_modulus().clone();
-    let material =
-        crate::model::Material::from_contact_modulus(p.material().poisson_ratio().clone(), num_traits::One::one())?;
-    let load = match p.load() {
-        crate::model::SlidingLoad::NormalLoad(x) => crate::model::SlidingLoad::NormalLoad(x / &e),
-        other => other.clone(),
-    };
-    let scaled = p
-        .to_builder()
-        .material(material)
-        .adhesive_friction(p.adhesive_friction() / &e)
-        .wear(p.wear() * &e)
-        .load(load)
-        .build()?;
-    Ok((scaled, e))
-}
-
 fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
-    let (scaled, e_star) = in_modulus_units(p)?;
-    let mut sols = sliding::solve_verified(&scaled, &scene.output.points, req.digits)?;
-    for v in sols.iter_mut() {
-        let s = &mut v.solution;
-        let e = crate::numerics::exact::to_float(&e_star, s.prec);
-        s.p1 *= &e;
-        s.p2 *= &e;
-        s.f_def *= &e;
-        s.max_pressure *= &e;
-        for q in s.pressure.iter_mut() {
-            q.p *= &e;
-        }
-    }
+    let sols = sliding::solve_verified(p, &scene.output.points, req.digits)?;
     let first = sols.first().ok_or_else(|| SolveError::Failed("no physical solution was found".into()))?;
     let mut top = Map::new();
     top.insert("problem".into(), Value::String("sliding".into()));

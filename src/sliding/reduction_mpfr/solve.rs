@@ -4,29 +4,33 @@
 //!    the parabola's load P2(lambda) (or P2(l)) is increasing, bracketed from the single-punch /
 //!    Kuznetsov estimate; the sinusoid's P2(lambda) is scanned on both branches of the centre
 //!    (see [`super::equation::shift_solutions`]) because with theta != 0 it is not monotone.
-//!    Every bracket is refined by the Illinois method.
+//!    Every bracket is refined by Brent's method ([`crate::numerics::roots::brent`]).
 //! 2. Each size is refined by the secant method at the working precision with a fixed rule, until the
 //!    step is below 2^-(prec-8) relative.
 //! 3. The pressure [2.13], the loads, F_def and the physicality checks follow.
+//!
+//! Everything here works in units of E* ([`SlidingParamsMpfr`]); [`solve_at`] and
+//! [`super::verify::solve_verified`] return the solutions in the problem's units.
 
 use super::contact::{Contact, Size};
 use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
 use super::physical::{check_gap, check_pressure};
 use super::pressure::Pressure;
-use super::setup::{Convention, Setup, Shape};
+use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
-use crate::model::{Exact, SlidingLoad, SlidingProblem};
-use crate::numerics::exact::{to_f64, to_float};
+use crate::model::{Exact, SlidingProblem};
+use crate::numerics::accuracy::{readable_f64, readable_mpfr};
+use crate::numerics::exact::to_float;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
+use crate::numerics::roots::{brent, Bracket, RootError};
+use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
 use rug::Float;
 use std::sync::Arc;
 
 /// Most nodes the solver will use for one rule.
 pub const NODE_CAP: usize = 3000;
 
-/// Precision of the locating stage.
-const LOCATE_PREC: u32 = 64;
 /// Digits the locating stage aims at.
 const LOCATE_DIGITS: f64 = 16.0;
 /// Digits of the sinusoid's load-curve scan (signs only).
@@ -76,21 +80,21 @@ fn bucket(n: usize) -> usize {
     n.div_ceil(64) * 64
 }
 
-/// Rule for 1/omega with n nodes at the setup's precision.
-fn inverse_rule(setup: &Setup, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
-    let (a, b) = setup.inverse_weight_exponents();
-    Ok(gauss_jacobi(&a, &b, n, setup.prec)?)
+/// Rule for 1/omega with n nodes at the parameters' precision.
+fn inverse_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
+    let (a, b) = params.inverse_weight_exponents();
+    Ok(gauss_jacobi(&a, &b, n, params.prec)?)
 }
 
 /// Rule for omega with n nodes.
-fn weight_rule(setup: &Setup, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
-    let (a, b) = setup.weight_exponents();
-    Ok(gauss_jacobi(&a, &b, n, setup.prec)?)
+fn weight_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
+    let (a, b) = params.weight_exponents();
+    Ok(gauss_jacobi(&a, &b, n, params.prec)?)
 }
 
 /// lambda of a size parameter (0 for a single punch).
-fn lambda_of(setup: &Setup, s: f64) -> f64 {
-    if setup.period.is_some() {
+fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
+    if params.period.is_some() {
         s
     } else {
         0.0
@@ -98,75 +102,57 @@ fn lambda_of(setup: &Setup, s: f64) -> f64 {
 }
 
 /// Centre solutions (all branches) at size s with n nodes.
-fn branches(setup: &Setup, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
-    let rule = inverse_rule(setup, n)?;
-    let size = Size::new(setup, s);
-    Ok(shift_solutions(setup, &size, &equation_terms(setup, &size, &rule)))
+fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
+    let rule = inverse_rule(params, n)?;
+    let size = Size::new(params, s);
+    Ok(shift_solutions(params, &size, &equation_terms(params, &size, &rule)))
 }
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).
-fn load_lo(setup: &Setup, s: f64, branch: usize) -> Result<Option<f64>, SlidingError> {
-    let n = bucket(nodes_for(lambda_of(setup, s), LOCATE_DIGITS));
-    let sf = Float::with_val(setup.prec, s);
-    Ok(branches(setup, &sf, n)?.get(branch).map(|b| b.p2.to_f64()))
+fn load_lo(params: &SlidingParamsMpfr, s: f64, branch: usize) -> Result<Option<f64>, SlidingError> {
+    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS));
+    let sf = Float::with_val(params.prec, s);
+    Ok(branches(params, &sf, n)?.get(branch).map(|b| b.p2.to_f64()))
 }
 
-/// Illinois (modified regula falsi) on [lo, hi] with f(lo) < 0 < f(hi) or the reverse.
-fn illinois(
+/// The relative load residual of the locating stage is evaluated to ~16 digits: below this it is
+/// noise, and the size counts as a root.
+const RESIDUAL_NOISE: f64 = 1e-15;
+
+/// A root of the relative load residual `f` (None: no centre on the branch, an error) in the
+/// bracket (lo, flo), (hi, fhi) with a sign change, by Brent's method to ~4 eps relative.
+fn root_in(
     mut f: impl FnMut(f64) -> Result<Option<f64>, SlidingError>,
-    mut lo: f64,
-    mut flo: f64,
-    mut hi: f64,
-    mut fhi: f64,
+    (lo, flo): (f64, f64),
+    (hi, fhi): (f64, f64),
 ) -> Result<f64, SlidingError> {
-    let mut side = 0;
-    for _ in 0..200 {
-        let mut x = (lo * fhi - hi * flo) / (fhi - flo);
-        if !(x > lo.min(hi) && x < lo.max(hi)) {
-            x = 0.5 * (lo + hi);
+    let denoise = |v: f64| if v.abs() <= RESIDUAL_NOISE { 0.0 } else { v };
+    let g = |x: f64| -> Result<f64, SlidingError> {
+        match f(x)? {
+            Some(v) => Ok(denoise(v)),
+            None => Err(SlidingError::NoConvergence(format!("the load curve has a gap at size {}", readable_f64(x)))),
         }
-        let fx = match f(x)? {
-            Some(v) => v,
-            None => return Err(SlidingError::NoConvergence(format!("the load curve has a gap at size {x}"))),
-        };
-        // f is a relative load residual evaluated to ~16 digits: 1e-15 is at its noise level.
-        if fx.abs() <= 1e-15 || (hi - lo).abs() <= 4.0 * f64::EPSILON * x.abs() {
-            return Ok(x);
-        }
-        if (fx > 0.0) == (fhi > 0.0) {
-            hi = x;
-            fhi = fx;
-            if side == 1 {
-                flo *= 0.5;
-            }
-            side = 1;
-        } else {
-            lo = x;
-            flo = fx;
-            if side == -1 {
-                fhi *= 0.5;
-            }
-            side = -1;
-        }
-    }
-    Ok(0.5 * (lo + hi))
+    };
+    let bracket = Bracket { a: lo, b: hi, fa: denoise(flo), fb: denoise(fhi) };
+    brent(g, bracket, 4.0 * f64::EPSILON * lo.abs().max(hi.abs())).map_err(|e| match e {
+        RootError::Function(e) => e,
+        other => SlidingError::NoConvergence(format!("locating the contact size: {other}")),
+    })
 }
 
-/// Contact sizes (with their centre branch) carrying the load `p2` (low precision), sorted by size.
-fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Result<Vec<(f64, usize)>, SlidingError> {
-    let setup = Setup::with_convention(problem, LOCATE_PREC, convention)?;
-    let target = to_f64(p2).ok_or_else(|| SlidingError::parameter("normal_load", p2, "must be a finite number"))?;
+/// Contact sizes (with their centre branch) carrying the given load P2/E* (low precision, at the
+/// locating stage's parameters), sorted by size.
+fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
+    let params = &setup.locate;
+    let target = setup.target.expect("Setup::new keeps the f64 load of a given load");
     let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
     let f = |s: f64, br: usize| -> Result<Option<f64>, SlidingError> {
-        Ok(load_lo(&setup, s, br)?.map(|v| (v - target) / target))
+        Ok(load_lo(params, s, br)?.map(|v| (v - target) / target))
     };
-    let e_star = setup.e_star.to_f64();
-    let theta = setup.theta.to_f64();
-    match (&setup.shape, &setup.period) {
-        (Shape::Parabolic { k }, period) => {
-            // Single-punch estimate l_s = a0/sqrt(1 - 4 theta^2), a0 = sqrt(2 P2/(pi E* k)) [3.10].
-            let k = k.to_f64();
-            let ls = (2.0 * target / (std::f64::consts::PI * e_star * k)).sqrt() / (1.0 - 4.0 * theta * theta).sqrt();
+    match (&params.shape, &params.period, &params.target) {
+        (ShapeMpfr::Parabolic { .. }, period, TargetMpfr::NormalLoad(p2)) => {
+            // Single-punch estimate l_s = a0/sqrt(1 - 4 theta^2) [3.10] (osculating k).
+            let ls = params.l_s(p2).to_f64();
             let (s0, smax) = match period {
                 None => (ls, f64::INFINITY),
                 Some(l) => {
@@ -178,16 +164,12 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                 }
             };
             let f0 = f(s0, 0)?.unwrap_or(f64::NAN);
-            let (mut lo, mut flo, mut hi, mut fhi);
-            let mut step = 1e-4 * s0;
-            if f0.abs() <= 1e-15 {
+            if f0.abs() <= RESIDUAL_NOISE {
                 return Ok(vec![(s0, 0)]);
             }
+            let (mut lo, mut flo, mut hi, mut fhi) = (s0, f0, s0, f0);
+            let mut step = 1e-4 * s0;
             if f0 < 0.0 {
-                lo = s0;
-                flo = f0;
-                hi = s0;
-                fhi = f0;
                 let mut tries = 0;
                 while fhi < 0.0 {
                     lo = hi;
@@ -199,19 +181,15 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                     tries += 1;
                     if tries > 60 || (smax.is_finite() && smax - hi < 1e-12) {
                         return Err(SlidingError::NoSolution {
-                            load: p2.to_string(),
+                            load: setup.load_text.clone().unwrap_or_default(),
                             why: format!(
-                                "the contact would exceed lambda = pi l/L = {cap:.4} (about {} nodes for {} digits; the periodic parabola also needs the contact inside (-L/2, L/2)); the load is too large for this method",
-                                LOCATE_NODES, LOCATE_DIGITS
+                                "the contact would exceed lambda = pi l/L = {} (about {LOCATE_NODES} nodes for {LOCATE_DIGITS} digits; the periodic parabola also needs the contact inside (-L/2, L/2)); the load is too large for this method",
+                                readable_f64(cap)
                             ),
                         });
                     }
                 }
             } else if f0 > 0.0 {
-                hi = s0;
-                fhi = f0;
-                lo = s0;
-                flo = f0;
                 let mut tries = 0;
                 while flo > 0.0 {
                     hi = lo;
@@ -224,18 +202,15 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                         return Err(SlidingError::NoConvergence("no lower bracket for the contact size".into()));
                     }
                 }
-            } else if f0.abs() <= 1e-15 {
-                return Ok(vec![(s0, 0)]);
             } else {
-                return Err(SlidingError::NoConvergence(format!("load not computable at size {s0}")));
+                return Err(SlidingError::NoConvergence(format!("load not computable at size {}", readable_f64(s0))));
             }
             if !(flo.is_finite() && fhi.is_finite()) {
                 return Err(SlidingError::NoConvergence("load not finite while bracketing".into()));
             }
-            let s = illinois(|x| f(x, 0), lo, flo, hi, fhi)?;
-            Ok(vec![(s, 0)])
+            Ok(vec![(root_in(|x| f(x, 0), (lo, flo), (hi, fhi))?, 0)])
         }
-        (Shape::Sinusoidal { .. }, _) => {
+        (ShapeMpfr::Sinusoidal { .. }, _, TargetMpfr::NormalLoad(_)) => {
             // Both centre branches come from the same two integrals: evaluate them once per point.
             let grid = 48;
             let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
@@ -243,7 +218,7 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                 let s = cap * i as f64 / grid as f64;
                 // The scan only needs signs: SCAN_DIGITS; brackets are refined with LOCATE_DIGITS.
                 let n = bucket(nodes_for(s, SCAN_DIGITS));
-                let b = branches(&setup, &Float::with_val(setup.prec, s), n)?;
+                let b = branches(params, &Float::with_val(params.prec, s), n)?;
                 for (br, curve) in curves.iter_mut().enumerate() {
                     curve.push((s, b.get(br).map(|v| (v.p2.to_f64() - target) / target)));
                 }
@@ -255,7 +230,7 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
                         if fp == 0.0 {
                             found.push((sp, br));
                         } else if (fp < 0.0) != (fv < 0.0) && fv != 0.0 {
-                            found.push((illinois(|x| f(x, br), sp, fp, s, fv)?, br));
+                            found.push((root_in(|x| f(x, br), (sp, fp), (s, fv))?, br));
                         }
                     }
                 }
@@ -263,16 +238,14 @@ fn locate(problem: &SlidingProblem, p2: &Exact, convention: Convention) -> Resul
             found.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(std::cmp::Ordering::Equal));
             Ok(found)
         }
+        (_, _, TargetMpfr::HalfLength(_)) => unreachable!("locate is called for a given load only"),
     }
 }
 
-/// The largest load on a physical solution of the sinusoid (low precision, for error messages):
-/// (P2_max, lambda) over a 64-point scan of both branches, refined by golden-section search.
-pub fn sinusoid_max_physical_load(
-    problem: &SlidingProblem,
-    convention: Convention,
-) -> Result<Option<(f64, f64)>, SlidingError> {
-    let setup = Setup::with_convention(problem, LOCATE_PREC, convention)?;
+/// The largest load P2/E* on a physical solution of the sinusoid (low precision, `params` at the
+/// locating precision, for error messages): (P2_max/E*, lambda) over a 64-point scan of both
+/// branches, refined by golden-section search.
+fn sinusoid_max_physical_load(params: &SlidingParamsMpfr) -> Result<Option<(f64, f64)>, SlidingError> {
     let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
     let grid = 64;
     let mut best: Option<(f64, f64, usize)> = None;
@@ -280,13 +253,13 @@ pub fn sinusoid_max_physical_load(
         for i in 1..=grid {
             let s = cap * i as f64 / grid as f64;
             let n = bucket(nodes_for(s, LOCATE_DIGITS));
-            let sf = Float::with_val(setup.prec, s);
-            let Some(sol) = branches(&setup, &sf, n)?.get(br).cloned() else { continue };
+            let sf = Float::with_val(params.prec, s);
+            let Some(sol) = branches(params, &sf, n)?.get(br).cloned() else { continue };
             if sol.p2 <= 0u32 {
                 continue;
             }
             let v = sol.p2.to_f64();
-            if best.map_or(true, |b| v > b.0) && physical_at(&setup, &sf, &sol, n).is_ok() {
+            if best.is_none_or(|b| v > b.0) && physical_at(params, &sf, &sol, n).is_ok() {
                 best = Some((v, s, br));
             }
         }
@@ -299,9 +272,9 @@ pub fn sinusoid_max_physical_load(
     let g = 0.5 * (5f64.sqrt() - 1.0);
     let eval = |x: f64| -> f64 {
         let n = bucket(nodes_for(x, LOCATE_DIGITS));
-        let xf = Float::with_val(setup.prec, x);
-        match branches(&setup, &xf, n).ok().and_then(|v| v.get(br).cloned()) {
-            Some(sol) if physical_at(&setup, &xf, &sol, n).is_ok() => sol.p2.to_f64(),
+        let xf = Float::with_val(params.prec, x);
+        match branches(params, &xf, n).ok().and_then(|v| v.get(br).cloned()) {
+            Some(sol) if physical_at(params, &xf, &sol, n).is_ok() => sol.p2.to_f64(),
             _ => f64::NEG_INFINITY,
         }
     };
@@ -326,23 +299,40 @@ pub fn sinusoid_max_physical_load(
     Ok(Some((v, arg)))
 }
 
-fn physical_at(setup: &Setup, s: &Float, sol: &ShiftSolution, n: usize) -> Result<(), SlidingError> {
-    let rule = inverse_rule(setup, n)?;
-    let size = Size::new(setup, s);
-    let contact = Contact::new(setup, &size, sol.c.clone());
-    let pr = Pressure::new(setup, &contact, &rule);
-    check_pressure(setup, &pr)?;
-    check_gap(setup, &contact, &pr)
+/// Why no physical contact of the sinusoid carries the load: the largest load it carries, in the
+/// problem's units (`params` at the locating precision), after `detail` (e.g. why the roots of
+/// the equations are not physical).
+fn sinusoid_refusal(params: &SlidingParamsMpfr, detail: Option<&SlidingError>) -> Result<String, SlidingError> {
+    let Some((v, lam)) = sinusoid_max_physical_load(params)? else {
+        return Ok("no physical contact exists at these friction and wear values".into());
+    };
+    let cap = Float::with_val(53, v) * &params.unit;
+    let prefix = detail.map(|e| format!("the solutions of the equations are not physical ({e}); ")).unwrap_or_default();
+    Ok(format!(
+        "{prefix}the sinusoid carries at most P2 = {} (at lambda = {}) at these friction and wear values",
+        readable_mpfr(&cap),
+        readable_f64(lam)
+    ))
 }
 
-/// Secant refinement of a size `s0` on branch `br` so that the load equals `p2`, at the setup's
-/// precision with `n` nodes.
-fn refine(setup: &Setup, s0: f64, br: usize, p2: &Float, n: usize) -> Result<Float, SlidingError> {
-    let p = setup.prec;
+fn physical_at(params: &SlidingParamsMpfr, s: &Float, sol: &ShiftSolution, n: usize) -> Result<(), SlidingError> {
+    let rule = inverse_rule(params, n)?;
+    let size = Size::new(params, s);
+    let contact = Contact::new(params, &size, sol.c.clone());
+    let pr = Pressure::new(params, &contact, &rule);
+    check_pressure(params, &pr)?;
+    check_gap(params, &contact, &pr)
+}
+
+/// Secant refinement of a size `s0` on branch `br` so that the load equals `p2`, at the
+/// parameters' precision with `n` nodes.
+fn refine(params: &SlidingParamsMpfr, s0: f64, br: usize, p2: &Float, n: usize) -> Result<Float, SlidingError> {
+    let p = params.prec;
     let f = |s: &Float| -> Result<Float, SlidingError> {
-        let b = branches(setup, s, n)?;
-        let v =
-            b.get(br).ok_or_else(|| SlidingError::NoConvergence(format!("the centre branch vanished at size {s}")))?;
+        let b = branches(params, s, n)?;
+        let v = b.get(br).ok_or_else(|| {
+            SlidingError::NoConvergence(format!("the centre branch vanished at size {}", readable_mpfr(s)))
+        })?;
         Ok(Float::with_val(p, &v.p2 - p2))
     };
     let mut x0 = Float::with_val(p, s0);
@@ -358,7 +348,10 @@ fn refine(setup: &Setup, s0: f64, br: usize, p2: &Float, n: usize) -> Result<Flo
         let step = Float::with_val(p, &f1 * Float::with_val(p, &x1 - &x0)) / df;
         let x2 = Float::with_val(p, &x1 - &step);
         if !x2.is_finite() || x2 <= 0u32 {
-            return Err(SlidingError::NoConvergence(format!("secant left the admissible sizes near {s0}")));
+            return Err(SlidingError::NoConvergence(format!(
+                "secant left the admissible sizes near {}",
+                readable_f64(s0)
+            )));
         }
         if Float::with_val(53, step.abs_ref()) <= Float::with_val(53, &tol * Float::with_val(53, x2.abs_ref())) {
             return Ok(x2);
@@ -368,51 +361,78 @@ fn refine(setup: &Setup, s0: f64, br: usize, p2: &Float, n: usize) -> Result<Flo
         f1 = f(&x2)?;
         x1 = x2;
     }
-    Err(SlidingError::NoConvergence(format!("secant refinement of the contact size did not converge (start {s0})")))
+    Err(SlidingError::NoConvergence(format!(
+        "secant refinement of the contact size did not converge (start {})",
+        readable_f64(s0)
+    )))
+}
+
+/// Whether a run checks its solutions for physicality (p >= 0, gap >= 0; [`super::physical`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Checks {
+    /// Keep only physical solutions (the main run).
+    Physical,
+    /// Keep every root of the equations (the verification run, which pairs its roots with the
+    /// main run's; explorations of the load curve).
+    Skip,
+}
+
+/// Refuses points outside (-1, 1), compared exactly (a point that rounds to 1 is still inside).
+pub(super) fn check_points(points: &[Exact]) -> Result<(), SlidingError> {
+    let one = Exact::from_integer(1.into());
+    for x in points {
+        if !(x > &-one.clone() && x < &one) {
+            return Err(SlidingError::parameter(
+                "points",
+                crate::model::readable(x),
+                "each point xh = (x - c)/l must lie in (-1, 1)",
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Solves Problem 1 at `prec` bits; the node count per solution is `nodes.factor` times the
 /// error-model count for `nodes.digits` at its lambda. `points` are xh = (x - c)/l in (-1, 1).
-/// `check` runs the physicality checks (the verification run skips them).
-/// Returns every physical solution, sorted by contact size (smallest first).
+/// `checks` selects whether non-physical roots are dropped. Returns every solution, sorted by
+/// contact size (smallest first), in the problem's units.
 pub fn solve_at(
     problem: &SlidingProblem,
     points: &[Exact],
     nodes: NodeRule,
-    check: bool,
+    checks: Checks,
     prec: u32,
 ) -> Result<Vec<SlidingSolution>, SlidingError> {
-    Ok(solve_located(problem, points, nodes, check, prec, None, Convention::Paper)?.into_iter().map(|x| x.0).collect())
+    check_points(points)?;
+    let setup = Setup::new(problem)?;
+    let params = SlidingParamsMpfr::new(problem, prec)?;
+    let sols = solve_located(&setup, &params, points, nodes, checks, None)?;
+    Ok(sols.into_iter().map(|(s, _)| s.in_units_of(&params.unit)).collect())
 }
 
 /// Low-precision estimate of a contact size (lambda, or l for a single punch) and its centre branch.
 pub type Located = (f64, usize);
 
-/// [`solve_at`] that can reuse the sizes located by an earlier run (`located`, for the inverse
-/// problem), and returns with each solution the located size it came from.
-pub fn solve_located(
-    problem: &SlidingProblem,
+/// [`solve_at`] with the parameters `params` of the working precision, in units of E* (the
+/// solutions too), reusing the sizes located by an earlier run when `located` is given (inverse
+/// problem); returns with each solution the located size it came from. `points` are checked.
+pub(super) fn solve_located(
+    setup: &Setup,
+    params: &SlidingParamsMpfr,
     points: &[Exact],
     nodes: NodeRule,
-    check: bool,
-    prec: u32,
+    checks: Checks,
     located: Option<&[Located]>,
-    convention: Convention,
 ) -> Result<Vec<(SlidingSolution, Located)>, SlidingError> {
-    let one = Exact::from_integer(1.into());
-    for x in points {
-        if !(x > &-one.clone() && x < &one) {
-            return Err(SlidingError::parameter("points", x, "each point xh = (x - c)/l must lie in (-1, 1)"));
-        }
-    }
-    let setup = Setup::with_convention(problem, prec, convention)?;
+    let prec = params.prec;
+    let check = checks == Checks::Physical;
     let n_for = |lam: f64| -> Result<usize, SlidingError> {
         let n0 = nodes_for(lam, nodes.digits);
         let n = (n0 as f64 * nodes.factor).ceil();
         if n0 == usize::MAX || n > NODE_CAP as f64 {
             return Err(SlidingError::parameter(
                 "lambda = pi l/L",
-                format!("{lam:.6}"),
+                readable_f64(lam),
                 format!(
                     "too close to pi/2 (full contact): {} digits would need more than {NODE_CAP} nodes",
                     nodes.digits
@@ -423,16 +443,16 @@ pub fn solve_located(
     };
     // Candidate (size, centre) pairs at working precision.
     let mut cands: Vec<(Float, ShiftSolution, usize, Located)> = vec![];
-    let sinusoid = matches!(setup.shape, Shape::Sinusoidal { .. });
-    match problem.load() {
-        SlidingLoad::HalfLength(l) => {
-            let lf = to_float(l, prec);
-            let s = match &setup.period {
-                Some(big_l) => Float::with_val(prec, &lf * &setup.pi) / big_l,
-                None => lf,
+    let sinusoid = matches!(params.shape, ShapeMpfr::Sinusoidal { .. });
+    let no_solution = |why: String| SlidingError::NoSolution { load: setup.load_text.clone().unwrap_or_default(), why };
+    match &params.target {
+        TargetMpfr::HalfLength(lf) => {
+            let s = match &params.period {
+                Some(big_l) => Float::with_val(prec, lf * &params.pi) / big_l,
+                None => lf.clone(),
             };
-            let n = n_for(lambda_of(&setup, s.to_f64()))?;
-            for (br, b) in branches(&setup, &s, n)?.into_iter().enumerate() {
+            let n = n_for(lambda_of(params, s.to_f64()))?;
+            for (br, b) in branches(params, &s, n)?.into_iter().enumerate() {
                 if b.p2 > 0u32 {
                     cands.push((s.clone(), b, n, (s.to_f64(), br)));
                 }
@@ -443,11 +463,10 @@ pub fn solve_located(
                 });
             }
         }
-        SlidingLoad::NormalLoad(p2) => {
-            let p2f = to_float(p2, prec);
+        TargetMpfr::NormalLoad(p2f) => {
             let found = match located {
                 Some(v) => v.to_vec(),
-                None => locate(problem, p2, convention)?,
+                None => locate(setup)?,
             };
             for (s0, br) in found {
                 // Sinusoid: screen the roots for physicality at the locating precision first, so
@@ -455,36 +474,32 @@ pub fn solve_located(
                 // at full precision. A root within the checks' tolerance of the physical boundary
                 // could be misjudged here; such roots sit at the end of the physical range.
                 if sinusoid && check && located.is_none() {
-                    let lo = Setup::with_convention(problem, LOCATE_PREC, convention)?;
-                    let n_lo = bucket(nodes_for(lambda_of(&lo, s0), LOCATE_DIGITS));
+                    let lo = &setup.locate;
+                    let n_lo = bucket(nodes_for(lambda_of(lo, s0), LOCATE_DIGITS));
                     let s_lo = Float::with_val(LOCATE_PREC, s0);
-                    if let Some(sol) = branches(&lo, &s_lo, n_lo)?.get(br) {
-                        if physical_at(&lo, &s_lo, sol, n_lo).is_err() {
+                    if let Some(sol) = branches(lo, &s_lo, n_lo)?.get(br) {
+                        if physical_at(lo, &s_lo, sol, n_lo).is_err() {
                             continue;
                         }
                     }
                 }
-                let n = n_for(lambda_of(&setup, s0))?;
-                let s = refine(&setup, s0, br, &p2f, n)?;
-                let b = branches(&setup, &s, n)?;
+                let n = n_for(lambda_of(params, s0))?;
+                let s = refine(params, s0, br, p2f, n)?;
+                let b = branches(params, &s, n)?;
                 let mut sol =
                     b.get(br).cloned().ok_or_else(|| SlidingError::NoConvergence("centre branch lost".into()))?;
                 sol.p2 = p2f.clone();
                 cands.push((s, sol, n, (s0, br)));
             }
             if cands.is_empty() {
-                let why = match sinusoid_max_physical_load(problem, convention)? {
-                    Some((v, lam)) => format!("the sinusoid carries at most P2 = {v:.6e} (at lambda = {lam:.4}) at these friction and wear values"),
-                    None => "no physical contact exists at these friction and wear values".into(),
-                };
-                return Err(SlidingError::NoSolution { load: p2.to_string(), why });
+                return Err(no_solution(sinusoid_refusal(&setup.locate, None)?));
             }
         }
     }
     let mut out = vec![];
     let mut first_err = None;
     for (s, sh, n, loc) in cands {
-        match build(&setup, &s, sh, n, points, check) {
+        match build(params, &s, sh, n, points, check) {
             Ok(sol) => out.push((sol, loc)),
             Err(e @ SlidingError::NotPhysical { .. }) if sinusoid => {
                 first_err.get_or_insert(e);
@@ -493,57 +508,50 @@ pub fn solve_located(
         }
     }
     if out.is_empty() {
-        if let (SlidingLoad::NormalLoad(p2), true) = (problem.load(), sinusoid) {
-            let why = match sinusoid_max_physical_load(problem, convention)? {
-                Some((v, lam)) => format!(
-                    "the solutions of the equations are not physical ({}); the sinusoid carries at most P2 = {v:.6e} (at lambda = {lam:.4}) at these friction and wear values",
-                    first_err.map(|e| e.to_string()).unwrap_or_default()
-                ),
-                None => "no physical contact exists at these friction and wear values".into(),
-            };
-            return Err(SlidingError::NoSolution { load: p2.to_string(), why });
+        if let (TargetMpfr::NormalLoad(_), true) = (&params.target, sinusoid) {
+            return Err(no_solution(sinusoid_refusal(&setup.locate, first_err.as_ref())?));
         }
-        return Err(first_err.unwrap_or(SlidingError::NoConvergence("no solution".into())));
+        return Err(first_err.unwrap_or(SlidingError::NoConvergence("no contact was found".into())));
     }
     out.sort_by(|x, y| x.0.l.partial_cmp(&y.0.l).unwrap_or(std::cmp::Ordering::Equal));
     Ok(out)
 }
 
-/// Everything about one contact: validity, physicality, pressure, loads.
+/// Everything about one contact: validity, physicality, pressure, loads (in units of E*).
 fn build(
-    setup: &Setup,
+    params: &SlidingParamsMpfr,
     s: &Float,
     sh: ShiftSolution,
     n: usize,
     points: &[Exact],
     check: bool,
 ) -> Result<SlidingSolution, SlidingError> {
-    let p = setup.prec;
-    let size = Size::new(setup, s);
-    let contact = Contact::new(setup, &size, sh.c.clone());
+    let p = params.prec;
+    let size = Size::new(params, s);
+    let contact = Contact::new(params, &size, sh.c.clone());
     let l = size.l.clone();
     let a = Float::with_val(p, &l - &sh.c);
     let b = Float::with_val(p, &l + &sh.c);
-    if let (Shape::Parabolic { .. }, Some(big_l)) = (&setup.shape, &setup.period) {
+    if let (ShapeMpfr::Parabolic { .. }, Some(big_l)) = (&params.shape, &params.period) {
         let half = Float::with_val(p, big_l / 2u32);
         if a >= half || b >= half {
             return Err(SlidingError::ContactOutsidePeriod {
-                left: format!("{:.12}", (-a)),
-                right: format!("{:.12}", b),
-                half_period: format!("{:.12}", half),
+                left: readable_mpfr(&Float::with_val(p, -&a)),
+                right: readable_mpfr(&b),
+                half_period: readable_mpfr(&half),
             });
         }
     }
-    let rule = inverse_rule(setup, n)?;
-    let pressure = Pressure::new(setup, &contact, &rule);
+    let rule = inverse_rule(params, n)?;
+    let pressure = Pressure::new(params, &contact, &rule);
     let max_pressure = if check {
-        let m = check_pressure(setup, &pressure)?;
-        check_gap(setup, &contact, &pressure)?;
+        let m = check_pressure(params, &pressure)?;
+        check_gap(params, &contact, &pressure)?;
         m
     } else {
         Float::with_val(p, 0)
     };
-    let rule_w = weight_rule(setup, n)?;
+    let rule_w = weight_rule(params, n)?;
     let (_, f_def) = pressure.load_and_deformation_force(&rule_w);
     let mut pts = vec![];
     for xh in points {
@@ -556,10 +564,10 @@ fn build(
         pts.push(PressurePoint { p: pressure.p(&u), xh, x });
     }
     let p2 = sh.p2;
-    let p1 = Float::with_val(p, &setup.mu * &p2) + Float::with_val(p, &l * &setup.tau0) * 2u32;
-    let worn = Float::with_val(p, &setup.wear * &p2);
-    let wear_per_distance = setup.period.as_ref().map(|big_l| Float::with_val(p, &worn / big_l));
-    let wear_rate = match (&wear_per_distance, &setup.speed) {
+    let p1 = Float::with_val(p, &params.mu * &p2) + Float::with_val(p, &l * &params.tau0) * 2u32;
+    let worn = Float::with_val(p, &params.wear * &p2);
+    let wear_per_distance = params.period.as_ref().map(|big_l| Float::with_val(p, &worn / big_l));
+    let wear_rate = match (&wear_per_distance, &params.speed) {
         (Some(w), Some(v)) => Some(Float::with_val(p, w * v)),
         _ => None,
     };
@@ -568,13 +576,13 @@ fn build(
         && pts.iter().all(|q| q.p.is_finite() && q.x.is_finite());
     if !finite {
         return Err(SlidingError::NoConvergence(format!(
-            "a non-finite value arose for the contact of half-length {:.12}",
-            l
+            "a non-finite value arose for the contact of half-length {}",
+            readable_mpfr(&l)
         )));
     }
     Ok(SlidingSolution {
-        theta: setup.theta.clone(),
-        kappa: setup.kappa.clone(),
+        theta: params.theta.clone(),
+        kappa: params.kappa.clone(),
         lambda: size.lambda.clone(),
         l,
         a,
@@ -591,9 +599,4 @@ fn build(
         nodes: n,
         prec: p,
     })
-}
-
-#[cfg(test)]
-pub(crate) fn locate_for_profile(problem: &SlidingProblem, p2: &Exact) -> Vec<Located> {
-    locate(problem, p2, Convention::Paper).unwrap()
 }

@@ -16,7 +16,7 @@
 //! uniform slope instead was tried and rejected: any uniform slope makes h < 0 next to one end,
 //! where h ~ (x - b)^{3/2 - theta}. A self-consistent periodic model would add
 //! K = (kappa P2 - 2 beta l tau0)/L to the right side of [2.8] (it shifts c by an odd power of
-//! lambda); available as the opt-in [`super::setup::Convention::PeriodicSurface`], under which the
+//! lambda); available as the opt-in [`crate::model::Convention::PeriodicSurface`], under which the
 //! two halves meet (THEORY.md keeps the paper's convention, the default).
 //! Points x = b + Delta s^4 (and L - a - Delta s^4) cluster at the ends; cumulative Simpson in s
 //! with 16 panels.
@@ -24,7 +24,8 @@
 use super::contact::Contact;
 use super::error::SlidingError;
 use super::pressure::Pressure;
-use super::setup::Setup;
+use crate::numerics::accuracy::{readable_f64, readable_mpfr};
+use crate::params::sliding::SlidingParamsMpfr;
 use rug::ops::Pow;
 use rug::Float;
 
@@ -32,13 +33,13 @@ use rug::Float;
 const GAP_PANELS: u32 = 16;
 
 /// Checks p >= 0 on the contact; returns max p over the samples (in the tangent variable u).
-pub fn check_pressure(setup: &Setup, pressure: &Pressure<'_>) -> Result<Float, SlidingError> {
-    let p = setup.prec;
+pub fn check_pressure(params: &SlidingParamsMpfr, pressure: &Pressure<'_>) -> Result<Float, SlidingError> {
+    let p = params.prec;
     // -cos(pi k/67): 67 is prime, so these points miss the Gauss–Chebyshev-like nodes
     // cos((2i+1) pi/(2n)) of theta = 0 for every n not a multiple of 67 (a coincidence is handled
     // by `Pressure::d`, only more slowly).
     let mut us: Vec<Float> =
-        (0..=67u32).map(|k| -Float::with_val(p, Float::with_val(p, &setup.pi * k) / 67u32).cos()).collect();
+        (0..=67u32).map(|k| -Float::with_val(p, Float::with_val(p, &params.pi * k) / 67u32).cos()).collect();
     for j in 2..=10u32 {
         let e = Float::with_val(p, 10u32).pow(-(j as i32));
         us.push(Float::with_val(p, 1u32 - Float::with_val(p, &e)));
@@ -53,8 +54,8 @@ pub fn check_pressure(setup: &Setup, pressure: &Pressure<'_>) -> Result<Float, S
             return Err(SlidingError::NotPhysical {
                 why: format!(
                     "negative pressure: p/omega = {} at u = {} (tangent variable; the contact would need to be smaller or the load is out of range)",
-                    format!("{:.8}", v),
-                    format!("{:.8}", u)
+                    readable_mpfr(&Float::with_val(p, v * &params.unit)),
+                    readable_mpfr(u)
                 ),
             });
         }
@@ -67,16 +68,16 @@ pub fn check_pressure(setup: &Setup, pressure: &Pressure<'_>) -> Result<Float, S
 }
 
 /// Checks h >= 0 outside the contact (see the module doc for what h contains).
-pub fn check_gap(setup: &Setup, contact: &Contact, pressure: &Pressure<'_>) -> Result<(), SlidingError> {
-    let p = setup.prec;
+pub fn check_gap(params: &SlidingParamsMpfr, contact: &Contact, pressure: &Pressure<'_>) -> Result<(), SlidingError> {
+    let p = params.prec;
     let l = &contact.size.l;
     // Distance from each contact end to where the integration stops.
-    let delta = match &setup.period {
+    let delta = match &params.period {
         Some(big_l) => Float::with_val(p, big_l - Float::with_val(p, l * 2u32)) / 2u32,
         None => Float::with_val(p, l * 3u32),
     };
-    let k = setup.osculating_k();
-    let scale = Float::with_val(p, &k * Float::with_val(p, l * l)).to_f64();
+    let k = &params.k;
+    let scale = Float::with_val(p, k * Float::with_val(p, l * l)).to_f64();
     let tol = scale * 1e-9;
     for side in [1i32, -1] {
         // Right side: x - c = l + delta s^4; left side (periodic: the next punch's trailing end
@@ -107,12 +108,13 @@ pub fn check_gap(setup: &Setup, contact: &Contact, pressure: &Pressure<'_>) -> R
                 let xc = Float::with_val(p, &delta * Float::with_val(p, (&s1).pow(4u32))) + l;
                 return Err(SlidingError::NotPhysical {
                     why: format!(
-                        "negative gap h = {hv:.3e} at x = c {} {:.8} (the punch overlaps the surface outside the contact, gap integrated from the {} end){}",
+                        "negative gap h = {} at x = c {} {} (the punch overlaps the surface outside the contact, gap integrated from the {} end){}",
+                        readable_f64(hv),
                         if side > 0 { "+" } else { "-" },
-                        xc,
+                        readable_mpfr(&xc),
                         if side > 0 { "leading" } else { "trailing" },
-                        if setup.period.is_some() && setup.convention == super::setup::Convention::Paper && i >= n / 2 {
-                            "; far from the contact this depends on the paper's convention, whose surface does not close over a period (mismatch 2 beta P1/E* - cW P2), see sliding::physical"
+                        if params.period.is_some() && params.convention == crate::model::Convention::Paper && i >= n / 2 {
+                            "; far from the contact this depends on the paper's convention, whose surface does not close over a period (mismatch 2 beta P1/E* - cW P2), see sliding::reduction_mpfr::physical"
                         } else {
                             ""
                         }

@@ -11,14 +11,14 @@
 //! with F(t) the analytic continuation of F. (Check: Hertz, theta = 0: h' = 2 k sqrt(x^2 - a^2).)
 
 use super::contact::Contact;
-use super::setup::{Setup, Shape};
 use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
+use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
 use rug::ops::Pow;
 use rug::{Assign, Float};
 
 /// The pressure of one contact: the rule for 1/omega and F at its nodes.
 pub struct Pressure<'a> {
-    setup: &'a Setup,
+    params: &'a SlidingParamsMpfr,
     contact: &'a Contact,
     rule: &'a GaussJacobiRule,
     f_nodes: Vec<Float>,
@@ -28,11 +28,11 @@ pub struct Pressure<'a> {
 
 impl<'a> Pressure<'a> {
     /// Precomputes F(u_j) at the nodes of `rule` (weight 1/omega).
-    pub fn new(setup: &'a Setup, contact: &'a Contact, rule: &'a GaussJacobiRule) -> Self {
-        let p = setup.prec;
-        let f_nodes = rule.nodes.iter().map(|u| contact.f(setup, u, p)).collect();
-        let factor = Float::with_val(p, setup.cos_pi_theta.square_ref()) / &setup.pi;
-        Pressure { setup, contact, rule, f_nodes, factor }
+    pub fn new(params: &'a SlidingParamsMpfr, contact: &'a Contact, rule: &'a GaussJacobiRule) -> Self {
+        let p = params.prec;
+        let f_nodes = rule.nodes.iter().map(|u| contact.f(params, u, p)).collect();
+        let factor = Float::with_val(p, params.cos_pi_theta.square_ref()) / &params.pi;
+        Pressure { params, contact, rule, f_nodes, factor }
     }
 
     /// D(u) = sum_j w_j [F(u_j) - F(u)]/(u_j - u), for any real u (inside or outside [-1, 1]).
@@ -41,7 +41,7 @@ impl<'a> Pressure<'a> {
     /// when a node is closer than 2^-16 the whole sum is formed at a precision raised by the bits
     /// the difference quotient would lose.
     pub fn d(&self, u: &Float) -> Float {
-        let p = self.setup.prec;
+        let p = self.params.prec;
         let mut min_gap = f64::INFINITY;
         for x in &self.rule.nodes {
             let g = (x.to_f64() - u.to_f64()).abs();
@@ -51,7 +51,7 @@ impl<'a> Pressure<'a> {
         }
         let lost = if min_gap < 1.0 / 65536.0 { ((-min_gap.max(1e-300).log2()).ceil() as u32).min(p) } else { 0 };
         let wp = p + lost;
-        let fu = self.contact.f(self.setup, u, wp);
+        let fu = self.contact.f(self.params, u, wp);
         let near = Float::with_val(53, Float::i_exp(1, -(p as i32) / 2));
         let mut acc = Float::with_val(wp, 0);
         let mut t1 = Float::new(wp);
@@ -60,10 +60,10 @@ impl<'a> Pressure<'a> {
             t2.assign(x - u);
             if Float::with_val(53, t2.abs_ref()) < near {
                 let mid = Float::with_val(wp, x + u) / 2u32;
-                t1 = self.contact.f_prime(self.setup, &mid, wp);
+                t1 = self.contact.f_prime(self.params, &mid, wp);
             } else {
                 if lost > 0 {
-                    t1 = self.contact.f(self.setup, x, wp);
+                    t1 = self.contact.f(self.params, x, wp);
                     t1 -= &fu;
                 } else {
                     t1.assign(&self.f_nodes[j] - &fu);
@@ -78,9 +78,9 @@ impl<'a> Pressure<'a> {
 
     /// omega(u) = (1 + u)^{1/2 + theta} (1 - u)^{1/2 - theta}, u in [-1, 1].
     pub fn omega(&self, u: &Float) -> Float {
-        let p = self.setup.prec;
-        let e1 = Float::with_val(p, &self.setup.theta + 0.5f64);
-        let e2 = Float::with_val(p, 0.5f64 - Float::with_val(p, &self.setup.theta));
+        let p = self.params.prec;
+        let e1 = Float::with_val(p, &self.params.theta + 0.5f64);
+        let e2 = Float::with_val(p, 0.5f64 - Float::with_val(p, &self.params.theta));
         let a = Float::with_val(p, u + 1u32).pow(&e1);
         let b = Float::with_val(p, 1u32 - Float::with_val(p, u)).pow(&e2);
         a * b
@@ -102,7 +102,7 @@ impl<'a> Pressure<'a> {
     /// where g'_cont is the continuation used in F (differs from g' only for the periodic
     /// parabola beyond +-L/2). `x_minus_c` is x - c, t = u(x) with |t| > 1.
     pub fn gap_slope(&self, x_minus_c: &Float) -> Float {
-        let s = self.setup;
+        let s = self.params;
         let p = s.prec;
         let t = self.contact.size.u_of(s, x_minus_c, p);
         let e1 = Float::with_val(p, &s.theta + 0.5f64);
@@ -113,8 +113,8 @@ impl<'a> Pressure<'a> {
         if t.is_sign_negative() {
             xt = -xt;
         }
-        let mut h = xt * self.d(&t) * &s.cos_pi_theta / &s.pi * 2u32 / &s.e_star;
-        if let (Shape::Parabolic { k }, Some(big_l)) = (&s.shape, &s.period) {
+        let mut h = xt * self.d(&t) * &s.cos_pi_theta / &s.pi * 2u32; // (2/E*) with E* = 1 (units of E*)
+        if let (ShapeMpfr::Parabolic { k }, Some(big_l)) = (&s.shape, &s.period) {
             // True slope 2k (x - n L) vs the continuation 2k x(t), x(t) in (c - L/2, c + L/2).
             let x = Float::with_val(p, x_minus_c + &self.contact.c);
             let n = Float::with_val(p, &x / big_l).round();
@@ -129,7 +129,7 @@ impl<'a> Pressure<'a> {
     /// (P2, F_def) = (int p dx, int p g' dx) over the contact, by the n-point rule `rule_omega`
     /// for the weight omega: int p x'(u) du = cos^2(pi theta)/pi sum_i w_i D(u_i) x'(u_i).
     pub fn load_and_deformation_force(&self, rule_omega: &GaussJacobiRule) -> (Float, Float) {
-        let s = self.setup;
+        let s = self.params;
         let p = s.prec;
         let mut p2 = Float::with_val(p, 0);
         let mut fd = Float::with_val(p, 0);

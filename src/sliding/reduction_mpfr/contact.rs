@@ -11,7 +11,7 @@
 //! - sinusoid [2.16]: with phi = 2 pi c/L and s = m u, sin(2 pi x(u)/L) = sin(phi + 2 arctan s), so
 //!   q = (2 pi D/L) (sin phi, cos phi), B = ((1 - s^2)/(1 + s^2), 2 s/(1 + s^2)).
 
-use super::setup::{Setup, Shape};
+use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
 use rug::Float;
 
 /// A contact of given size and centre, with the slope coefficients.
@@ -38,11 +38,11 @@ pub struct Size {
 
 impl Size {
     /// From the size parameter s: lambda for a periodic row, l for a single punch.
-    pub fn new(setup: &Setup, s: &Float) -> Self {
-        let p = setup.prec;
-        match &setup.period {
+    pub fn new(params: &SlidingParamsMpfr, s: &Float) -> Self {
+        let p = params.prec;
+        match &params.period {
             Some(big_l) => {
-                let l = Float::with_val(p, s * big_l) / &setup.pi;
+                let l = Float::with_val(p, s * big_l) / &params.pi;
                 Size { lambda: Some(Float::with_val(p, s)), m: Some(Float::with_val(p, s.tan_ref())), l }
             }
             None => Size { lambda: None, m: None, l: Float::with_val(p, s) },
@@ -50,15 +50,15 @@ impl Size {
     }
 
     /// Basis values (B0, B1) at u, at precision `wp`.
-    pub fn basis(&self, setup: &Setup, u: &Float, wp: u32) -> [Float; 2] {
-        match (&setup.shape, &self.m) {
-            (Shape::Parabolic { .. }, Some(m)) => {
-                let l = setup.period.as_ref().expect("periodic");
+    pub fn basis(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> [Float; 2] {
+        match (&params.shape, &self.m) {
+            (ShapeMpfr::Parabolic { .. }, Some(m)) => {
+                let l = params.period.as_ref().expect("periodic");
                 let at = Float::with_val(wp, m * u).atan();
-                [Float::with_val(wp, 1), at * l / &setup.pi]
+                [Float::with_val(wp, 1), at * l / &params.pi]
             }
-            (Shape::Parabolic { .. }, None) => [Float::with_val(wp, 1), Float::with_val(wp, &self.l * u)],
-            (Shape::Sinusoidal { .. }, Some(m)) => {
+            (ShapeMpfr::Parabolic { .. }, None) => [Float::with_val(wp, 1), Float::with_val(wp, &self.l * u)],
+            (ShapeMpfr::Sinusoidal { .. }, Some(m)) => {
                 let s = Float::with_val(wp, m * u);
                 let s2 = Float::with_val(wp, s.square_ref());
                 let den = Float::with_val(wp, &s2 + 1u32);
@@ -66,23 +66,23 @@ impl Size {
                 let b1 = Float::with_val(wp, &s * 2u32) / den;
                 [b0, b1]
             }
-            (Shape::Sinusoidal { .. }, None) => {
+            (ShapeMpfr::Sinusoidal { .. }, None) => {
                 unreachable!("a sinusoid needs a finite period (validated by the model)")
             }
         }
     }
 
     /// Derivatives (B0', B1') at u, at precision `wp`.
-    pub fn basis_derivative(&self, setup: &Setup, u: &Float, wp: u32) -> [Float; 2] {
-        match (&setup.shape, &self.m) {
-            (Shape::Parabolic { .. }, Some(m)) => {
-                let l = setup.period.as_ref().expect("periodic");
+    pub fn basis_derivative(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> [Float; 2] {
+        match (&params.shape, &self.m) {
+            (ShapeMpfr::Parabolic { .. }, Some(m)) => {
+                let l = params.period.as_ref().expect("periodic");
                 let s = Float::with_val(wp, m * u);
                 let den = Float::with_val(wp, s.square_ref()) + 1u32;
-                [Float::with_val(wp, 0), Float::with_val(wp, l * m) / &setup.pi / den]
+                [Float::with_val(wp, 0), Float::with_val(wp, l * m) / &params.pi / den]
             }
-            (Shape::Parabolic { .. }, None) => [Float::with_val(wp, 0), Float::with_val(wp, &self.l)],
-            (Shape::Sinusoidal { .. }, Some(m)) => {
+            (ShapeMpfr::Parabolic { .. }, None) => [Float::with_val(wp, 0), Float::with_val(wp, &self.l)],
+            (ShapeMpfr::Sinusoidal { .. }, Some(m)) => {
                 let s = Float::with_val(wp, m * u);
                 let s2 = Float::with_val(wp, s.square_ref());
                 let den = Float::with_val(wp, &s2 + 1u32);
@@ -91,29 +91,29 @@ impl Size {
                 let b1 = Float::with_val(wp, 1u32 - &s2) * m * 2u32 / den2;
                 [b0, b1]
             }
-            (Shape::Sinusoidal { .. }, None) => unreachable!("a sinusoid needs a finite period"),
+            (ShapeMpfr::Sinusoidal { .. }, None) => unreachable!("a sinusoid needs a finite period"),
         }
     }
 
     /// x(u) - c.
-    pub fn offset(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+    pub fn offset(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
         match &self.m {
             Some(m) => {
-                let l = setup.period.as_ref().expect("periodic");
-                Float::with_val(wp, m * u).atan() * l / &setup.pi
+                let l = params.period.as_ref().expect("periodic");
+                Float::with_val(wp, m * u).atan() * l / &params.pi
             }
             None => Float::with_val(wp, &self.l * u),
         }
     }
 
     /// x'(u).
-    pub fn jacobian(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
+    pub fn jacobian(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
         match &self.m {
             Some(m) => {
-                let l = setup.period.as_ref().expect("periodic");
+                let l = params.period.as_ref().expect("periodic");
                 let s = Float::with_val(wp, m * u);
                 let den = Float::with_val(wp, s.square_ref()) + 1u32;
-                Float::with_val(wp, l * m) / &setup.pi / den
+                Float::with_val(wp, l * m) / &params.pi / den
             }
             None => Float::with_val(wp, &self.l),
         }
@@ -121,11 +121,11 @@ impl Size {
 
     /// Inverse map: u(x) = tan(pi (x - c)/L)/m (periodic) or (x - c)/l. For periodic rows
     /// x - c must lie in (-L/2, L/2).
-    pub fn u_of(&self, setup: &Setup, x_minus_c: &Float, wp: u32) -> Float {
+    pub fn u_of(&self, params: &SlidingParamsMpfr, x_minus_c: &Float, wp: u32) -> Float {
         match &self.m {
             Some(m) => {
-                let l = setup.period.as_ref().expect("periodic");
-                let t = Float::with_val(wp, x_minus_c * &setup.pi) / l;
+                let l = params.period.as_ref().expect("periodic");
+                let t = Float::with_val(wp, x_minus_c * &params.pi) / l;
                 t.tan() / m
             }
             None => Float::with_val(wp, x_minus_c / &self.l),
@@ -135,14 +135,14 @@ impl Size {
 
 impl Contact {
     /// The contact of size `size` centred at `c`, with the slope coefficients of the shape.
-    pub fn new(setup: &Setup, size: &Size, c: Float) -> Self {
-        let p = setup.prec;
-        let q = match &setup.shape {
-            Shape::Parabolic { k } => [Float::with_val(p, k * &c) * 2u32, Float::with_val(p, k * 2u32)],
-            Shape::Sinusoidal { d } => {
-                let l = setup.period.as_ref().expect("periodic");
-                let amp = Float::with_val(p, &setup.pi * d) * 2u32 / l;
-                let phi = Float::with_val(p, &setup.pi * &c) * 2u32 / l;
+    pub fn new(params: &SlidingParamsMpfr, size: &Size, c: Float) -> Self {
+        let p = params.prec;
+        let q = match &params.shape {
+            ShapeMpfr::Parabolic { k } => [Float::with_val(p, k * &c) * 2u32, Float::with_val(p, k * 2u32)],
+            ShapeMpfr::Sinusoidal { d } => {
+                let l = params.period.as_ref().expect("periodic");
+                let amp = Float::with_val(p, &params.pi * d) * 2u32 / l;
+                let phi = Float::with_val(p, &params.pi * &c) * 2u32 / l;
                 let (s, co) = phi.sin_cos(Float::new(p));
                 [Float::with_val(p, &amp * &s), amp * co]
             }
@@ -150,22 +150,23 @@ impl Contact {
         Contact { size: size.clone(), c, q }
     }
 
-    /// F(u) = (E*/2) g'(x(u)) at precision `wp` (the right-hand side of [2.8] without beta tau0).
-    pub fn f(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
-        let b = self.size.basis(setup, u, wp);
+    /// F(u) = (E*/2) g'(x(u)) at precision `wp` (the right-hand side of [2.8] without beta tau0), in
+    /// units of E* (E* = 1 in the parameters): g'(x(u))/2.
+    pub fn f(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+        let b = self.size.basis(params, u, wp);
         let v = Float::with_val(wp, &self.q[0] * &b[0]) + Float::with_val(wp, &self.q[1] * &b[1]);
-        v * &setup.e_star / 2u32
+        v / 2u32
     }
 
     /// F'(u) at precision `wp`.
-    pub fn f_prime(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
-        let b = self.size.basis_derivative(setup, u, wp);
+    pub fn f_prime(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+        let b = self.size.basis_derivative(params, u, wp);
         let v = Float::with_val(wp, &self.q[0] * &b[0]) + Float::with_val(wp, &self.q[1] * &b[1]);
-        v * &setup.e_star / 2u32
+        v / 2u32
     }
 
     /// g'(x(u)).
-    pub fn slope(&self, setup: &Setup, u: &Float, wp: u32) -> Float {
-        Float::with_val(wp, self.f(setup, u, wp) * 2u32) / &setup.e_star
+    pub fn slope(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+        Float::with_val(wp, self.f(params, u, wp) * 2u32)
     }
 }

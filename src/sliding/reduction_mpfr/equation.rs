@@ -22,10 +22,13 @@
 //!
 //! Each integral is an n-point Gauss–Jacobi sum for the weight 1/omega; the integrands are analytic
 //! with singularities at u = +-i/m, so the error behaves like tan(lambda/2)^{2n}.
+//!
+//! Units: evaluated in units of E* (E* = 1, P2 and tau0 divided by E*; [`SlidingParamsMpfr`]).
 
 use super::contact::Size;
-use super::setup::{Convention, Setup, Shape};
+use crate::model::Convention;
 use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
+use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
 use rug::Float;
 
 /// The equation split over the slope basis: P2 = sum_j q_j re_j and the solvability residual
@@ -39,14 +42,14 @@ pub struct EquationTerms {
 }
 
 /// Evaluates the two basis integrals of [2.14] with the rule `rule` (weight 1/omega).
-pub fn equation_terms(setup: &Setup, size: &Size, rule: &GaussJacobiRule) -> EquationTerms {
-    let p = setup.prec;
+pub fn equation_terms(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacobiRule) -> EquationTerms {
+    let p = params.prec;
     let mut sr = [Float::with_val(p, 0), Float::with_val(p, 0)];
     let mut si = [Float::with_val(p, 0), Float::with_val(p, 0)];
-    match (&size.m, &size.lambda, &setup.period) {
+    match (&size.m, &size.lambda, &params.period) {
         (Some(m), Some(lambda), Some(big_l)) => {
             for (u, w) in rule.nodes.iter().zip(&rule.weights) {
-                let b = size.basis(setup, u, p);
+                let b = size.basis(params, u, p);
                 let s = Float::with_val(p, m * u);
                 let inv = Float::with_val(p, 1u32) / (Float::with_val(p, s.square_ref()) + 1u32);
                 let wi = Float::with_val(p, w * &inv);
@@ -56,9 +59,9 @@ pub fn equation_terms(setup: &Setup, size: &Size, rule: &GaussJacobiRule) -> Equ
                     si[j] += Float::with_val(p, &wi * &b[j]);
                 }
             }
-            let kmag = Float::with_val(p, &setup.e_star * &setup.cos_pi_theta)
-                / (Float::with_val(p, &setup.pi * 2u32) * Float::with_val(p, lambda.cos_ref()));
-            let psi = Float::with_val(p, &setup.theta * lambda) * 2u32;
+            let kmag = Float::with_val(p, &params.cos_pi_theta)
+                / (Float::with_val(p, &params.pi * 2u32) * Float::with_val(p, lambda.cos_ref()));
+            let psi = Float::with_val(p, &params.theta * lambda) * 2u32;
             let (sn, cs) = psi.sin_cos(Float::new(p));
             let mut re = [Float::new(p), Float::new(p)];
             let mut im = [Float::new(p), Float::new(p)];
@@ -71,18 +74,18 @@ pub fn equation_terms(setup: &Setup, size: &Size, rule: &GaussJacobiRule) -> Equ
             EquationTerms { re, im }
         }
         _ => {
-            let two_theta = Float::with_val(p, &setup.theta * 2u32);
+            let two_theta = Float::with_val(p, &params.theta * 2u32);
             for (u, w) in rule.nodes.iter().zip(&rule.weights) {
-                let b = size.basis(setup, u, p);
+                let b = size.basis(params, u, p);
                 let wr = Float::with_val(p, w * Float::with_val(p, u + &two_theta));
                 for j in 0..2 {
                     sr[j] += Float::with_val(p, &wr * &b[j]);
                     si[j] += Float::with_val(p, w * &b[j]);
                 }
             }
-            let ec = Float::with_val(p, &setup.e_star * &setup.cos_pi_theta);
+            let ec = Float::with_val(p, &params.cos_pi_theta);
             let fr = Float::with_val(p, &ec * &size.l) / 2u32;
-            let fi = Float::with_val(p, &ec / &setup.pi) / 2u32;
+            let fi = Float::with_val(p, &ec / &params.pi) / 2u32;
             let [sr0, sr1] = sr;
             let [si0, si1] = si;
             EquationTerms { re: [sr0 * &fr, sr1 * &fr], im: [si0 * &fi, si1 * &fi] }
@@ -110,29 +113,29 @@ pub struct ShiftSolution {
 ///
 /// With [`Convention::PeriodicSurface`] the residual gains K = (kappa P2 - 2 beta l tau0)/L with
 /// P2 = sum_j q_j re_j, i.e. im_j -> im_j + kappa re_j/L and beta tau0 -> beta tau0 (1 - 2 l/L).
-pub fn shift_solutions(setup: &Setup, size: &Size, terms: &EquationTerms) -> Vec<ShiftSolution> {
-    let p = setup.prec;
-    let mut bt = Float::with_val(p, &setup.beta * &setup.tau0);
+pub fn shift_solutions(params: &SlidingParamsMpfr, size: &Size, terms: &EquationTerms) -> Vec<ShiftSolution> {
+    let p = params.prec;
+    let mut bt = Float::with_val(p, &params.beta * &params.tau0);
     let mut terms = terms.clone();
-    if let (Convention::PeriodicSurface, Some(big_l)) = (setup.convention, &setup.period) {
+    if let (Convention::PeriodicSurface, Some(big_l)) = (params.convention, &params.period) {
         for j in 0..2 {
-            terms.im[j] += Float::with_val(p, &setup.kappa * &terms.re[j]) / big_l;
+            terms.im[j] += Float::with_val(p, &params.kappa * &terms.re[j]) / big_l;
         }
         let f = 1u32 - Float::with_val(p, &size.l * 2u32) / big_l;
         bt *= f;
     }
     let terms = &terms;
-    match &setup.shape {
-        Shape::Parabolic { k } => {
+    match &params.shape {
+        ShapeMpfr::Parabolic { k } => {
             let num = Float::with_val(p, k * &terms.im[1]) * 2u32 + &bt;
             let den = Float::with_val(p, k * &terms.im[0]) * 2u32;
             let c = -(num / den);
             let p2 = (Float::with_val(p, &c * &terms.re[0]) + &terms.re[1]) * k * 2u32;
             vec![ShiftSolution { c, p2 }]
         }
-        Shape::Sinusoidal { d } => {
-            let big_l = setup.period.as_ref().expect("sinusoid has a period");
-            let q = Float::with_val(p, &setup.pi * d) * 2u32 / big_l;
+        ShapeMpfr::Sinusoidal { d } => {
+            let big_l = params.period.as_ref().expect("sinusoid has a period");
+            let q = Float::with_val(p, &params.pi * d) * 2u32 / big_l;
             let a = Float::with_val(p, &q * &terms.im[0]);
             let b = Float::with_val(p, &q * &terms.im[1]);
             let r = Float::with_val(p, a.hypot_ref(&b));
@@ -141,14 +144,14 @@ pub fn shift_solutions(setup: &Setup, size: &Size, terms: &EquationTerms) -> Vec
             }
             let psi = Float::with_val(p, b.atan2_ref(&a));
             let asn = Float::with_val(p, &bt / &r).asin();
-            let phis = [Float::with_val(p, -&asn) - &psi, Float::with_val(p, &setup.pi + &asn) - &psi];
-            let two_pi = Float::with_val(p, &setup.pi * 2u32);
+            let phis = [Float::with_val(p, -&asn) - &psi, Float::with_val(p, &params.pi + &asn) - &psi];
+            let two_pi = Float::with_val(p, &params.pi * 2u32);
             phis.into_iter()
                 .map(|mut phi| {
-                    while phi > setup.pi {
+                    while phi > params.pi {
                         phi -= &two_pi;
                     }
-                    while phi <= -Float::with_val(p, &setup.pi) {
+                    while phi <= -Float::with_val(p, &params.pi) {
                         phi += &two_pi;
                     }
                     let (s, co) = phi.clone().sin_cos(Float::new(p));

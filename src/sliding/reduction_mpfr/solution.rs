@@ -13,7 +13,9 @@ pub struct PressurePoint {
     pub p: Float,
 }
 
-/// One solution of Problem 1 at working precision (THEORY.md section 3).
+/// One solution of Problem 1 at working precision (THEORY.md section 3). Returned by the solver
+/// in the problem's units; inside the solver the same struct holds loads and stresses in units of
+/// E* ([`SlidingSolution::in_units_of`] converts).
 #[derive(Debug, Clone)]
 pub struct SlidingSolution {
     /// theta = arctan(kappa)/pi.
@@ -69,4 +71,21 @@ pub struct VerifiedSolution {
     pub solution: SlidingSolution,
     /// Per-quantity agreement with the second run (more bits, 1.5x nodes).
     pub accuracy: Accuracy,
+}
+
+impl SlidingSolution {
+    /// The solution with its loads and stresses (P1, P2, F_def, p(x), max p) multiplied by
+    /// `unit`: from the solver's units of E* to the problem's when `unit` = E*
+    /// ([`crate::params::sliding::SlidingParamsMpfr::unit`]). Lengths, lambda, theta, kappa and
+    /// the wear quantities (cW P2, the same in both) are unchanged.
+    pub fn in_units_of(mut self, unit: &Float) -> Self {
+        self.p1 *= unit;
+        self.p2 *= unit;
+        self.f_def *= unit;
+        self.max_pressure *= unit;
+        for q in self.pressure.iter_mut() {
+            q.p *= unit;
+        }
+        self
+    }
 }
