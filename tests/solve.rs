@@ -138,3 +138,15 @@ wear = "0.5"
     assert!(err.contains("no solution"), "{err}");
     assert!(!err.contains("panicked"));
 }
+
+/// Issue 9: a value below its scale x 10^-digits is noise and prints as 0 (with its accuracy), in
+/// both number types: the frictionless F_def and centre of the Kuznetsov scene.
+#[test]
+fn noise_prints_as_zero() {
+    for method in ["mpfr", "f64"] {
+        let v = json(&["solve", "scenes/kuznetsov_parabola.toml", "--method", method, "--json"]);
+        assert_eq!(v["F_def"], "0", "{method}: {v}");
+        assert_eq!(v["c"], "0", "{method}: {v}");
+        assert!(num(&v["accuracy"], "F_def") >= 12.0, "{method}: {v}");
+    }
+}

@@ -6,6 +6,7 @@
 
 pub mod format;
 pub mod answer_f64;
+pub mod answer_mpfr;
 pub mod render;
 pub mod series_method;
 
@@ -14,7 +15,7 @@ use crate::model::ModelError as InvalidInput;
 use crate::model::{Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64, SlidingError};
-use format::{digits_in_value, fmt_f64, fmt_float, AccuracyTable};
+use format::{digits_in_value, fmt_f64, fmt_float};
 use serde_json::{json, Map, Value};
 
 /// Why a solve did not produce an answer.
@@ -130,75 +131,15 @@ fn provenance(method: &str, bits: Option<u32>, nodes: Option<usize>) -> Value {
     })
 }
 
-/// One sliding solution (MPFR) as a JSON object.
-fn sliding_solution_json(v: &sliding::VerifiedSolution, digits: u32) -> Map<String, Value> {
-    let s = &v.solution;
-    let acc = AccuracyTable::from_pairs(&v.accuracy.digits);
-    let d = |name: &str| acc.get(name).unwrap_or(v.accuracy.digits_verified);
-    // Quantities without their own comparison inherit the weakest related one.
-    let geom = ["a", "b", "c"].iter().map(|n| d(n)).fold(f64::INFINITY, f64::min);
-    let put = |m: &mut Map<String, Value>, key: &str, x: &rug::Float, dv: f64, scale: &rug::Float| {
-        m.insert(key.into(), Value::String(fmt_float(x, digits_in_value(x, scale, dv, digits))));
-    };
-    let mut m = Map::new();
-    m.insert("theta".into(), Value::String(fmt_float(&s.theta, digits as usize)));
-    m.insert("kappa".into(), Value::String(fmt_float(&s.kappa, digits as usize)));
-    match &s.lambda {
-        Some(l) => put(&mut m, "lambda", l, geom, l),
-        None => {
-            m.insert("lambda".into(), Value::Null);
-        }
-    }
-    put(&mut m, "l", &s.l, geom, &s.l);
-    put(&mut m, "a", &s.a, d("a"), &s.l);
-    put(&mut m, "b", &s.b, d("b"), &s.l);
-    put(&mut m, "c", &s.c, d("c"), &s.l);
-    put(&mut m, "P1", &s.p1, d("P1"), &s.p2);
-    put(&mut m, "P2", &s.p2, d("P2"), &s.p2);
-    let f_scale = rug::Float::with_val(s.prec, s.f_def.clone().abs().max(&rug::Float::with_val(s.prec, 1e-300)));
-    let fdef_digits = d("F_def");
-    m.insert(
-        "F_def".into(),
-        Value::String(fmt_float(&s.f_def, digits_in_value(&s.f_def, &f_scale, fdef_digits, digits).max(1))),
-    );
-    for (key, val) in [("wear_per_distance", &s.wear_per_distance), ("wear_rate", &s.wear_rate)] {
-        match val {
-            Some(x) => put(&mut m, key, x, d("P2"), x),
-            None => {
-                m.insert(key.into(), Value::Null);
-            }
-        }
-    }
-    put(&mut m, "worn_area_per_distance", &s.worn_area_per_distance, d("P2"), &s.worn_area_per_distance);
-    m.insert("digits_requested".into(), Value::String(digits.to_string()));
-    m.insert("digits_verified".into(), Value::String(format!("{:.1}", v.accuracy.digits_verified)));
-    m.insert("accuracy".into(), acc.to_json());
-    let pressure: Vec<Value> = s
-        .pressure
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let dv = d(&format!("p[{i}]"));
-            json!({
-                "xh": fmt_float(&p.xh, digits as usize),
-                "x": fmt_float(&p.x, digits_in_value(&p.x, &s.l, geom, digits)),
-                "p": fmt_float(&p.p, digits_in_value(&p.p, &s.max_pressure, dv, digits)),
-            })
-        })
-        .collect();
-    m.insert("pressure".into(), Value::Array(pressure));
-    m.insert("provenance".into(), provenance("mpfr", Some(s.prec), Some(s.nodes)));
-    m
-}
-
 fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, SolveError> {
     let sols = sliding::solve_verified(p, &scene.output.points, req.digits)?;
     let first = sols.first().ok_or_else(|| SolveError::Failed("no physical solution was found".into()))?;
     let mut top = Map::new();
     top.insert("problem".into(), Value::String("sliding".into()));
-    top.extend(sliding_solution_json(first, req.digits));
+    let render = |v| render::sliding_json(&answer_mpfr::sliding_answer(v), req.digits);
+    top.extend(render(first));
     if sols.len() > 1 {
-        let all: Vec<Value> = sols.iter().map(|s| Value::Object(sliding_solution_json(s, req.digits))).collect();
+        let all: Vec<Value> = sols.iter().map(|s| Value::Object(render(s))).collect();
         top.insert("solutions".into(), Value::Array(all));
     }
     Ok(Value::Object(top))

@@ -596,6 +596,7 @@ fn build(
         worn_area_per_distance: worn,
         pressure: pts,
         max_pressure,
+        k: params.k.clone(),
         nodes: n,
         prec: p,
     })

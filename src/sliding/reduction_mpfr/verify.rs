@@ -5,6 +5,7 @@
 //! l for a, b, c; max p for p(x); P2 for P1 and P2; k l P2 for F_def (for the sinusoid the
 //! osculating k = 2 pi^2 D/L^2). The headline is the minimum.
 
+use crate::params::sliding::SlidingScale;
 use super::error::SlidingError;
 use super::setup::Setup;
 use super::solution::{Accuracy, SlidingSolution, VerifiedSolution};
@@ -21,16 +22,20 @@ pub use crate::numerics::precision::precision_for;
 pub fn compare(params: &SlidingParamsMpfr, s1: &SlidingSolution, s2: &SlidingSolution) -> Accuracy {
     let cap = digits_cap_for_bits(s2.prec);
     let mut digits = vec![];
+    let scale = |q: SlidingScale| q.mpfr(&params.k, &s1.l, &s1.p2, &s1.max_pressure);
+    let length = scale(SlidingScale::Length);
     for (name, x, y) in [("a", &s1.a, &s2.a), ("b", &s1.b, &s2.b), ("c", &s1.c, &s2.c)] {
-        digits.push((name.to_string(), agreement_mpfr(x, y, &s1.l, cap)));
+        digits.push((name.to_string(), agreement_mpfr(x, y, &length, cap)));
     }
+    let load = scale(SlidingScale::Load);
     for (name, x, y) in [("P1", &s1.p1, &s2.p1), ("P2", &s1.p2, &s2.p2)] {
-        digits.push((name.to_string(), agreement_mpfr(x, y, &s1.p2, cap)));
+        digits.push((name.to_string(), agreement_mpfr(x, y, &load, cap)));
     }
-    let kl = Float::with_val(s1.prec, &params.k * &s1.l) * &s1.p2;
-    digits.push(("F_def".into(), agreement_mpfr(&s1.f_def, &s2.f_def, &kl, cap)));
+    let f_def = scale(SlidingScale::DeformationForce);
+    digits.push(("F_def".into(), agreement_mpfr(&s1.f_def, &s2.f_def, &f_def, cap)));
+    let pressure = scale(SlidingScale::Pressure);
     for (i, (q1, q2)) in s1.pressure.iter().zip(&s2.pressure).enumerate() {
-        digits.push((format!("p[{i}]"), agreement_mpfr(&q1.p, &q2.p, &s1.max_pressure, cap)));
+        digits.push((format!("p[{i}]"), agreement_mpfr(&q1.p, &q2.p, &pressure, cap)));
     }
     let digits_verified = digits.iter().map(|d| d.1).fold(f64::INFINITY, f64::min);
     Accuracy { digits, digits_verified }
