@@ -241,7 +241,7 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
             let big_l = to_f64(big_l).unwrap_or(f64::NAN);
             match p.load() {
                 SlidingLoad::HalfLength(l) => pi * to_f64(l).unwrap_or(f64::NAN) / big_l,
-                SlidingLoad::NormalLoad(_) => crate::solve::series_method::series_point(p, 64)
+                SlidingLoad::NormalLoad(_) => crate::sliding::series::series_point(p, 64)
                     .map(|sp| sp.big_lambda.to_f64())
                     .unwrap_or(f64::NAN),
             }

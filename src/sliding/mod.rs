@@ -47,6 +47,7 @@ pub mod setup;
 pub mod solution;
 pub mod solve;
 pub mod verify;
+pub mod series;
 
 pub use error::SlidingError;
 pub use setup::Convention;
