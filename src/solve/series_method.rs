@@ -23,7 +23,8 @@ pub fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> R
     let s = solve_series(p, &scene.output.points, n, digits).map_err(solve_error)?;
     let acc = &s.accuracy;
     let (g, fd, pd) = (acc.contact, acc.f_def, acc.pressure);
-    let show = |x: &rug::Float, scale: &rug::Float, d: f64| Value::String(fmt_float(x, digits_in_value(x, scale, d, digits)));
+    let show =
+        |x: &rug::Float, scale: &rug::Float, d: f64| Value::String(fmt_float(x, digits_in_value(x, scale, d, digits)));
     let mut m = Map::new();
     m.insert("problem".into(), json!("sliding"));
     m.insert("theta".into(), json!(fmt_float(&s.theta, digits as usize)));
@@ -61,7 +62,11 @@ pub fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> R
         .pressure
         .iter()
         .map(|pt| {
-            json!({"xh": fmt_float(&pt.xh, digits as usize), "x": fmt_float(&pt.x, digits_in_value(&pt.x, &s.l, g, digits)), "p": fmt_float(&pt.p, digits_in_value(&pt.p, &s.max_pressure, pd, digits))})
+            json!({
+                "xh": fmt_float(&pt.xh, digits as usize),
+                "x": fmt_float(&pt.x, digits_in_value(&pt.x, &s.l, g, digits)),
+                "p": fmt_float(&pt.p, digits_in_value(&pt.p, &s.max_pressure, pd, digits)),
+            })
         })
         .collect();
     m.insert("pressure".into(), Value::Array(pressure));

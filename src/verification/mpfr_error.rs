@@ -11,7 +11,9 @@ use crate::sliding::SlidingError;
 impl From<SlidingError> for Error {
     fn from(e: SlidingError) -> Self {
         match e {
-            SlidingError::Parameter { parameter, value, expected } => Error::Input(ModelError { parameter, value, expected }),
+            SlidingError::Parameter { parameter, value, expected } => {
+                Error::Input(ModelError { parameter, value, expected })
+            }
             e @ SlidingError::ContactOutsidePeriod { .. } => Error::NotPhysical { why: e.to_string() },
             SlidingError::NotPhysical { why } => Error::NotPhysical { why },
             e @ SlidingError::NoSolution { .. } => Error::NoSolution { why: e.to_string() },

@@ -41,7 +41,7 @@ pub fn partial(e: &SlidingExpansion, order: usize, sp: &SeriesPoint, xh: &[Float
     for x in xh {
         let mut b = Float::with_val(prec, 1);
         let mut lam_pow = Float::with_val(prec, 1);
-        let binds = [th.clone(), t.clone(), (xh_s.clone(), x.clone())];
+        let binds = [th.clone(), t.clone(), (xh_s, x.clone())];
         for pj in e.pressure.iter().take(order / 2) {
             lam_pow *= &l2;
             let v = evaluate::poly_mpfr(pj, &binds, prec).expect("the pressure terms hold only theta, T and xh");

@@ -85,7 +85,12 @@ pub fn expansion_shape(problem: &SlidingProblem) -> SlidingShape {
 
 /// Solves `problem` by its series through Lambda^order at the points xh = `points`, at the
 /// precision for `digits` digits (derives the expansion; see [`solve_series_with`]).
-pub fn solve_series(problem: &SlidingProblem, points: &[Exact], order: usize, digits: u32) -> Result<SeriesSolution, Error> {
+pub fn solve_series(
+    problem: &SlidingProblem,
+    points: &[Exact],
+    order: usize,
+    digits: u32,
+) -> Result<SeriesSolution, Error> {
     check_order(order)?;
     let e = sliding_expansion(expansion_shape(problem), order)
         .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
@@ -130,7 +135,7 @@ pub fn solve_series_with(
     let of = |f: &dyn Fn(&Partial) -> Float| terms(&parts.iter().map(f).collect::<Vec<_>>());
     let t_l = of(&|v| v.l.clone());
     let rho = rate(&t_l);
-    if !(rho < 1.0) {
+    if rho >= 1.0 || rho.is_nan() {
         return Err(Error::NoConvergence {
             what: format!(
                 "the terms of the series of l/l_s do not decrease at Lambda = pi l_s/L = {} (ratio of the last terms {}): \

@@ -43,16 +43,15 @@ fn grid_problem(sinusoid: bool, theta: f64, size: f64) -> SlidingProblem {
 /// True digits of the series solution `s` against the MPFR solution `m` (30 digits), per group
 /// of the estimate, on the series' scales: (l, a, b, c), F_def, p.
 fn true_digits(s: &SeriesSolution, m: &SlidingSolution, cap: f64) -> [f64; 3] {
-    let d = |x: &Float, y: &Float, scale: &Float| {
-        verified_digits_mpfr(&Float::with_val(s.prec, x - y), scale, cap)
-    };
+    let d = |x: &Float, y: &Float, scale: &Float| verified_digits_mpfr(&Float::with_val(s.prec, x - y), scale, cap);
     let contact = [(&s.l, &m.l), (&s.a, &m.a), (&s.b, &m.b), (&s.c, &m.c)]
         .iter()
         .map(|(x, y)| d(x, y, &s.l))
         .fold(f64::INFINITY, f64::min);
     let kl_p2 = Float::with_val(s.prec, &s.k * &s.l) * &s.p2;
     let f_def = d(&s.f_def, &m.f_def, &kl_p2);
-    let p = s.pressure.iter().zip(&m.pressure).map(|(x, y)| d(&x.p, &y.p, &s.max_pressure)).fold(f64::INFINITY, f64::min);
+    let p =
+        s.pressure.iter().zip(&m.pressure).map(|(x, y)| d(&x.p, &y.p, &s.max_pressure)).fold(f64::INFINITY, f64::min);
     [contact, f_def, p]
 }
 
@@ -88,7 +87,8 @@ fn estimate_never_exceeds_the_true_digits() {
                     for ((name, e), t) in ["l, a, b, c", "F_def", "p"].iter().zip(est).zip(truth) {
                         assert!(
                             e <= t + 0.05,
-                            "sinusoid {sinusoid}, theta {theta}, size {size}, order {order}: {name} estimated {e:.2} > true {t:.2}"
+                            "sinusoid {sinusoid}, theta {theta}, size {size}, order {order}: \
+                             {name} estimated {e:.2} > true {t:.2}"
                         );
                     }
                     compared += 1;
@@ -103,8 +103,8 @@ fn estimate_never_exceeds_the_true_digits() {
 }
 
 /// The refusal follows the estimate, not a bound on Lambda: the parabola's series converges at
-/// Lambda = 1.2 (its terms decrease), the sinusoid's at pi a/L = 1.4 (Lambda = 0.985) through
-/// Lambda^4 leaves less than one digit.
+/// Lambda = 1.2 (its terms decrease); the sinusoid's at pi a/L = 1.4 (Lambda = 0.985) through
+/// Lambda^4 leaves less than one digit; beyond Lambda = 1 its terms grow.
 #[test]
 fn refusal_follows_the_estimate() {
     let s = solve_series(&grid_problem(false, 0.0, 1.2), &[], 8, 20).unwrap();
@@ -112,6 +112,10 @@ fn refusal_follows_the_estimate() {
     let err = solve_series(&grid_problem(true, 0.0, 1.4), &[q(0.0)], 4, 20).unwrap_err();
     assert_eq!(err.kind(), ErrorKind::NoConvergence, "{err}");
     assert!(err.to_string().contains("Lambda = pi l_s/L = 0.98"), "{err}");
+    // Beyond the radius of convergence (sinusoid with wear, Lambda = 1.07): the terms grow.
+    let err = solve_series(&grid_problem(true, 0.2, 1.4), &[], 8, 20).unwrap_err();
+    assert_eq!(err.kind(), ErrorKind::NoConvergence, "{err}");
+    assert!(err.to_string().contains("do not decrease at Lambda = pi l_s/L = 1.07"), "{err}");
 }
 
 #[test]
@@ -119,11 +123,8 @@ fn input_errors_say_what_was_given_and_what_to_do() {
     let base = grid_problem(false, 0.0, 0.5);
     let single = base.to_builder().period(Period::Infinite).build().unwrap();
     let sized = base.to_builder().half_length(q(0.1)).build().unwrap();
-    let cases: [(SlidingProblem, usize, &str); 3] = [
-        (single, 4, "punch.period"),
-        (sized, 4, "sliding.half_length = 0.1"),
-        (base, 1, "--order = 1"),
-    ];
+    let cases: [(SlidingProblem, usize, &str); 3] =
+        [(single, 4, "punch.period"), (sized, 4, "sliding.half_length = 0.1"), (base, 1, "--order = 1")];
     for (p, order, what) in cases {
         let err = solve_series(&p, &[], order, 20).unwrap_err();
         assert!(matches!(err, Error::Input(_)), "{err}");
