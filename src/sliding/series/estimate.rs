@@ -5,7 +5,9 @@
 //! Lambda^(2m), its terms are t_0 = V_0 and t_m = V_m - V_(m-1), m = 1..K, K = N/2. The
 //! remainder after t_K is estimated as a geometric tail:
 //!
-//!     E_q = max(|t_K|, S M rho/(1 - rho)),   M = max_{0 <= i < W} |t_(K-i)| rho^i,
+//! ```text
+//! E_q = max(|t_K|, S M rho/(1 - rho)),   M = max_{0 <= i < W} |t_(K-i)| rho^i,
+//! ```
 //!
 //! - rho, the rate of the terms per power of Lambda^2, is read from the half-length l (all
 //!   quantities are series in the same Lambda^2 and share its singularities; the terms of l are
