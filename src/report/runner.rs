@@ -9,8 +9,8 @@ use crate::adhesion::{self, volterra_mpfr::VolterraParams};
 use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
 use crate::model::{AdhesionProblem, AdhesionSize, PunchShape, SlidingLoad, SlidingProblem};
 use crate::scene::SceneProblem;
+use crate::sliding::series::series_point;
 use crate::sliding::{self, collocation_f64, Checks, NodeRule};
-use crate::solve::series_method::series_point;
 use rug::Float;
 use std::collections::HashMap;
 use std::time::Instant;
@@ -162,7 +162,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
             let prec = 128;
             let start = Instant::now();
             let sp = series_point(p, prec).map_err(|e| e.to_string())?;
-            let (l, c) = sp.contact(e, n, prec);
+            let (l, c) = sp.contact(e, n);
             let seconds = start.elapsed().as_secs_f64();
             let load = match p.load() {
                 SlidingLoad::NormalLoad(x) => crate::numerics::exact::to_float(x, COMPARE_BITS),

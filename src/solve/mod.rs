@@ -7,6 +7,7 @@
 pub mod format;
 pub mod answer_f64;
 pub mod answer_mpfr;
+pub mod answer_series;
 pub mod render;
 pub mod series_method;
 

@@ -6,10 +6,11 @@
 //! Varying P2 at fixed L would make T = beta tau0/(E* k l_s) change with the load and spoil the
 //! slope; fixing P2 keeps theta and T fixed while Lambda = pi l_s / L varies.
 
-use crate::asymptotics::sliding::{sliding_expansion, SlidingShape};
+use crate::asymptotics::sliding::sliding_expansion;
+use crate::error::Error;
 use crate::model::{Exact, Period, PunchShape, SlidingProblem};
-use crate::sliding::{self, SlidingError};
-use crate::solve::series_method::series_point;
+use crate::numerics::precision::precision_for;
+use crate::sliding::{self, series};
 use exact_series::Q;
 use rug::Float;
 
@@ -61,16 +62,13 @@ pub fn sliding_convergence(
     target_lambdas: &[f64],
     max_corrections: usize,
     digits: u32,
-) -> Result<ConvergenceStudy, SlidingError> {
-    let shape = match base.shape() {
-        PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
-        PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
-    };
+) -> Result<ConvergenceStudy, Error> {
     let order = 2 * max_corrections;
-    let expansion = sliding_expansion(shape, order).map_err(|e| SlidingError::NoConvergence(e.to_string()))?;
-    let prec = sliding::precision_for(digits);
+    let expansion = sliding_expansion(series::expansion_shape(base), order)
+        .map_err(|e| Error::NoConvergence { what: format!("the series through Lambda^{order}: {e}") })?;
+    let prec = precision_for(digits);
     // l_s does not depend on L: take it from a single-punch statement of the same load.
-    let single = base.to_builder().period(Period::Infinite).build().map_err(|e| SlidingError::parameter(e.parameter, e.value, e.expected))?;
+    let single = base.to_builder().period(Period::Infinite).build()?;
     let sp_inf = l_s_of(&single, prec)?;
     let mut lambdas = Vec::new();
     let mut rem_l: Vec<Vec<f64>> = vec![Vec::new(); max_corrections + 1];
@@ -80,22 +78,16 @@ pub fn sliding_convergence(
         // L = pi l_s / Lambda, rounded to an exact rational (Lambda is then recomputed exactly).
         let l_period = std::f64::consts::PI * sp_inf / target;
         let big_l = Q::new(((l_period * 1e6).round() as i64).into(), 1_000_000.into());
-        let p = base
-            .to_builder()
-            .period(Period::Finite(big_l))
-            .build()
-            .map_err(|e| SlidingError::parameter(e.parameter, e.value, e.expected))?;
-        let sol =
-            sliding::solve_verified(&p, &[], digits)?.into_iter().next().ok_or_else(|| SlidingError::NoSolution {
-                load: "given".into(),
-                why: "no physical solution in the convergence study".into(),
-            })?;
-        let sp = series_point(&p, prec).map_err(|e| SlidingError::NoConvergence(e.to_string()))?;
+        let p = base.to_builder().period(Period::Finite(big_l)).build()?;
+        let sol = sliding::solve_verified(&p, &[], digits)?.into_iter().next().ok_or_else(|| Error::NoSolution {
+            why: format!("the MPFR solver returned no physical contact at Lambda = {target} in the convergence study"),
+        })?;
+        let sp = series::series_point(&p, prec)?;
         theta = sp.theta.to_f64();
         t = sp.t.to_f64();
         lambdas.push(sp.big_lambda.to_f64());
         for m in 1..=max_corrections {
-            let (l, c) = sp.contact(&expansion, 2 * m, prec);
+            let (l, c) = sp.contact(&expansion, 2 * m);
             let el = Float::with_val(prec, &l - &sol.solution.l).abs() / &sp.l_s;
             let ec = Float::with_val(prec, &c - &sol.solution.c).abs() / &sp.l_s;
             rem_l[m].push(el.to_f64());
@@ -122,7 +114,7 @@ pub fn sliding_convergence(
     Ok(ConvergenceStudy { label: label.to_string(), theta, t, lambdas, rows })
 }
 
-fn l_s_of(single: &SlidingProblem, prec: u32) -> Result<f64, SlidingError> {
+fn l_s_of(single: &SlidingProblem, prec: u32) -> Result<f64, Error> {
     let s = sliding::solve_verified(single, &[], (prec as f64 * 0.3) as u32)?;
     Ok(s.first().map(|v| v.solution.l.to_f64()).unwrap_or(f64::NAN))
 }

@@ -1,0 +1,226 @@
+//! The series method's solution of Problem 1: the truncated exact series (THEORY.md section 5,
+//! [3.7]-[3.12]) evaluated in MPFR at a problem's parameters, with an estimated (not verified)
+//! accuracy per quantity ([`super::estimate`]).
+
+use super::estimate::{rate, tail, terms};
+use super::partial::{partial, Partial};
+use super::point::SeriesPoint;
+use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
+use crate::error::Error;
+use crate::model::{Exact, PunchShape, SlidingProblem};
+use crate::numerics::accuracy::{readable_f64, readable_mpfr, verified_digits_mpfr};
+use crate::numerics::exact::to_float;
+use crate::numerics::precision::precision_for;
+use crate::params::sliding::SlidingParamsMpfr;
+use crate::sliding::PressurePoint;
+use rug::Float;
+
+/// Estimated digits per quantity (relative to each quantity's scale, module doc of
+/// [`super::estimate`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeriesAccuracy {
+    /// lambda, l, a, b, c, the points x and P1 (scale l; P1 scale P2): from E_l + E_c.
+    pub contact: f64,
+    /// F_def (scale k l P2).
+    pub f_def: f64,
+    /// p at the requested points (scale: the largest of them); `None` without points.
+    pub pressure: Option<f64>,
+    /// The smallest of the above: the method's `digits_estimated`.
+    pub headline: f64,
+    /// The rate rho of the terms per power of Lambda^2 read from l.
+    pub rate: f64,
+}
+
+/// The series method's solution of Problem 1 (the quantities of the MPFR method's
+/// [`crate::sliding::SlidingSolution`], in the units of the problem).
+#[derive(Debug, Clone)]
+pub struct SeriesSolution {
+    /// theta = arctan(kappa)/pi.
+    pub theta: Float,
+    /// kappa = E* cW/2 - beta mu [2.8].
+    pub kappa: Float,
+    /// Lambda = pi l_s/L, the expansion variable [3.10].
+    pub big_lambda: Float,
+    /// lambda = pi l/L [2.1].
+    pub lambda: Float,
+    /// Half-length l.
+    pub l: Float,
+    /// Trailing end a = l - c: the contact is [-a, b].
+    pub a: Float,
+    /// Leading end b = l + c.
+    pub b: Float,
+    /// Centre c.
+    pub c: Float,
+    /// P1 = mu P2 + 2 l tau0.
+    pub p1: Float,
+    /// P2 (given).
+    pub p2: Float,
+    /// Curvature k (osculating k = 2 pi^2 D/L^2 for the sinusoid [2.16]).
+    pub k: Float,
+    /// F_def = int p g' dx.
+    pub f_def: Float,
+    /// Mean wear depth per sliding distance cW P2/L.
+    pub wear_per_distance: Float,
+    /// Mean wear rate cW V P2/L when the speed V is given.
+    pub wear_rate: Option<Float>,
+    /// p at the requested points.
+    pub pressure: Vec<PressurePoint>,
+    /// The largest p at the requested points (0 without points): the scale of p.
+    pub max_pressure: Float,
+    /// Truncation order N (every term through Lambda^N).
+    pub order: usize,
+    /// Working precision in bits.
+    pub prec: u32,
+    /// Estimated digits per quantity.
+    pub accuracy: SeriesAccuracy,
+}
+
+/// The expansion shape of a punch.
+pub fn expansion_shape(problem: &SlidingProblem) -> SlidingShape {
+    match problem.shape() {
+        PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
+        PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
+    }
+}
+
+/// Solves `problem` by its series through Lambda^order at the points xh = `points`, at the
+/// precision for `digits` digits (derives the expansion; see [`solve_series_with`]).
+pub fn solve_series(
+    problem: &SlidingProblem,
+    points: &[Exact],
+    order: usize,
+    digits: u32,
+) -> Result<SeriesSolution, Error> {
+    check_order(order)?;
+    let e = sliding_expansion(expansion_shape(problem), order)
+        .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
+    solve_series_with(&e, problem, points, order, digits)
+}
+
+fn check_order(order: usize) -> Result<(), Error> {
+    if order < 2 {
+        return Err(Error::input(
+            "--order",
+            order,
+            "the series method needs an order >= 2 (it estimates its error from the terms it keeps)",
+        ));
+    }
+    Ok(())
+}
+
+/// [`solve_series`] with an expansion already derived (of the problem's shape, through at least
+/// Lambda^order; a longer one is truncated). Errors: input (a single punch, a given half-length,
+/// order < 2); no convergence when the terms of l/l_s do not decrease or the estimate leaves
+/// less than one digit (module doc of [`super::estimate`]).
+///
+/// # Panics
+/// When `e` has another shape than the problem or is shorter than `order`.
+pub fn solve_series_with(
+    e: &SlidingExpansion,
+    problem: &SlidingProblem,
+    points: &[Exact],
+    order: usize,
+    digits: u32,
+) -> Result<SeriesSolution, Error> {
+    check_order(order)?;
+    assert_eq!(e.shape, expansion_shape(problem), "the expansion is of another shape");
+    assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
+    let prec = precision_for(digits);
+    let params = SlidingParamsMpfr::new(problem, prec)?;
+    let sp = SeriesPoint::new(&params)?;
+    let xh: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
+    // Values through Lambda^0, Lambda^2, ..., Lambda^order (units of E*).
+    let parts: Vec<Partial> = (0..=order / 2).map(|m| partial(e, 2 * m, &sp, &xh)).collect();
+    let hi = parts.last().expect("order >= 2");
+    let of = |f: &dyn Fn(&Partial) -> Float| terms(&parts.iter().map(f).collect::<Vec<_>>());
+    let t_l = of(&|v| v.l.clone());
+    let rho = rate(&t_l);
+    if rho >= 1.0 || rho.is_nan() {
+        return Err(Error::NoConvergence {
+            what: format!(
+                "the terms of the series of l/l_s do not decrease at Lambda = pi l_s/L = {} (ratio of the last terms {}): \
+                 the contact is too large for the series through Lambda^{order}; use --method mpfr",
+                readable_mpfr(&sp.big_lambda),
+                readable_f64(rho)
+            ),
+        });
+    }
+    let cap = digits as f64;
+    let err_contact = tail(&t_l, rho) + tail(&of(&|v| v.c.clone()), rho);
+    let contact = verified_digits_mpfr(&err_contact, &hi.l, cap);
+    let kl_p2 = Float::with_val(prec, &sp.k * &hi.l) * &sp.p2;
+    let f_def = verified_digits_mpfr(&tail(&of(&|v| v.f_def.clone()), rho), &kl_p2, cap);
+    let max_p = hi.pressure.iter().fold(Float::with_val(prec, 0), |m, x| if *x > m { x.clone() } else { m });
+    let pressure = (!xh.is_empty()).then(|| {
+        (0..xh.len())
+            .map(|i| verified_digits_mpfr(&tail(&of(&|v| v.pressure[i].clone()), rho), &max_p, cap))
+            .fold(f64::INFINITY, f64::min)
+    });
+    let headline = contact.min(f_def).min(pressure.unwrap_or(f64::INFINITY));
+    if headline < 1.0 {
+        return Err(Error::NoConvergence {
+            what: format!(
+                "the series through Lambda^{order} at Lambda = pi l_s/L = {} leaves {} estimated digits (< 1): \
+                 the contact is too large for the series at this order; raise --order or use --method mpfr",
+                readable_mpfr(&sp.big_lambda),
+                readable_f64((headline * 10.0).floor() / 10.0)
+            ),
+        });
+    }
+    let accuracy = SeriesAccuracy { contact, f_def, pressure, headline, rate: rho };
+    Ok(solution(&params, &sp, hi, &xh, max_p, order, accuracy))
+}
+
+/// The solution in the units of the problem from the values through Lambda^order.
+fn solution(
+    params: &SlidingParamsMpfr,
+    sp: &SeriesPoint,
+    hi: &Partial,
+    xh: &[Float],
+    max_p: Float,
+    order: usize,
+    accuracy: SeriesAccuracy,
+) -> SeriesSolution {
+    let prec = sp.prec;
+    let unit = &params.unit;
+    let p2 = Float::with_val(prec, &sp.p2 * unit);
+    let lambda = Float::with_val(prec, &params.pi * &hi.l) / &sp.period;
+    let a = Float::with_val(prec, &hi.l - &hi.c);
+    let b = Float::with_val(prec, &hi.l + &hi.c);
+    // P1 = mu P2 + 2 l tau0 (tau0 in units of E*: times E*).
+    let p1 = Float::with_val(prec, &params.mu * &p2)
+        + Float::with_val(prec, 2 * hi.l.clone()) * Float::with_val(prec, &params.tau0 * unit);
+    // cW P2/L = (cW E*)(P2/E*)/L.
+    let wear = Float::with_val(prec, &params.wear * &sp.p2) / &sp.period;
+    let wear_rate = params.speed.as_ref().map(|v| Float::with_val(prec, &wear * v));
+    let pressure = xh
+        .iter()
+        .zip(&hi.pressure)
+        .map(|(x, p)| PressurePoint {
+            xh: x.clone(),
+            x: Float::with_val(prec, &hi.c + Float::with_val(prec, &hi.l * x)),
+            p: Float::with_val(prec, p * unit),
+        })
+        .collect();
+    SeriesSolution {
+        theta: sp.theta.clone(),
+        kappa: params.kappa.clone(),
+        big_lambda: sp.big_lambda.clone(),
+        lambda,
+        l: hi.l.clone(),
+        a,
+        b,
+        c: hi.c.clone(),
+        p1,
+        p2,
+        k: sp.k.clone(),
+        f_def: Float::with_val(prec, &hi.f_def * unit),
+        wear_per_distance: wear,
+        wear_rate,
+        pressure,
+        max_pressure: Float::with_val(prec, &max_p * unit),
+        order,
+        prec,
+        accuracy,
+    }
+}

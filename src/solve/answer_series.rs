@@ -1,0 +1,63 @@
+//! The truncated exact series of Problem 1 ([`crate::sliding::series`]) as a [`SlidingAnswer`]:
+//! estimated (never verified) digits per quantity on the scales of
+//! [`crate::params::sliding::SlidingScale`]; the load P2 and the wear outputs are exact inputs
+//! (or exact multiples of P2) rounded once, shown to the digits requested.
+
+use super::render::{DigitsKind, Measured, Num, PressureRow, Provenance, SlidingAnswer};
+use crate::params::sliding::SlidingScale;
+use crate::sliding::series::{estimate, SeriesSolution};
+use serde_json::json;
+
+/// The answer of one series evaluation at `requested` digits.
+pub fn sliding_answer(s: &SeriesSolution, requested: u32) -> SlidingAnswer {
+    let acc = &s.accuracy;
+    let (g, fd) = (acc.contact, acc.f_def);
+    let exact = requested as f64;
+    let scale = |q: SlidingScale| q.mpfr(&s.k, &s.l, &s.p2, &s.max_pressure);
+    let length = scale(SlidingScale::Length);
+    let on = |x: &rug::Float, sc: &rug::Float, d: f64| Measured::mpfr(x.clone(), sc, d);
+    let mut accuracy: Vec<(String, f64)> = [("a", g), ("b", g), ("c", g), ("F_def", fd)]
+        .into_iter()
+        .map(|(k, d)| (k.to_string(), d))
+        .collect();
+    if let Some(pd) = acc.pressure {
+        accuracy.push(("p".into(), pd));
+    }
+    let pd = acc.pressure.unwrap_or(0.0);
+    SlidingAnswer {
+        provenance: Provenance { method: "series", bits: Some(s.prec), nodes: None, order: Some(s.order) },
+        kind: DigitsKind::Estimated,
+        parameter_digits: usize::MAX,
+        theta: Num::Mpfr(s.theta.clone()),
+        kappa: Num::Mpfr(s.kappa.clone()),
+        lambda: Some(on(&s.lambda, &s.lambda, g)),
+        l: on(&s.l, &length, g),
+        a: on(&s.a, &length, g),
+        b: on(&s.b, &length, g),
+        c: on(&s.c, &length, g),
+        p1: on(&s.p1, &s.p2, g),
+        p2: on(&s.p2, &s.p2, exact),
+        f_def: on(&s.f_def, &scale(SlidingScale::DeformationForce), fd),
+        wear_per_distance: Some(on(&s.wear_per_distance, &s.wear_per_distance, exact)),
+        wear_rate: s.wear_rate.as_ref().map(|w| on(w, w, exact)),
+        worn_area_per_distance: None,
+        accuracy,
+        extra: vec![("Lambda".into(), json!(Num::Mpfr(s.big_lambda.clone()).fmt(10)))],
+        note: Some(format!(
+            "estimated from the terms kept through order {} (geometric tail of their rate {:.2} per Lambda^2, \
+             safety factor {}); not verified",
+            s.order,
+            acc.rate,
+            estimate::SAFETY
+        )),
+        pressure: s
+            .pressure
+            .iter()
+            .map(|pt| PressureRow {
+                xh: Num::Mpfr(pt.xh.clone()),
+                x: on(&pt.x, &length, g),
+                p: on(&pt.p, &scale(SlidingScale::Pressure), pd),
+            })
+            .collect(),
+    }
+}
