@@ -178,6 +178,7 @@ mod tests {
 
 #[cfg(test)]
 mod ratio_tests {
+    use super::super::series::SERIES_TERMS;
     use super::*;
     use crate::model::Exact;
 
