@@ -42,3 +42,45 @@ pub enum AdhesionError {
         reason: String,
     },
 }
+
+impl From<AdhesionError> for crate::error::Error {
+    /// Keeps the kind: an invalid problem or argument is an input error (exit code 2); a method
+    /// outside its well-conditioned range or an iteration that stopped is a failure to converge
+    /// (the equations have a solution for every contact 0 <= lambda < pi/2 and every load).
+    fn from(e: AdhesionError) -> Self {
+        use crate::error::Error;
+        match e {
+            AdhesionError::Model(m) => Error::Input(m),
+            AdhesionError::InvalidArgument { parameter, value, expected } => Error::input(parameter, value, expected),
+            e @ (AdhesionError::IllConditioned { .. } | AdhesionError::NotConverged { .. }) => {
+                Error::NoConvergence { what: e.to_string() }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::ErrorKind;
+
+    #[test]
+    fn adhesion_error_kinds_are_kept() {
+        let input = AdhesionError::InvalidArgument { parameter: "points", value: "11/10".into(), expected: "x".into() };
+        let e: crate::error::Error = input.into();
+        assert_eq!(e.kind(), ErrorKind::Input);
+        assert_eq!(e.to_string(), "invalid points = 11/10: x");
+        let ill = AdhesionError::IllConditioned {
+            method: "f64-series",
+            parameter: "lambda",
+            value: "0.8".into(),
+            valid: "v".into(),
+            reason: "r".into(),
+        };
+        let e: crate::error::Error = ill.into();
+        assert_eq!(e.kind(), ErrorKind::NoConvergence);
+        assert!(e.to_string().starts_with("no convergence: f64-series: lambda = 0.8 is outside"), "{e}");
+        let nc = AdhesionError::NotConverged { what: "collocation solve", reason: "r".into() };
+        assert_eq!(crate::error::Error::from(nc).kind(), ErrorKind::NoConvergence);
+    }
+}

@@ -1,16 +1,24 @@
 //! Problem 2: indentation of periodic parabolic punches with complete adhesion
 //! (THEORY.md section 4; Soldatenkov 2013, (1.4), (2.18)-(2.26)).
 //!
-//! Objects: [`crate::params::adhesion`] (eps, B, S, M_m), [`tanh_sinh`] (double-exponential quadrature on (0,1)),
-//! [`kernel`] (the regularised kernels of the incremental method), [`chebyshev`],
-//! [`volterra_mpfr`] (method 1: MPFR Chebyshev collocation of the Volterra equation),
-//! [`series_f64`] (method 2: power series in lambda^2, f64), [`solution`] (dimensional results,
-//! tension zones), [`verified`] (two runs, verified digits).
+//! Two independent methods, side by side with the same file names:
+//! - [`volterra_mpfr`] (method 1): MPFR Chebyshev collocation of the Volterra equation of the
+//!   incremental method; `kernel`, `solve` (one lambda), `volterra` (the dimensionless solution),
+//!   `solution` (dimensional), `verify` (two runs, verified digits);
+//! - [`series_f64`] (method 2): power series in lambda^2, `f64`; `kernel`, `series` (the
+//!   universal coefficients), `solve` (one lambda), `solution` (dimensional), `verify` (two runs,
+//!   estimated digits).
+//!
+//! Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
+//! relative to it), [`tension`] (the tension zones at the oscillating edge), [`error`]. The
+//! derived material constants (eps, cosh(pi eps), B, S, C_P) are computed once per solve in
+//! [`crate::params::adhesion`] and passed as data; the quadrature and interpolation are
+//! [`crate::numerics::tanh_sinh`] and [`crate::numerics::chebyshev`].
 //!
 //! Entry points:
-//! - [`verified::solve_verified`]`(problem, points, digits)`: MPFR, two runs, digits per quantity;
-//! - [`solution::solve_mpfr`]`(problem, points, params)`: one MPFR run;
-//! - [`solution::solve_f64`]`(problem, points)`: the independent f64 method.
+//! - [`solve_verified`]`(problem, points, digits)`: MPFR, two runs, verified digits per quantity;
+//! - [`solve_mpfr`]`(problem, points, params)`: one MPFR run;
+//! - [`solve_f64`]`(problem, points)`: the independent f64 method, with estimated digits.
 //!
 //! THEORY.md section 4 was checked numerically, not only used: the unit-load flat-punch stress
 //! satisfies (H + i beta) sigma_flat = 0 inside and H[sigma_flat] = K/L outside (to 1e-13), and the
@@ -19,16 +27,37 @@
 //! to THEORY.md was needed. Additions: the conditioning limits of the incremental method at small
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
-pub mod chebyshev;
 pub mod error;
-pub mod kernel;
+pub mod points;
+pub mod scales;
 pub mod series_f64;
-pub mod solution;
-pub mod tanh_sinh;
-pub mod verified;
+pub mod tension;
 pub mod volterra_mpfr;
 
 pub use error::AdhesionError;
+pub use scales::{Digits, ScalesF64, ScalesMpfr};
+pub use series_f64::solution::{AdhesionSolutionF64, PointValuesF64};
+pub use series_f64::verify::solve_f64;
+pub use volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues};
+pub use volterra_mpfr::verify::{solve_verified, VerifiedSolution};
 
+/// The former path of [`solve_verified`] (`adhesion::verified::solve_verified`), kept for the
+/// callers in `solve/` and `report/`.
+pub mod verified {
+    pub use super::volterra_mpfr::verify::*;
+}
+
+/// The former path of both dimensional solutions (`adhesion::solution::{solve_mpfr, solve_f64,
+/// ...}`), kept for the callers in `solve/` and `report/`.
+pub mod solution {
+    pub use super::points::check_points;
+    pub use super::series_f64::solution::{AdhesionSolutionF64, PointValuesF64};
+    pub use super::series_f64::verify::solve_f64;
+    pub use super::tension::{TensionReport, TensionZone};
+    pub use super::volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues};
+}
+
+#[cfg(test)]
+mod against_series;
 #[cfg(test)]
 mod tests;

@@ -101,21 +101,23 @@
 //!   satisfies the fixed-a solvability condition of the single punch, int (2y - i A_1 |y|)
 //!   dy/omega(y) = 0, evaluated by MPFR quadrature (no moments, no recurrence), to 2^-(prec-16).
 //! - Signs stated in the paper's text: A_1 < 0, A_3 < 0 (delta_{1,3} > 0) and c_2 > 0 on [0, 1/2).
-//! - p_j and psi_J agree to 1e-11 with method 2 of `crate::adhesion` (f64, numerical Taylor
+//! - p_j and psi_J agree to 1e-11 with method 2 of the adhesion solvers (f64, numerical Taylor
 //!   coefficients of G at quadrature nodes) at nu = 0, 1/4, 9/20, 1/2 through order 12.
-//! - Against method 1 of `crate::adhesion` (full MPFR solution, 30 digits): the remainders of
+//! - Against method 1 of the adhesion solvers (full MPFR solution, 30 digits): the remainders of
 //!   P2, psi and q2 + i q1 (x/a = 1/2) after m = 0..4 corrections have observed orders
 //!   2m+2 +- 0.01 between lambda = pi/32 and pi/64, at nu = 0, 0.3, 0.45.
 //!
 //! # Convergence (observed, not proven)
 //! The lambda^2-series of P2 has radius pi/2 at nu = 1/2 (ln sec); for nu < 1/2 the recurrence
-//! divides by D_N = Re M_{2N+1}, which method 2 of `crate::adhesion` observed to change sign near
-//! N ~ 302 at nu = 0 (see `crate::adhesion::series_f64`): the exact coefficients then have a pole
+//! divides by D_N = Re M_{2N+1}, which method 2 of the adhesion solvers observed to change sign near
+//! N ~ 302 at nu = 0 (see the module doc of the adhesion series_f64 method): the exact coefficients then have a pole
 //! in nu, and the series is at best slowly convergent at small nu.
 
-use crate::params::adhesion as constants;
 use crate::model::Material;
 use crate::numerics::evaluate::{poly_mpfr, UnboundSymbol};
+use crate::numerics::precision::SERIES_GUARD_BITS;
+use crate::numerics::tanh_sinh::TanhSinh;
+use crate::params::adhesion::AdhesionParamsMpfr;
 use exact_series::{Frac, Gaussian, Poly, Ring, Series, SeriesError, Symbol, Q};
 use num_bigint::BigInt;
 use rug::{Complex, Float};
@@ -336,7 +338,7 @@ pub enum AdhesionEvalError {
 /// Guard bits of the evaluation: the rational functions are formed at `prec + GUARD_BITS` and
 /// rounded once. The polynomials have coefficients of moderate size and eps, B, S = O(1), so the
 /// cancellation is a few dozen bits at order 12 (measured in the tests by comparing precisions).
-pub const GUARD_BITS: u32 = 64;
+pub const GUARD_BITS: u32 = SERIES_GUARD_BITS;
 
 /// The expansion's coefficients at a given nu, in MPFR.
 #[derive(Debug, Clone)]
@@ -366,22 +368,26 @@ fn frac_mpfr(f: &Frac, values: &[(Symbol, Float)], w: u32) -> Result<Float, Unbo
     Ok(n / d)
 }
 
-/// Bindings (eps, B, S) at nu, `w` bits (eps, B from the exact kappa = 3 - 4 nu, S by the
-/// accelerated sum of [`constants::s_const`]).
-pub fn symbol_values(nu: &Q, w: u32) -> Result<Vec<(Symbol, Float)>, AdhesionEvalError> {
+/// The derived constants of the material with Poisson's ratio `nu` (exact) at the working
+/// precision `prec + GUARD_BITS` of an evaluation to `prec` bits: built once per evaluation
+/// ([`AdhesionParamsMpfr`]: eps and B from the exact kappa = 3 - 4 nu, S by its accelerated sum).
+pub fn series_constants(nu: &Q, prec: u32) -> Result<AdhesionParamsMpfr, AdhesionEvalError> {
     let material = Material::from_contact_modulus(nu.clone(), Q::from_integer(1.into()))
         .map_err(|_| AdhesionEvalError::PoissonRatio(nu.to_string()))?;
-    let e = constants::eps(&material, w);
-    let b = constants::b_const(&material, w);
-    let s = constants::s_const(&e, w);
+    Ok(AdhesionParamsMpfr::new(&material, prec + GUARD_BITS))
+}
+
+/// Bindings of the symbols (eps, B, S) to the values in `constants`, at their precision.
+pub fn symbol_values(constants: &AdhesionParamsMpfr) -> Vec<(Symbol, Float)> {
     let sym = |n: &str| symbol(n).expect("valid symbol name");
-    Ok(vec![(sym(EPS), e), (sym(B), b), (sym(S), s)])
+    vec![(sym(EPS), constants.eps.clone()), (sym(B), constants.b.clone()), (sym(S), constants.s.clone())]
 }
 
 /// Every coefficient of `exp` at Poisson's ratio `nu` (exact), to `prec` bits.
 pub fn adhesion_values(exp: &AdhesionExpansion, nu: &Q, prec: u32) -> Result<AdhesionValues, AdhesionEvalError> {
-    let w = prec + GUARD_BITS;
-    let values = symbol_values(nu, w)?;
+    let constants = series_constants(nu, prec)?;
+    let w = constants.prec;
+    let values = symbol_values(&constants);
     let round = |x: Float| Float::with_val(prec, x);
     let ev = |f: &Frac| frac_mpfr(f, &values, w).map(round);
     let pi = Float::with_val(w, rug::float::Constant::Pi);
@@ -399,24 +405,25 @@ pub fn adhesion_values(exp: &AdhesionExpansion, nu: &Q, prec: u32) -> Result<Adh
 
 /// The stress coefficient `int_xi^1 (tau+xi)^(-1/2+i eps) (tau-xi)^(-1/2-i eps) h_N(xi, tau) dtau`
 /// (the coefficient of `lambda^(2N)` in `(q2 + i q1) B/(pi E* k a)`, module doc step 6) at
-/// `0 <= xi < 1`, by tanh-sinh quadrature in MPFR (`tau = xi + (1 - xi) t`; the endpoint factor
+/// `0 <= xi < 1` for the material of `constants` ([`series_constants`] at `prec`), by tanh-sinh
+/// quadrature in MPFR (`tau = xi + (1 - xi) t`; the endpoint factor
 /// `t^(-1/2 - i eps)` is absorbed by the double-exponential decay). Returns (Re, Im) = (q2, q1)
 /// parts. The accuracy is that of the rule (`bits`), checked in the tests against two rules.
 pub fn stress_coefficient_mpfr(
     exp: &AdhesionExpansion,
     n: usize,
     xi: &Float,
-    nu: &Q,
+    constants: &AdhesionParamsMpfr,
     bits: u32,
     prec: u32,
 ) -> Result<Option<Complex>, AdhesionEvalError> {
     let Some(h) = exp.stress.coeff(2 * n) else {
         return Ok(None);
     };
-    let w = prec + GUARD_BITS;
-    let mut values = symbol_values(nu, w)?;
-    let eps = values[0].1.clone();
-    let rule = crate::adhesion::tanh_sinh::TanhSinh::new(bits, 1.0, w);
+    let w = constants.prec;
+    let mut values = symbol_values(constants);
+    let eps = &constants.eps;
+    let rule = TanhSinh::new(bits, 1.0, w);
     let one_m_xi = Float::with_val(w, 1 - xi.clone());
     let sym = |n: &str| symbol(n).expect("valid symbol name");
     values.push((sym(XI), Float::with_val(w, xi)));
@@ -431,7 +438,7 @@ pub fn stress_coefficient_mpfr(
         let lp = Float::with_val(w, plus.ln_ref());
         let lm = Float::with_val(w, minus.ln_ref());
         let re = Float::with_val(w, &lp + &lm) / -2i32;
-        let im = Float::with_val(w, &lp - &lm) * &eps;
+        let im = Float::with_val(w, &lp - &lm) * eps;
         let weight = Complex::with_val(w, (re, im)).exp();
         values[4].1 = tau;
         let hv = Complex::with_val(w, (frac_mpfr(&h.re, &values, w)?, frac_mpfr(&h.im, &values, w)?));

@@ -190,9 +190,10 @@ impl SeriesObject {
 /// in MPFR; S by its accelerated sum).
 fn add_values(parts: &mut [Derived], nu: &Q) -> Result<(), SeriesError> {
     let prec = (VALUE_DIGITS as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 16;
-    let values = crate::asymptotics::adhesion::symbol_values(nu, prec + crate::asymptotics::adhesion::GUARD_BITS)
+    let constants = crate::asymptotics::adhesion::series_constants(nu, prec)
         .map_err(|e| SeriesError::NotInvertible { operation: "evaluation at nu", value: e.to_string() })?;
-    let w = prec + crate::asymptotics::adhesion::GUARD_BITS;
+    let values = crate::asymptotics::adhesion::symbol_values(&constants);
+    let w = constants.prec;
     for d in parts.iter_mut() {
         let mut list = Vec::new();
         for (k, c) in d.series.coeffs().iter().enumerate() {

@@ -1,9 +1,12 @@
-//! Numerical methods: quadrature rules, evaluation of exact objects in `f64` and MPFR.
+//! Numerical methods: quadrature rules (Gauss-Jacobi, tanh-sinh), Chebyshev interpolation, root
+//! finding, evaluation of exact objects in `f64` and MPFR, the accuracy rule.
 
 pub mod accuracy;
+pub mod chebyshev;
 pub mod evaluate;
 pub mod exact;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
 pub mod precision;
 pub mod roots;
+pub mod tanh_sinh;

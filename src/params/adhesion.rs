@@ -11,7 +11,7 @@ use rug::float::Constant;
 use rug::ops::Pow;
 use rug::{Complex, Float};
 
-use crate::numerics::precision::CONSTANT_GUARD_BITS as GUARD_BITS;
+use crate::numerics::precision::CONSTANT_GUARD_BITS;
 
 /// The derived material constants of Problem 2 in MPFR, computed once per problem and precision:
 /// every solver, series evaluation and renderer of Problem 2 reads them from here.
@@ -29,22 +29,27 @@ pub struct AdhesionParamsMpfr {
     pub b: Float,
     /// S(eps) = int_0^inf sin(2 eps y)/cosh y dy.
     pub s: Float,
+    /// The single-punch load constant C_P = pi/(2 (1 - 2 eps S)) ([`single_punch_load_constant`]).
+    pub load_constant: Float,
 }
 
 impl AdhesionParamsMpfr {
-    /// eps, cosh(pi eps), B and S(eps) of `material` at `prec` bits (each to < 1 ulp + the
-    /// proven bound of [`s_const`]).
+    /// eps, cosh(pi eps), B, S(eps) and C_P of `material` at `prec` bits: eps, cosh(pi eps), B and
+    /// C_P each to < 1 ulp (formed at `prec` + [`CONSTANT_GUARD_BITS`] and rounded once); S from the
+    /// rounded eps by [`s_const`] (its proven bound 2^-prec plus the propagated rounding of eps:
+    /// |dS/d eps| <= 2 int y/cosh y = 3.67, so a few ulp). These are exactly the values the solvers
+    /// and the series evaluation formed before the parameters were gathered here.
     pub fn new(material: &Material, prec: u32) -> Self {
-        let w = prec + GUARD_BITS;
-        let e = eps(material, w);
-        let s = s_const(&e, w);
+        let e = eps(material, prec);
+        let s = s_const(&e, prec);
         AdhesionParamsMpfr {
             prec,
             beta: to_float(&material.beta(), prec),
-            eps: Float::with_val(prec, &e),
+            eps: e,
             cosh_pi_eps: cosh_pi_eps(material, prec),
             b: b_const(material, prec),
-            s: Float::with_val(prec, s),
+            s,
+            load_constant: single_punch_load_constant(material, prec),
         }
     }
 
@@ -56,6 +61,7 @@ impl AdhesionParamsMpfr {
             cosh_pi_eps: self.cosh_pi_eps.to_f64(),
             b: self.b.to_f64(),
             s: self.s.to_f64(),
+            load_constant: self.load_constant.to_f64(),
         }
     }
 }
@@ -74,6 +80,8 @@ pub struct AdhesionParamsF64 {
     pub b: f64,
     /// S(eps).
     pub s: f64,
+    /// C_P = pi/(2 (1 - 2 eps S)).
+    pub load_constant: f64,
 }
 
 impl AdhesionParamsF64 {
@@ -85,7 +93,7 @@ impl AdhesionParamsF64 {
 
 /// eps = ln(3 - 4 nu)/(2 pi) [THEORY.md section 1], rounded once from the exact kappa.
 pub fn eps(material: &Material, prec: u32) -> Float {
-    let w = prec + GUARD_BITS;
+    let w = prec + CONSTANT_GUARD_BITS;
     let kappa = to_float(&material.kolosov(), w);
     let pi = Float::with_val(w, Constant::Pi);
     Float::with_val(prec, kappa.ln() / (pi * 2u32))
@@ -93,7 +101,7 @@ pub fn eps(material: &Material, prec: u32) -> Float {
 
 /// cosh(pi eps) = (kappa + 1)/(2 sqrt(kappa)), kappa = 3 - 4 nu.
 pub fn cosh_pi_eps(material: &Material, prec: u32) -> Float {
-    let w = prec + GUARD_BITS;
+    let w = prec + CONSTANT_GUARD_BITS;
     let kappa = to_float(&material.kolosov(), w);
     let s = Float::with_val(w, kappa.sqrt_ref());
     Float::with_val(prec, (kappa + 1u32) / (s * 2u32))
@@ -101,7 +109,7 @@ pub fn cosh_pi_eps(material: &Material, prec: u32) -> Float {
 
 /// B = pi/cosh(pi eps) [THEORY.md section 5].
 pub fn b_const(material: &Material, prec: u32) -> Float {
-    let w = prec + GUARD_BITS;
+    let w = prec + CONSTANT_GUARD_BITS;
     let pi = Float::with_val(w, Constant::Pi);
     Float::with_val(prec, pi / cosh_pi_eps(material, w))
 }
@@ -119,7 +127,7 @@ pub fn b_const(material: &Material, prec: u32) -> Float {
 pub fn s_const(eps: &Float, prec: u32) -> Float {
     let n = (((prec + 4) as f64) * std::f64::consts::LN_2 / (3.0 + 8f64.sqrt()).ln()).ceil() as u32 + 1;
     // The weights c_k reach d_n ~ 2^prec; a relative cancellation of at most n: guard bits.
-    let w = prec + GUARD_BITS + 2 * (32 - n.leading_zeros());
+    let w = prec + CONSTANT_GUARD_BITS + 2 * (32 - n.leading_zeros());
     let c = Float::with_val(w, eps * 2u32);
     Float::with_val(
         prec,
@@ -172,7 +180,7 @@ pub fn s_const_f64(eps: f64) -> f64 {
 /// (m+1) M_{m+1} = m M_{m-1} + 2 i eps M_m. The recurrence is neutrally stable (both solutions
 /// grow like m^{-1/2}); a few guard bits suffice for m up to thousands.
 pub fn half_range_moments(material: &Material, count: usize, prec: u32) -> Vec<Complex> {
-    let w = prec + GUARD_BITS;
+    let w = prec + CONSTANT_GUARD_BITS;
     let e = eps(material, w);
     let m0 = Complex::with_val(w, (b_const(material, w) / 2u32, s_const(&e, w)));
     let two_i_eps = Complex::with_val(w, (0, Float::with_val(w, &e * 2u32)));
@@ -194,7 +202,7 @@ pub fn half_range_moments(material: &Material, count: usize, prec: u32) -> Vec<C
 /// Single-punch load constant C_P = pi/(2 (1 - 2 eps S)) [THEORY.md section 5; the paper's
 /// (3.18) at lambda = 0]: P2 = C_P E* k a^2. Equals pi/(2 Re M_1).
 pub fn single_punch_load_constant(material: &Material, prec: u32) -> Float {
-    let w = prec + GUARD_BITS;
+    let w = prec + CONSTANT_GUARD_BITS;
     let e = eps(material, w);
     let s = s_const(&e, w);
     let pi = Float::with_val(w, Constant::Pi);
@@ -206,7 +214,7 @@ pub fn single_punch_load_constant(material: &Material, prec: u32) -> Float {
 /// A1 = -2 eps B k/(1 - 2 eps S) (from psi = -(2 k x/(pi chi)) Im int K P' as chi -> 0,
 /// THEORY.md section 4, with P' = eta pi/Re M_1 and Im M_1 = eps B). Returned per unit k.
 pub fn single_punch_slope(material: &Material, prec: u32) -> Float {
-    let w = prec + GUARD_BITS;
+    let w = prec + CONSTANT_GUARD_BITS;
     let e = eps(material, w);
     let s = s_const(&e, w);
     let b = b_const(material, w);

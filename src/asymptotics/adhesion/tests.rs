@@ -20,10 +20,6 @@ fn sym(name: &str) -> Symbol {
     Symbol::new(name).unwrap()
 }
 
-fn material(nu: &Q) -> Material {
-    Material::from_contact_modulus(nu.clone(), Q::from_integer(1.into())).unwrap()
-}
-
 /// The coefficient of `lambda^n` in `ln sec(lambda)/(lambda^2/2)` (Kuznetsov [2.15], THEORY.md
 /// section 6), computed by the engine over Q from -log(cos), independently of the adhesion code.
 fn kuznetsov_load(order: usize) -> Series<Q> {
@@ -93,7 +89,7 @@ fn single_punch_slope_satisfies_fixed_a_solvability() {
             let w = prec + 32;
             let a1 = Float::with_val(w, &vals.slope[1]);
             let eps = Float::with_val(w, &vals.eps);
-            let rule = crate::adhesion::tanh_sinh::TanhSinh::new(prec, 1.0, w);
+            let rule = TanhSinh::new(prec, 1.0, w);
             // y = s: weight (1+s)^(-1/2-i eps) (1-s)^(-1/2+i eps); y = -s: the conjugate.
             let mut acc = Complex::with_val(w, 0);
             for k in 0..rule.len() {
@@ -131,116 +127,15 @@ fn paper_signs_of_a1_a3_c2() {
     }
 }
 
-/// Against the other, numerical implementation of the same expansion: method 2 of
-/// `crate::adhesion` (f64 Taylor coefficients of G at each tanh-sinh node, integrated numerically;
-/// no symbolic expansion in s, no moment recurrence). f_n = pi p_n; psi_n = -(2/pi) Im c_n.
-#[test]
-fn against_f64_series_method() {
-    let order = 12;
-    let e = order12();
-    for nu_v in [nu(0, 1), nu(1, 4), nu(9, 20), nu(1, 2)] {
-        let v = adhesion_values(e, &nu_v, 64).unwrap();
-        let sol = crate::adhesion::series_f64::solve(&material(&nu_v), 0.3).unwrap();
-        let pi = std::f64::consts::PI;
-        for j in 0..=order / 2 {
-            let p = v.volterra[j].to_f64() * pi;
-            let f = sol.f[j];
-            assert!((p - f).abs() <= 1e-11 * f.abs().max(1.0), "nu {nu_v} p_{j}: {p} vs {f}");
-            let psi = v.slope[2 * j + 1].to_f64();
-            let psi_f = -2.0 / pi * sol.c[j].im;
-            assert!((psi - psi_f).abs() <= 1e-11 * psi.abs().max(1.0), "nu {nu_v} psi_{j}: {psi} vs {psi_f}");
-        }
-    }
-}
-
-/// Observed order log2(r(2 lambda)/r(lambda)) of a remainder.
-fn observed_order(r_coarse: f64, r_fine: f64) -> f64 {
-    (r_coarse / r_fine).log2()
-}
-
-/// Term by term against the full solution (method 1 of `crate::adhesion`: MPFR Chebyshev
-/// collocation of the Volterra equation, 30 digits; no expansion in lambda): after m corrections
-/// the remainders of P2/(C_P E* k a^2), psi/(k a) and (q2 + i q1)/(E* k a) at x/a = 1/2 scale like
-/// lambda^(2m+2) (observed order within 0.1 between lambda = pi/32 and pi/64, L = 1, k = E* = 1).
-#[test]
-fn remainders_against_full_solution() {
-    use crate::adhesion::solution::solve_mpfr_with;
-    use crate::adhesion::volterra_mpfr::VolterraParams;
-    use crate::model::{AdhesionProblem, AdhesionSize, Period, PunchShape};
-    let order = 8;
-    let e = adhesion_expansion(order).unwrap();
-    let prec = 128;
-    for nu_v in [nu(0, 1), nu(3, 10), nu(9, 20)] {
-        let v = adhesion_values(&e, &nu_v, prec).unwrap();
-        let xi = q(1, 2);
-        let xi_f = crate::numerics::exact::to_float(&xi, prec);
-        let stress: Vec<Complex> = (0..=order / 2)
-            .map(|n| stress_coefficient_mpfr(&e, n, &xi_f, &nu_v, prec, prec).unwrap().unwrap())
-            .collect();
-        let pi = Float::with_val(prec, rug::float::Constant::Pi);
-        let stress_scale = Float::with_val(prec, &pi / &v.b);
-        // rem[m][quantity] at each lambda.
-        let mut rem: Vec<Vec<[f64; 3]>> = Vec::new();
-        for a_den in [32i64, 64] {
-            let a = q(1, a_den);
-            let problem = AdhesionProblem::new(
-                material(&nu_v),
-                Period::Finite(q(1, 1)),
-                PunchShape::parabolic(q(1, 1)).unwrap(),
-                AdhesionSize::HalfWidth(a.clone()),
-            )
-            .unwrap();
-            let sol =
-                solve_mpfr_with(&problem, std::slice::from_ref(&xi), VolterraParams::for_digits(30), false).unwrap();
-            let lambda = Float::with_val(prec, &sol.lambda);
-            let a_f = crate::numerics::exact::to_float(&a, prec);
-            let load =
-                Float::with_val(prec, &sol.normal_load / (Float::with_val(prec, &a_f * &a_f) * &v.load_constant));
-            let pt = &sol.points[0];
-            let psi = Float::with_val(prec, &pt.psi / &a_f);
-            let sig =
-                Complex::with_val(prec, (Float::with_val(prec, &pt.q2 / &a_f), Float::with_val(prec, &pt.q1 / &a_f)));
-            let chi = Float::with_val(prec, &lambda * &xi_f);
-            let l2 = Float::with_val(prec, &lambda * &lambda);
-            let mut per_m = Vec::new();
-            let (mut s_load, mut s_psi, mut s_sig) =
-                (Float::with_val(prec, 0), Float::with_val(prec, 0), Complex::with_val(prec, 0));
-            let mut lp = Float::with_val(prec, 1); // lambda^(2m)
-            for m in 0..=order / 2 {
-                s_load += Float::with_val(prec, &v.load[2 * m] * &lp);
-                // psi/(k a) = (L/(pi a)) sum_J psi_J chi^(2J+1) = sum_J psi_J lambda^(2J) xi^(2J+1)
-                let xp = Float::with_val(prec, rug::ops::Pow::pow(&xi_f, 2 * m as u32 + 1));
-                s_psi += Float::with_val(prec, &v.slope[2 * m + 1] * &lp) * xp;
-                s_sig += Complex::with_val(prec, &stress[m] * &lp) * &stress_scale;
-                let r = [
-                    Float::with_val(prec, &load - &s_load).abs().to_f64(),
-                    Float::with_val(prec, &psi - &s_psi).abs().to_f64(),
-                    Complex::with_val(prec, &sig - &s_sig).abs().real().to_f64(),
-                ];
-                per_m.push(r);
-                lp *= &l2;
-            }
-            let _ = chi;
-            rem.push(per_m);
-        }
-        for m in 0..=order / 2 {
-            for (k, name) in ["P2", "psi", "stress"].iter().enumerate() {
-                let p = observed_order(rem[0][m][k], rem[1][m][k]);
-                eprintln!("nu {nu_v} m {m} {name}: r = {:e}, {:e}, order {p:.3}", rem[0][m][k], rem[1][m][k]);
-                assert!((p - (2 * m + 2) as f64).abs() < 0.1, "nu {nu_v} m {m} {name}: order {p}");
-            }
-        }
-    }
-}
-
 /// The stress coefficient N = 0 at nu = 1/2 is Hertz's sqrt(1 - xi^2) (B = pi), by quadrature.
 #[test]
 fn stress_leading_term_is_hertz_at_nu_half() {
     let e = adhesion_expansion(2).unwrap();
     for prec in [96u32, 160] {
+        let constants = series_constants(&nu(1, 2), prec).unwrap();
         for (n, d) in [(0, 1), (1, 2), (9, 10)] {
             let xi = crate::numerics::exact::to_float(&q(n, d), prec);
-            let c = stress_coefficient_mpfr(&e, 0, &xi, &nu(1, 2), prec, prec).unwrap().unwrap();
+            let c = stress_coefficient_mpfr(&e, 0, &xi, &constants, prec, prec).unwrap().unwrap();
             let hertz = Float::with_val(prec, 1 - Float::with_val(prec, &xi * &xi)).sqrt();
             let err = Float::with_val(prec, c.real() - &hertz).abs().to_f64() + c.imag().clone().abs().to_f64();
             assert!(err < 2f64.powi(-(prec as i32) + 20), "xi {n}/{d} prec {prec}: {err:e}");
@@ -275,24 +170,6 @@ fn values_stable_across_precisions() {
         }
         // 30 digits printed for the CLI: e.g. c_2 at nu = 0.
         eprintln!("nu {nu_v}: C_P = {:.32}, c_2 = {:.32}, A_1/k = {:.32}", hi.load_constant, hi.load[2], hi.slope[1]);
-    }
-}
-
-/// Timing of the table the CLI prints (run with `--ignored --nocapture`).
-#[test]
-#[ignore]
-fn timing_order_12_without_stress() {
-    let t0 = std::time::Instant::now();
-    let e = adhesion_expansion_with(12, false).unwrap();
-    eprintln!("order 12 without stress: {:?}", t0.elapsed());
-    let t0 = std::time::Instant::now();
-    let v = adhesion_values(&e, &nu(0, 1), 100).unwrap();
-    eprintln!("values at 100 bits: {:?}", t0.elapsed());
-    for n in (1..=13).step_by(2) {
-        eprintln!("A_{n}/k(pi/L)^{} at nu = 0: {:.30}", n - 1, v.slope[n]);
-    }
-    for n in (0..=12).step_by(2) {
-        eprintln!("c_{n} at nu = 0: {:.30}", v.load[n]);
     }
 }
 

@@ -89,7 +89,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn adhesion_tanh_sinh_endpoint_singularity() {
+    fn tanh_sinh_endpoint_singularity() {
         // int_0^1 (1-s)^{-1/2} ds = 2; int_0^1 s^{-1/2} ln(1/(1-s))... keep it simple: also
         // int_0^1 s^2 ds = 1/3.
         let prec = 200;

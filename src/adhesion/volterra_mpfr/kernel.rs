@@ -15,6 +15,8 @@
 //!      / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) F(r^2) dy,
 //! with P'(eta) = eta f(eta^2), F(tau) = f(lambda^2 tau). At lambda = 0 (single punch) and eps = 0
 //! this is Hertz: F = pi, q2 = E* k a sqrt(1 - sigma^2).
+//!
+//! The same integrands in `f64` (method 2): [`crate::adhesion::series_f64::kernel`].
 
 use rug::Float;
 
@@ -86,73 +88,31 @@ pub fn stress_integrand(
     (re, im, r2)
 }
 
-/// f64 versions of the two integrands (method 2).
-pub mod f64k {
-    fn sinc(z: f64) -> f64 {
-        if z == 0.0 {
-            1.0
-        } else {
-            z.sin() / z
-        }
-    }
-    fn rotate(mag: f64, theta: f64, cr: f64, ci: f64) -> (f64, f64) {
-        let (st, ct) = theta.sin_cos();
-        (mag * (ct * cr - st * ci), mag * (ct * ci + st * cr))
-    }
-    /// s w(s) (no G): the lambda -> 0 factor, with complement c.
-    pub fn weight_s(s: f64, c: f64, eps: f64) -> (f64, f64) {
-        let one_p = 1.0 + s;
-        let mag = s / (one_p * c).sqrt();
-        let theta = eps * (one_p.ln() - c.ln());
-        rotate(mag, theta, 1.0, 0.0)
-    }
-    /// v-form of the stress integrand (see [`super::stress_integrand_v`]): (re, im, r^2).
-    pub fn stress_integrand_v(sigma: f64, v: f64, lambda: f64, eps: f64) -> (f64, f64, f64) {
-        let (sh, ch) = ((0.5 * v).sinh(), (0.5 * v).cosh());
-        let r = sigma * v.cosh();
-        let (rps, rms) = (2.0 * sigma * ch * ch, 2.0 * sigma * sh * sh);
-        let a = sinc(lambda * rps);
-        let b = sinc(lambda * rms);
-        let mag = r / (a * b).sqrt();
-        let theta = eps * (2.0 * (ch / sh).ln() + (a / b).ln());
-        let x = lambda * sigma;
-        let yy = 2.0 * eps * lambda * r;
-        let (cr, ci) = (x.cos() * yy.cosh(), x.sin() * yy.sinh());
-        let (re, im) = rotate(mag, theta, cr, ci);
-        (re, im, r * r)
-    }
-    /// Stress integrand without F(r^2): (re, im, r^2).
-    pub fn stress_integrand(sigma: f64, omss: f64, y: f64, lambda: f64, eps: f64) -> (f64, f64, f64) {
-        let y2d = y * y * omss;
-        let r2 = sigma * sigma + y2d;
-        let r = r2.sqrt();
-        let rps = r + sigma;
-        let rms = y2d / rps;
-        let a = sinc(lambda * rps);
-        let b = sinc(lambda * rms);
-        let mag = 1.0 / (a * b).sqrt();
-        let theta = eps * (2.0 * rps.ln() - y2d.ln() + a.ln() - b.ln());
-        let x = lambda * sigma;
-        let yy = 2.0 * eps * lambda * r;
-        let (cr, ci) = (x.cos() * yy.cosh(), x.sin() * yy.sinh());
-        let (re, im) = rotate(mag, theta, cr, ci);
-        (re, im, r2)
-    }
-}
-
-/// L sigma_flat(x; a) for the unit-load adhesive flat punch on [-a, a] (THEORY.md section 4):
-/// cosh(pi eps) cos(chi - 2 i eps lambda) (sin(lambda+chi)/sin(lambda-chi))^{i eps}
-/// / sqrt(sin^2 lambda - sin^2 chi), |chi| < lambda, in f64 as (re, im) = (q2, q1) part;
-/// `lp` = lambda + chi and `lm` = lambda - chi are passed separately (accurate near the ends).
-/// At eps = 0 it is Sadowsky's cos(chi)/sqrt(sin^2 lambda - sin^2 chi).
-pub fn flat_punch_stress_f64(chi: f64, lp: f64, lm: f64, lambda: f64, eps: f64) -> (f64, f64) {
-    let ch = (std::f64::consts::PI * eps).cosh();
-    let (sp, sm) = (lp.sin(), lm.sin());
-    let mag = ch / (sp * sm).sqrt();
-    let theta = eps * (sp.ln() - sm.ln());
-    let (cr, ci) = (chi.cos() * (2.0 * eps * lambda).cosh(), chi.sin() * (2.0 * eps * lambda).sinh());
-    let (st, ct) = theta.sin_cos();
-    (mag * (ct * cr - st * ci), mag * (ct * ci + st * cr))
+/// The stress integrand in the variable v, r = sigma cosh v (0 < sigma < 1, v in (0, acosh(1/sigma))),
+/// used for small sigma where the y-form of [`stress_integrand`] has branch points at
+/// y = +-i sigma/sqrt(1 - sigma^2) close to its end y = 0 (slow tanh-sinh convergence). Here
+/// r dr/sqrt(r^2 - sigma^2) = r dv and ((r+sigma)/(r-sigma))^{i eps} = coth(v/2)^{2 i eps}, so
+///   (q2 + i q1)/(E* k a) = (cosh(pi eps)/pi) int_0^{acosh(1/sigma)} cos(lambda(sigma - 2 i eps r))
+///       coth(v/2)^{2 i eps} (sinc(lambda(r+sigma))/sinc(lambda(r-sigma)))^{i eps}
+///       / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) r F(r^2) dv,
+/// whose singularities in v lie at distance pi from the real axis. Returns (re, im, r^2) without
+/// F(r^2) and without the prefactor, times r.
+pub fn stress_integrand_v(sigma: &Float, v: &Float, lambda: &Float, eps: &Float, prec: u32) -> (Float, Float, Float) {
+    let half = Float::with_val(prec, v / 2u32);
+    let (sh, ch) = half.sinh_cosh(Float::new(prec));
+    let r = Float::with_val(prec, &ch * &ch) * sigma * 2u32 - sigma; // sigma cosh v
+    let rps = Float::with_val(prec, &ch * &ch) * sigma * 2u32;
+    let rms = Float::with_val(prec, &sh * &sh) * sigma * 2u32;
+    let a = sinc(&Float::with_val(prec, lambda * &rps), prec);
+    let b = sinc(&Float::with_val(prec, lambda * &rms), prec);
+    let mag = Float::with_val(prec, &a * &b).sqrt().recip() * &r;
+    let theta = (Float::with_val(prec, &ch / &sh).ln() * 2u32 + Float::with_val(prec, &a / &b).ln()) * eps;
+    let x = Float::with_val(prec, lambda * sigma);
+    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    let (cr, ci) = cos_minus_i(&x, &yy, prec);
+    let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
+    let r2 = Float::with_val(prec, &r * &r);
+    (re, im, r2)
 }
 
 /// Per-node constants of the Volterra integrand (independent of chi): s^2,
@@ -228,29 +188,3 @@ mod tests {
     }
 }
 
-/// The stress integrand in the variable v, r = sigma cosh v (0 < sigma < 1, v in (0, acosh(1/sigma))),
-/// used for small sigma where the y-form of [`stress_integrand`] has branch points at
-/// y = +-i sigma/sqrt(1 - sigma^2) close to its end y = 0 (slow tanh-sinh convergence). Here
-/// r dr/sqrt(r^2 - sigma^2) = r dv and ((r+sigma)/(r-sigma))^{i eps} = coth(v/2)^{2 i eps}, so
-///   (q2 + i q1)/(E* k a) = (cosh(pi eps)/pi) int_0^{acosh(1/sigma)} cos(lambda(sigma - 2 i eps r))
-///       coth(v/2)^{2 i eps} (sinc(lambda(r+sigma))/sinc(lambda(r-sigma)))^{i eps}
-///       / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) r F(r^2) dv,
-/// whose singularities in v lie at distance pi from the real axis. Returns (re, im, r^2) without
-/// F(r^2) and without the prefactor, times r.
-pub fn stress_integrand_v(sigma: &Float, v: &Float, lambda: &Float, eps: &Float, prec: u32) -> (Float, Float, Float) {
-    let half = Float::with_val(prec, v / 2u32);
-    let (sh, ch) = half.sinh_cosh(Float::new(prec));
-    let r = Float::with_val(prec, &ch * &ch) * sigma * 2u32 - sigma; // sigma cosh v
-    let rps = Float::with_val(prec, &ch * &ch) * sigma * 2u32;
-    let rms = Float::with_val(prec, &sh * &sh) * sigma * 2u32;
-    let a = sinc(&Float::with_val(prec, lambda * &rps), prec);
-    let b = sinc(&Float::with_val(prec, lambda * &rms), prec);
-    let mag = Float::with_val(prec, &a * &b).sqrt().recip() * &r;
-    let theta = (Float::with_val(prec, &ch / &sh).ln() * 2u32 + Float::with_val(prec, &a / &b).ln()) * eps;
-    let x = Float::with_val(prec, lambda * sigma);
-    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
-    let (cr, ci) = cos_minus_i(&x, &yy, prec);
-    let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
-    let r2 = Float::with_val(prec, &r * &r);
-    (re, im, r2)
-}

@@ -72,7 +72,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn adhesion_chebyshev_interpolates_and_integrates_exp() {
+    fn chebyshev_interpolates_and_integrates_exp() {
         let prec = 128;
         let t = nodes(30, prec);
         let v: Vec<Float> = t.iter().map(|x| x.clone().exp()).collect();

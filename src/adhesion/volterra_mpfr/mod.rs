@@ -1,0 +1,62 @@
+//! Method 1 (MPFR): Chebyshev collocation of the Volterra equation of the first kind of the
+//! incremental method, THEORY.md section 4 (Mossakovskii; the paper's (2.19) with a growing
+//! contact).
+//!
+//! Writing P2 = E* k (L/pi)^2 P(lambda), P'(eta) = eta f(eta^2) and, at a given lambda,
+//! F(tau) = f(lambda^2 tau) on tau in [0, 1], the equation
+//! int_0^chi Re K(chi, eta) P'(eta) d eta = pi chi becomes, with eta = chi s and chi = lambda sigma
+//! (see [`kernel`]),
+//!   Re I(sigma) = pi,   I(sigma) = int_0^1 s w(s) G(lambda sigma, s) F(sigma^2 s^2) ds,
+//! for sigma in (0, 1]. F is analytic on [0, 1] (its nearest singularity is at
+//! tau = (pi/(2 lambda))^2, full contact; at eps = 0, f(t) = pi tan(sqrt t)/sqrt t), so a Chebyshev
+//! interpolant in tau with n nodes converges like rho^-n, rho = z + sqrt(z^2 - 1),
+//! z = 2 (pi/(2 lambda))^2 - 1. Collocation at the Chebyshev nodes tau_i = sigma_i^2, integrals by
+//! tanh-sinh ([`crate::numerics::tanh_sinh`]), real n x n system by Gaussian elimination.
+//! Then (THEORY.md section 4):
+//!   P2/(E* k a^2) = (1/2) int_0^1 F(tau) d tau,
+//!   psi/(k a) = -(2 sigma/pi) Im I(sigma),
+//!   phi/(k a^2) = -(1/pi) int_0^{sigma^2} Im I(sqrt tau) d tau,
+//! and the stresses by [`kernel::stress_integrand`].
+//! lambda = 0 is the single punch (G = 1, F = pi/Re M_1 constant: self-similar).
+//!
+//! # Conditioning (measured; THEORY.md section 7)
+//! For nu = 1/2 (eps = 0) and nu >= 0.45 the method verifies 20+ digits up to lambda ~ 1.49.
+//! For small nu it breaks down at a moderate contact size: verified digits of P2 at 20 requested
+//! (`cargo run --release --example adhesion_charts -- conditioning`): nu = 0: 31 (lambda <= 0.47), 27 (0.63), 22 (0.79), 6 (0.94),
+//! 2 (1.10), 0 beyond; nu = 0.3: >= 26 up to 1.26, 3 at 1.41, no convergence at 1.49.
+//! Mechanism (a hypothesis supported by the following facts, not a proof): the kernel Re K is the
+//! real part of an Abel kernel (chi - eta)^{-1/2 - i eps}, so on powers eta^{2n+1} the operator
+//! acts, at lambda -> 0, by the factor Re M_{2n+1}; Re M_m changes sign at m ~ 605 for nu = 0
+//! (m ~ 2285 for nu = 0.1, beyond 2e5 for nu = 0.3; computed from the recurrence for M_m), and the
+//! phase of the near-diagonal coefficient cos(chi(1 - 2 i eps)) (sin 2 chi)^{i eps} grows with chi,
+//! bringing the sign change down to low degrees as lambda grows: the first-kind equation then has
+//! (near-)homogeneous solutions and the discrete problem loses digits without bound. The same
+//! factor 1/Re M_{2n+1} enters the lambda^2 series (see [`crate::adhesion::series_f64`]).
+//! A second chart (`cargo run --release --example adhesion_charts -- singularity`, 200-bit runs) reads the decay rate rho
+//! of the Chebyshev coefficients of F on [0, lambda^2] and the real singularity t_s it implies
+//! (z = 2 t_s/lambda^2 - 1, rho = z + sqrt(z^2 - 1)): nu = 0.3 gives a stable
+//! t_s = 2.05-2.10 for lambda = 0.4-0.8, i.e. f = P'(eta)/eta is singular at a real
+//! eta_s ~ 1.43-1.45 < pi/2 (consistent with the breakdown between lambda = 1.26 and 1.41);
+//! nu = 0 gives t_s ~ 0.75-1.07 (eta_s ~ 0.86-1.04, drifting with lambda). With the gradual loss
+//! of digits beyond it (nu = 0: 6 digits at 0.94, 2 at 1.10), this points to a weak real-axis
+//! singularity of the incremental solution at eta_s(nu) < pi/2 (eta_s -> pi/2 as nu -> 1/2), which
+//! also bounds the radius of the lambda^2 series. Its nature (a non-analytic term of high order
+//! vs a blow-up of dP2/da) is not settled here; a composite basis split at eta_s would be the
+//! remedy for the method.
+//! [`verify::solve_verified`] reports the loss (fewer verified digits, and a typed error below 2 digits).
+
+//!
+//! # Files
+//! [`kernel`] (the regularised kernels), [`solve`] (discretisation and collocation solve at one
+//! lambda), [`volterra`] (the dimensionless solution and its evaluations), [`solution`]
+//! (dimensional results from the exact problem, the half-width for a given load), [`verify`] (two
+//! runs, verified digits). The f64 method has the same files in [`crate::adhesion::series_f64`].
+
+pub mod kernel;
+pub mod solution;
+pub mod solve;
+pub mod verify;
+pub mod volterra;
+
+pub use solve::{chebyshev_size, solve, solve_with_nodes, VolterraParams, MAX_NODES};
+pub use volterra::{lambda_of, VolterraSolution};

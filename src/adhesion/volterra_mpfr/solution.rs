@@ -1,0 +1,210 @@
+//! Method 1 (MPFR) in dimensional form: the solution of the exact problem (given a or P2,
+//! period or single punch) at the requested points x/a, with the tension zones.
+//! Scalings: [`crate::adhesion::scales`].
+
+use super::solve::{solve, VolterraParams};
+use super::volterra::{lambda_of, VolterraSolution};
+use crate::adhesion::error::AdhesionError;
+use crate::adhesion::points::check_points;
+use crate::adhesion::tension::{tension_report, TensionReport};
+use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
+use crate::numerics::chebyshev;
+use crate::numerics::exact::to_float;
+use crate::params::adhesion::{AdhesionParamsF64, AdhesionParamsMpfr};
+use rug::float::Constant;
+use rug::Float;
+
+/// Values at one requested point.
+#[derive(Debug, Clone)]
+pub struct PointValues {
+    /// x/a, exact, in [0, 1].
+    pub x_over_a: Exact,
+    /// psi = phi' (tangential displacement slope frozen at entry).
+    pub psi: Float,
+    /// phi = int_0^x psi.
+    pub phi: Float,
+    /// q1 = shear traction.
+    pub q1: Float,
+    /// q2 = pressure (-sigma_yy).
+    pub q2: Float,
+}
+
+/// One MPFR solution.
+#[derive(Debug, Clone)]
+pub struct AdhesionSolution {
+    /// Working precision (bits).
+    pub prec: u32,
+    /// lambda = pi a/L (0 for a single punch).
+    pub lambda: Float,
+    /// Half-width a.
+    pub half_width: Float,
+    /// Load per punch P2.
+    pub normal_load: Float,
+    /// Requested points.
+    pub points: Vec<PointValues>,
+    /// Tension zones.
+    pub tension: TensionReport,
+    /// Chebyshev nodes used.
+    pub nodes: usize,
+    /// max |Re I - pi| off the collocation nodes (equation residual).
+    pub residual: f64,
+    /// Pivot ratio of the collocation matrix.
+    pub pivot_ratio: f64,
+}
+
+/// Method 1 (MPFR) at the given discretisation, with the tension report.
+pub fn solve_mpfr(
+    problem: &AdhesionProblem,
+    points: &[Exact],
+    params: VolterraParams,
+) -> Result<AdhesionSolution, AdhesionError> {
+    solve_mpfr_with(problem, points, params, true)
+}
+
+/// Method 1; `with_tension = false` skips the (bisection-refined) tension zones, leaving only
+/// the edge factor and the points with q2 < 0 (the verification run needs no zones).
+pub fn solve_mpfr_with(
+    problem: &AdhesionProblem,
+    points: &[Exact],
+    params: VolterraParams,
+    with_tension: bool,
+) -> Result<AdhesionSolution, AdhesionError> {
+    check_points(points)?;
+    let prec = params.prec;
+    let constants = AdhesionParamsMpfr::new(problem.material(), prec);
+    let (e_star, k) = (to_float(problem.material().contact_modulus(), prec), to_float(problem.curvature(), prec));
+    let pi = Float::with_val(prec, Constant::Pi);
+    let zero = Float::with_val(prec, 0);
+    let (lambda, a, sol) = match (problem.size(), problem.period()) {
+        (AdhesionSize::HalfWidth(a), Period::Infinite) => {
+            let sol = solve(&constants, &zero, params)?;
+            (zero.clone(), to_float(a, prec), sol)
+        }
+        (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
+            let lam = lambda_of(a, l, prec);
+            let sol = solve(&constants, &lam, params)?;
+            (lam, to_float(a, prec), sol)
+        }
+        (AdhesionSize::NormalLoad(p2), Period::Infinite) => {
+            let sol = solve(&constants, &zero, params)?;
+            let p = to_float(p2, prec);
+            let a = Float::with_val(prec, p / (sol.load_ratio() * &e_star * &k)).sqrt();
+            (zero.clone(), a, sol)
+        }
+        (AdhesionSize::NormalLoad(p2), Period::Finite(l)) => {
+            let lf = to_float(l, prec);
+            let target = Float::with_val(prec, to_float(p2, prec) * &pi * &pi)
+                / (Float::with_val(prec, &lf * &lf) * &e_star * &k);
+            let (lam, big) = lambda_for_load(&constants, first_guess_load_constant(problem), &target, p2, params)?;
+            let sol = big.restrict(&lam);
+            let a = Float::with_val(prec, &lam * &lf) / &pi;
+            (lam, a, sol)
+        }
+    };
+    let load = Float::with_val(prec, sol.load_ratio() * &e_star) * &k * &a * &a;
+    let mut out = Vec::with_capacity(points.len());
+    for p in points {
+        let sigma = to_float(p, prec);
+        let (q2, q1) = sol.stress_ratio(p);
+        let s_ek = Float::with_val(prec, &e_star * &k) * &a;
+        out.push(PointValues {
+            x_over_a: p.clone(),
+            psi: sol.psi_ratio(&sigma) * &k * &a,
+            phi: sol.phi_ratio(&sigma) * &k * &a * &a,
+            q1: q1 * &s_ek,
+            q2: q2 * &s_ek,
+        });
+    }
+    let at_points = out.iter().enumerate().filter(|(_, p)| p.q2 < 0).map(|(i, _)| i).collect();
+    // The zones' ends need a few digits only: a 64-bit copy of the solution, made when needed.
+    let mut low: Option<VolterraSolution> = None;
+    let mut q2_near_edge = |ln_d: f64| {
+        let low = low.get_or_insert_with(|| sol.reduced(64));
+        let d = Float::with_val(low.prec, ln_d.min(0.0)).exp();
+        low.stress_ratio_near_edge(&d).0.to_f64()
+    };
+    let tension =
+        tension_report(sol.edge_stress_factor(), sol.eps.to_f64(), at_points, with_tension, &mut q2_near_edge, prec);
+    Ok(AdhesionSolution {
+        prec,
+        lambda,
+        half_width: a,
+        normal_load: load,
+        points: out,
+        tension,
+        nodes: sol.f_coeffs.len(),
+        residual: sol.residual,
+        pivot_ratio: sol.pivot_ratio,
+    })
+}
+
+/// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
+/// Newton on one Chebyshev solution over [0, Lambda] (f does not depend on lambda:
+/// P(lambda) = (1/2) int_0^{lambda^2} f, P'(lambda) = lambda f(lambda^2)). `normal_load` (the
+/// given P2) names the input in the error; `cp` = C_P in `f64` sets the first guess.
+fn lambda_for_load(
+    constants: &AdhesionParamsMpfr,
+    cp: f64,
+    target: &Float,
+    normal_load: &Exact,
+    params: VolterraParams,
+) -> Result<(Float, VolterraSolution), AdhesionError> {
+    let prec = params.prec;
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    // Kuznetsov-like first guess: P ~ 2 C_P ln sec(lambda).
+    let t = target.to_f64();
+    let mut lam0 = (-t / (2.0 * cp)).exp().acos();
+    if !(lam0.is_finite()) || lam0 <= 0.0 {
+        lam0 = (t / cp).sqrt().min(1.0);
+    }
+    for _attempt in 0..6 {
+        let big = (lam0 * 1.15 + 0.02).min(0.5 * (lam0 + half_pi));
+        let big_f = Float::with_val(prec, big);
+        let sol = solve(&constants, &big_f, params)?;
+        let big2 = Float::with_val(prec, &big_f * &big_f);
+        let p_of = |sol: &VolterraSolution, lam: &Float| -> (Float, Float) {
+            let tau = Float::with_val(prec, lam * lam) / &big2;
+            let p = chebyshev::integral(&sol.f_coeffs, &tau, prec) * &big2 / 2u32;
+            let d = sol.f_at(&tau) * lam;
+            (p, d)
+        };
+        let (pmax, _) = p_of(&sol, &big_f);
+        if &pmax < target {
+            lam0 = 0.5 * (big + half_pi);
+            continue;
+        }
+        let mut lam = Float::with_val(prec, lam0.min(big));
+        for _ in 0..200 {
+            let (p, d) = p_of(&sol, &lam);
+            let step = Float::with_val(prec, p - target) / d;
+            let mut next = Float::with_val(prec, &lam - &step);
+            if next > big_f {
+                next = Float::with_val(prec, &lam + &big_f) / 2u32;
+            }
+            if next <= 0 {
+                next = Float::with_val(prec, &lam / 2u32);
+            }
+            let done = Float::with_val(prec, &next - &lam).abs()
+                <= Float::with_val(prec, Float::i_exp(1, -(prec as i32) + 4)) * &next;
+            lam = next;
+            if done {
+                return Ok((lam, sol));
+            }
+        }
+        return Err(AdhesionError::NotConverged { what: "Newton for the half-width", reason: "200 steps".into() });
+    }
+    Err(AdhesionError::IllConditioned {
+        method: "mpfr-volterra",
+        parameter: "normal_load",
+        value: readable(normal_load),
+        valid: "a load whose contact stays well below full contact (lambda < pi/2)".into(),
+        reason: "the contact is too close to full contact".into(),
+    })
+}
+
+/// C_P in `f64` for the first guess of the half-width: the f64 constants
+/// ([`AdhesionParamsF64::load_constant`]), the same at every working precision (rounding the
+/// MPFR constants of a run below 64 bits would move the guess, and with it the Chebyshev interval).
+fn first_guess_load_constant(problem: &AdhesionProblem) -> f64 {
+    AdhesionParamsF64::new(problem.material()).load_constant
+}

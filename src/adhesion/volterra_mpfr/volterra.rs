@@ -1,0 +1,211 @@
+//! The dimensionless solution of the Volterra equation at one lambda (module doc of [`super`]):
+//! F and J as Chebyshev series, and from them the load, psi, phi, the stresses and the edge
+//! stress factor; restriction to a smaller lambda and rounding to fewer bits.
+
+use super::kernel;
+use crate::model::Exact;
+use crate::numerics::chebyshev;
+use crate::numerics::exact::to_float;
+use crate::numerics::tanh_sinh::TanhSinh;
+use rug::float::Constant;
+use rug::ops::Pow;
+use rug::{Complex, Float};
+
+/// The dimensionless solution at one lambda.
+#[derive(Debug, Clone)]
+pub struct VolterraSolution {
+    /// Working precision.
+    pub prec: u32,
+    /// lambda = pi a/L (0 for the single punch).
+    pub lambda: Float,
+    /// eps.
+    pub eps: Float,
+    /// cosh(pi eps).
+    pub cosh_pi_eps: Float,
+    /// Chebyshev coefficients of F(tau) = f(lambda^2 tau).
+    pub f_coeffs: Vec<Float>,
+    /// Chebyshev coefficients of J(tau) = Im I(sqrt tau).
+    pub j_coeffs: Vec<Float>,
+    /// Largest |Re I(sigma) - pi| found at off-collocation check points (a residual).
+    pub residual: f64,
+    /// Ratio of largest to smallest pivot of the collocation matrix (conditioning indicator).
+    pub pivot_ratio: f64,
+    pub(super) rule: TanhSinh,
+    pub(super) pre: kernel::VolterraNodes,
+}
+
+impl VolterraSolution {
+    /// The solution at a smaller lambda' <= lambda without re-solving: f(t) does not depend on
+    /// lambda, so F'(tau) = F(tau lambda'^2/lambda^2) and J'(tau) = J(tau lambda'^2/lambda^2)
+    /// (I depends on chi only); both re-interpolated at the same number of Chebyshev nodes.
+    pub fn restrict(&self, lambda_new: &Float) -> VolterraSolution {
+        let prec = self.prec;
+        let n = self.f_coeffs.len();
+        let ratio = if self.lambda.is_zero() {
+            Float::with_val(prec, 0)
+        } else {
+            Float::with_val(prec, lambda_new / &self.lambda).square()
+        };
+        let tau = chebyshev::nodes(n, prec);
+        let resample = |c: &[Float]| {
+            let vals: Vec<Float> = tau
+                .iter()
+                .map(|t| {
+                    let x = Float::with_val(prec, t * &ratio) * 2u32 - 1u32;
+                    chebyshev::evaluate(c, &x, prec)
+                })
+                .collect();
+            chebyshev::coefficients(&vals, prec)
+        };
+        VolterraSolution {
+            prec,
+            lambda: Float::with_val(prec, lambda_new),
+            eps: self.eps.clone(),
+            cosh_pi_eps: self.cosh_pi_eps.clone(),
+            f_coeffs: resample(&self.f_coeffs),
+            j_coeffs: resample(&self.j_coeffs),
+            residual: self.residual,
+            pivot_ratio: self.pivot_ratio,
+            rule: self.rule.clone(),
+            pre: self.pre.clone(),
+        }
+    }
+
+    /// A copy rounded to `bits` (>= 53) with a quadrature rule for that accuracy: for cheap
+    /// evaluations that need only a few digits (locating tension zones).
+    pub fn reduced(&self, bits: u32) -> VolterraSolution {
+        let prec = bits.max(53);
+        let rule = TanhSinh::new(prec - 8, 1.0, prec);
+        let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
+        let r = |v: &[Float]| v.iter().map(|x| Float::with_val(prec, x)).collect::<Vec<_>>();
+        VolterraSolution {
+            prec,
+            lambda: Float::with_val(prec, &self.lambda),
+            eps: Float::with_val(prec, &self.eps),
+            cosh_pi_eps: Float::with_val(prec, &self.cosh_pi_eps),
+            f_coeffs: r(&self.f_coeffs),
+            j_coeffs: r(&self.j_coeffs),
+            residual: self.residual,
+            pivot_ratio: self.pivot_ratio,
+            rule,
+            pre,
+        }
+    }
+
+    /// I(sigma) = int_0^1 s w(s) G(lambda sigma, s) F(sigma^2 s^2) ds as (re, im); Re I = pi.
+    pub fn integral_i(&self, sigma: &Float) -> (Float, Float) {
+        let prec = self.prec;
+        let chi = Float::with_val(prec, &self.lambda * sigma);
+        let sc_chi = chi.clone().sin_cos(Float::new(prec));
+        let sig2 = Float::with_val(prec, sigma * sigma);
+        let (mut sr, mut si) = (Float::with_val(prec, 0), Float::with_val(prec, 0));
+        for q in 0..self.rule.len() {
+            let (re, im) = self.pre.integrand(q, &self.rule.s[q], &self.rule.c[q], &chi, &sc_chi, &self.eps, prec);
+            let x = Float::with_val(prec, &sig2 * &self.pre.s2[q]) * 2u32 - 1u32;
+            let fw = chebyshev::evaluate(&self.f_coeffs, &x, prec) * &self.rule.w[q];
+            sr += Float::with_val(prec, &re * &fw);
+            si += Float::with_val(prec, &im * &fw);
+        }
+        (sr, si)
+    }
+
+    /// P2/(E* k a^2) = (1/2) int_0^1 F.
+    pub fn load_ratio(&self) -> Float {
+        let one = Float::with_val(self.prec, 1u32);
+        chebyshev::integral(&self.f_coeffs, &one, self.prec) / 2u32
+    }
+
+    /// F(tau) = f(lambda^2 tau), i.e. P'(eta) = eta F(eta^2/lambda^2).
+    pub fn f_at(&self, tau: &Float) -> Float {
+        let x = Float::with_val(self.prec, tau * 2u32) - 1u32;
+        chebyshev::evaluate(&self.f_coeffs, &x, self.prec)
+    }
+
+    /// psi/(k a) at sigma = x/a in [0, 1]: -(2 sigma/pi) Im I(sigma).
+    pub fn psi_ratio(&self, sigma: &Float) -> Float {
+        let (_, im) = self.integral_i(sigma);
+        let pi = Float::with_val(self.prec, Constant::Pi);
+        -(im * sigma * 2u32) / pi
+    }
+
+    /// phi/(k a^2) at sigma: -(1/pi) int_0^{sigma^2} J.
+    pub fn phi_ratio(&self, sigma: &Float) -> Float {
+        let t = Float::with_val(self.prec, sigma * sigma);
+        let pi = Float::with_val(self.prec, Constant::Pi);
+        -chebyshev::integral(&self.j_coeffs, &t, self.prec) / pi
+    }
+
+    /// (q2, q1)/(E* k a) at the exact point sigma = x/a in [0, 1] (1 - sigma^2 rounded once).
+    pub fn stress_ratio(&self, sigma_exact: &Exact) -> (Float, Float) {
+        let prec = self.prec;
+        let one = Exact::from_integer(1.into());
+        let omss_exact = &one - sigma_exact * sigma_exact;
+        if omss_exact <= Exact::from_integer(0.into()) {
+            return (Float::with_val(prec, 0), Float::with_val(prec, 0));
+        }
+        self.stress_ratio_float(&to_float(sigma_exact, prec), &to_float(&omss_exact, prec))
+    }
+
+    /// (q2, q1)/(E* k a) at distance delta = 1 - x/a from the edge, 0 < delta <= 1.
+    pub fn stress_ratio_near_edge(&self, delta: &Float) -> (Float, Float) {
+        let prec = self.prec;
+        let sigma = Float::with_val(prec, 1u32) - delta;
+        let omss = Float::with_val(prec, 2u32) - delta;
+        let omss = omss * delta;
+        self.stress_ratio_float(&sigma, &omss)
+    }
+
+    fn stress_ratio_float(&self, sigma: &Float, omss: &Float) -> (Float, Float) {
+        let prec = self.prec;
+        let (mut sr, mut si) = (Float::with_val(prec, 0), Float::with_val(prec, 0));
+        let pi = Float::with_val(prec, Constant::Pi);
+        if !sigma.is_zero() && *sigma < 0.5f64 {
+            // v-form: r = sigma cosh v, v in (0, V), V = acosh(1/sigma).
+            let big_v = Float::with_val(prec, sigma.recip_ref()).acosh();
+            for q in 0..self.rule.len() {
+                let v = Float::with_val(prec, &big_v * &self.rule.s[q]);
+                let (re, im, r2) = kernel::stress_integrand_v(sigma, &v, &self.lambda, &self.eps, prec);
+                let fw = self.f_at(&r2) * &self.rule.w[q];
+                sr += Float::with_val(prec, &re * &fw);
+                si += Float::with_val(prec, &im * &fw);
+            }
+            let scale = Float::with_val(prec, &big_v * &self.cosh_pi_eps) / pi;
+            return (sr * &scale, si * &scale);
+        }
+        for q in 0..self.rule.len() {
+            let (re, im, r2) = kernel::stress_integrand(sigma, omss, &self.rule.s[q], &self.lambda, &self.eps, prec);
+            let fw = self.f_at(&r2) * &self.rule.w[q];
+            sr += Float::with_val(prec, &re * &fw);
+            si += Float::with_val(prec, &im * &fw);
+        }
+        let scale = Float::with_val(prec, omss.sqrt_ref()) * &self.cosh_pi_eps / pi;
+        (sr * &scale, si * &scale)
+    }
+
+    /// Edge stress factor C: (q2 + i q1)/(E* k a) = C delta^{1/2 - i eps} (1 + O(delta)),
+    /// delta = 1 - x/a -> 0, with
+    /// C = (cosh(pi eps)/pi) 2^{1/2 + i eps}/(1 - 2 i eps) cos(lambda (1 - 2 i eps))
+    ///     sinc(2 lambda)^{i eps - 1/2} F(1)
+    /// (leading term of the stress integral at the edge, derived from [`super::kernel`]).
+    pub fn edge_stress_factor(&self) -> Complex {
+        let prec = self.prec;
+        let one = Float::with_val(prec, 1u32);
+        let f1 = self.f_at(&one);
+        let pi = Float::with_val(prec, Constant::Pi);
+        let i_eps = Complex::with_val(prec, (0, &self.eps));
+        let two = Complex::with_val(prec, 2u32);
+        let p = two.pow(Complex::with_val(prec, (0.5f64, &self.eps)));
+        let den = Complex::with_val(prec, 1u32) - Complex::with_val(prec, &i_eps * 2u32);
+        let arg = Complex::with_val(prec, (&self.lambda, Float::with_val(prec, &self.lambda * &self.eps) * -2i32));
+        let cosv = arg.cos();
+        let sn = kernel::sinc(&Float::with_val(prec, &self.lambda * 2u32), prec);
+        let snp = Complex::with_val(prec, sn).pow(Complex::with_val(prec, (-0.5f64, &self.eps)));
+        p / den * cosv * snp * f1 * &self.cosh_pi_eps / pi
+    }
+}
+
+/// lambda = pi a / L from exact a, L.
+pub fn lambda_of(a: &Exact, l: &Exact, prec: u32) -> Float {
+    let r = to_float(&(a / l), prec + 8);
+    Float::with_val(prec, r * Float::with_val(prec + 8, Constant::Pi))
+}
