@@ -29,10 +29,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             std::io::stdout().write_all(text.as_bytes())?;
         }
         RunConfig::Solve { scene, request, format } => {
-            let v = periodic_contact::solve::solve_scene(&scene, request).map_err(|e| match e {
-                periodic_contact::solve::SolveError::Invalid(i) => anyhow::Error::new(i),
-                periodic_contact::solve::SolveError::Failed(m) => anyhow::anyhow!("no solution: {m}"),
-            })?;
+            let v = periodic_contact::solve::solve_scene(&scene, request)?;
             let text = match format {
                 Format::Json => format!("{}\n", serde_json::to_string_pretty(&v)?),
                 _ => periodic_contact::solve::format::text(&v),

@@ -188,10 +188,10 @@ fn adversarial_adhesion_grid_has_honest_digits_or_clear_errors() {
         )
         .unwrap();
         let pts = [q(0, 1), q(1, 2), q(99, 100)];
-        match periodic_contact::adhesion::verified::solve_verified(&p, &pts, 12) {
+        match periodic_contact::adhesion::solve_verified(&p, &pts, 12) {
             Ok(v) => {
                 answered += 1;
-                let Ok(fine) = periodic_contact::adhesion::verified::solve_verified(&p, &pts, 24) else {
+                let Ok(fine) = periodic_contact::adhesion::solve_verified(&p, &pts, 24) else {
                     continue; // the finer request may be refused as ill-conditioned: then no claim to check
                 };
                 let (s, f) = (&v.solution, &fine.solution);

@@ -41,22 +41,6 @@ pub use series_f64::verify::solve_f64;
 pub use volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues};
 pub use volterra_mpfr::verify::{solve_verified, VerifiedSolution};
 
-/// The former path of [`solve_verified`] (`adhesion::verified::solve_verified`), kept for the
-/// callers in `solve/` and `report/`.
-pub mod verified {
-    pub use super::volterra_mpfr::verify::*;
-}
-
-/// The former path of both dimensional solutions (`adhesion::solution::{solve_mpfr, solve_f64,
-/// ...}`), kept for the callers in `solve/` and `report/`.
-pub mod solution {
-    pub use super::points::check_points;
-    pub use super::series_f64::solution::{AdhesionSolutionF64, PointValuesF64};
-    pub use super::series_f64::verify::solve_f64;
-    pub use super::tension::{TensionReport, TensionZone};
-    pub use super::volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues};
-}
-
 #[cfg(test)]
 mod against_series;
 #[cfg(test)]

@@ -298,7 +298,7 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
             match p.size() {
                 AdhesionSize::HalfWidth(a) => pi * to_f64(a).unwrap_or(f64::NAN) / big_l,
                 AdhesionSize::NormalLoad(p2) => {
-                    let cp = crate::params::adhesion::single_punch_load_constant(p.material(), 64).to_f64();
+                    let cp = crate::params::adhesion::AdhesionParamsF64::new(p.material()).load_constant;
                     let ek = to_f64(p.material().contact_modulus()).unwrap_or(f64::NAN)
                         * to_f64(p.curvature()).unwrap_or(f64::NAN);
                     pi * (to_f64(p2).unwrap_or(f64::NAN) / (cp * ek)).sqrt() / big_l

@@ -23,7 +23,7 @@ pub fn adhesion_series_note() -> &'static str {
     "the exact series of Problem 2 ([3.18], `src/asymptotics/adhesion.rs`) are compared with the full \
      solution in section 3 (speed against accuracy); their term-by-term orders (remainders after m = 0..4 \
      corrections scale like lambda^(2m+2) at nu = 0, 0.3, 0.45) are checked by the test \
-     `asymptotics::adhesion::tests::remainders_against_full_solution`; the load-size curves here show the \
+     `adhesion::against_series::remainders_against_full_solution`; the load-size curves here show the \
      full solutions."
 }
 
@@ -79,7 +79,7 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
         SceneProblem::Adhesion(p) => {
             let e = f(p.material().contact_modulus());
             let k = f(p.curvature());
-            let cp = crate::params::adhesion::single_punch_load_constant(p.material(), 64).to_f64();
+            let cp = crate::params::adhesion::AdhesionParamsF64::new(p.material()).load_constant;
             out.push((
                 "single punch P2 = C_P E* k a^2 [3.18]".into(),
                 Box::new(move |p2: f64| (p2 / (cp * e * k)).sqrt()),
