@@ -139,6 +139,12 @@ fn f(x: f64) -> Float {
 /// Runs `knob` on `problem`. Errors are the method's own (no solution, no convergence, not
 /// Working precision of the series evaluations of the report: 128 bits (38 digits), beyond the
 /// accuracy of every truncated series the report shows (at most ~30 digits at its smallest
+/// A method's failure as the report states it: through the project's error type, so that its kind
+/// prefix ("no solution:", "not physical:", ...) is said once and its numbers are readable.
+fn why(e: impl Into<crate::error::Error>) -> String {
+    e.into().to_string()
+}
+
 /// contacts), so that rounding never shows in their measured errors.
 pub const SERIES_BITS: u32 = 128;
 
@@ -190,7 +196,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
                 ..Default::default()
             };
             let start = Instant::now();
-            let s = collocation_f64::solve_sliding_f64(p, &[], &opts).map_err(|e| e.to_string())?;
+            let s = collocation_f64::solve_sliding_f64(p, &[], &opts).map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             let s = s.primary();
             Ok(Outcome {
@@ -211,7 +217,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
                 Checks::Physical,
                 sliding::precision_for(d),
             )
-            .map_err(|e| e.to_string())?;
+            .map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             let s = sols.first().ok_or("no physical solution")?;
             Ok(Outcome {
@@ -225,7 +231,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
         }
         Knob::MpfrVerified(d) => {
             let start = Instant::now();
-            let sols = sliding::solve_verified(p, &[], d).map_err(|e| e.to_string())?;
+            let sols = sliding::solve_verified(p, &[], d).map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             let v = sols.first().ok_or("no physical solution")?;
             let s = &v.solution;
@@ -326,7 +332,7 @@ fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
         Knob::F64(Some(_)) => Err("the f64 method of Problem 2 has no node knob".into()),
         Knob::F64(None) => {
             let start = Instant::now();
-            let s = adhesion::solve_f64(p, &[]).map_err(|e| e.to_string())?;
+            let s = adhesion::solve_f64(p, &[]).map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             Ok(Outcome {
                 size: f(s.half_width),
@@ -340,7 +346,7 @@ fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
         Knob::Mpfr(d) => {
             let start = Instant::now();
             let s = adhesion::solve_mpfr_with(p, &[], VolterraParams::for_digits(d), false)
-                .map_err(|e| e.to_string())?;
+                .map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             Ok(Outcome {
                 size: Float::with_val(COMPARE_BITS, &s.half_width),
@@ -353,7 +359,7 @@ fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
         }
         Knob::MpfrVerified(d) => {
             let start = Instant::now();
-            let v = adhesion::solve_verified(p, &[], d.clamp(5, 300)).map_err(|e| e.to_string())?;
+            let v = adhesion::solve_verified(p, &[], d.clamp(5, 300)).map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             let s = &v.solution;
             Ok(Outcome {
