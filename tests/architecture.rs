@@ -196,3 +196,38 @@ fn the_reference_parser_reads_groups() {
     let r = references("use crate::{model::{A, B}, numerics::x};\nlet y = crate::params::sliding::f();", "crate::");
     assert_eq!(r.into_iter().collect::<Vec<_>>(), ["model", "numerics", "params"]);
 }
+
+/// theta, l_s, a0, the osculating k and beta are each computed in one function per number type
+/// (`src/params/`): their formulas appear nowhere else in non-test code.
+#[test]
+fn derived_parameters_have_one_definition() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&root, &mut files);
+    let patterns = [
+        ("theta = atan(kappa)/pi", ".atan() / PI"),
+        ("theta = atan(kappa)/pi", "atan_ref()) /"),
+        ("theta = atan(kappa)/pi", "kappa.atan() / pi"),
+        ("l_s = a0/sqrt(1 - 4 theta^2)", "4.0 * theta * theta"),
+        ("l_s = a0/sqrt(1 - 4 theta^2)", "4.0 * th * th"),
+        ("a0 = sqrt(2 P2/(pi E* k))", "2.0 * p2 / (PI"),
+        ("k = 2 pi^2 D/L^2", "PI * PI * d"),
+        ("beta = (1 - 2 nu)/(2 (1 - nu))", "0.4 / 1.4"),
+    ];
+    let mut found = Vec::new();
+    for f in files {
+        let rel = f.strip_prefix(&root).unwrap().to_string_lossy().into_owned();
+        let name = f.file_name().unwrap().to_string_lossy().into_owned();
+        if rel.starts_with("params") || name == "tests.rs" || name == "against_series.rs" {
+            continue;
+        }
+        let text = std::fs::read_to_string(&f).unwrap();
+        let production = code(text.split("#[cfg(test)]").next().unwrap_or(""));
+        for (what, p) in patterns {
+            if production.contains(p) {
+                found.push(format!("{rel}: `{p}` ({what}: use crate::params)"));
+            }
+        }
+    }
+    assert!(found.is_empty(), "derived parameters computed outside params:\n{}", found.join("\n"));
+}

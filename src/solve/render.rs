@@ -168,6 +168,21 @@ fn digits_text(d: f64) -> String {
     format!("{d:.1}")
 }
 
+/// `digits_verified` (or `digits_verified: null` and `digits_estimated`): the minimum of the
+/// accuracy table.
+fn headline(m: &mut Map<String, Value>, kind: DigitsKind, accuracy: &[(String, f64)]) {
+    let head = digits_text(accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min));
+    match kind {
+        DigitsKind::Verified => {
+            m.insert("digits_verified".into(), json!(head));
+        }
+        DigitsKind::Estimated => {
+            m.insert("digits_verified".into(), Value::Null);
+            m.insert("digits_estimated".into(), json!(head));
+        }
+    }
+}
+
 fn opt(m: &Option<Measured>, requested: u32) -> Value {
     m.as_ref().map_or(Value::Null, |x| Value::String(x.print(requested)))
 }
@@ -193,16 +208,7 @@ pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
         m.insert(k.clone(), v.clone());
     }
     m.insert("digits_requested".into(), json!(requested.to_string()));
-    let head = digits_text(ans.headline());
-    match ans.kind {
-        DigitsKind::Verified => {
-            m.insert("digits_verified".into(), json!(head));
-        }
-        DigitsKind::Estimated => {
-            m.insert("digits_verified".into(), Value::Null);
-            m.insert("digits_estimated".into(), json!(head));
-        }
-    }
+    headline(&mut m, ans.kind, &ans.accuracy);
     let mut acc = Map::new();
     if let Some(n) = &ans.note {
         acc.insert("note".into(), json!(n));
@@ -272,16 +278,7 @@ pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value>
     m.insert("P2".into(), json!(ans.p2.print(requested)));
     m.insert("half_width".into(), json!(ans.half_width.print(requested)));
     m.insert("digits_requested".into(), json!(requested.to_string()));
-    let head = digits_text(ans.accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min));
-    match ans.kind {
-        DigitsKind::Verified => {
-            m.insert("digits_verified".into(), json!(head));
-        }
-        DigitsKind::Estimated => {
-            m.insert("digits_verified".into(), Value::Null);
-            m.insert("digits_estimated".into(), json!(head));
-        }
-    }
+    headline(&mut m, ans.kind, &ans.accuracy);
     let acc: Map<String, Value> = ans.accuracy.iter().map(|(k, d)| (k.clone(), json!(digits_text(*d)))).collect();
     m.insert("accuracy".into(), Value::Object(acc));
     for (name, rows) in &ans.fields {

@@ -430,14 +430,12 @@ pub(super) fn solve_located(
         let n0 = nodes_for(lam, nodes.digits);
         let n = (n0 as f64 * nodes.factor).ceil();
         if n0 == usize::MAX || n > NODE_CAP as f64 {
-            return Err(SlidingError::parameter(
-                "lambda = pi l/L",
+            return Err(SlidingError::NoConvergence(format!(
+                "lambda = pi l/L = {} is too close to pi/2 (full contact) for {} digits: the quadrature would need \
+                 more than {NODE_CAP} nodes; ask fewer digits or a smaller contact",
                 readable_f64(lam),
-                format!(
-                    "too close to pi/2 (full contact): {} digits would need more than {NODE_CAP} nodes",
-                    nodes.digits
-                ),
-            ));
+                nodes.digits
+            )));
         }
         Ok((n as usize).div_ceil(4) * 4)
     };
