@@ -18,7 +18,7 @@
 
 use periodic_contact::adhesion::series_f64::{self, SeriesParams, UniversalSeries};
 use periodic_contact::adhesion::volterra_mpfr::{self, VolterraParams};
-use periodic_contact::adhesion::{solve_mpfr_with, solve_verified};
+use periodic_contact::adhesion::{solve_mpfr_with, solve_verified, TensionZones};
 use periodic_contact::asymptotics::adhesion::{adhesion_expansion_with, adhesion_values};
 use periodic_contact::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape};
 use periodic_contact::params::adhesion::{AdhesionParamsF64, AdhesionParamsMpfr};
@@ -140,10 +140,10 @@ fn timing() {
     }
     let pr = problem(q(0, 1), Some(q(1, 1)), AdhesionSize::HalfWidth(q(3, 20)));
     let points = vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100), q(999, 1000)];
-    for tz in [false, true] {
+    for tz in [TensionZones::Skip, TensionZones::Locate] {
         let t = Instant::now();
         let _ = solve_mpfr_with(&pr, &points, p, tz).unwrap();
-        println!("solve_mpfr_with tension {tz}: {:.3}s", t.elapsed().as_secs_f64());
+        println!("solve_mpfr_with tension {tz:?}: {:.3}s", t.elapsed().as_secs_f64());
     }
     let t = Instant::now();
     let v = solve_verified(&pr, &points, 20).unwrap();

@@ -38,7 +38,7 @@ pub use error::AdhesionError;
 pub use scales::{Digits, ScalesF64, ScalesMpfr};
 pub use series_f64::solution::{AdhesionSolutionF64, PointValuesF64};
 pub use series_f64::verify::solve_f64;
-pub use volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues};
+pub use volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues, TensionZones};
 pub use volterra_mpfr::verify::{solve_verified, VerifiedSolution};
 
 #[cfg(test)]

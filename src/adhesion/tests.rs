@@ -436,7 +436,7 @@ fn f64_estimate_never_overclaims() {
     for (nu, l, a) in cases {
         let pr = problem(nu.clone(), l, AdhesionSize::HalfWidth(a.clone()));
         let f = solve_f64(&pr, &pts()).unwrap();
-        let m = super::solve_mpfr_with(&pr, &pts(), VolterraParams::for_digits(20), false).unwrap();
+        let m = super::solve_mpfr_with(&pr, &pts(), VolterraParams::for_digits(20), super::TensionZones::Skip).unwrap();
         let s = super::ScalesF64::new(&pr, f.half_width, f.normal_load);
         let d = |x: f64, y: &Float, scale: f64| verified_digits(x - y.to_f64(), scale, cap);
         let truth = super::Digits::from_points(

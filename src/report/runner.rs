@@ -345,7 +345,7 @@ fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
         }
         Knob::Mpfr(d) => {
             let start = Instant::now();
-            let s = adhesion::solve_mpfr_with(p, &[], VolterraParams::for_digits(d), false)
+            let s = adhesion::solve_mpfr_with(p, &[], VolterraParams::for_digits(d), adhesion::TensionZones::Skip)
                 .map_err(why)?;
             let seconds = start.elapsed().as_secs_f64();
             Ok(Outcome {

@@ -58,16 +58,25 @@ pub fn solve_mpfr(
     points: &[Exact],
     params: VolterraParams,
 ) -> Result<AdhesionSolution, AdhesionError> {
-    solve_mpfr_with(problem, points, params, true)
+    solve_mpfr_with(problem, points, params, TensionZones::Locate)
 }
 
-/// Method 1; `with_tension = false` skips the (bisection-refined) tension zones, leaving only
+/// Whether a solve locates the tension zones (q2 < 0 near the ends) by bisection.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TensionZones {
+    /// Locate and refine them.
+    Locate,
+    /// Skip them (only the q2 at the requested points).
+    Skip,
+}
+
+/// Method 1; `TensionZones::Skip` skips the (bisection-refined) tension zones, leaving only
 /// the edge factor and the points with q2 < 0 (the verification run needs no zones).
 pub fn solve_mpfr_with(
     problem: &AdhesionProblem,
     points: &[Exact],
     params: VolterraParams,
-    with_tension: bool,
+    tension: TensionZones,
 ) -> Result<AdhesionSolution, AdhesionError> {
     check_points(points)?;
     let prec = params.prec;
@@ -124,7 +133,14 @@ pub fn solve_mpfr_with(
         low.stress_ratio_near_edge(&d).0.to_f64()
     };
     let tension =
-        tension_report(sol.edge_stress_factor(), sol.eps.to_f64(), at_points, with_tension, &mut q2_near_edge, prec);
+        tension_report(
+        sol.edge_stress_factor(),
+        sol.eps.to_f64(),
+        at_points,
+        tension == TensionZones::Locate,
+        &mut q2_near_edge,
+        prec,
+    );
     Ok(AdhesionSolution {
         prec,
         lambda,

@@ -6,7 +6,7 @@
 //! The headline is the minimum. The values reported are those of the finer run.
 //! Conditioning warnings say where digits are lost (THEORY.md section 7).
 
-use super::solution::{solve_mpfr_with, AdhesionSolution};
+use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
 use crate::adhesion::error::AdhesionError;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
@@ -50,8 +50,8 @@ pub fn solve_verified(
     let start = Instant::now();
     let p1 = VolterraParams::for_digits(digits_requested);
     let p2 = p1.refined();
-    let s1 = solve_mpfr_with(problem, points, p1, false)?;
-    let s2 = solve_mpfr_with(problem, points, p2, true)?;
+    let s1 = solve_mpfr_with(problem, points, p1, TensionZones::Skip)?;
+    let s2 = solve_mpfr_with(problem, points, p2, TensionZones::Locate)?;
     let elapsed_seconds = start.elapsed().as_secs_f64();
     let cap = digits_cap_for_bits(p1.prec);
     let scales = ScalesMpfr::new(problem, &s2.half_width, &s2.normal_load, p2.prec);
