@@ -93,13 +93,10 @@ pub fn error(o: &Outcome, reference: &Outcome, given_size: bool) -> f64 {
     }
 }
 
-/// Digits from a relative error: -log10(err), capped at `cap`.
+/// Digits from a relative error: the accuracy rule ([`crate::numerics::accuracy::verified_digits`])
+/// at scale 1, capped at `cap`.
 pub fn digits_of(err: f64, cap: f64) -> f64 {
-    if err <= 0.0 {
-        cap
-    } else {
-        (-err.log10()).clamp(0.0, cap)
-    }
+    crate::numerics::accuracy::verified_digits(err, 1.0, cap)
 }
 
 /// Whether the problem fixes the size (direct problem) rather than the load.
