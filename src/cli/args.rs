@@ -51,6 +51,15 @@ pub enum MethodName {
     Series,
 }
 
+/// Surface conventions of Problem 1 (THEORY.md section 8).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ConventionName {
+    /// The paper's equation [2.8] as it stands (its expansions are even in lambda).
+    Paper,
+    /// [2.8] plus K = (kappa P2 - 2 beta l tau0)/L: the surface closes over every period.
+    Periodic,
+}
+
 /// Punch shapes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ShapeName {
@@ -102,6 +111,10 @@ pub enum RawCommand {
         /// Series order for --method series (default 12).
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: Option<String>,
+        /// Surface convention of Problem 1 (overrides [problem] convention; default paper).
+        /// Problem 2 is the same in both.
+        #[arg(long, value_enum)]
+        convention: Option<ConventionName>,
         /// Output format.
         #[arg(long, value_enum)]
         format: Option<Format>,

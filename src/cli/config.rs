@@ -1,10 +1,10 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
-use super::args::{Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
-use crate::model::ModelError;
+use super::args::{ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
+use crate::model::{Convention, ModelError};
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
 use crate::asymptotics::sliding::SlidingShape;
-use crate::scene::{parse::parse_scene, Method, Scene};
+use crate::scene::{parse::parse_scene, Method, Scene, SceneProblem};
 use crate::solve::{SolveRequest, DEFAULT_DIGITS};
 use exact_series::{parse_rational, Q};
 use num_traits::Signed;
@@ -78,6 +78,19 @@ pub fn parse_exact(flag: &str, text: &str) -> Result<Q, ModelError> {
     })
 }
 
+/// `--convention` replaces the scene's `[problem] convention` (Problem 1; Problem 2 is the same
+/// problem in both conventions, so there it changes nothing).
+fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), ModelError> {
+    let c = match name {
+        ConventionName::Paper => Convention::Paper,
+        ConventionName::Periodic => Convention::PeriodicSurface,
+    };
+    if let SceneProblem::Sliding(p) = &scene.problem {
+        scene.problem = SceneProblem::Sliding(p.to_builder().convention(c).build()?);
+    }
+    Ok(())
+}
+
 impl RunConfig {
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, ModelError> {
@@ -132,10 +145,13 @@ impl RunConfig {
                 }
                 Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t, nu }, format })
             }
-            RawCommand::Solve { scene, digits, method, order, format, json } => {
+            RawCommand::Solve { scene, digits, method, order, convention, format, json } => {
                 let text = std::fs::read_to_string(&scene)
                     .map_err(|e| ModelError::new("SCENE", scene.display(), format!("cannot be read: {e}")))?;
-                let parsed = parse_scene(&text)?;
+                let mut parsed = parse_scene(&text)?;
+                if let Some(c) = convention {
+                    override_convention(&mut parsed, c)?;
+                }
                 let digits = match digits {
                     Some(d) => d
                         .trim()

@@ -5,6 +5,7 @@
 //! ```toml
 //! [problem]
 //! kind = "sliding"
+//! convention = "paper"           # or "periodic"; optional, default "paper"
 //! [material]
 //! poisson_ratio = "0.25"
 //! contact_modulus = "1"          # or youngs_modulus = "..." (not both)
@@ -22,6 +23,17 @@
 //! digits = 30
 //! points = ["-0.6", "0.1", "0.7"] # xh = (x - c)/l in (-1, 1)
 //! ```
+//!
+//! `convention` is the surface convention of Problem 1 (THEORY.md section 8;
+//! [`crate::model::Convention`]): `"paper"` solves the paper's equation [2.8] as it stands (its
+//! expansions run in even powers of lambda; the surface then does not close over a period when
+//! friction, wear or tau0 act: mismatch (2/E*) beta P1 - cW P2); `"periodic"` adds
+//! K = (kappa P2 - 2 beta l tau0)/L to the right side of [2.8], so that the surface closes over every
+//! period (the consistent model of a row of identical punches at one height). The two coincide
+//! when K = 0 (e.g. frictionless without wear and tau0). Any other value is an input error.
+//! The series method has only the paper's expansions and refuses `"periodic"` when K can be
+//! nonzero. Problem 2 is the same in both conventions: an adhesion scene accepts either value
+//! and it changes nothing. `periodic-contact solve --convention` overrides the key.
 //!
 //! Problem 2 (adhesion, parabolic punch only) replaces `[sliding]` by
 //!

@@ -2,7 +2,8 @@
 
 use super::{with_value, Method, OutputSpec, Scene, SceneProblem, Sweep, SweepParameter};
 use crate::model::{
-    AdhesionProblem, AdhesionSize, Exact, Material, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem,
+    AdhesionProblem, AdhesionSize, Convention, Exact, Material, ModelError, Period, PunchShape, SlidingLoad,
+    SlidingProblem,
 };
 use exact_series::parse_rational;
 use num_traits::{One, Signed};
@@ -19,15 +20,16 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
     let root = doc.as_table();
     allow_keys(root, "", &["problem", "material", "punch", "sliding", "adhesion", "output", "sweep"])?;
     let problem = table(root, "problem")?;
-    allow_keys(problem, "problem", &["kind"])?;
+    allow_keys(problem, "problem", &["kind", "convention"])?;
     let kind = string(problem, "problem", "kind")?;
+    let convention = parse_convention(problem)?;
     match kind.as_str() {
         "sliding" => {
             if root.contains_key("adhesion") {
                 return Err(ModelError::new("adhesion", "(table)", "not allowed in a sliding scene"));
             }
             let output = parse_output(root, PointRange::OpenUnit)?;
-            let problem = SceneProblem::Sliding(parse_sliding(root)?);
+            let problem = SceneProblem::Sliding(parse_sliding(root, convention)?);
             let sweep = parse_sweep(root, &problem)?;
             Ok(Scene { problem, output, sweep })
         }
@@ -42,6 +44,25 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
         }
         other => Err(ModelError::new("problem.kind", other, "must be \"sliding\" or \"adhesion\"")),
     }
+}
+
+/// `[problem] convention`: "paper" (the default) or "periodic" (THEORY.md section 8). Problem 2
+/// (symmetric: P1 = 0, no wear) is the same problem in both, so an adhesion scene accepts either
+/// value and it has no effect there.
+fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
+    match value(problem, "problem", "convention")? {
+        None => Ok(Convention::Paper),
+        Some(v) => {
+            let name = literal(v).unwrap_or_else(|| v.to_string().trim().to_string());
+            parse_convention_name(&name)
+                .ok_or_else(|| ModelError::new("problem.convention", name.trim(), "must be \"paper\" or \"periodic\""))
+        }
+    }
+}
+
+/// A convention by its name: "paper" or "periodic" ([`Convention::name`]).
+pub fn parse_convention_name(name: &str) -> Option<Convention> {
+    [Convention::Paper, Convention::PeriodicSurface].into_iter().find(|c| c.name() == name)
 }
 
 fn path(prefix: &str, key: &str) -> String {
@@ -169,7 +190,7 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
     Ok((shape, period))
 }
 
-fn parse_sliding(root: &Table) -> Result<SlidingProblem, ModelError> {
+fn parse_sliding(root: &Table, convention: Convention) -> Result<SlidingProblem, ModelError> {
     let material = parse_material(root)?;
     let (shape, period) = parse_punch(root)?;
     let s = table(root, "sliding")?;
@@ -192,6 +213,7 @@ fn parse_sliding(root: &Table) -> Result<SlidingProblem, ModelError> {
         .wear(exact_opt(s, "sliding", "wear")?.unwrap_or_else(zero))
         .speed(exact_opt(s, "sliding", "speed")?)
         .load(load)
+        .convention(convention)
         .build()
         .map_err(|e| prefixed(e, "sliding"))
 }

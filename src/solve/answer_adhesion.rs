@@ -28,7 +28,13 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
         (name.to_string(), rows)
     };
     AdhesionAnswer {
-        provenance: Provenance { method: "mpfr", bits: Some(s.prec), nodes: Some(s.nodes), order: None },
+        provenance: Provenance {
+            method: "mpfr",
+            bits: Some(s.prec),
+            nodes: Some(s.nodes),
+            order: None,
+            convention: None,
+        },
         kind: DigitsKind::Verified,
         lambda: matches!(p.period(), Period::Finite(_)).then(|| own(&s.lambda)),
         p2: own(&s.normal_load),
@@ -70,7 +76,7 @@ pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]
         (name.to_string(), rows)
     };
     AdhesionAnswer {
-        provenance: Provenance { method: "f64", bits: Some(53), nodes: Some(s.terms), order: None },
+        provenance: Provenance { method: "f64", bits: Some(53), nodes: Some(s.terms), order: None, convention: None },
         kind: DigitsKind::Estimated,
         lambda: matches!(p.period(), Period::Finite(_)).then(|| own(s.lambda)),
         p2: own(s.normal_load),

@@ -3,12 +3,13 @@
 //! [`crate::params::sliding::SlidingScale`].
 
 use super::render::{DigitsKind, Measured, Num, PressureRow, Provenance, SlidingAnswer};
+use crate::model::Convention;
 use crate::numerics::accuracy::F64_DIGITS_CAP;
 use crate::sliding::collocation_f64::{Quantity, SlidingSolutionF64};
 
 /// The answer of one f64 solution (`periodic`: whether the problem has a period, else lambda is
-/// not reported).
-pub fn sliding_answer(s: &SlidingSolutionF64, periodic: bool) -> SlidingAnswer {
+/// not reported; `convention`: the surface convention, for the provenance).
+pub fn sliding_answer(s: &SlidingSolutionF64, periodic: bool, convention: Convention) -> SlidingAnswer {
     let d = s.digits();
     let sc = &s.accuracy.scales;
     let m = |v: f64, q: Quantity| Measured::f64(v, q.scale(sc), d[q]);
@@ -16,7 +17,13 @@ pub fn sliding_answer(s: &SlidingSolutionF64, periodic: bool) -> SlidingAnswer {
     let lambda = periodic.then(|| Measured::f64(s.lambda, s.lambda, d[Quantity::Size]));
     let load = |v: Option<f64>| v.map(|w| Measured::f64(w, w, d[Quantity::P2]));
     SlidingAnswer {
-        provenance: Provenance { method: "f64", bits: Some(53), nodes: Some(s.nodes), order: None },
+        provenance: Provenance {
+            method: "f64",
+            bits: Some(53),
+            nodes: Some(s.nodes),
+            order: None,
+            convention: Some(convention.name()),
+        },
         kind: DigitsKind::Verified,
         parameter_digits: F64_DIGITS_CAP as usize + 1,
         theta: Num::F64(s.theta),

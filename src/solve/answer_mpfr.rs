@@ -3,11 +3,13 @@
 //! [`crate::params::sliding::SlidingScale`].
 
 use super::render::{DigitsKind, Measured, Num, PressureRow, Provenance, SlidingAnswer};
+use crate::model::Convention;
 use crate::params::sliding::SlidingScale;
 use crate::sliding::VerifiedSolution;
 
-/// The answer of one verified MPFR solution.
-pub fn sliding_answer(v: &VerifiedSolution) -> SlidingAnswer {
+/// The answer of one verified MPFR solution (`convention`: the surface convention, for the
+/// provenance).
+pub fn sliding_answer(v: &VerifiedSolution, convention: Convention) -> SlidingAnswer {
     let s = &v.solution;
     let d = |name: &str| v.accuracy.digits.iter().find(|(n, _)| n == name).map_or(v.accuracy.digits_verified, |x| x.1);
     let scale = |q: SlidingScale| q.mpfr(&s.k, &s.l, &s.p2, &s.max_pressure);
@@ -18,7 +20,13 @@ pub fn sliding_answer(v: &VerifiedSolution) -> SlidingAnswer {
     // Wear outputs are multiples of P2: P2's relative digits.
     let own = |x: &rug::Float| Measured::mpfr(x.clone(), x, d("P2"));
     SlidingAnswer {
-        provenance: Provenance { method: "mpfr", bits: Some(s.prec), nodes: Some(s.nodes), order: None },
+        provenance: Provenance {
+            method: "mpfr",
+            bits: Some(s.prec),
+            nodes: Some(s.nodes),
+            order: None,
+            convention: Some(convention.name()),
+        },
         kind: DigitsKind::Verified,
         parameter_digits: usize::MAX,
         theta: Num::Mpfr(s.theta.clone()),

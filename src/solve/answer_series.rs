@@ -4,12 +4,14 @@
 //! (or exact multiples of P2) rounded once, shown to the digits requested.
 
 use super::render::{DigitsKind, Measured, Num, PressureRow, Provenance, SlidingAnswer};
+use crate::model::Convention;
 use crate::params::sliding::SlidingScale;
 use crate::sliding::series::{estimate, SeriesSolution};
 use serde_json::json;
 
-/// The answer of one series evaluation at `requested` digits.
-pub fn sliding_answer(s: &SeriesSolution, requested: u32) -> SlidingAnswer {
+/// The answer of one series evaluation at `requested` digits (in the surface convention
+/// `convention`, for the provenance).
+pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention) -> SlidingAnswer {
     let acc = &s.accuracy;
     let (g, fd) = (acc.contact, acc.f_def);
     let exact = requested as f64;
@@ -25,7 +27,13 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32) -> SlidingAnswer {
     }
     let pd = acc.pressure.unwrap_or(0.0);
     SlidingAnswer {
-        provenance: Provenance { method: "series", bits: Some(s.prec), nodes: None, order: Some(s.order) },
+        provenance: Provenance {
+            method: "series",
+            bits: Some(s.prec),
+            nodes: None,
+            order: Some(s.order),
+            convention: Some(convention.name()),
+        },
         kind: DigitsKind::Estimated,
         parameter_digits: usize::MAX,
         theta: Num::Mpfr(s.theta.clone()),

@@ -92,7 +92,7 @@ fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<
     if sols.is_empty() {
         return Err(Error::NotPhysical { why: "no physical contact was found".into() });
     }
-    Ok(sliding_top(sols.iter().map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v), req.digits)).collect()))
+    Ok(sliding_top(sols.iter().map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v, p.convention()), req.digits)).collect()))
 }
 
 fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
@@ -105,7 +105,7 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<V
         .solutions
         .iter()
         .map(|s| {
-            let mut m = render::sliding_json(&answer_f64::sliding_answer(s, periodic), shown);
+            let mut m = render::sliding_json(&answer_f64::sliding_answer(s, periodic, p.convention()), shown);
             // digits_requested states what the user asked, not the f64 cap.
             m.insert("digits_requested".into(), json!(req.digits.to_string()));
             m
@@ -116,7 +116,7 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<V
 
 fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let s = sliding::series::solve_series(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits), req.digits)]))
+    Ok(sliding_top(vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits, p.convention()), req.digits)]))
 }
 
 fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {

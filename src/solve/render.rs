@@ -84,6 +84,9 @@ pub struct Provenance {
     pub nodes: Option<usize>,
     /// Order of the truncated series (series method).
     pub order: Option<usize>,
+    /// Surface convention of Problem 1 (`paper` or `periodic`, THEORY.md section 8); `None` for
+    /// Problem 2, which is the same in both.
+    pub convention: Option<&'static str>,
 }
 
 impl Provenance {
@@ -96,6 +99,9 @@ impl Provenance {
         });
         if let Some(o) = self.order {
             v["order"] = json!(o.to_string());
+        }
+        if let Some(c) = self.convention {
+            v["convention"] = json!(c);
         }
         v
     }

@@ -2,6 +2,7 @@
 //! size and, for the sinusoid, the branch of (X, Y)) with its number of nodes, and the discrete
 //! state of a candidate at any number of nodes.
 
+use super::closure::tau0_side;
 use super::error::{Result, SlidingF64Error};
 use super::interpolant::State;
 use super::operator::{collocation, collocation_nodes};
@@ -68,8 +69,8 @@ pub(super) fn state_of(
             match target {
                 TargetF64::HalfLength(l) => {
                     let map = Map::periodic(big_l, PI * l / big_l);
-                    let (bx, by) = sinusoid_bases(&col, &map)?;
-                    let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
+                    let (bx, by) = sinusoid_bases(&col, prm, &map)?;
+                    let pts = line_circle(bx.cond, by.cond, tau0_side(prm, &map) / s);
                     let (x, y) = pts.get(branch as usize).copied().ok_or_else(|| SlidingF64Error::NoConvergence {
                         reason: "the solution branch disappeared in the check run".into(),
                     })?;
@@ -78,8 +79,8 @@ pub(super) fn state_of(
                 TargetF64::NormalLoad(p2) => {
                     let lam = if resolve { refine_sinusoid_lambda(&col, prm, big_l, s, p2, lambda)? } else { lambda };
                     let map = Map::periodic(big_l, lam);
-                    let (bx, by) = sinusoid_bases(&col, &map)?;
-                    let (x, y) = sinusoid_xy_at(&bx, &by, prm, s, p2)?;
+                    let (bx, by) = sinusoid_bases(&col, prm, &map)?;
+                    let (x, y) = sinusoid_xy_at(&bx, &by, prm, &map, s, p2)?;
                     let r = x.hypot(y);
                     Ok(sinusoid_state(map, big_l, s, &bx, &by, x / r, y / r))
                 }
@@ -132,8 +133,8 @@ pub(super) fn candidates(
                     let n = pick(lam);
                     let col = collocation(prm.theta, n)?;
                     let map = Map::periodic(big_l, lam);
-                    let (bx, by) = sinusoid_bases(&col, &map)?;
-                    let pts = line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s);
+                    let (bx, by) = sinusoid_bases(&col, prm, &map)?;
+                    let pts = line_circle(bx.cond, by.cond, tau0_side(prm, &map) / s);
                     Ok(pts
                         .iter()
                         .enumerate()

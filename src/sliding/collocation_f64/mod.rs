@@ -8,7 +8,9 @@
 //! kappa p + H[p] = (E*/2) g' + beta tau0,   kappa = E* cW/2 - beta mu,  theta = atan(kappa)/pi,
 //! ```
 //!
-//! p bounded at both ends. The tangent map t = tan(pi (x - c)/L) = m u, m = tan(lambda), turns H
+//! p bounded at both ends. In the `periodic` convention (THEORY.md section 8; the problem's
+//! [`crate::model::SlidingProblem::convention`]) beta tau0 is replaced by beta tau0 + K,
+//! K = (kappa P2 - 2 beta l tau0)/L (`closure.rs`). The tangent map t = tan(pi (x - c)/L) = m u, m = tan(lambda), turns H
 //! into the finite Cauchy operator in u plus the constant (THEORY.md section 2)
 //! C0\[p\] = (1/pi) int_{-1}^{1} p(u') m^2 u'/(1 + m^2 u'^2) du'. For a single punch
 //! (L = infinity) u = (x - c)/l and C0 = 0 (`tangent_map.rs`).
@@ -72,10 +74,11 @@
 //!   theta = 0.148, asserted between 0.40 and 0.45 by the test
 //!   `sinusoid_with_wear_matches_exact_reduction_and_reports_maximum_load`; 0.152 pi E* D at
 //!   theta = 0.352; pi E* D, full contact, at theta = 0).
-//! - Gap: with the paper's convention v is not periodic, so the free surface does not close over a
+//! - Gap: with the paper's convention (the default) v is not periodic, so the free surface does not close over a
 //!   period: h(L - a) - h(b) = (2 beta/E*) P1 - cW P2 ([`SlidingSolutionF64::gap_closure`]); with
 //!   tau0 > 0, v' jumps by 2 beta tau0/E* at the ends and the gap is slightly negative just past
-//!   b. See `physical.rs` for how the check copes; both are reported, not hidden.
+//!   b. See `physical.rs` for how the check copes; both are reported, not hidden. In the
+//!   `periodic` convention the surface closes (`gap_closure` = 0).
 //! - lambda -> pi/2 needs n ~ ln(1e14)/(2 ln cot(lambda/2)) nodes (381 at lambda = 1.5276,
 //!   about 60 ms; `-- hard-cases`); beyond `max_nodes` the solver reports non-convergence.
 //!   theta -> +-1/2 costs digits in the rules of 1/omega (estimate 2.5e-13 at theta = 0.4936,
@@ -102,6 +105,7 @@
 //! solve, verify, physical, solution).
 
 mod candidates;
+mod closure;
 mod error;
 mod interpolant;
 mod max_load;

@@ -1,6 +1,7 @@
 //! The parabola g = k x^2 (periodic or single): the state at fixed contact size, with c explicit,
 //! and the scalar equation P2(lambda) = P2 of the periodic inverse problem.
 
+use super::closure::{closed, tau0_side};
 use super::error::{root_error, Result, SlidingF64Error};
 use super::interpolant::{basis, Rhs, State};
 use super::operator::{collocation, Collocation};
@@ -13,10 +14,11 @@ use std::f64::consts::PI;
 /// Parabola at fixed lambda (or l): RHS E* k (x(u) - c); the constant E* k c is absorbed in K,
 /// so G does not depend on c, and the solvability condition K_total = C0 - beta tau0 gives
 /// c = C0[G] - K - beta tau0/(E* k) (THEORY.md section 3: lambda does not depend on tau0, c explicit).
+/// In the `periodic` convention beta tau0 -> beta tau0 + K (`closure.rs`): c moves by -K/(E* k).
 pub(super) fn parabola_state(col: &Collocation, prm: &SlidingParamsF64, map: Map) -> Result<State> {
-    let b = basis(col, &map, |u| map.offset(u))?;
+    let b = closed(prm, &map, basis(col, &map, |u| map.offset(u))?);
     let s = prm.e_star * prm.k;
-    let c = b.cond - prm.beta * prm.tau0 / s;
+    let c = b.cond - tau0_side(prm, &map) / s;
     Ok(State { map, c, g: b.g.iter().map(|v| v * s).collect(), p2: s * b.p2, rhs: Rhs::Offset { s } })
 }
 

@@ -122,9 +122,11 @@ pub(super) fn physicality(
     };
     let mut samples = integrate(out.b, reach, 1.0);
     samples.extend(integrate(-out.a, reach, -1.0));
-    let closure = match prm.period {
-        Some(_) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.wear * out.p2,
-        None => 0.0,
+    // The mismatch of the paper's convention; the `periodic` convention closes the surface
+    // (THEORY.md section 8), so there it is 0.
+    let closure = match (prm.period, prm.convention) {
+        (Some(_), crate::model::Convention::Paper) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.wear * out.p2,
+        _ => 0.0,
     };
     let hmax = samples.iter().fold(0.0f64, |m, v| m.max(v.1.abs()));
     let worst = samples.iter().fold((0.0f64, out.b), |w, v| if v.1 < w.0 { (v.1, v.0) } else { w });

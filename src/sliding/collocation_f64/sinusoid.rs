@@ -2,6 +2,7 @@
 //! (cos, sin)(2 pi c/L) from the side conditions, the scalar equation ln|(X, Y)| = 0 in lambda and
 //! the scan for all its roots (P2(lambda) is not monotone for theta != 0).
 
+use super::closure::{closed, tau0_side};
 use super::error::{root_error, Result, SlidingF64Error};
 use super::interpolant::{basis, Basis, Rhs, State};
 use super::operator::{collocation, collocation_nodes, Collocation};
@@ -16,14 +17,15 @@ use std::f64::consts::PI;
 pub(super) const SCAN_MAX: f64 = 1.45;
 
 /// Sinusoid at fixed lambda: F = s (X sin 2phi + Y cos 2phi), s = pi E* D/L, phi = atan(m u),
-/// (X, Y) = (cos, sin)(2 pi c/L). Returns the two unit bases (sin 2phi, cos 2phi).
-pub(super) fn sinusoid_bases(col: &Collocation, map: &Map) -> Result<(Basis, Basis)> {
+/// (X, Y) = (cos, sin)(2 pi c/L). Returns the two unit bases (sin 2phi, cos 2phi), with the load
+/// part of K in their solvability functionals in the `periodic` convention (`closure.rs`).
+pub(super) fn sinusoid_bases(col: &Collocation, prm: &SlidingParamsF64, map: &Map) -> Result<(Basis, Basis)> {
     let m = match *map {
         Map::Periodic { m, .. } => m,
         Map::Single { .. } => unreachable!("sinusoid needs a period"),
     };
-    let bx = basis(col, map, |u| 2.0 * m * u / (1.0 + m * m * u * u))?;
-    let by = basis(col, map, |u| (1.0 - m * m * u * u) / (1.0 + m * m * u * u))?;
+    let bx = closed(prm, map, basis(col, map, |u| 2.0 * m * u / (1.0 + m * m * u * u))?);
+    let by = closed(prm, map, basis(col, map, |u| (1.0 - m * m * u * u) / (1.0 + m * m * u * u))?);
     Ok((bx, by))
 }
 
@@ -52,7 +54,7 @@ pub(super) fn line_circle(a1: f64, b1: f64, r: f64) -> Vec<(f64, f64)> {
 }
 
 /// (X, Y) from [[a1, b1], [a2, b2]] (X, Y) = (r1, r2): the two side conditions (solvability and
-/// load) of the sinusoid, with r1 = beta tau0/s, r2 = P2/s.
+/// load) of the sinusoid, with r1 = beta tau0/s (`closure::tau0_side`), r2 = P2/s.
 fn sinusoid_xy(bx: &Basis, by: &Basis, r1: f64, r2: f64) -> Option<(f64, f64)> {
     let det = bx.cond * by.p2 - bx.p2 * by.cond;
     if det == 0.0 || !det.is_finite() {
@@ -62,16 +64,23 @@ fn sinusoid_xy(bx: &Basis, by: &Basis, r1: f64, r2: f64) -> Option<(f64, f64)> {
 }
 
 /// [`sinusoid_xy`] at the load `p2`, or non-convergence when the 2x2 system is singular.
-pub(super) fn sinusoid_xy_at(bx: &Basis, by: &Basis, prm: &SlidingParamsF64, s: f64, p2: f64) -> Result<(f64, f64)> {
-    sinusoid_xy(bx, by, prm.beta * prm.tau0 / s, p2 / s)
+pub(super) fn sinusoid_xy_at(
+    bx: &Basis,
+    by: &Basis,
+    prm: &SlidingParamsF64,
+    map: &Map,
+    s: f64,
+    p2: f64,
+) -> Result<(f64, f64)> {
+    sinusoid_xy(bx, by, tau0_side(prm, map) / s, p2 / s)
         .ok_or_else(|| SlidingF64Error::NoConvergence { reason: "singular 2x2 system for (cos, sin)(2 pi c/L)".into() })
 }
 
 /// ln|(X, Y)| for the sinusoid at load P2 (zero at a solution: X^2 + Y^2 = 1).
 fn sinusoid_h(col: &Collocation, prm: &SlidingParamsF64, big_l: f64, s: f64, p2: f64, lam: f64) -> Result<f64> {
     let map = Map::periodic(big_l, lam);
-    let (bx, by) = sinusoid_bases(col, &map)?;
-    let (x, y) = sinusoid_xy_at(&bx, &by, prm, s, p2)?;
+    let (bx, by) = sinusoid_bases(col, prm, &map)?;
+    let (x, y) = sinusoid_xy_at(&bx, &by, prm, &map, s, p2)?;
     Ok(x.hypot(y).ln())
 }
 
@@ -137,11 +146,12 @@ pub(super) fn sinusoid_scan(
         // Denser near 0 (small loads): lambda_j = SCAN_MAX (j/STEPS)^1.5.
         let lam = SCAN_MAX * (j as f64 / STEPS as f64).powf(1.5);
         let map = Map::periodic(big_l, lam);
-        let (bx, by) = sinusoid_bases(&col, &map)?;
-        for (x, y) in line_circle(bx.cond, by.cond, prm.beta * prm.tau0 / s) {
+        let (bx, by) = sinusoid_bases(&col, prm, &map)?;
+        let r1 = tau0_side(prm, &map) / s;
+        for (x, y) in line_circle(bx.cond, by.cond, r1) {
             max_load = max_load.max(s * (x * bx.p2 + y * by.p2));
         }
-        let h = match sinusoid_xy(&bx, &by, prm.beta * prm.tau0 / s, p2 / s) {
+        let h = match sinusoid_xy(&bx, &by, r1, p2 / s) {
             Some((x, y)) => x.hypot(y).ln(),
             None => continue,
         };

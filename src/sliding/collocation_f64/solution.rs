@@ -181,7 +181,8 @@ pub struct SlidingSolutionF64 {
     pub min_gap_x: f64,
     /// h(L - a) - h(b) that the paper's non-periodic v implies: (2 beta/E*) P1 - cW P2 (checked
     /// against the integrated gap; 0 for a single punch). Nonzero means the free surface of the
-    /// model does not close over a period; the gap check is two-sided because of it.
+    /// model does not close over a period; the gap check is two-sided because of it. 0 in the
+    /// `periodic` convention, which closes the surface (THEORY.md section 8).
     pub gap_closure: f64,
     /// p at the requested xh.
     pub pressure: Vec<PressurePoint>,
