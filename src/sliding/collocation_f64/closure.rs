@@ -13,6 +13,12 @@
 //! [`crate::sliding::reduction_mpfr::equation::shift_solutions`]). At a given load this is the
 //! same as adding the known K to the right side; at a given size it keeps the side conditions
 //! linear in the amplitudes. `paper` or a single punch (K = 0 as L -> infinity): unchanged.
+//!
+//! Off the contact the same K enters the slope of the gap: with the rotation of the Flamant sum
+//! removed ((E*/2) v' gains beta P1/L) and the steady wear slope cW P2/L of the worn surface,
+//! h' = g' - (2/E*) (H[p] - K) (the MPFR method's continuation of [2.8] contains it by
+//! construction); [`k_constant`] gives it to the gap check, and the two halves of the gap then
+//! meet over the free arc.
 
 use super::interpolant::Basis;
 use super::tangent_map::Map;
@@ -43,5 +49,14 @@ pub(super) fn tau0_side(prm: &SlidingParamsF64, map: &Map) -> f64 {
     match closing_period(prm, map) {
         Some(big_l) => bt * (1.0 - 2.0 * map.half_length() / big_l),
         None => bt,
+    }
+}
+
+/// K = (kappa P2 - 2 beta l tau0)/L of a solution with load `p2` and half-length `l` in the
+/// `periodic` convention (THEORY.md section 8); 0 in `paper` and for a single punch.
+pub(super) fn k_constant(prm: &SlidingParamsF64, p2: f64, l: f64) -> f64 {
+    match (prm.convention, prm.period) {
+        (Convention::PeriodicSurface, Some(big_l)) => (prm.kappa * p2 - 2.0 * prm.beta * l * prm.tau0) / big_l,
+        _ => 0.0,
     }
 }

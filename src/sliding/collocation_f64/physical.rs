@@ -2,6 +2,7 @@
 //! it, from H[p] off the contact; with the paper's convention the check copes with the
 //! non-periodic v and with the slope jump that tau0 > 0 puts at the leading edge.
 
+use super::closure::k_constant;
 use super::interpolant::{g_at, State};
 use super::operator::Collocation;
 use super::outputs::Outputs;
@@ -89,7 +90,9 @@ pub(super) fn physicality(
     // Gap: h(x) = int_edge^x h'(s) ds on a graded mesh of 6-point Gauss–Legendre panels.
     let gl = gauss_jacobi(6, 0.0, 0.0).expect("Gauss-Legendre 6 points");
     let c0 = c0_of(col, st);
-    let hprime = |x: f64| slope(prm, x) - 2.0 / prm.e_star * hilbert_outside(col, prm, st, c0, x);
+    // `periodic` convention: h' = g' - (2/E*) (H[p] - K) (`closure.rs`); K = 0 in `paper`.
+    let k_const = k_constant(prm, out.p2, out.l);
+    let hprime = |x: f64| slope(prm, x) - 2.0 / prm.e_star * (hilbert_outside(col, prm, st, c0, x) - k_const);
     // Integrates h' from `start` over `len` in direction `dir`; returns samples (x, h).
     let integrate = |start: f64, len: f64, dir: f64| -> Vec<(f64, f64)> {
         const PANELS: usize = 32;
