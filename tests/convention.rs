@@ -275,3 +275,32 @@ fn adhesion_scenes_accept_either_convention_unchanged() {
     assert_eq!(a, b);
     assert!(a["provenance"].get("convention").is_none());
 }
+
+/// Issue 10: a refusal in `paper` that `periodic` solves says so, and `periodic` then answers.
+#[test]
+fn paper_refusal_points_to_the_periodic_convention() {
+    let dir = std::env::temp_dir().join(format!("periodic-contact-hint-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("sinusoid_mu06.toml");
+    std::fs::write(
+        &scene,
+        "[problem]\nkind = \"sliding\"\n[material]\npoisson_ratio = \"0\"\ncontact_modulus = \"1\"\n[punch]\n\
+         shape = \"sinusoidal\"\namplitude = \"0.01\"\nperiod = \"1\"\n[sliding]\nnormal_load = \"0.02\"\nfriction = \"0.6\"\n",
+    )
+    .unwrap();
+    let bin = env!("CARGO_BIN_EXE_periodic-contact");
+    for method in ["mpfr", "f64"] {
+        let out = std::process::Command::new(bin)
+            .args(["solve", scene.to_str().unwrap(), "--method", method, "--digits", "20"])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{method}: {err}");
+        assert!(err.contains("--convention periodic"), "{method}: {err}");
+        let ok = std::process::Command::new(bin)
+            .args(["solve", scene.to_str().unwrap(), "--method", method, "--digits", "20", "--convention", "periodic"])
+            .output()
+            .unwrap();
+        assert_eq!(ok.status.code(), Some(0), "{method}: {}", String::from_utf8_lossy(&ok.stderr));
+    }
+}

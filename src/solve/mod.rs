@@ -14,7 +14,7 @@ pub mod render;
 
 use crate::adhesion;
 use crate::error::Error;
-use crate::model::{AdhesionProblem, Period, SlidingProblem};
+use crate::model::{AdhesionProblem, Convention, Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64};
 use serde_json::{json, Map, Value};
@@ -41,7 +41,8 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
             Method::Mpfr => sliding_mpfr(p, scene, req),
             Method::F64 => sliding_f64(p, scene, req),
             Method::Series => sliding_series(p, scene, req),
-        },
+        }
+        .map_err(|e| with_periodic_hint(e, p)),
         SceneProblem::Adhesion(p) => match req.method {
             Method::Mpfr => adhesion_mpfr(p, scene, req),
             Method::F64 => adhesion_f64(p, scene, req),
@@ -58,6 +59,26 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
         });
     }
     Ok(v)
+}
+
+/// A refusal in the `paper` convention (not physical, or no solution) that the `periodic`
+/// convention would solve says so (THEORY.md section 8): the fast f64 method is run on the same
+/// problem in `periodic` and, when it finds a physical contact, the message names the way forward.
+fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
+    let closes_anyway = p.kappa() == crate::model::Exact::from_integer(0.into())
+        && *p.adhesive_friction() == crate::model::Exact::from_integer(0.into());
+    if p.convention() != Convention::Paper || closes_anyway || matches!(p.period(), Period::Infinite) {
+        return e;
+    }
+    let Ok(periodic) = p.to_builder().convention(Convention::PeriodicSurface).build() else { return e };
+    let solved = collocation_f64::solve_sliding_f64(&periodic, &[], &collocation_f64::SolverOptions::default()).is_ok();
+    let hint = "; in the `periodic` convention (--convention periodic, THEORY.md section 8: the surface closes over \
+                the period) the f64 method finds a physical contact at this load";
+    match e {
+        Error::NotPhysical { why } if solved => Error::NotPhysical { why: format!("{why}{hint}") },
+        Error::NoSolution { why } if solved => Error::NoSolution { why: format!("{why}{hint}") },
+        other => other,
+    }
 }
 
 /// The path of the first string value that is not a finite number's text (NaN, inf).
