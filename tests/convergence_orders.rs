@@ -31,7 +31,7 @@ fn series_remainders_have_the_predicted_orders() {
                 row.remainder_range.0,
                 row.remainder_range.1
             );
-            let ok = (row.observed_l - row.predicted).abs() < 0.1;
+            let ok = (row.observed_l - row.predicted_l).abs() < 0.1;
             assert!(
                 ok,
                 "{label} (theta = {}, T = {}): m = {}, observed {} vs {}",

@@ -1,7 +1,8 @@
 //! The catalogue of derived series objects that the CLI (`periodic-contact series OBJECT`) and
 //! the report print: each with its name, formula, equation number and expansion variable.
 
-use super::sliding::{sliding_expansion, SlidingShape};
+use super::sliding::{sliding_expansion, sliding_expansion_with, SlidingExpansion, SlidingShape};
+use crate::model::Convention;
 use super::{jacobi_moments::jacobi_moments, kernel::kernel_series, weight::weight_series};
 use exact_series::{Frac, Poly, Ring, Series, SeriesError, Symbol, Q};
 
@@ -78,13 +79,84 @@ fn substitute(
     Ok(series)
 }
 
+/// One part of a derived object before substitution: (object, formula, source, variable, series,
+/// symbols).
+type Part = (&'static str, &'static str, &'static str, &'static str, Series<Frac>, Vec<Symbol>);
+
+/// The parts of the Problem 1 expansions `e` (either convention; THEORY.md sections 5 and 8).
+fn sliding_parts(e: &SlidingExpansion, order: usize, subs: &Substitutions) -> Result<Vec<Part>, SeriesError> {
+    let theta = Symbol::new("theta")?;
+    let xh = Symbol::new("xh")?;
+    let t = Symbol::new("T")?;
+    let frac = |s: Series<Poly>| s.map(|c| Frac::from_poly(c.clone()));
+    let e = e.clone();
+    if e.convention == Convention::PeriodicSurface {
+        let (kappa, invpi) = (Symbol::new("kappa")?, Symbol::new("invpi")?);
+        let mut v = vec![Poly::zero(); order + 1];
+        for (j, pj) in e.pressure.iter().enumerate() {
+            v[e.step * (j + 1)] = pj.clone();
+        }
+        let src = "THEORY.md sections 5 and 8 (periodic convention: K = (kappa P2 - 2 beta l tau0)/L added to [2.8])";
+        let syms = vec![theta, t, kappa, invpi];
+        return Ok(vec![
+            ("l_over_ls", "l/l_s at fixed P2, Lambda = pi l_s/L, periodic convention; kappa = tan(pi theta), invpi = 1/pi", src, "Lambda", frac(e.l_over_ls), syms.clone()),
+            ("rbar_minus_rbar_s", "rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T, periodic convention", src, "Lambda", frac(e.rbar_minus_rbar_s), syms.clone()),
+            ("F_def_scaled", "F_def/(pi E* k^2 l_s^3), periodic convention", src, "Lambda", frac(e.f_def_scaled), syms.clone()),
+            ("pressure_pi", "p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^j pi_j(xh)), periodic convention; coefficient of Lambda^j is pi_j(xh)", src, "Lambda", frac(Series::from_coeffs(v)), vec![theta, t, kappa, invpi, xh]),
+        ]);
+    }
+    let f0 = e.f_def_scaled.coeff(0).cloned().unwrap_or_else(Poly::zero);
+    let xh_poly: Vec<Poly> = {
+        let mut v = vec![Poly::zero(); order + 1];
+        for (j, pj) in e.pressure.iter().enumerate() {
+            v[e.step * (j + 1)] = pj.clone();
+        }
+        v
+    };
+    let pressure = Series::from_coeffs(xh_poly);
+    let src = "THEORY.md section 5, paper [3.7]-[3.12]";
+    let mut parts = vec![
+        ("l_over_ls", "l/l_s at fixed P2, Lambda = pi l_s/L; l_s = a0/sqrt(1 - 4 theta^2), a0 = sqrt(2 P2/(pi E* k)); Delta/l_s = l/l_s - 1 [3.11]", src, "Lambda", frac(e.l_over_ls), vec![theta, t]),
+        ("rbar_minus_rbar_s", "rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T, T = beta tau0/(E* k l_s)", src, "Lambda", frac(e.rbar_minus_rbar_s), vec![theta, t]),
+        ("F_def_scaled", "F_def/(pi E* k^2 l_s^3), F_def = int p g' dx", src, "Lambda", frac(e.f_def_scaled.clone()), vec![theta, t]),
+        ("pressure_pi", "p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)); coefficient of Lambda^(2j) is pi_j(xh)", src, "Lambda", frac(pressure), vec![theta, t, xh]),
+    ];
+    // F_def/F_def,s, a rational function of theta and T (F_def,s = 0 when 8 theta/3 = T,
+    // e.g. frictionless: then only F_def_scaled is defined).
+    let f0_sub = substitute(Series::constant(Frac::from_poly(f0.clone()), 1), &mut vec![], subs)?;
+    if !f0_sub.coeff(0).is_some_and(|c| c.is_zero()) {
+        let ratio = Series::from_coeffs(
+            e.f_def_scaled.coeffs().iter().map(|c| Frac::new(c.clone(), f0.clone()).expect("F_def,s is not the zero polynomial")).collect(),
+        );
+        parts.insert(2, ("F_def_over_F_def_s", "F_def/F_def,s (deformation component of the sliding resistance)", src, "Lambda", ratio, vec![theta, t]));
+    }
+    Ok(parts)
+}
+
+/// The Problem 1 expansions in either surface convention through `order`, as derived parts
+/// (`Convention::Paper` gives exactly [`SeriesObject::Sliding`]'s).
+pub fn derive_sliding(
+    shape: SlidingShape,
+    convention: Convention,
+    order: usize,
+    subs: &Substitutions,
+) -> Result<Vec<Derived>, SeriesError> {
+    let e = sliding_expansion_with(shape, order, convention)?;
+    sliding_parts(&e, order, subs)?
+        .into_iter()
+        .map(|(object, formula, source, variable, series, mut symbols)| {
+            let series = substitute(series, &mut symbols, subs)?;
+            Ok(Derived { object, formula, source, variable, series, symbols, values: None })
+        })
+        .collect()
+}
+
 impl SeriesObject {
     /// Derives the object through `order` (THEORY.md section 5 order convention): one part for
     /// the foundation objects, several for the Problem 1 expansions.
     pub fn derive(self, order: usize, subs: &Substitutions) -> Result<Vec<Derived>, SeriesError> {
         let theta = Symbol::new("theta")?;
         let xh = Symbol::new("xh")?;
-        let t = Symbol::new("T")?;
         let frac = |s: Series<Poly>| s.map(|c| Frac::from_poly(c.clone()));
         let parts: Vec<(&'static str, &'static str, &'static str, &'static str, Series<Frac>, Vec<Symbol>)> = match self {
             SeriesObject::Kernel => vec![(
@@ -142,35 +214,7 @@ impl SeriesObject {
                     ),
                 ]
             }
-            SeriesObject::Sliding(shape) => {
-                let e = sliding_expansion(shape, order)?;
-                let f0 = e.f_def_scaled.coeff(0).cloned().unwrap_or_else(Poly::zero);
-                let xh_poly: Vec<Poly> = {
-                    let mut v = vec![Poly::zero(); order + 1];
-                    for (j, pj) in e.pressure.iter().enumerate() {
-                        v[2 * (j + 1)] = pj.clone();
-                    }
-                    v
-                };
-                let pressure = Series::from_coeffs(xh_poly);
-                let src = "THEORY.md section 5, paper [3.7]-[3.12]";
-                let mut parts = vec![
-                    ("l_over_ls", "l/l_s at fixed P2, Lambda = pi l_s/L; l_s = a0/sqrt(1 - 4 theta^2), a0 = sqrt(2 P2/(pi E* k)); Delta/l_s = l/l_s - 1 [3.11]", src, "Lambda", frac(e.l_over_ls), vec![theta, t]),
-                    ("rbar_minus_rbar_s", "rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T, T = beta tau0/(E* k l_s)", src, "Lambda", frac(e.rbar_minus_rbar_s), vec![theta, t]),
-                    ("F_def_scaled", "F_def/(pi E* k^2 l_s^3), F_def = int p g' dx", src, "Lambda", frac(e.f_def_scaled.clone()), vec![theta, t]),
-                    ("pressure_pi", "p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)); coefficient of Lambda^(2j) is pi_j(xh)", src, "Lambda", frac(pressure), vec![theta, t, xh]),
-                ];
-                // F_def/F_def,s, a rational function of theta and T (F_def,s = 0 when 8 theta/3 = T,
-                // e.g. frictionless: then only F_def_scaled is defined).
-                let f0_sub = substitute(Series::constant(Frac::from_poly(f0.clone()), 1), &mut vec![], subs)?;
-                if !f0_sub.coeff(0).is_some_and(|c| c.is_zero()) {
-                    let ratio = Series::from_coeffs(
-                        e.f_def_scaled.coeffs().iter().map(|c| Frac::new(c.clone(), f0.clone()).expect("F_def,s is not the zero polynomial")).collect(),
-                    );
-                    parts.insert(2, ("F_def_over_F_def_s", "F_def/F_def,s (deformation component of the sliding resistance)", src, "Lambda", ratio, vec![theta, t]));
-                }
-                parts
-            }
+            SeriesObject::Sliding(shape) => sliding_parts(&sliding_expansion(shape, order)?, order, subs)?,
         };
         let mut out: Vec<Derived> = parts
             .into_iter()

@@ -26,9 +26,22 @@
 //! Outputs: l/l_s, rbar - rbar_s (rbar_s = 2 theta - T [3.10]), F_def/(pi E* k^2 l_s^3), the
 //! pressure polynomials pi_j(xh) of p = E* k l cos(pi theta) omega(xh) (1 + sum Lambda^(2j) pi_j)
 //! [3.9], and Delta/l_s = l/l_s - 1 [3.11].
+//!
+//! The `periodic` convention (THEORY.md section 8): [2.8] gains the constant
+//! K = (kappa P2 - 2 beta l tau0)/L beside beta tau0, so T/rho in F gains
+//! K/(E* k l) = Lambda (kappa (1 - 4 theta^2)/(2 rho) - 2 T/pi)
+//! (P2 = pi E* k l_s^2 (1 - 4 theta^2)/2 at every L, l_s/L = Lambda/pi, l = rho l_s). The expansions
+//! then hold every power of Lambda, not only the even ones, and the fixed point fixes one power of
+//! Lambda per sweep. Representation: kappa = tan(pi theta) and 1/pi are transcendental in theta and
+//! over Q, so they enter as two independent symbols `kappa` and `invpi` beside theta and T
+//! (coefficients in Q[theta, T, kappa, invpi]); a combined symbol (e.g. kappa/pi) would not do,
+//! since kappa enters with 1/rho and 1/pi with T, in different monomials. Both appear only in odd
+//! powers' coefficients and products thereof; at kappa = T = 0 the periodic expansions are the
+//! paper's.
 
 use super::jacobi_moments::jacobi_moments_at;
 use super::kernel::kernel_series;
+use crate::model::Convention;
 use exact_series::{Poly, Ring, Series, SeriesError, Symbol, Q};
 
 /// The punch shapes of Problem 1.
@@ -45,14 +58,18 @@ pub enum SlidingShape {
 pub struct SlidingExpansion {
     /// The shape.
     pub shape: SlidingShape,
+    /// The surface convention (THEORY.md section 8).
+    pub convention: Convention,
     /// l / l_s.
     pub l_over_ls: Series<Poly>,
     /// rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T.
     pub rbar_minus_rbar_s: Series<Poly>,
     /// F_def / (pi E* k^2 l_s^3); its Lambda^0 term is the single-punch value.
     pub f_def_scaled: Series<Poly>,
-    /// pi_1(xh), pi_2(xh), ...: p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)).
+    /// pi_1(xh), pi_2(xh), ...: p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(step j) pi_j(xh)).
     pub pressure: Vec<Poly>,
+    /// The power of Lambda per pressure term: 2 in `paper` (even series), 1 in `periodic`.
+    pub step: usize,
 }
 
 /// Polynomials in xh whose coefficients are Lambda-series: `c[i]` multiplies xh^i.
@@ -137,6 +154,17 @@ impl Tables {
 /// assert!(e.l_over_ls.coeff(2).unwrap().text().ends_with("- 1/12"));
 /// ```
 pub fn sliding_expansion(shape: SlidingShape, order: usize) -> Result<SlidingExpansion, SeriesError> {
+    sliding_expansion_with(shape, order, Convention::Paper)
+}
+
+/// [`sliding_expansion`] in either surface convention (module doc): `Paper` gives the paper's
+/// even series, `PeriodicSurface` adds K and the odd powers (symbols `kappa`, `invpi`).
+pub fn sliding_expansion_with(
+    shape: SlidingShape,
+    order: usize,
+    convention: Convention,
+) -> Result<SlidingExpansion, SeriesError> {
+    let periodic = convention == Convention::PeriodicSurface;
     let theta = Poly::symbol(Symbol::new("theta")?);
     let t = Poly::symbol(Symbol::new("T")?);
     let tab = Tables::new(order, &theta)?;
@@ -156,7 +184,18 @@ pub fn sliding_expansion(shape: SlidingShape, order: usize) -> Result<SlidingExp
     };
     let mut previous: Option<(Series<Poly>, Series<Poly>)> = None;
     let mut result = None;
-    for _sweep in 0..k_max + 3 {
+    // K/(E* k l) = Lambda (kappa (1 - 4 theta^2)/2 (1/rho) - 2 T invpi) in `periodic` (module doc).
+    let (k_rho, k_const) = if periodic {
+        let kappa = Poly::symbol(Symbol::new("kappa")?);
+        let invpi = Poly::symbol(Symbol::new("invpi")?);
+        let a = kappa.mul(&tab.quarter).mul_int(2);
+        let b = t.mul(&invpi).mul_int(-2);
+        (big_lambda.mul_scalar(&a), big_lambda.mul_scalar(&b))
+    } else {
+        (Series::zero(prec), Series::zero(prec))
+    };
+    let sweeps = if periodic { order + 3 } else { k_max + 3 };
+    for _sweep in 0..sweeps {
         let lambda = big_lambda.mul(&rho).truncate(prec);
         let lambda2 = lambda.mul(&lambda).truncate(prec);
         // The shape term s(rbar + xh) as a polynomial in xh.
@@ -206,7 +245,9 @@ pub fn sliding_expansion(shape: SlidingShape, order: usize) -> Result<SlidingExp
         let s0_half = tab.moment(&f, &tab.nu, 0).scale(&half);
         let sqrt_s0_half = s0_half.pow_q(&half)?;
         rho = sqrt_s0_half.inv()?;
-        rbar = u.sub(&sqrt_s0_half.mul_scalar(&t));
+        // rbar = u - (T + K-term)/rho: the constant of F divided out of u.
+        let c_rho = cst(&t).add(&k_rho);
+        rbar = u.sub(&sqrt_s0_half.mul(&c_rho).truncate(prec)).sub(&k_const);
         let fdef = {
             let mut acc = Series::zero(prec);
             for (i, si) in shape_poly.iter().enumerate() {
@@ -237,16 +278,25 @@ pub fn sliding_expansion(shape: SlidingShape, order: usize) -> Result<SlidingExp
         });
     }
     let xh = Symbol::new("xh")?;
-    let pressure = (1..=k_max)
+    let step = if periodic { 1 } else { 2 };
+    let pressure = (1..=order / step)
         .map(|jj| {
             b.iter().enumerate().fold(Poly::zero(), |acc, (r, br)| {
-                let c = br.coeff(2 * jj).cloned().unwrap_or_else(Poly::zero);
+                let c = br.coeff(step * jj).cloned().unwrap_or_else(Poly::zero);
                 acc.add(&c.mul(&Poly::term(&Q::from_integer(1.into()), exact_series::Monomial::power(xh, r as u32))))
             })
         })
         .collect();
     let rbar_s = theta.mul_int(2).sub(&t);
-    Ok(SlidingExpansion { shape, l_over_ls: rho, rbar_minus_rbar_s: rbar.sub(&cst(&rbar_s)), f_def_scaled, pressure })
+    Ok(SlidingExpansion {
+        shape,
+        convention,
+        l_over_ls: rho,
+        rbar_minus_rbar_s: rbar.sub(&cst(&rbar_s)),
+        f_def_scaled,
+        pressure,
+        step,
+    })
 }
 
 #[cfg(test)]
@@ -313,5 +363,68 @@ mod tests {
         // F_def,s / (pi E* k^2 l_s^3) = 2 (rbar_s mu_0 + mu_1) = (1/4 - theta^2)(32 theta/3 - 4 T).
         assert_eq!(e.f_def_scaled.coeff(0).unwrap().text(), "-32/3*theta^3 + 4*T*theta^2 + 8/3*theta - T");
         assert!(e.pressure.len() == 2);
+    }
+
+    #[test]
+    fn periodic_parabola_keeps_l_and_shifts_the_centre_by_minus_k() {
+        // THEORY.md sections 3 and 8: for the parabola lambda does not depend on the constant of
+        // [2.8], so l/l_s is the same in both conventions and rbar moves by exactly
+        // -K/(E* k l) = -Lambda (kappa (1 - 4 theta^2)/(2 rho) - 2 T/pi), i.e. c_periodic - c_paper
+        // = -K/(E* k), at the series level.
+        let order = 12;
+        let paper = sliding_expansion(SlidingShape::Parabolic, order).unwrap();
+        let per = sliding_expansion_with(SlidingShape::Parabolic, order, Convention::PeriodicSurface).unwrap();
+        assert_eq!(per.l_over_ls, paper.l_over_ls);
+        let prec = order + 1;
+        let theta = Poly::symbol(Symbol::new("theta").unwrap());
+        let t = Poly::symbol(Symbol::new("T").unwrap());
+        let kappa = Poly::symbol(Symbol::new("kappa").unwrap());
+        let invpi = Poly::symbol(Symbol::new("invpi").unwrap());
+        let lam = Series::<Poly>::var(prec);
+        let one_minus = Poly::one().sub(&theta.mul(&theta).mul_int(4));
+        let inv_rho = paper.l_over_ls.inv().unwrap();
+        let k_over = lam
+            .mul(&inv_rho.mul_scalar(&kappa.mul(&one_minus).scale(&Q::new(1.into(), 2.into()))))
+            .truncate(prec)
+            .sub(&lam.mul_scalar(&t.mul(&invpi).mul_int(2)));
+        let shift = per.rbar_minus_rbar_s.sub(&paper.rbar_minus_rbar_s);
+        assert_eq!(shift, k_over.neg());
+        // c = rbar l: c_periodic - c_paper = -(K/(E* k l)) l.
+        let dc = shift.mul(&paper.l_over_ls).truncate(prec);
+        let expected = lam
+            .mul_scalar(&kappa.mul(&one_minus).scale(&Q::new((-1).into(), 2.into())))
+            .add(&lam.mul(&paper.l_over_ls).truncate(prec).mul_scalar(&t.mul(&invpi).mul_int(2)));
+        assert_eq!(dc, expected);
+        // F_def changes from Lambda^1 on: (F_def)_periodic - (F_def)_paper = 2 rho^3 mt_0 (rbar shift)
+        // (mt_0 = 2 (1/4 - theta^2) at Lambda^0) for the parabola; its first term is 4 (1/4 - theta^2) (-kappa (1 - 4 theta^2)/2 + 2 T/pi).
+        assert_eq!(per.f_def_scaled.coeff(0), paper.f_def_scaled.coeff(0));
+        let d1 = per.f_def_scaled.coeff(1).unwrap().sub(paper.f_def_scaled.coeff(1).unwrap());
+        let quarter = one_minus.scale(&Q::new(1.into(), 4.into()));
+        let want = quarter.mul_int(4).mul(&kappa.mul(&one_minus).scale(&Q::new((-1).into(), 2.into())).add(&t.mul(&invpi).mul_int(2)));
+        assert_eq!(d1, want);
+        assert!(paper.f_def_scaled.coeff(1).unwrap().is_zero());
+    }
+
+    #[test]
+    fn periodic_equals_paper_without_kappa_and_t() {
+        for shape in [SlidingShape::Parabolic, SlidingShape::Sinusoidal] {
+            let paper = sliding_expansion(shape, 8).unwrap();
+            let per = sliding_expansion_with(shape, 8, Convention::PeriodicSurface).unwrap();
+            let z = |p: &Poly| {
+                p.subs(Symbol::new("kappa").unwrap(), &zero()).subs(Symbol::new("T").unwrap(), &zero())
+            };
+            for k in 0..=8 {
+                assert_eq!(z(per.l_over_ls.coeff(k).unwrap()), z(paper.l_over_ls.coeff(k).unwrap()), "{shape:?} l {k}");
+                assert_eq!(
+                    z(per.rbar_minus_rbar_s.coeff(k).unwrap()),
+                    z(paper.rbar_minus_rbar_s.coeff(k).unwrap()),
+                    "{shape:?} rbar {k}"
+                );
+            }
+            // Odd powers of l/l_s of the sinusoid are nonzero in `periodic` (K couples through s).
+            if shape == SlidingShape::Sinusoidal {
+                assert!(!per.l_over_ls.coeff(3).unwrap().is_zero());
+            }
+        }
     }
 }

@@ -6,8 +6,8 @@
 //! Values are kept as MPFR floats so that errors far below f64 round-off are measured.
 
 use crate::adhesion::{self, volterra_mpfr::VolterraParams};
-use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
-use crate::model::{AdhesionProblem, AdhesionSize, PunchShape, SlidingLoad, SlidingProblem};
+use crate::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, SlidingShape};
+use crate::model::{AdhesionProblem, AdhesionSize, Convention, PunchShape, SlidingLoad, SlidingProblem};
 use crate::scene::SceneProblem;
 use crate::sliding::series::series_point;
 use crate::sliding::{self, collocation_f64, Checks, NodeRule};
@@ -111,16 +111,16 @@ pub fn given_size(p: &SceneProblem) -> bool {
 /// part of a run's time: it is a one-off, like the coefficient tables).
 #[derive(Default)]
 pub struct ExpansionCache {
-    map: HashMap<(bool, usize), SlidingExpansion>,
+    map: HashMap<(bool, bool, usize), SlidingExpansion>,
 }
 
 impl ExpansionCache {
-    fn get(&mut self, shape: SlidingShape, order: usize) -> Result<&SlidingExpansion, String> {
-        let key = (shape == SlidingShape::Parabolic, order);
+    fn get(&mut self, shape: SlidingShape, convention: Convention, order: usize) -> Result<&SlidingExpansion, String> {
+        let key = (shape == SlidingShape::Parabolic, convention == Convention::PeriodicSurface, order);
         match self.map.entry(key) {
             std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
             std::collections::hash_map::Entry::Vacant(v) => {
-                Ok(v.insert(sliding_expansion(shape, order).map_err(|e| e.to_string())?))
+                Ok(v.insert(sliding_expansion_with(shape, order, convention).map_err(|e| e.to_string())?))
             }
         }
     }
@@ -166,7 +166,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
                 PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
                 PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
             };
-            let e = cache.get(shape, MAX_SERIES_ORDER.max(n))?;
+            let e = cache.get(shape, p.convention(), MAX_SERIES_ORDER.max(n))?;
             let prec = SERIES_BITS;
             let start = Instant::now();
             let sp = series_point(p, prec).map_err(|e| e.to_string())?;

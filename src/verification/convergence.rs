@@ -3,12 +3,18 @@
 //! after m corrections (every term through Lambda^(2m)) must scale like Lambda^(2m+2). The
 //! observed order is the least-squares slope of log(remainder) against log(Lambda).
 //!
+//! In the `periodic` convention (THEORY.md section 8; [`sliding_convergence`] on a problem of that
+//! convention) the series hold every power of Lambda: row m keeps every term through Lambda^m
+//! (m = 1..=2 max_corrections) and the remainder scales like Lambda^(m+1) (`predicted` = m + 1;
+//! for the parabola this is the centre's order, its l/l_s being even: Lambda^(m+1) for odd m and
+//! Lambda^(m+2) for even m, `predicted_l`).
+//!
 //! Varying P2 at fixed L would make T = beta tau0/(E* k l_s) change with the load and spoil the
 //! slope; fixing P2 keeps theta and T fixed while Lambda = pi l_s / L varies.
 
-use crate::asymptotics::sliding::sliding_expansion;
+use crate::asymptotics::sliding::{sliding_expansion_with, SlidingShape};
 use crate::error::Error;
-use crate::model::{Exact, Period, PunchShape, SlidingProblem};
+use crate::model::{Convention, Exact, Period, PunchShape, SlidingProblem};
 use crate::numerics::precision::precision_for;
 use crate::sliding::{self, series};
 use exact_series::Q;
@@ -17,10 +23,12 @@ use rug::Float;
 /// One row of a convergence table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrderRow {
-    /// Number of corrections m (series through Lambda^(2m)).
+    /// Number of corrections m (series through Lambda^(2m); `periodic`: through Lambda^m).
     pub corrections: usize,
-    /// Predicted order 2m + 2.
+    /// Predicted order 2m + 2 (`periodic`: m + 1).
     pub predicted: f64,
+    /// Predicted order for l (= `predicted`, except the `periodic` parabola: module doc).
+    pub predicted_l: f64,
     /// Observed least-squares slope for the contact half-length l.
     pub observed_l: f64,
     /// Observed slope for the centre c (relative to l_s); `None` when c vanishes (symmetric case).
@@ -64,15 +72,29 @@ pub fn sliding_convergence(
     digits: u32,
 ) -> Result<ConvergenceStudy, Error> {
     let order = 2 * max_corrections;
-    let expansion = sliding_expansion(series::expansion_shape(base), order)
+    let periodic = base.convention() == Convention::PeriodicSurface;
+    let shape = series::expansion_shape(base);
+    // (truncation order, predicted order, predicted order of l) per row.
+    let rows_of: Vec<(usize, f64, f64)> = if periodic {
+        (1..=order)
+            .map(|m| {
+                let even_l = shape == SlidingShape::Parabolic && m % 2 == 0;
+                (m, (m + 1) as f64, if even_l { (m + 2) as f64 } else { (m + 1) as f64 })
+            })
+            .collect()
+    } else {
+        (1..=max_corrections).map(|m| (2 * m, (2 * m + 2) as f64, (2 * m + 2) as f64)).collect()
+    };
+    let n_rows = rows_of.len();
+    let expansion = sliding_expansion_with(shape, order, base.convention())
         .map_err(|e| Error::NoConvergence { what: format!("the series through Lambda^{order}: {e}") })?;
     let prec = precision_for(digits);
     // l_s does not depend on L: take it from a single-punch statement of the same load.
     let single = base.to_builder().period(Period::Infinite).build()?;
     let sp_inf = l_s_of(&single, prec)?;
     let mut lambdas = Vec::new();
-    let mut rem_l: Vec<Vec<f64>> = vec![Vec::new(); max_corrections + 1];
-    let mut rem_c: Vec<Vec<f64>> = vec![Vec::new(); max_corrections + 1];
+    let mut rem_l: Vec<Vec<f64>> = vec![Vec::new(); n_rows + 1];
+    let mut rem_c: Vec<Vec<f64>> = vec![Vec::new(); n_rows + 1];
     let (mut theta, mut t) = (0.0, 0.0);
     for &target in target_lambdas {
         // L = pi l_s / Lambda, rounded to an exact rational (Lambda is then recomputed exactly).
@@ -86,8 +108,8 @@ pub fn sliding_convergence(
         theta = sp.theta.to_f64();
         t = sp.t.to_f64();
         lambdas.push(sp.big_lambda.to_f64());
-        for m in 1..=max_corrections {
-            let (l, c) = sp.contact(&expansion, 2 * m);
+        for (m, row) in rows_of.iter().enumerate().map(|(i, r)| (i + 1, r)) {
+            let (l, c) = sp.contact(&expansion, row.0);
             let el = Float::with_val(prec, &l - &sol.solution.l).abs() / &sp.l_s;
             let ec = Float::with_val(prec, &c - &sol.solution.c).abs() / &sp.l_s;
             rem_l[m].push(el.to_f64());
@@ -95,8 +117,9 @@ pub fn sliding_convergence(
         }
     }
     let logx: Vec<f64> = lambdas.iter().map(|x| x.ln()).collect();
-    let rows = (1..=max_corrections)
+    let rows = (1..=n_rows)
         .map(|m| {
+            let (_, predicted, predicted_l) = rows_of[m - 1];
             let ly: Vec<f64> = rem_l[m].iter().map(|e| e.ln()).collect();
             let c_ok = rem_c[m].iter().all(|e| *e > 1e-3_f64.powi(digits as i32 / 3) && e.is_finite());
             let observed_c = c_ok.then(|| slope(&logx, &rem_c[m].iter().map(|e| e.ln()).collect::<Vec<_>>()));
@@ -104,7 +127,8 @@ pub fn sliding_convergence(
             let hi = rem_l[m].iter().cloned().fold(0.0, f64::max);
             OrderRow {
                 corrections: m,
-                predicted: (2 * m + 2) as f64,
+                predicted,
+                predicted_l,
                 observed_l: slope(&logx, &ly),
                 observed_c,
                 remainder_range: (lo, hi),

@@ -9,6 +9,14 @@
 //! E_q = max(|t_K|, S M rho/(1 - rho)),   M = max_{0 <= i < W} |t_(K-i)| rho^i,
 //! ```
 //!
+//! In the `periodic` convention (THEORY.md section 8) the series hold every power of Lambda; the
+//! terms are then taken in pairs, t_m = V_m - V_(m-1) with V_m the value through Lambda^(N-2(K-m))
+//! (the terms of Lambda^(n-1) and Lambda^n together), so rho is still a rate per Lambda^2 and the
+//! parabola's l/l_s, even in both conventions, gives no zero terms. The remainder after
+//! Lambda^N is then O(Lambda^(N+1)) (not O(Lambda^(N+2)) as for the paper's even series): the last
+//! pair term is O(Lambda^(N-1)) and the geometric tail S M rho/(1 - rho), rho ~ Lambda^2, is of the
+//! order Lambda^(N+1) of that remainder.
+//!
 //! - rho, the rate of the terms per power of Lambda^2, is read from the half-length l (all
 //!   quantities are series in the same Lambda^2 and share its singularities; the terms of l are
 //!   regular while those of p(xh) at a fixed point change sign and stall): the largest of

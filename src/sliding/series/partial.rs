@@ -23,7 +23,8 @@ pub struct Partial {
 /// The quantities from the series truncated after Lambda^order, at the points `xh`:
 /// - l, c by [`SeriesPoint::contact`];
 /// - F_def = pi E* k^2 l_s^3 (F_def/(pi E* k^2 l_s^3)) (the expansion's scaled series);
-/// - p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(2j) pi_j(xh)), j <= order/2,
+/// - p = E* k l cos(pi theta) omega(xh) (1 + sum_j Lambda^(s j) pi_j(xh)), j <= order/s, s = the
+///   expansion's step (2 in `paper`, 1 in `periodic`),
 ///   omega = (1 + xh)^(1/2 + theta) (1 - xh)^(1/2 - theta).
 pub fn partial(e: &SlidingExpansion, order: usize, sp: &SeriesPoint, xh: &[Float]) -> Partial {
     let prec = sp.prec;
@@ -34,17 +35,17 @@ pub fn partial(e: &SlidingExpansion, order: usize, sp: &SeriesPoint, xh: &[Float
     let f_def = Float::with_val(prec, &pi * &sp.k) * &sp.k * ls3 * fds;
     let cos = Float::with_val(prec, Float::with_val(prec, &pi * &sp.theta).cos());
     let half = Float::with_val(prec, 0.5);
-    let l2 = Float::with_val(prec, sp.big_lambda.clone().square());
+    let l_step = Float::with_val(prec, sp.big_lambda.clone().pow(e.step as u32));
     let xh_s = exact_series::Symbol::new("xh").expect("valid");
-    let [th, t] = sp.bindings();
+    let [th, t, kappa, invpi] = sp.bindings();
     let mut pressure = Vec::with_capacity(xh.len());
     for x in xh {
         let mut b = Float::with_val(prec, 1);
         let mut lam_pow = Float::with_val(prec, 1);
-        let binds = [th.clone(), t.clone(), (xh_s, x.clone())];
-        for pj in e.pressure.iter().take(order / 2) {
-            lam_pow *= &l2;
-            let v = evaluate::poly_mpfr(pj, &binds, prec).expect("the pressure terms hold only theta, T and xh");
+        let binds = [th.clone(), t.clone(), kappa.clone(), invpi.clone(), (xh_s, x.clone())];
+        for pj in e.pressure.iter().take(order / e.step) {
+            lam_pow *= &l_step;
+            let v = evaluate::poly_mpfr(pj, &binds, prec).expect("the pressure terms hold only theta, T, kappa, invpi and xh");
             b += Float::with_val(prec, &lam_pow * v);
         }
         let ep = Float::with_val(prec, &half + &sp.theta);

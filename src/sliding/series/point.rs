@@ -19,6 +19,8 @@ pub struct SeriesPoint {
     pub theta: Float,
     /// T = beta tau0/(E* k l_s) [3.10].
     pub t: Float,
+    /// kappa = tan(pi theta) [2.8] (symbol `kappa` of the `periodic` expansions).
+    pub kappa: Float,
     /// Lambda = pi l_s/L [3.10].
     pub big_lambda: Float,
     /// Single-punch half-length l_s = a0/sqrt(1 - 4 theta^2) [3.10].
@@ -62,6 +64,7 @@ impl SeriesPoint {
         Ok(SeriesPoint {
             theta: params.theta.clone(),
             t: params.t(&p2),
+            kappa: params.kappa.clone(),
             big_lambda,
             l_s,
             k: params.k.clone(),
@@ -71,19 +74,26 @@ impl SeriesPoint {
         })
     }
 
-    /// The values of the symbols theta and T of the Problem 1 expansions.
-    pub fn bindings(&self) -> [(Symbol, Float); 2] {
-        [(Symbol::new("theta").expect("valid"), self.theta.clone()), (Symbol::new("T").expect("valid"), self.t.clone())]
+    /// The values of the symbols theta, T, kappa and invpi = 1/pi of the Problem 1 expansions
+    /// (the last two occur only in the `periodic` convention's).
+    pub fn bindings(&self) -> [(Symbol, Float); 4] {
+        let invpi = Float::with_val(self.prec, rug::float::Constant::Pi).recip();
+        [
+            (Symbol::new("theta").expect("valid"), self.theta.clone()),
+            (Symbol::new("T").expect("valid"), self.t.clone()),
+            (Symbol::new("kappa").expect("valid"), self.kappa.clone()),
+            (Symbol::new("invpi").expect("valid"), invpi),
+        ]
     }
 
     /// A Lambda-series over Q[theta, T], truncated after Lambda^order, at this point.
     ///
     /// # Panics
-    /// When `s` holds a symbol other than theta and T (a bug: the expansions' l/l_s,
+    /// When `s` holds a symbol other than theta, T, kappa, invpi (a bug: the expansions' l/l_s,
     /// rbar - rbar_s and F_def series hold only these).
     pub fn eval(&self, s: &Series<Poly>, order: usize) -> Float {
         evaluate::series_mpfr(&s.truncate(order + 1), &self.big_lambda, &self.bindings(), self.prec)
-            .expect("the expansions hold only theta and T")
+            .expect("the expansions hold only theta, T, kappa and invpi")
     }
 
     /// The contact half-length l = l_s (l/l_s) and centre c = rbar l from the series truncated

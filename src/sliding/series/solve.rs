@@ -5,9 +5,9 @@
 use super::estimate::{rate, tail, terms};
 use super::partial::{partial, Partial};
 use super::point::SeriesPoint;
-use crate::asymptotics::sliding::{sliding_expansion, SlidingExpansion, SlidingShape};
+use crate::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, SlidingShape};
 use crate::error::Error;
-use crate::model::{Convention, Exact, PunchShape, SlidingProblem};
+use crate::model::{Exact, PunchShape, SlidingProblem};
 use crate::numerics::accuracy::{readable_f64, readable_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::to_float;
 use crate::numerics::precision::precision_for;
@@ -92,26 +92,9 @@ pub fn solve_series(
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
     check_order(order)?;
-    let e = sliding_expansion(expansion_shape(problem), order)
+    let e = sliding_expansion_with(expansion_shape(problem), order, problem.convention())
         .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
     solve_series_with(&e, problem, points, order, digits)
-}
-
-/// The expansions of [`crate::asymptotics::sliding`] are the paper's (even in Lambda). In the
-/// `periodic` convention (THEORY.md section 8) the constant K = (kappa P2 - 2 beta l tau0)/L adds
-/// odd powers that are not derived yet, so such a problem is refused, unless K = 0 identically
-/// (kappa = 0 and tau0 = 0: the two conventions are the same problem).
-fn check_convention(problem: &SlidingProblem) -> Result<(), Error> {
-    use num_traits::Zero;
-    let same = problem.kappa().is_zero() && problem.adhesive_friction().is_zero();
-    if problem.convention() == Convention::PeriodicSurface && !same {
-        return Err(Error::input(
-            "convention",
-            Convention::PeriodicSurface.name(),
-            "the series method has only the paper convention's expansions: the periodic convention's expansions              (odd powers of Lambda from K = (kappa P2 - 2 beta l tau0)/L) are not derived yet;              use --method mpfr or --method f64, or convention = \"paper\"",
-        ));
-    }
-    Ok(())
 }
 
 fn check_order(order: usize) -> Result<(), Error> {
@@ -125,13 +108,14 @@ fn check_order(order: usize) -> Result<(), Error> {
     Ok(())
 }
 
-/// [`solve_series`] with an expansion already derived (of the problem's shape, through at least
-/// Lambda^order; a longer one is truncated). Errors: input (a single punch, a given half-length,
+/// [`solve_series`] with an expansion already derived (of the problem's shape and convention,
+/// through at least Lambda^order;
+/// a longer one is truncated). Errors: input (a single punch, a given half-length,
 /// order < 2); no convergence when the terms of l/l_s do not decrease or the estimate leaves
 /// less than one digit (module doc of [`super::estimate`]).
 ///
 /// # Panics
-/// When `e` has another shape than the problem or is shorter than `order`.
+/// When `e` has another shape or convention than the problem or is shorter than `order`.
 pub fn solve_series_with(
     e: &SlidingExpansion,
     problem: &SlidingProblem,
@@ -140,15 +124,18 @@ pub fn solve_series_with(
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
     check_order(order)?;
-    check_convention(problem)?;
     assert_eq!(e.shape, expansion_shape(problem), "the expansion is of another shape");
+    assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
     assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
     let prec = precision_for(digits);
     let params = SlidingParamsMpfr::new(problem, prec)?;
     let sp = SeriesPoint::new(&params)?;
     let xh: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
-    // Values through Lambda^0, Lambda^2, ..., Lambda^order (units of E*).
-    let parts: Vec<Partial> = (0..=order / 2).map(|m| partial(e, 2 * m, &sp, &xh)).collect();
+    // Values through Lambda^(N - 2K), ..., Lambda^(N - 2), Lambda^N, K = N/2 (units of E*): in steps
+    // of Lambda^2 in both conventions. In `periodic` each step adds the pair of terms Lambda^(n-1),
+    // Lambda^n (module doc of [`super::estimate`]): the parabola's l/l_s has no odd terms there,
+    // so single steps would read a rate from zero terms.
+    let parts: Vec<Partial> = (0..=order / 2).map(|m| partial(e, order - 2 * (order / 2 - m), &sp, &xh)).collect();
     let hi = parts.last().expect("order >= 2");
     let of = |f: &dyn Fn(&Partial) -> Float| terms(&parts.iter().map(f).collect::<Vec<_>>());
     let t_l = of(&|v| v.l.clone());
