@@ -2,6 +2,7 @@
 //! 0 success, 2 invalid input (clap errors too), 1 no solution, no convergence or I/O failure.
 
 use clap::Parser;
+use periodic_contact::asymptotics::catalog::{derive_sliding, SeriesObject};
 use periodic_contact::cli::{args::Format, args::RawArgs, config::RunConfig};
 use periodic_contact::error::{Error, ErrorKind};
 use periodic_contact::model::ModelError;
@@ -10,8 +11,11 @@ use std::process::ExitCode;
 
 fn run(config: RunConfig) -> anyhow::Result<()> {
     match config {
-        RunConfig::Series { object, order, subs, format } => {
-            let parts = object.derive(order, &subs)?;
+        RunConfig::Series { object, order, subs, convention, format } => {
+            let parts = match object {
+                SeriesObject::Sliding(shape) => derive_sliding(shape, convention, order, &subs)?,
+                other => other.derive(order, &subs)?,
+            };
             let text = match format {
                 Format::Text => parts.iter().map(|d| d.text()).collect::<Vec<_>>().join("\n"),
                 Format::Latex => parts.iter().map(|d| d.latex()).collect::<Vec<_>>().join("\n"),

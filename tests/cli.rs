@@ -56,3 +56,21 @@ fn output_is_deterministic() {
     assert_eq!(a, b);
     assert!(a.1.contains(r"j_{1} &= -2 \theta"));
 }
+
+/// Issue 10: `series sliding --convention periodic` prints the periodic expansions (odd powers of
+/// Lambda; the first interaction term of rbar is O(Lambda), THEORY.md section 8); the flag is
+/// refused for objects without a convention.
+#[test]
+fn series_sliding_periodic_convention() {
+    let bin = env!("CARGO_BIN_EXE_periodic-contact");
+    let out = std::process::Command::new(bin)
+        .args(["series", "sliding", "--order", "3", "--convention", "periodic"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("[Lambda^1] 2*kappa*theta^2 + 2*T*invpi - 1/2*kappa"), "{text}");
+    let bad = std::process::Command::new(bin).args(["series", "kernel", "--order", "3", "--convention", "periodic"]).output().unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--convention"));
+}

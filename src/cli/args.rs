@@ -94,6 +94,10 @@ pub enum RawCommand {
         /// Punch shape (sliding).
         #[arg(long, value_enum, default_value_t = ShapeName::Parabolic)]
         shape: ShapeName,
+        /// Surface convention of the sliding expansions (THEORY.md section 8; default paper:
+        /// even powers of Lambda; periodic: odd powers too, symbols kappa = tan(pi theta), invpi = 1/pi).
+        #[arg(long, value_enum)]
+        convention: Option<ConventionName>,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,

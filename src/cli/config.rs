@@ -21,6 +21,8 @@ pub enum RunConfig {
         order: usize,
         /// Exact substitutions.
         subs: Substitutions,
+        /// Surface convention (sliding only).
+        convention: Convention,
         /// Output format.
         format: Format,
     },
@@ -78,13 +80,18 @@ pub fn parse_exact(flag: &str, text: &str) -> Result<Q, ModelError> {
     })
 }
 
+/// The model's convention named on the command line.
+fn convention_of(name: ConventionName) -> Convention {
+    match name {
+        ConventionName::Paper => Convention::Paper,
+        ConventionName::Periodic => Convention::PeriodicSurface,
+    }
+}
+
 /// `--convention` replaces the scene's `[problem] convention` (Problem 1; Problem 2 is the same
 /// problem in both conventions, so there it changes nothing).
 fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), ModelError> {
-    let c = match name {
-        ConventionName::Paper => Convention::Paper,
-        ConventionName::Periodic => Convention::PeriodicSurface,
-    };
+    let c = convention_of(name);
     if let SceneProblem::Sliding(p) = &scene.problem {
         scene.problem = SceneProblem::Sliding(p.to_builder().convention(c).build()?);
     }
@@ -95,7 +102,15 @@ impl RunConfig {
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, ModelError> {
         match args.command {
-            RawCommand::Series { object, order, theta, xh, t, nu, shape, format } => {
+            RawCommand::Series { object, order, theta, xh, t, nu, shape, convention, format } => {
+                if let (Some(c), false) = (convention, object == ObjectName::Sliding) {
+                    return Err(ModelError::new(
+                        "--convention",
+                        format!("{c:?}").to_lowercase(),
+                        "only the sliding series has a surface convention",
+                    ));
+                }
+                let convention = convention.map_or(Convention::Paper, convention_of);
                 let object = match object {
                     ObjectName::Kernel => SeriesObject::Kernel,
                     ObjectName::Weight => SeriesObject::Weight,
@@ -143,7 +158,7 @@ impl RunConfig {
                         return Err(ModelError::new("--nu", v, "only the adhesion series takes nu"));
                     }
                 }
-                Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t, nu }, format })
+                Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t, nu }, convention, format })
             }
             RawCommand::Solve { scene, digits, method, order, convention, format, json } => {
                 let text = std::fs::read_to_string(&scene)
