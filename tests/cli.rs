@@ -1,15 +1,7 @@
 //! The command line as a user meets it: exit codes and messages (0 ok, 2 invalid input).
 
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_periodic-contact")).args(args).output().expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::run;
 
 #[test]
 fn series_json_has_the_documented_layout() {
@@ -62,15 +54,10 @@ fn output_is_deterministic() {
 /// refused for objects without a convention.
 #[test]
 fn series_sliding_periodic_convention() {
-    let bin = env!("CARGO_BIN_EXE_periodic-contact");
-    let out = std::process::Command::new(bin)
-        .args(["series", "sliding", "--order", "3", "--convention", "periodic"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0));
-    let text = String::from_utf8_lossy(&out.stdout);
+    let (code, text, err) = run(&["series", "sliding", "--order", "3", "--convention", "periodic"]);
+    assert_eq!(code, 0, "{err}");
     assert!(text.contains("[Lambda^1] 2*kappa*theta^2 + 2*T*invpi - 1/2*kappa"), "{text}");
-    let bad = std::process::Command::new(bin).args(["series", "kernel", "--order", "3", "--convention", "periodic"]).output().unwrap();
-    assert_eq!(bad.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&bad.stderr).contains("--convention"));
+    let (code, _, err) = run(&["series", "kernel", "--order", "3", "--convention", "periodic"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--convention"), "{err}");
 }

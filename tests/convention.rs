@@ -7,8 +7,8 @@ use periodic_contact::model::{Convention, Exact, Material, Period, PunchShape, S
 use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, SlidingSolutionF64, SolverOptions};
 use periodic_contact::sliding::{solve_verified, SlidingSolution};
 use rug::Float;
-use std::io::Write;
-use std::process::Command;
+mod common;
+use common::{json, run, scene_file};
 
 fn q(s: &str) -> Exact {
     exact_series::parse_rational(s).unwrap()
@@ -169,29 +169,6 @@ fn frictionless_conventions_coincide() {
 
 // ---- scene key and command line ----
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_periodic-contact")).args(args).output().expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
-
-fn scene_file(name: &str, text: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("periodic-contact-convention-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::File::create(&p).unwrap().write_all(text.as_bytes()).unwrap();
-    p.display().to_string()
-}
-
 /// THEORY's check value as a scene, with `convention` as the [problem] line (may be empty).
 fn check_scene(convention_line: &str) -> String {
     format!(
@@ -281,28 +258,16 @@ fn adhesion_scenes_accept_either_convention_unchanged() {
 /// Issue 10: a refusal in `paper` that `periodic` solves says so, and `periodic` then answers.
 #[test]
 fn paper_refusal_points_to_the_periodic_convention() {
-    let dir = std::env::temp_dir().join(format!("periodic-contact-hint-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let scene = dir.join("sinusoid_mu06.toml");
-    std::fs::write(
-        &scene,
+    let scene = scene_file(
+        "sinusoid_mu06.toml",
         "[problem]\nkind = \"sliding\"\n[material]\npoisson_ratio = \"0\"\ncontact_modulus = \"1\"\n[punch]\n\
          shape = \"sinusoidal\"\namplitude = \"0.01\"\nperiod = \"1\"\n[sliding]\nnormal_load = \"0.02\"\nfriction = \"0.6\"\n",
-    )
-    .unwrap();
-    let bin = env!("CARGO_BIN_EXE_periodic-contact");
+    );
     for method in ["mpfr", "f64"] {
-        let out = std::process::Command::new(bin)
-            .args(["solve", scene.to_str().unwrap(), "--method", method, "--digits", "20"])
-            .output()
-            .unwrap();
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{method}: {err}");
+        let (code, _, err) = run(&["solve", &scene, "--method", method, "--digits", "20"]);
+        assert_eq!(code, 1, "{method}: {err}");
         assert!(err.contains("--convention periodic"), "{method}: {err}");
-        let ok = std::process::Command::new(bin)
-            .args(["solve", scene.to_str().unwrap(), "--method", method, "--digits", "20", "--convention", "periodic"])
-            .output()
-            .unwrap();
-        assert_eq!(ok.status.code(), Some(0), "{method}: {}", String::from_utf8_lossy(&ok.stderr));
+        let (code, _, err) = run(&["solve", &scene, "--method", method, "--digits", "20", "--convention", "periodic"]);
+        assert_eq!(code, 0, "{method}: {err}");
     }
 }

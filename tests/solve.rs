@@ -1,34 +1,11 @@
 //! `periodic-contact solve`: the three routes of Problem 1 agree, the two methods of Problem 2
 //! agree, bad input is exit code 2, no solution is exit code 1, output is deterministic.
 
-use std::io::Write;
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_periodic-contact")).args(args).output().expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
+mod common;
+use common::{json, run, scene_file};
 
 fn num(v: &serde_json::Value, key: &str) -> f64 {
     v[key].as_str().unwrap_or_else(|| panic!("{key} is a string")).parse().unwrap()
-}
-
-fn scene_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("periodic-contact-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::File::create(&p).unwrap().write_all(text.as_bytes()).unwrap();
-    p
 }
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
@@ -88,7 +65,7 @@ fn exit_codes() {
         "bad.toml",
         &std::fs::read_to_string(SCENE).unwrap().replace("\"0.3\"\ncontact", "\"0.7\"\ncontact"),
     );
-    let (code, _, err) = run(&["solve", bad.to_str().unwrap()]);
+    let (code, _, err) = run(&["solve", &bad]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("poisson_ratio = 7/10: must lie in [0, 1/2]"), "{err}");
     for digits in ["0", "1000000000", "-5", "many"] {
@@ -105,7 +82,7 @@ fn exit_codes() {
             .replace("shape = \"parabolic\"\nk = \"1\"", "shape = \"sinusoidal\"\namplitude = \"0.01\"")
             .replace("normal_load = \"0.01\"", "half_length = \"0.4999\""),
     );
-    let (code, out, err) = run(&["solve", near_full.to_str().unwrap(), "--digits", "20", "--json"]);
+    let (code, out, err) = run(&["solve", &near_full, "--digits", "20", "--json"]);
     // The size is valid input; the quadrature cannot reach 20 digits this close to pi/2: a
     // no-convergence refusal (exit 1) naming lambda, never a panic or a silent NaN.
     assert_eq!(code, 1, "{out}{err}");
@@ -129,7 +106,7 @@ normal_load = "10"
 wear = "0.5"
 "#,
     );
-    let (code, out, err) = run(&["solve", heavy.to_str().unwrap(), "--digits", "20"]);
+    let (code, out, err) = run(&["solve", &heavy, "--digits", "20"]);
     assert_eq!(code, 1, "{out}{err}");
     assert!(err.contains("no solution"), "{err}");
     assert!(!err.contains("panicked"));

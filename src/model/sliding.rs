@@ -2,7 +2,7 @@
 //! (THEORY.md section 3; the paper's (1.3), (2.8)).
 
 use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
-use num_traits::Signed;
+use num_traits::{Signed, Zero};
 
 /// What fixes the contact size.
 #[derive(Debug, Clone, PartialEq)]
@@ -179,7 +179,17 @@ impl SlidingProblemBuilder {
                 ));
             }
         }
-        Ok(SlidingProblem { material, period, shape, friction, adhesive_friction, wear, speed, load, convention: self.convention })
+        Ok(SlidingProblem {
+            material,
+            period,
+            shape,
+            friction,
+            adhesive_friction,
+            wear,
+            speed,
+            load,
+            convention: self.convention,
+        })
     }
 }
 
@@ -239,6 +249,13 @@ impl SlidingProblem {
     /// Surface convention.
     pub fn convention(&self) -> Convention {
         self.convention
+    }
+
+    /// kappa = 0 and tau0 = 0: the right side of [2.8] is (E*/2) g' alone (theta = 0, T = 0, the
+    /// frictionless equation, whose closed forms apply), and K = (kappa P2 - 2 beta l tau0)/L
+    /// vanishes, so the `paper` and `periodic` conventions coincide (THEORY.md section 8).
+    pub fn kappa_and_tau0_vanish(&self) -> bool {
+        self.kappa().is_zero() && self.adhesive_friction.is_zero()
     }
 
     /// kappa = E* cW / 2 - beta mu (THEORY.md section 3, the paper's (2.8)), exact.

@@ -32,8 +32,8 @@ pub fn digits_cap_for_bits(bits: u32) -> f64 {
 /// Digits of agreement `-log10(|difference| / |scale|)` under the edge rule of the module doc.
 pub fn verified_digits(difference: f64, scale: f64, cap: f64) -> f64 {
     let (d, s) = (difference.abs(), scale.abs());
-    if !d.is_finite() || !s.is_finite() || !cap.is_finite() {
-        return if d == 0.0 && s.is_finite() && cap.is_finite() { cap.max(0.0) } else { 0.0 };
+    if !d.is_finite() || !s.is_finite() {
+        return 0.0;
     }
     if d == 0.0 {
         return cap.max(0.0);
@@ -191,6 +191,13 @@ mod tests {
         assert!((verified_digits(1e-10, 1.0, 15.0) - 10.0).abs() < 1e-12);
         assert!((verified_digits(-1e-10, -10.0, 15.0) - 11.0).abs() < 1e-12);
         assert_eq!(verified_digits(1e-30, 1.0, 15.0), 15.0);
+        // An uncapped comparison (closed forms): a zero difference is infinitely many digits, as
+        // in the MPFR variant.
+        assert_eq!(verified_digits(0.0, 1.0, f64::INFINITY), f64::INFINITY);
+        assert_eq!(
+            verified_digits_mpfr(&Float::with_val(64, 0), &Float::with_val(64, 1), f64::INFINITY),
+            f64::INFINITY
+        );
         assert_eq!(verified_digits(2.0, 1.0, 15.0), 0.0);
         // No overflow of d/s for extreme but finite values.
         assert!((verified_digits(1e-300, 1e300, 1000.0) - 600.0).abs() < 1e-9);

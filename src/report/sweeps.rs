@@ -5,7 +5,6 @@
 //! single-punch laws: l_s = a0/sqrt(1 - 4 theta^2) [3.10] (Problem 1, parabola) and
 //! P2 = C_P E* k a^2 [3.18] (Problem 2).
 
-use crate::params::sliding::{hertz_half_width_f64, SlidingParamsF64};
 use super::calibration::choose;
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::choice::target_of;
@@ -13,6 +12,7 @@ use super::runner::{self, Knob};
 use super::section::{Ctx, Section};
 use crate::model::{Exact, Period, PunchShape};
 use crate::numerics::exact::to_f64;
+use crate::params::sliding::{hertz_half_width_f64, SlidingParamsF64};
 use crate::scene::{Scene, SceneProblem};
 use std::f64::consts::PI;
 use std::fmt::Write as _;
@@ -40,8 +40,7 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
     match problem {
         SceneProblem::Sliding(p) => {
             let e = f(p.material().contact_modulus());
-            let frictionless =
-                p.kappa() == Exact::from_integer(0.into()) && *p.adhesive_friction() == Exact::from_integer(0.into());
+            let frictionless = p.kappa_and_tau0_vanish();
             let big_l = match p.period() {
                 Period::Finite(l) => Some(f(l)),
                 Period::Infinite => None,

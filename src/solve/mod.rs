@@ -65,9 +65,7 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
 /// convention would solve says so (THEORY.md section 8): the fast f64 method is run on the same
 /// problem in `periodic` and, when it finds a physical contact, the message names the way forward.
 fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
-    let closes_anyway = p.kappa() == crate::model::Exact::from_integer(0.into())
-        && *p.adhesive_friction() == crate::model::Exact::from_integer(0.into());
-    if p.convention() != Convention::Paper || closes_anyway || matches!(p.period(), Period::Infinite) {
+    if p.convention() != Convention::Paper || p.kappa_and_tau0_vanish() || matches!(p.period(), Period::Infinite) {
         return e;
     }
     let Ok(periodic) = p.to_builder().convention(Convention::PeriodicSurface).build() else { return e };
@@ -113,7 +111,11 @@ fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<
     if sols.is_empty() {
         return Err(Error::NotPhysical { why: "no physical contact was found".into() });
     }
-    Ok(sliding_top(sols.iter().map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v, p.convention()), req.digits)).collect()))
+    Ok(sliding_top(
+        sols.iter()
+            .map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v, p.convention()), req.digits))
+            .collect(),
+    ))
 }
 
 fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
@@ -137,7 +139,10 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<V
 
 fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let s = sliding::series::solve_series(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits, p.convention()), req.digits)]))
+    Ok(sliding_top(vec![render::sliding_json(
+        &answer_series::sliding_answer(&s, req.digits, p.convention()),
+        req.digits,
+    )]))
 }
 
 fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {

@@ -31,35 +31,36 @@ impl Num {
     }
 }
 
-/// A value known to `digits` digits of `scale` (|error| <= 10^-digits |scale|).
+/// A value and its scale, of one number type.
+#[derive(Debug, Clone, PartialEq)]
+enum ValueAndScale {
+    F64(f64, f64),
+    Mpfr(Float, Float),
+}
+
+/// A value known to `digits` digits of its scale (|error| <= 10^-digits |scale|).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Measured {
-    /// The value.
-    pub value: Num,
-    /// Its scale (the table of scales of the problem).
-    pub scale: Num,
-    /// Digits relative to the scale.
-    pub digits: f64,
+    pair: ValueAndScale,
+    digits: f64,
 }
 
 impl Measured {
-    /// An MPFR value.
+    /// An MPFR value and its scale (the table of scales of the problem).
     pub fn mpfr(value: Float, scale: &Float, digits: f64) -> Self {
-        Measured { value: Num::Mpfr(value), scale: Num::Mpfr(scale.clone()), digits }
+        Measured { pair: ValueAndScale::Mpfr(value, scale.clone()), digits }
     }
 
-    /// An `f64` value.
+    /// An `f64` value and its scale.
     pub fn f64(value: f64, scale: f64, digits: f64) -> Self {
-        Measured { value: Num::F64(value), scale: Num::F64(scale), digits }
+        Measured { pair: ValueAndScale::F64(value, scale), digits }
     }
 
     /// Printed under the accuracy rule, at most `requested` significant digits.
     pub fn print(&self, requested: u32) -> String {
-        match (&self.value, &self.scale) {
-            (Num::F64(v), Num::F64(s)) => print_f64(*v, *s, self.digits, requested),
-            (Num::Mpfr(v), Num::Mpfr(s)) => print_mpfr(v, s, self.digits, requested),
-            (Num::F64(v), Num::Mpfr(s)) => print_f64(*v, s.to_f64(), self.digits, requested),
-            (Num::Mpfr(v), Num::F64(s)) => print_mpfr(v, &Float::with_val(v.prec(), *s), self.digits, requested),
+        match &self.pair {
+            ValueAndScale::F64(v, s) => print_f64(*v, *s, self.digits, requested),
+            ValueAndScale::Mpfr(v, s) => print_mpfr(v, s, self.digits, requested),
         }
     }
 }
