@@ -45,7 +45,9 @@ fn conditioning() {
     let points = vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100), q(999, 1000)];
     let sizes = match std::env::var("ADHESION_CHART_SMALL") {
         Ok(_) => vec![q(1, 20), q(1, 10), q(3, 20)],
-        Err(_) => vec![q(1, 20), q(1, 10), q(3, 20), q(1, 5), q(1, 4), q(3, 10), q(7, 20), q(2, 5), q(9, 20), q(19, 40)],
+        Err(_) => {
+            vec![q(1, 20), q(1, 10), q(3, 20), q(1, 5), q(1, 4), q(3, 10), q(7, 20), q(2, 5), q(9, 20), q(19, 40)]
+        }
     };
     for nu in [q(0, 1), q(3, 10), q(9, 20), q(1, 2)] {
         for a_over_l in &sizes {
@@ -108,7 +110,8 @@ fn series_ratios() {
         let u = UniversalSeries::new(&constants, SeriesParams::NOMINAL).unwrap();
         let f = &u.f;
         let n = f.len();
-        let r: Vec<String> = (n - 8..n - 1).chain([20usize, 40, 60]).map(|k| format!("{:.4}", f[k] / f[k + 1])).collect();
+        let r: Vec<String> =
+            (n - 8..n - 1).chain([20usize, 40, 60]).map(|k| format!("{:.4}", f[k] / f[k + 1])).collect();
         println!("nu {nu} eps {:.4} ratios {r:?}", constants.eps);
         let signs: String = f.iter().map(|x| if *x > 0.0 { '+' } else { '-' }).collect();
         println!("   signs {signs}");

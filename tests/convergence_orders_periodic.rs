@@ -46,7 +46,12 @@ fn periodic_series_remainders_have_the_predicted_orders() {
                 row.predicted_l
             );
             let oc = row.observed_c.expect("c does not vanish with friction");
-            assert!((oc - row.predicted).abs() < 0.1, "{label}: centre, m = {}: {oc} vs {}", row.corrections, row.predicted);
+            assert!(
+                (oc - row.predicted).abs() < 0.1,
+                "{label}: centre, m = {}: {oc} vs {}",
+                row.corrections,
+                row.predicted
+            );
         }
     }
 }

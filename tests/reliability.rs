@@ -5,9 +5,7 @@
 use clap::Parser;
 use exact_series::Q;
 use periodic_contact::cli::{args::RawArgs, config::RunConfig};
-use periodic_contact::model::{
-    AdhesionProblem, AdhesionSize, Material, Period, PunchShape, SlidingProblem,
-};
+use periodic_contact::model::{AdhesionProblem, AdhesionSize, Material, Period, PunchShape, SlidingProblem};
 use periodic_contact::scene::parse::parse_scene;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};

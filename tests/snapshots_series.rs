@@ -2,8 +2,8 @@
 //! tables, reviewed like code). Snapshot files live in the top-level `snapshots/` folder.
 
 use periodic_contact::asymptotics::catalog::{derive_sliding, SeriesObject, Substitutions};
-use periodic_contact::model::Convention;
 use periodic_contact::asymptotics::sliding::SlidingShape;
+use periodic_contact::model::Convention;
 
 fn snap(name: &str, object: SeriesObject, subs: Substitutions) {
     snap_parts(name, object.derive(12, &subs).unwrap());
@@ -84,7 +84,8 @@ fn derive_sliding_paper_is_the_catalog_object() {
     for shape in [SlidingShape::Parabolic, SlidingShape::Sinusoidal] {
         let a = derive_sliding(shape, Convention::Paper, 12, &Substitutions::default()).unwrap();
         let b = SeriesObject::Sliding(shape).derive(12, &Substitutions::default()).unwrap();
-        let text = |v: &[periodic_contact::asymptotics::catalog::Derived]| v.iter().map(|d| d.text()).collect::<Vec<_>>();
+        let text =
+            |v: &[periodic_contact::asymptotics::catalog::Derived]| v.iter().map(|d| d.text()).collect::<Vec<_>>();
         assert_eq!(text(&a), text(&b));
     }
 }

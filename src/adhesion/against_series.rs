@@ -83,8 +83,13 @@ fn remainders_against_full_solution() {
                 AdhesionSize::HalfWidth(a.clone()),
             )
             .unwrap();
-            let sol =
-                solve_mpfr_with(&problem, std::slice::from_ref(&xi), VolterraParams::for_digits(30), super::TensionZones::Skip).unwrap();
+            let sol = solve_mpfr_with(
+                &problem,
+                std::slice::from_ref(&xi),
+                VolterraParams::for_digits(30),
+                super::TensionZones::Skip,
+            )
+            .unwrap();
             let lambda = Float::with_val(prec, &sol.lambda);
             let a_f = crate::numerics::exact::to_float(&a, prec);
             let load =

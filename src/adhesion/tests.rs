@@ -107,7 +107,8 @@ fn adhesion_flat_punch_sadowsky_and_unit_load() {
         let (mut sr, mut si) = (0.0, 0.0);
         for &(s, c, w) in &rule {
             let chi = lam * (s - c);
-            let (r, i) = flat_punch_stress(chi, 2.0 * lam * s, 2.0 * lam * c, lam, eps, (std::f64::consts::PI * eps).cosh());
+            let (r, i) =
+                flat_punch_stress(chi, 2.0 * lam * s, 2.0 * lam * c, lam, eps, (std::f64::consts::PI * eps).cosh());
             sr += w * r * 2.0 * lam / std::f64::consts::PI;
             si += w * i * 2.0 * lam / std::f64::consts::PI;
         }
@@ -447,9 +448,13 @@ fn f64_estimate_never_overclaims() {
             cap,
         );
         let e = f.digits_estimated;
-        for (name, est, tru) in
-            [("size", e.size, truth.size), ("psi", e.psi, truth.psi), ("phi", e.phi, truth.phi), ("q1", e.q1, truth.q1), ("q2", e.q2, truth.q2)]
-        {
+        for (name, est, tru) in [
+            ("size", e.size, truth.size),
+            ("psi", e.psi, truth.psi),
+            ("phi", e.phi, truth.phi),
+            ("q1", e.q1, truth.q1),
+            ("q2", e.q2, truth.q2),
+        ] {
             eprintln!("nu {nu} a/L {a} {name}: estimated {est:.2} true {tru:.2}");
             assert!(est <= tru + 0.3, "nu {nu} a/L {a} {name}: estimated {est:.2} > true {tru:.2} + 0.3");
         }

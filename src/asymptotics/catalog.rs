@@ -2,8 +2,8 @@
 //! the report print: each with its name, formula, equation number and expansion variable.
 
 use super::sliding::{sliding_expansion, sliding_expansion_with, SlidingExpansion, SlidingShape};
-use crate::model::Convention;
 use super::{jacobi_moments::jacobi_moments, kernel::kernel_series, weight::weight_series};
+use crate::model::Convention;
 use exact_series::{Frac, Poly, Ring, Series, SeriesError, Symbol, Q};
 
 /// A derived object, ready to print.
@@ -126,9 +126,23 @@ fn sliding_parts(e: &SlidingExpansion, order: usize, subs: &Substitutions) -> Re
     let f0_sub = substitute(Series::constant(Frac::from_poly(f0.clone()), 1), &mut vec![], subs)?;
     if !f0_sub.coeff(0).is_some_and(|c| c.is_zero()) {
         let ratio = Series::from_coeffs(
-            e.f_def_scaled.coeffs().iter().map(|c| Frac::new(c.clone(), f0.clone()).expect("F_def,s is not the zero polynomial")).collect(),
+            e.f_def_scaled
+                .coeffs()
+                .iter()
+                .map(|c| Frac::new(c.clone(), f0.clone()).expect("F_def,s is not the zero polynomial"))
+                .collect(),
         );
-        parts.insert(2, ("F_def_over_F_def_s", "F_def/F_def,s (deformation component of the sliding resistance)", src, "Lambda", ratio, vec![theta, t]));
+        parts.insert(
+            2,
+            (
+                "F_def_over_F_def_s",
+                "F_def/F_def,s (deformation component of the sliding resistance)",
+                src,
+                "Lambda",
+                ratio,
+                vec![theta, t],
+            ),
+        );
     }
     Ok(parts)
 }

@@ -400,7 +400,9 @@ mod tests {
         assert_eq!(per.f_def_scaled.coeff(0), paper.f_def_scaled.coeff(0));
         let d1 = per.f_def_scaled.coeff(1).unwrap().sub(paper.f_def_scaled.coeff(1).unwrap());
         let quarter = one_minus.scale(&Q::new(1.into(), 4.into()));
-        let want = quarter.mul_int(4).mul(&kappa.mul(&one_minus).scale(&Q::new((-1).into(), 2.into())).add(&t.mul(&invpi).mul_int(2)));
+        let want = quarter
+            .mul_int(4)
+            .mul(&kappa.mul(&one_minus).scale(&Q::new((-1).into(), 2.into())).add(&t.mul(&invpi).mul_int(2)));
         assert_eq!(d1, want);
         assert!(paper.f_def_scaled.coeff(1).unwrap().is_zero());
     }
@@ -410,9 +412,7 @@ mod tests {
         for shape in [SlidingShape::Parabolic, SlidingShape::Sinusoidal] {
             let paper = sliding_expansion(shape, 8).unwrap();
             let per = sliding_expansion_with(shape, 8, Convention::PeriodicSurface).unwrap();
-            let z = |p: &Poly| {
-                p.subs(Symbol::new("kappa").unwrap(), &zero()).subs(Symbol::new("T").unwrap(), &zero())
-            };
+            let z = |p: &Poly| p.subs(Symbol::new("kappa").unwrap(), &zero()).subs(Symbol::new("T").unwrap(), &zero());
             for k in 0..=8 {
                 assert_eq!(z(per.l_over_ls.coeff(k).unwrap()), z(paper.l_over_ls.coeff(k).unwrap()), "{shape:?} l {k}");
                 assert_eq!(

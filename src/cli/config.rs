@@ -1,9 +1,9 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
 use super::args::{ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
-use crate::model::{Convention, ModelError};
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
 use crate::asymptotics::sliding::SlidingShape;
+use crate::model::{Convention, ModelError};
 use crate::scene::{parse::parse_scene, Method, Scene, SceneProblem};
 use crate::solve::{SolveRequest, DEFAULT_DIGITS};
 use exact_series::{parse_rational, Q};

@@ -47,7 +47,11 @@ impl AdhesionProblem {
         }
         if let (AdhesionSize::HalfWidth(a), Period::Finite(l)) = (&size, &period) {
             if (a + a) >= *l {
-                return Err(ModelError::new("half_width", readable(a), format!("must satisfy 2 a < L = {}", readable(l))));
+                return Err(ModelError::new(
+                    "half_width",
+                    readable(a),
+                    format!("must satisfy 2 a < L = {}", readable(l)),
+                ));
             }
         }
         Ok(AdhesionProblem { material, period, shape, size })

@@ -295,7 +295,11 @@ impl SlidingParamsMpfr {
         let pi = Float::with_val(prec, Constant::Pi);
         let kappa = to_float(&problem.kappa(), prec);
         let theta = theta_mpfr(&kappa);
-        check_theta(Float::with_val(53, theta.abs_ref()).to_f64(), crate::numerics::accuracy::readable_mpfr(&theta), problem)?;
+        check_theta(
+            Float::with_val(53, theta.abs_ref()).to_f64(),
+            crate::numerics::accuracy::readable_mpfr(&theta),
+            problem,
+        )?;
         let cos_pi_theta = Float::with_val(prec, &pi * &theta).cos();
         let period = match problem.period() {
             Period::Finite(l) => Some(to_float(l, prec)),

@@ -18,10 +18,10 @@
 //!
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 
-use crate::params::sliding::{single_punch_half_length_f64, SlidingParamsF64};
 use super::runner::{self, ExpansionCache, Knob, Outcome};
 use crate::model::{AdhesionProblem, AdhesionSize};
 use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::params::sliding::{single_punch_half_length_f64, SlidingParamsF64};
 use crate::scene::SceneProblem;
 use exact_series::Q;
 use std::fmt::Write as _;

@@ -268,8 +268,8 @@ fn adhesion_series(p: &AdhesionProblem, n: usize) -> Result<Outcome, String> {
     let e = adhesion_expansion_cached()?;
     let prec = SERIES_BITS;
     let start = Instant::now();
-    let v =
-        crate::asymptotics::adhesion::adhesion_values(e, p.material().poisson_ratio(), prec).map_err(|e| e.to_string())?;
+    let v = crate::asymptotics::adhesion::adhesion_values(e, p.material().poisson_ratio(), prec)
+        .map_err(|e| e.to_string())?;
     let to = |q: &crate::model::Exact| crate::numerics::exact::to_float(q, prec);
     let k = match p.shape() {
         PunchShape::Parabolic { k } => to(k),

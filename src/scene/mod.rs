@@ -180,8 +180,7 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
             } else {
                 SlidingLoad::HalfLength(v.clone())
             };
-            p.to_builder().load(load).build().ok()
-            .map(SceneProblem::Sliding)
+            p.to_builder().load(load).build().ok().map(SceneProblem::Sliding)
         }
         (SceneProblem::Adhesion(p), SweepParameter::NormalLoad | SweepParameter::HalfWidth) => {
             let size = if parameter == SweepParameter::NormalLoad {

@@ -23,7 +23,10 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
         let rows = s
             .points
             .iter()
-            .map(|pt| FieldRow { x_over_a: exact_series::q_text(&pt.x_over_a), value: Measured::mpfr(get(pt), scale, dg) })
+            .map(|pt| FieldRow {
+                x_over_a: exact_series::q_text(&pt.x_over_a),
+                value: Measured::mpfr(get(pt), scale, dg),
+            })
             .collect();
         (name.to_string(), rows)
     };

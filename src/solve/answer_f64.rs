@@ -56,11 +56,7 @@ pub fn sliding_answer(s: &SlidingSolutionF64, periodic: bool, convention: Conven
         pressure: s
             .pressure
             .iter()
-            .map(|q| PressureRow {
-                xh: Num::F64(q.xh),
-                x: m(q.x, Quantity::Size),
-                p: m(q.p, Quantity::Pressure),
-            })
+            .map(|q| PressureRow { xh: Num::F64(q.xh), x: m(q.x, Quantity::Size), p: m(q.p, Quantity::Pressure) })
             .collect(),
     }
 }

@@ -18,10 +18,8 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention
     let scale = |q: SlidingScale| q.mpfr(&s.k, &s.l, &s.p2, &s.max_pressure);
     let length = scale(SlidingScale::Length);
     let on = |x: &rug::Float, sc: &rug::Float, d: f64| Measured::mpfr(x.clone(), sc, d);
-    let mut accuracy: Vec<(String, f64)> = [("a", g), ("b", g), ("c", g), ("F_def", fd)]
-        .into_iter()
-        .map(|(k, d)| (k.to_string(), d))
-        .collect();
+    let mut accuracy: Vec<(String, f64)> =
+        [("a", g), ("b", g), ("c", g), ("F_def", fd)].into_iter().map(|(k, d)| (k.to_string(), d)).collect();
     if let Some(pd) = acc.pressure {
         accuracy.push(("p".into(), pd));
     }

@@ -26,4 +26,3 @@ pub fn text(v: &Value) -> String {
     walk("", v, &mut out);
     out
 }
-

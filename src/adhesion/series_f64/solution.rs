@@ -59,9 +59,7 @@ pub(super) fn solve_run(
     let k = conv(problem.curvature(), "k")?;
     let pi = std::f64::consts::PI;
     let (lambda, a, sol) = match (problem.size(), problem.period()) {
-        (AdhesionSize::HalfWidth(a), Period::Infinite) => {
-            (0.0, conv(a, "half_width")?, solve(universal, 0.0)?)
-        }
+        (AdhesionSize::HalfWidth(a), Period::Infinite) => (0.0, conv(a, "half_width")?, solve(universal, 0.0)?),
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
             let lam = pi * conv(&(a / l), "half_width")?;
             (lam, conv(a, "half_width")?, solve(universal, lam)?)

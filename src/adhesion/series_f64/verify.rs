@@ -23,8 +23,8 @@ pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhesion
     let constants = AdhesionParamsF64::new(problem.material());
     let nominal = UniversalSeries::new(&constants, SeriesParams::NOMINAL)?;
     let mut sol = solve_run(problem, points, &nominal)?;
-    let fine = UniversalSeries::new(&constants, SeriesParams::NOMINAL.refined())
-        .and_then(|u| solve_run(problem, points, &u));
+    let fine =
+        UniversalSeries::new(&constants, SeriesParams::NOMINAL.refined()).and_then(|u| solve_run(problem, points, &u));
     sol.digits_estimated = match fine {
         Ok(fine) => estimate(problem, &sol, &fine),
         // The finer run is outside its range where the nominal one is not: nothing is confirmed.

@@ -187,4 +187,3 @@ mod tests {
         assert!(Float::with_val(prec, i1 - i2).abs().to_f64() < 1e-35);
     }
 }
-

@@ -132,8 +132,7 @@ pub fn solve_mpfr_with(
         let d = Float::with_val(low.prec, ln_d.min(0.0)).exp();
         low.stress_ratio_near_edge(&d).0.to_f64()
     };
-    let tension =
-        tension_report(
+    let tension = tension_report(
         sol.edge_stress_factor(),
         sol.eps.to_f64(),
         at_points,

@@ -1,12 +1,12 @@
 //! The accuracy estimate of the f64 method: a second ("check") run with n + max(8, n/4) nodes,
 //! compared quantity by quantity with the main run on the scales of the accuracy rule.
 
-use crate::params::sliding::SlidingScale;
 use super::candidates::{state_of, Candidate};
 use super::error::Result;
 use super::operator::collocation;
 use super::outputs::{outputs, Outputs};
 use super::solution::{AccuracyEstimate, PerQuantity, Quantity, Scales};
+use crate::params::sliding::SlidingScale;
 use crate::params::sliding::{SlidingParamsF64, TargetF64};
 
 /// Nodes of the check run: n + max(8, n/4). The error falls by tan(lambda/2)^{n/4} or more, so

@@ -5,7 +5,6 @@
 //! l for a, b, c; max p for p(x); P2 for P1 and P2; k l P2 for F_def (for the sinusoid the
 //! osculating k = 2 pi^2 D/L^2). The headline is the minimum.
 
-use crate::params::sliding::SlidingScale;
 use super::error::SlidingError;
 use super::setup::Setup;
 use super::solution::{Accuracy, SlidingSolution, VerifiedSolution};
@@ -14,6 +13,7 @@ use crate::model::{Exact, SlidingProblem};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64, readable_mpfr};
 use crate::numerics::precision::VERIFY_EXTRA_BITS;
 use crate::params::sliding::SlidingParamsMpfr;
+use crate::params::sliding::SlidingScale;
 use rug::Float;
 
 pub use crate::numerics::precision::precision_for;

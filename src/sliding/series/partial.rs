@@ -45,7 +45,8 @@ pub fn partial(e: &SlidingExpansion, order: usize, sp: &SeriesPoint, xh: &[Float
         let binds = [th.clone(), t.clone(), kappa.clone(), invpi.clone(), (xh_s, x.clone())];
         for pj in e.pressure.iter().take(order / e.step) {
             lam_pow *= &l_step;
-            let v = evaluate::poly_mpfr(pj, &binds, prec).expect("the pressure terms hold only theta, T, kappa, invpi and xh");
+            let v = evaluate::poly_mpfr(pj, &binds, prec)
+                .expect("the pressure terms hold only theta, T, kappa, invpi and xh");
             b += Float::with_val(prec, &lam_pow * v);
         }
         let ep = Float::with_val(prec, &half + &sp.theta);
