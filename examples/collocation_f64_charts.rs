@@ -319,7 +319,7 @@ fn chart_hard_cases() {
         match solve_sliding_f64(pb, &[0.0], &SolverOptions::default()) {
             Ok(s) => {
                 let s = s.primary();
-                println!("{name}: theta {:.4} lambda {:.6} l {:.6e} c {:.6e} P2 {:.6e} n {} est {:.1e} min_gap {:.1e} ({:?})", s.theta, s.lambda, s.l, s.c, s.p2, s.nodes, s.accuracy.max(), s.min_gap, t0.elapsed());
+                println!("{name}: theta {:.4} lambda {:.6} l {:.6e} c {:.6e} P2 {:.6e} n {} est {:.1e} min_gap {:.1e} ({:?})", s.theta, s.lambda, s.l, s.c, s.p2, s.nodes, s.accuracy.max(), s.physicality.min_gap, t0.elapsed());
             }
             Err(e) => println!("{name}: ERROR {e} ({:?})", t0.elapsed()),
         }
@@ -409,8 +409,8 @@ fn chart_sinusoid_load_curve() {
                                 "P2/(pi D) {:.6} c/l {:.4} mingap {:.1e} closure {:.1e}",
                                 s.p2 / (PI * 0.1),
                                 s.c / s.l,
-                                s.min_gap,
-                                s.gap_closure
+                                s.physicality.min_gap,
+                                s.physicality.closure_defect
                             )
                         })
                         .collect();

@@ -18,7 +18,7 @@ use periodic_contact::numerics::gauss_jacobi_mpfr::gauss_jacobi;
 use periodic_contact::params::sliding::SlidingParamsMpfr;
 use periodic_contact::sliding::reduction_mpfr::contact::{Contact, Size};
 use periodic_contact::sliding::reduction_mpfr::equation::{equation_terms, shift_solutions};
-use periodic_contact::sliding::reduction_mpfr::physical::{check_gap, check_pressure};
+use periodic_contact::sliding::reduction_mpfr::physical::physicality;
 use periodic_contact::sliding::reduction_mpfr::pressure::Pressure;
 use periodic_contact::sliding::reduction_mpfr::solve::nodes_for;
 use periodic_contact::sliding::solve_verified;
@@ -146,10 +146,12 @@ fn load_curve(convention: Convention) {
             for s in shift_solutions(&params, &size, &terms) {
                 let contact = Contact::new(&params, &size, s.c.clone());
                 let pr = Pressure::new(&params, &contact, &rule);
-                let ok = check_pressure(&params, &pr).and_then(|_| check_gap(&params, &contact, &pr));
-                let verdict = match ok {
+                let l = &size.l;
+                let p1 = Float::with_val(64, &params.mu * &s.p2) + Float::with_val(64, l * &params.tau0) * 2u32;
+                let verdict = match physicality(&params, &contact, &pr, &p1, &s.p2) {
+                    Ok(a) if a.warning.is_some() => format!("ok, warning: gap {:.2e}", a.min_gap),
                     Ok(_) => "ok".to_string(),
-                    Err(e) => e.to_string().chars().skip(30).take(110).collect::<String>(),
+                    Err(r) => r.why().chars().take(110).collect::<String>(),
                 };
                 line += &format!(" [P2 {:.6} c {:.4} {verdict}]", s.p2.to_f64(), s.c.to_f64());
             }

@@ -20,6 +20,7 @@ fn periodic_series_remainders_have_the_predicted_orders() {
     let cases = [
         ("friction mu = 0.3", parabola_case(q(3, 10), q(3, 10), q(0, 1), q(0, 1), q(1, 100))),
         ("friction + tau0", parabola_case(q(3, 10), q(1, 5), q(1, 500), q(0, 1), q(1, 100))),
+        ("wear cW = 0.3", parabola_case(q(3, 10), q(0, 1), q(0, 1), q(3, 10), q(1, 100))),
     ];
     for (label, p) in cases {
         let p = p.to_builder().convention(Convention::PeriodicSurface).build().unwrap();
@@ -45,7 +46,7 @@ fn periodic_series_remainders_have_the_predicted_orders() {
                 row.observed_l,
                 row.predicted_l
             );
-            let oc = row.observed_c.expect("c does not vanish with friction");
+            let oc = row.observed_c.expect("c does not vanish with friction or wear");
             assert!(
                 (oc - row.predicted).abs() < 0.1,
                 "{label}: centre, m = {}: {oc} vs {}",

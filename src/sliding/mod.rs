@@ -13,6 +13,7 @@
 //! [`crate::params::sliding`]. The entry points of the MPFR method are re-exported here.
 
 pub mod collocation_f64;
+pub mod physicality;
 pub mod reduction_mpfr;
 pub mod series;
 

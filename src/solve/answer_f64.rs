@@ -58,5 +58,6 @@ pub fn sliding_answer(s: &SlidingSolutionF64, periodic: bool, convention: Conven
             .iter()
             .map(|q| PressureRow { xh: Num::F64(q.xh), x: m(q.x, Quantity::Size), p: m(q.p, Quantity::Pressure) })
             .collect(),
+        physicality: Some(s.physicality.clone()),
     }
 }

@@ -55,5 +55,6 @@ pub fn sliding_answer(v: &VerifiedSolution, convention: Convention) -> SlidingAn
                 p: on(&p.p, &scale(SlidingScale::Pressure), d(&format!("p[{i}]"))),
             })
             .collect(),
+        physicality: s.physicality.clone(),
     }
 }

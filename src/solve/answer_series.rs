@@ -65,5 +65,6 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention
                 p: on(&pt.p, &scale(SlidingScale::Pressure), pd),
             })
             .collect(),
+        physicality: Some(s.physicality.clone()),
     }
 }

@@ -7,7 +7,9 @@
 //! The scales are fixed per output in one table per problem: [`crate::params::sliding::SlidingScale`]
 //! and the Problem 2 scales of `crate::adhesion`.
 
+use crate::numerics::accuracy::readable_f64;
 use crate::numerics::accuracy::{fmt_f64, fmt_mpfr, print_f64, print_mpfr};
+use crate::sliding::physicality::Assessment;
 use rug::Float;
 use serde_json::{json, Map, Value};
 
@@ -162,6 +164,9 @@ pub struct SlidingAnswer {
     pub note: Option<String>,
     /// Pressure at the requested points.
     pub pressure: Vec<PressureRow>,
+    /// What the shared physicality criterion reported beside the contact
+    /// ([`crate::sliding::physicality`]); None where no check was made.
+    pub physicality: Option<Assessment>,
 }
 
 impl SlidingAnswer {
@@ -230,8 +235,34 @@ pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
         .map(|r| json!({"xh": r.xh.fmt(par), "x": r.x.print(requested), "p": r.p.print(requested)}))
         .collect();
     m.insert("pressure".into(), Value::Array(pressure));
+    if let Some(ph) = &ans.physicality {
+        m.insert("physicality".into(), physicality_json(ph));
+        let warnings: Vec<Value> = ph.warning.iter().map(|w| json!(w)).collect();
+        m.insert("warnings".into(), Value::Array(warnings));
+    }
     m.insert("provenance".into(), ans.provenance.json());
     m
+}
+
+/// The checks of the physicality criterion: the closure defect (value and sign), the most
+/// negative gap and where (0 when none), the edge step (when tau0 > 0). These come from the
+/// criterion's f64 quadrature of the gap (accurate to about 1e-8 of the largest gap, the
+/// criterion's tolerance), so they are printed to 7 significant digits and labelled so.
+fn physicality_json(ph: &Assessment) -> Value {
+    let mut m = Map::new();
+    m.insert("closure_defect".into(), json!(readable_f64(ph.closure_defect)));
+    m.insert("min_gap".into(), json!(readable_f64(ph.min_gap)));
+    if ph.min_gap < 0.0 {
+        m.insert("min_gap_x".into(), json!(readable_f64(ph.min_gap_x)));
+    }
+    if ph.edge_step != 0.0 {
+        m.insert("edge_step".into(), json!(readable_f64(ph.edge_step)));
+    }
+    m.insert(
+        "accuracy".into(),
+        json!("checks from an f64 quadrature of the gap: about 8 digits of the largest gap, not verified"),
+    );
+    Value::Object(m)
 }
 
 /// One field of Problem 2 at a point x/a.

@@ -21,17 +21,10 @@ pub enum SlidingF64Error {
         /// The point.
         value: f64,
     },
-    /// The periodic parabola's contact leaves the cell (-L/2, L/2) (its periodic extension has
-    /// kinks at +-L/2; THEORY.md section 3, Validity).
-    #[error("the contact [-a, b] = [{neg_a}, {b}] leaves the cell (-L/2, L/2) = (-{half_period}, {half_period}) of the periodic parabola; reduce normal_load (or half_length)")]
-    ContactLeavesCell {
-        /// -a.
-        neg_a: f64,
-        /// b.
-        b: f64,
-        /// L/2.
-        half_period: f64,
-    },
+    /// No physical contact: the shared criterion's refusal with the admissible range
+    /// ([`crate::sliding::physicality::refusal`]), in its own kind.
+    #[error(transparent)]
+    Refused(crate::error::Error),
     /// The sinusoid cannot carry this load at these friction and wear values: either P2(lambda)
     /// never reaches it, or the solutions that reach it are not physical (p < 0 at an end or a
     /// negative gap). `max_load` is the largest (physical, when known) load, reached at the
@@ -99,14 +92,7 @@ impl From<SlidingF64Error> for crate::error::Error {
             SlidingF64Error::InvalidPoint { value } => {
                 Error::input("xh (output point)", readable_f64(value), "must lie in (-1, 1)")
             }
-            SlidingF64Error::ContactLeavesCell { neg_a, b, half_period } => Error::NotPhysical {
-                why: format!(
-                    "the contact [-a, b] = [{}, {}] leaves the cell (-L/2, L/2) = (-{h}, {h}) of the periodic parabola; reduce normal_load (or half_length)",
-                    readable_f64(neg_a),
-                    readable_f64(b),
-                    h = readable_f64(half_period)
-                ),
-            },
+            SlidingF64Error::Refused(e) => e,
             SlidingF64Error::LoadExceedsMaximum { load, max_load, theta, tau0, max_fraction } => Error::NoSolution {
                 why: format!(
                     "normal_load = {} exceeds the maximum load {} this sinusoid carries with a physical contact at theta = {}, tau0 = {} (reached at contact fraction 2l/L = {})",

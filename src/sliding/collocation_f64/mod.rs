@@ -104,11 +104,11 @@
 //! types), `error.rs`. The MPFR method of the same problem is [`crate::sliding`] (parallel verbs:
 //! solve, verify, physical, solution).
 
+mod admissible;
 mod candidates;
 mod closure;
 mod error;
 mod interpolant;
-mod max_load;
 mod operator;
 mod outputs;
 mod parabola;

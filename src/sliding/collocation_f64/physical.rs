@@ -1,6 +1,8 @@
-//! Physicality of a solution (THEORY.md section 2): p >= 0 on the contact and the gap outside
-//! it, from H[p] off the contact; with the paper's convention the check copes with the
-//! non-periodic v and with the slope jump that tau0 > 0 puts at the leading edge.
+//! The f64 method's side of the shared physicality criterion ([`crate::sliding::physicality`]):
+//! p/omega = G(u) from the Nyström interpolant, and the gap slope off the contact from H[p]
+//! (THEORY.md section 2): h' = g' - (2/E*) (H[p] - K) + 2 beta tau0/E* (the last term removes the
+//! adhesive shear's edge step, which the criterion leaves out; K of the `periodic` convention,
+//! `closure.rs`).
 
 use super::closure::k_constant;
 use super::interpolant::{g_at, State};
@@ -8,9 +10,11 @@ use super::operator::Collocation;
 use super::outputs::Outputs;
 use super::profile::slope;
 use super::tangent_map::Map;
-use crate::numerics::accuracy::readable_f64;
-use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, omega_cauchy_exterior};
+use crate::model::Convention;
+use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior;
+use crate::params::sliding::ShapeF64;
 use crate::params::sliding::SlidingParamsF64;
+use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting};
 use std::f64::consts::PI;
 
 /// H[p](x) for x outside the contact (THEORY.md section 2). Near the contact (|u| <= 3) the
@@ -48,110 +52,58 @@ fn c0_of(col: &Collocation, st: &State) -> f64 {
     col.sum(&st.g, |t| st.map.c0_weight(t))
 }
 
-/// Checks p >= 0 on the contact and the gap >= 0 outside it. The gap h = g - delta - v has
-/// h(b) = 0 and h' = g' - (2/E*) H[p] off the contact (THEORY.md section 2 with q1 = q2 = 0
-/// there), integrated on a graded mesh with 6-point Gauss–Legendre panels: over 4 l beyond each
-/// edge for a single punch; from each edge to the middle of the free arc for a period. With the
-/// paper's convention v is not periodic when P1 or cW is nonzero (THEORY.md section 2): from b
-/// across the whole arc h would end at h(L - a) = (2 beta/E*) P1 - cW P2 instead of 0 (checked
-/// numerically; reported as [`super::SlidingSolutionF64::gap_closure`]). The two-sided check is the
-/// convention chosen here [doubtful: a rigid tilt closing the mismatch instead makes the gap
-/// negative next to one edge whenever the mismatch has the wrong sign]. Because the mismatch
-/// makes the far half of each side's gap uncertain by up to |closure|, a solution is rejected
-/// only when the gap is more negative than that (strict when P1 = 0 and cW = 0); the most
-/// negative gap found is always reported ([`super::SlidingSolutionF64::min_gap`]).
-///
-/// With tau0 > 0 the gap is NOT required to be >= 0 [finding, reported to the lead]: q1 = mu p +
-/// tau0 jumps by tau0 at the ends, so v' jumps by 2 beta tau0/E* there, and just beyond the
-/// leading edge b the gap starts with slope h' = -2 beta tau0/E* (single punch:
-/// (E*/2) h' = E* k l (X(u) - T), X(1) = 0), i.e. it is slightly negative over a short stretch.
-/// That is inherent in the model of THEORY.md section 3; the solution is returned and the most
-/// negative gap is reported in [`super::SlidingSolutionF64::min_gap`].
+/// The f64 solution seen by the criterion.
+struct Functions<'a> {
+    col: &'a Collocation,
+    prm: &'a SlidingParamsF64,
+    st: &'a State,
+    c0: f64,
+    k_const: f64,
+}
+
+impl ContactFunctions for Functions<'_> {
+    fn pressure_factor(&self, u: f64) -> f64 {
+        g_at(self.col, self.st, u)
+    }
+    fn gap_slope(&self, xi: f64) -> f64 {
+        let (prm, x) = (self.prm, self.st.c + xi);
+        slope(prm, x) - 2.0 / prm.e_star * (hilbert_outside(self.col, prm, self.st, self.c0, x) - self.k_const)
+            + 2.0 * prm.beta * prm.tau0 / prm.e_star
+    }
+}
+
+/// Relative accuracy of G(u) that the pressure test allows for.
+const PRESSURE_TOL: f64 = 1e-9;
+
+/// The criterion's data for an f64 solution with outputs `out`.
+pub(super) fn setting(prm: &SlidingParamsF64, out: &Outputs) -> Setting {
+    let cell = match (prm.shape, prm.period) {
+        (_, None) => Cell::Unbounded,
+        (ShapeF64::Sinusoidal { .. }, Some(big_l)) => Cell::Periodic { period: big_l },
+        (_, Some(big_l)) => Cell::Fixed { half_period: 0.5 * big_l },
+    };
+    let closure_formula = match (prm.period, prm.convention) {
+        (Some(_), Convention::Paper) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.wear * out.p2,
+        _ => 0.0,
+    };
+    Setting {
+        convention: prm.convention,
+        cell,
+        a: out.a,
+        b: out.b,
+        edge_step: 2.0 * prm.beta * prm.tau0 / prm.e_star,
+        closure_formula,
+        pressure_tol: PRESSURE_TOL,
+    }
+}
+
+/// The shared criterion ([`crate::sliding::physicality::assess`]) applied to a discrete state.
 pub(super) fn physicality(
     col: &Collocation,
     prm: &SlidingParamsF64,
     st: &State,
     out: &Outputs,
-) -> std::result::Result<GapCheck, String> {
-    // p >= 0: G at the nodes, at +-1, and p on the grid.
-    let gmax = st.g.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let tol_g = 1e-9 * gmax;
-    for (u, gu) in [(-1.0, g_at(col, st, -1.0)), (1.0, g_at(col, st, 1.0))] {
-        if gu < -tol_g {
-            return Err(format!("p < 0 next to the contact end u = {u} (p/omega = {})", readable_f64(gu)));
-        }
-    }
-    if let Some((k, g)) = st.g.iter().enumerate().find(|(_, g)| **g < -tol_g) {
-        return Err(format!("p < 0 inside the contact at node {k} (p/omega = {})", readable_f64(*g)));
-    }
-    if let Some(p) = out.grid_p.iter().find(|p| **p < -1e-9 * out.max_p) {
-        return Err(format!("p = {} < 0 inside the contact", readable_f64(*p)));
-    }
-    // Gap: h(x) = int_edge^x h'(s) ds on a graded mesh of 6-point Gauss–Legendre panels.
-    let gl = gauss_jacobi(6, 0.0, 0.0).expect("Gauss-Legendre 6 points");
-    let c0 = c0_of(col, st);
-    // `periodic` convention: h' = g' - (2/E*) (H[p] - K) (`closure.rs`); K = 0 in `paper`.
-    let k_const = k_constant(prm, out.p2, out.l);
-    let hprime = |x: f64| slope(prm, x) - 2.0 / prm.e_star * (hilbert_outside(col, prm, st, c0, x) - k_const);
-    // Integrates h' from `start` over `len` in direction `dir`; returns samples (x, h).
-    let integrate = |start: f64, len: f64, dir: f64| -> Vec<(f64, f64)> {
-        const PANELS: usize = 32;
-        // Cubic grading toward the edge, where h' ~ d^{1/2 -+ theta}.
-        let grade = |t: f64| t.powi(3);
-        let mut h = 0.0;
-        let mut s_prev = 0.0;
-        let mut samples = Vec::with_capacity(PANELS);
-        for j in 1..=PANELS {
-            let s = len * grade(j as f64 / PANELS as f64);
-            let mut inc = 0.0;
-            for (z, w) in gl.nodes.iter().zip(&gl.weights) {
-                let sz = 0.5 * (s_prev + s) + 0.5 * (s - s_prev) * z;
-                inc += w * hprime(start + dir * sz);
-            }
-            h += dir * inc * 0.5 * (s - s_prev);
-            samples.push((start + dir * s, h));
-            s_prev = s;
-        }
-        samples
-    };
-    // Periodic: from each edge to the middle of the free arc (b, L - a). With the paper's
-    // convention v is not periodic: integrating from b across the whole arc would end at
-    // h(L - a) = (2 beta/E*) P1 - cW P2 instead of 0 (checked numerically), so a one-sided
-    // integration (or a tilt closing it) would report an artefact near one edge.
-    // Single punch: over 4 l beyond each edge.
-    let reach = match prm.period {
-        Some(big_l) => 0.5 * (big_l - 2.0 * out.l),
-        None => 4.0 * out.l,
-    };
-    let mut samples = integrate(out.b, reach, 1.0);
-    samples.extend(integrate(-out.a, reach, -1.0));
-    // The mismatch of the paper's convention; the `periodic` convention closes the surface
-    // (THEORY.md section 8), so there it is 0.
-    let closure = match (prm.period, prm.convention) {
-        (Some(_), crate::model::Convention::Paper) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.wear * out.p2,
-        _ => 0.0,
-    };
-    let hmax = samples.iter().fold(0.0f64, |m, v| m.max(v.1.abs()));
-    let worst = samples.iter().fold((0.0f64, out.b), |w, v| if v.1 < w.0 { (v.1, v.0) } else { w });
-    let negative = worst.0 < -1e-7 * hmax.max(f64::MIN_POSITIVE);
-    // Reject only a violation that the convention cannot explain: deeper than the closure
-    // mismatch |(2 beta/E*) P1 - cW P2| (zero for frictionless, wear-free contact, where the
-    // check is strict), and never for tau0 > 0 (slope jump at b, see above).
-    let unexplained = worst.0 < -(closure.abs() + 1e-7 * hmax.max(f64::MIN_POSITIVE));
-    if unexplained && prm.tau0 == 0.0 {
-        return Err(format!(
-            "the gap is negative outside the contact: h = {} at x = {} (max |h| = {})",
-            readable_f64(worst.0),
-            readable_f64(worst.1),
-            readable_f64(hmax)
-        ));
-    }
-    Ok(GapCheck { min_gap: if negative { worst.0 } else { 0.0 }, at: worst.1, closure })
-}
-
-/// Result of the gap check: the most negative gap found (0 when none beyond round-off) and where.
-pub(super) struct GapCheck {
-    pub(super) min_gap: f64,
-    pub(super) at: f64,
-    pub(super) closure: f64,
+) -> Result<Assessment, Refusal> {
+    let f = Functions { col, prm, st, c0: c0_of(col, st), k_const: k_constant(prm, out.p2, out.l) };
+    assess(&f, &setting(prm, out))
 }

@@ -172,18 +172,10 @@ pub struct SlidingSolutionF64 {
     pub wear_rate: Option<f64>,
     /// Largest pressure on the contact (sampled).
     pub max_pressure: f64,
-    /// Most negative gap found outside the contact by the two-sided check (0 if none beyond
-    /// round-off). With tau0 > 0 the model makes it slightly negative just beyond the leading
-    /// edge b; with friction or wear it may be negative by up to |gap_closure| because the
-    /// paper's v is not periodic (see `physicality` in the source). Deeper violations reject.
-    pub min_gap: f64,
-    /// Where `min_gap` occurs (x).
-    pub min_gap_x: f64,
-    /// h(L - a) - h(b) that the paper's non-periodic v implies: (2 beta/E*) P1 - cW P2 (checked
-    /// against the integrated gap; 0 for a single punch). Nonzero means the free surface of the
-    /// model does not close over a period; the gap check is two-sided because of it. 0 in the
-    /// `periodic` convention, which closes the surface (THEORY.md section 8).
-    pub gap_closure: f64,
+    /// What the shared physicality criterion reports beside the solution: the most negative gap
+    /// (0 when none), the closure defect, the edge step and a warning in `paper`
+    /// ([`crate::sliding::physicality::Assessment`]).
+    pub physicality: crate::sliding::physicality::Assessment,
     /// p at the requested xh.
     pub pressure: Vec<PressurePoint>,
     /// Nodes of the main run.

@@ -1,9 +1,9 @@
 //! The driver of the f64 method: parameters once, every candidate root, its physicality, the check
 //! run, and the solutions sorted by contact size.
 
+use super::admissible::{admissible_range, ranges_text};
 use super::candidates::{candidates, state_of, Candidate};
 use super::error::{Result, SlidingF64Error};
-use super::max_load::{sinusoid_max_physical_load, with_physical_maximum};
 use super::operator::collocation;
 use super::outputs::outputs;
 use super::physical::physicality;
@@ -11,13 +11,17 @@ use super::solution::{SlidingSolutionF64, SlidingSolutionsF64, SolverOptions};
 use super::verify::check_run;
 use crate::model::SlidingProblem;
 use crate::numerics::accuracy::readable_f64;
-use crate::params::sliding::{ShapeF64, SlidingParamsF64, TargetF64};
+use crate::params::sliding::SlidingParamsF64;
+use crate::sliding::physicality::refusal;
 
 /// Every candidate root of the side conditions at the main run's nodes, before the physicality
 /// check removes some (for the sinusoid with theta != 0 a load below the maximum is reached
-/// twice).
+/// twice). None reaching the load (the sinusoid's scan) is an empty list.
 fn all_candidates(prm: &SlidingParamsF64, options: &SolverOptions) -> Result<Vec<(Candidate, usize)>> {
-    candidates(prm, prm.target, options).map_err(|e| with_physical_maximum(prm, options, e))
+    match candidates(prm, prm.target, options) {
+        Err(SlidingF64Error::LoadExceedsMaximum { .. }) => Ok(vec![]),
+        other => other,
+    }
 }
 
 /// Solves Problem 1 (THEORY.md section 3) in f64 by Gauss–Jacobi collocation and returns every
@@ -42,24 +46,17 @@ pub fn solve_sliding_f64(
     let cands = all_candidates(&prm, options)?;
     let mut solutions = Vec::new();
     let mut reasons = Vec::new();
-    if cands.is_empty() {
-        reasons.push("the side conditions have no solution with P2 > 0 at this contact size".to_string());
-    }
     for (cand, n) in cands {
         let col = collocation(prm.theta, n)?;
         let st = state_of(&prm, target, cand, n, false)?;
         let out = outputs(&col, &prm, &st, points);
-        if let (ShapeF64::Parabolic { .. }, Some(big_l)) = (prm.shape, prm.period) {
-            if out.a >= 0.5 * big_l || out.b >= 0.5 * big_l {
-                return Err(SlidingF64Error::ContactLeavesCell { neg_a: -out.a, b: out.b, half_period: 0.5 * big_l });
-            }
-        }
         let gap = match physicality(&col, &prm, &st, &out) {
             Ok(g) => g,
-            Err(r) => {
-                reasons.push(format!("lambda = {}: {r}", readable_f64(out.lambda)));
+            Err(r) if r.is_physical() => {
+                reasons.push(format!("lambda = {}: {}", readable_f64(out.lambda), r.why()));
                 continue;
             }
+            Err(r) => return Err(SlidingF64Error::NoConvergence { reason: r.why() }),
         };
         let accuracy = check_run(&prm, target, cand, &out, n, points)?;
         let all = [out.lambda, out.l, out.a, out.b, out.c, out.p1, out.p2, out.f_def, out.max_p];
@@ -95,23 +92,15 @@ pub fn solve_sliding_f64(
                 _ => None,
             },
             max_pressure: out.max_p,
-            min_gap: gap.min_gap,
-            min_gap_x: gap.at,
-            gap_closure: gap.closure,
+            physicality: gap,
             pressure: out.pressure,
             nodes: n,
             accuracy,
         });
     }
     if solutions.is_empty() {
-        if let (ShapeF64::Sinusoidal { .. }, TargetF64::NormalLoad(p2)) = (prm.shape, target) {
-            if let Some((max_load, lam)) = sinusoid_max_physical_load(&prm, options)? {
-                if p2 > max_load {
-                    return Err(SlidingF64Error::load_exceeds_maximum(&prm, p2, max_load, lam));
-                }
-            }
-        }
-        return Err(SlidingF64Error::NotPhysical { reason: reasons.join("; ") });
+        let ranges = ranges_text(&prm, &admissible_range(&prm, options)?);
+        return Err(SlidingF64Error::Refused(refusal(problem.load(), &reasons, &ranges)));
     }
     solutions.sort_by(|x, y| x.l.total_cmp(&y.l));
     Ok(SlidingSolutionsF64 { solutions })
@@ -143,7 +132,7 @@ pub fn candidate_roots(problem: &SlidingProblem, options: &SolverOptions) -> Res
         let col = collocation(prm.theta, n)?;
         let st = state_of(&prm, prm.target, cand, n, false)?;
         let out = outputs(&col, &prm, &st, &[]);
-        let physical = physicality(&col, &prm, &st, &out).map(|g| g.min_gap);
+        let physical = physicality(&col, &prm, &st, &out).map(|g| g.min_gap).map_err(|r| r.why());
         roots.push(CandidateRoot { lambda: out.lambda, l: out.l, c: out.c, p2: out.p2, nodes: n, physical });
     }
     Ok(roots)

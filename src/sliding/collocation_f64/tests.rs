@@ -3,6 +3,7 @@ use super::profile::slope;
 use super::*;
 use crate::error::{Error, ErrorKind};
 use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
+use crate::numerics::accuracy::readable_f64;
 use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, omega};
 use crate::params::sliding::SlidingParamsF64;
 use num_bigint::BigInt;
@@ -261,21 +262,29 @@ fn sinusoid_with_wear_matches_exact_reduction_and_reports_maximum_load() {
     assert_eq!(sols.solutions.len(), 1);
     check_exact_reduction(&pb, sols.primary(), TOL);
     let pb = problem(r(1, 4), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(1, 1), load(r(3, 20)));
+    // Above the largest physical load: the refusal quotes the admissible range, computed.
+    let prm = SlidingParamsF64::new(&pb).unwrap();
+    let adm = super::admissible::admissible_range(&prm, &SolverOptions::default()).unwrap();
+    let (max_load, lam) = adm.max_load().expect("a physical range");
+    // Observed: 0.426 pi E* D at 2l/L = 0.59, where p < 0 starts at the leading end
+    // (`cargo run --release --example collocation_f64_charts -- load-curve`).
+    assert!(max_load > 0.40 * PI * 0.1 && max_load < 0.45 * PI * 0.1, "{max_load} {lam}");
+    assert!(2.0 * lam / PI > 0.5 && 2.0 * lam / PI < 0.7, "{lam}");
     match solve_sliding_f64(&pb, &[], &SolverOptions::default()) {
-        Err(SlidingF64Error::LoadExceedsMaximum { max_load, max_fraction, .. }) => {
-            // Observed: 0.426 pi E* D at 2l/L = 0.59, where p < 0 starts at the leading end
-            // (`cargo run --release --example collocation_f64_charts -- load-curve`); the exact value awaits the MPFR solver.
-            assert!(max_load > 0.40 * PI * 0.1 && max_load < 0.45 * PI * 0.1, "{max_load} {max_fraction}");
-            assert!(max_fraction > 0.5 && max_fraction < 0.7, "{max_fraction}");
+        Err(SlidingF64Error::Refused(e)) => {
+            let text = e.to_string();
+            assert!(text.contains(&format!("normal_load in (0, {}]", readable_f64(max_load))), "{text}");
         }
-        other => panic!("expected LoadExceedsMaximum, got {other:?}"),
+        other => panic!("expected a refusal with the admissible range, got {other:?}"),
     }
-    // Frictionless: above the full-contact load pi E* D.
+    // Frictionless: above the full-contact load pi E* D: no contact carries it.
     let pb = problem(r(1, 2), Some(r(1, 1)), shape(), r(0, 1), r(0, 1), r(0, 1), load(r(4, 10)));
-    assert!(matches!(
-        solve_sliding_f64(&pb, &[], &SolverOptions::default()),
-        Err(SlidingF64Error::LoadExceedsMaximum { .. })
-    ));
+    match solve_sliding_f64(&pb, &[], &SolverOptions::default()) {
+        Err(SlidingF64Error::Refused(e @ Error::NoSolution { .. })) => {
+            assert!(e.to_string().contains("no contact carries normal_load = 2/5"), "{e}")
+        }
+        other => panic!("expected no solution, got {other:?}"),
+    }
 }
 
 #[test]
@@ -287,10 +296,16 @@ fn invalid_inputs_are_typed_errors() {
     );
     // Strong wear (theta = 0.35) shifts a large contact past L/2.
     let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(4, 1), size(r(3, 10)));
-    assert!(matches!(
-        solve_sliding_f64(&pb, &[], &SolverOptions::default()),
-        Err(SlidingF64Error::ContactLeavesCell { .. })
-    ));
+    match solve_sliding_f64(&pb, &[], &SolverOptions::default()) {
+        Err(SlidingF64Error::Refused(e @ Error::NotPhysical { .. })) => {
+            let text = e.to_string();
+            assert!(
+                text.contains("leaves the cell") && text.contains("physical contacts have half_length in"),
+                "{text}"
+            );
+        }
+        other => panic!("expected a refusal: contact leaving the cell, got {other:?}"),
+    }
     let pb = problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(10_000_000, 1), load(r(1, 1)));
     match solve_sliding_f64(&pb, &[], &SolverOptions::default()) {
         Err(SlidingF64Error::Input(Error::Input(m))) => assert!(m.parameter.contains("theta"), "{m}"),
@@ -391,7 +406,7 @@ fn errors_keep_their_kind_and_print_readable_numbers() {
     let e: Error = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap_err().into();
     assert_eq!(e.kind(), ErrorKind::NoSolution);
     let text = e.to_string();
-    assert!(text.starts_with("no solution: normal_load = 0.15 exceeds"), "{text}");
+    assert!(text.starts_with("no solution: no contact carries normal_load = 3/20 at these parameters; physical contacts carry normal_load in (0, "), "{text}");
     assert!(!text.contains("no solution: no solution"), "{text}");
     let e: Error = SlidingF64Error::NoConvergence { reason: "x".into() }.into();
     assert_eq!(e.kind(), ErrorKind::NoConvergence);

@@ -53,7 +53,7 @@ pub mod verify;
 pub use crate::model::Convention;
 pub use error::SlidingError;
 pub use solution::{Accuracy, PressurePoint, SlidingSolution, VerifiedSolution};
-pub use solve::{solve_at, Checks, NodeRule};
+pub use solve::{physicality_at_contact, refusal_for, solve_at, Checks, NodeRule};
 pub use verify::{precision_for, solve_verified};
 
 #[cfg(test)]

@@ -27,6 +27,8 @@ pub struct Setup {
     pub target: Option<f64>,
     /// The given load P2 as the user wrote it, readable (for messages; None: half-length given).
     pub load_text: Option<String>,
+    /// The given load or size, exact (for the refusals' wording).
+    pub load: SlidingLoad,
 }
 
 impl Setup {
@@ -49,6 +51,6 @@ impl Setup {
             }
             SlidingLoad::HalfLength(_) => (None, None),
         };
-        Ok(Setup { locate, target, load_text })
+        Ok(Setup { locate, target, load_text, load: problem.load().clone() })
     }
 }

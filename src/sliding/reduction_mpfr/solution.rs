@@ -56,6 +56,10 @@ pub struct SlidingSolution {
     pub nodes: usize,
     /// Working precision in bits.
     pub prec: u32,
+    /// What the shared physicality criterion reports beside the solution (most negative gap,
+    /// closure defect, edge step, warning in `paper`; lengths, so the same in every unit); None
+    /// when the run skipped the checks ([`super::Checks::Skip`]).
+    pub physicality: Option<crate::sliding::physicality::Assessment>,
 }
 
 /// Verified digits of each quantity: -log10(|difference| / scale) between two runs.

@@ -15,7 +15,7 @@
 use super::contact::{Contact, Size};
 use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
-use super::physical::{check_gap, check_pressure};
+use super::physical::{max_pressure, physicality};
 use super::pressure::Pressure;
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
@@ -25,6 +25,8 @@ use crate::numerics::exact::to_float;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
 use crate::numerics::roots::{brent, Bracket, RootError};
 use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
+use crate::sliding::physicality::admissible::{admissible, Admissible, SizeContacts, LAMBDA_SCAN_MAX};
+use crate::sliding::physicality::{refusal, Assessment, Refusal};
 use rug::Float;
 use std::sync::Arc;
 
@@ -242,86 +244,83 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
     }
 }
 
-/// The largest load P2/E* on a physical solution of the sinusoid (low precision, `params` at the
-/// locating precision, for error messages): (P2_max/E*, lambda) over a 64-point scan of both
-/// branches, refined by golden-section search.
-fn sinusoid_max_physical_load(params: &SlidingParamsMpfr) -> Result<Option<(f64, f64)>, SlidingError> {
-    let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
-    let grid = 64;
-    let mut best: Option<(f64, f64, usize)> = None;
-    for br in 0..2 {
-        for i in 1..=grid {
-            let s = cap * i as f64 / grid as f64;
-            let n = bucket(nodes_for(s, LOCATE_DIGITS));
-            let sf = Float::with_val(params.prec, s);
-            let Some(sol) = branches(params, &sf, n)?.get(br).cloned() else { continue };
-            if sol.p2 <= 0u32 {
-                continue;
-            }
-            let v = sol.p2.to_f64();
-            if best.is_none_or(|b| v > b.0) && physical_at(params, &sf, &sol, n).is_ok() {
-                best = Some((v, s, br));
-            }
-        }
+/// The size parameter's scan range for [`admissible_range`]: lambda up to [`LAMBDA_SCAN_MAX`] for
+/// a period; for a single punch l up to 4 times the requested size (or the single-punch
+/// half-length at the load).
+fn scan_max(params: &SlidingParamsMpfr) -> f64 {
+    match (&params.period, &params.target) {
+        (Some(_), _) => LAMBDA_SCAN_MAX,
+        (None, TargetMpfr::HalfLength(l)) => 4.0 * l.to_f64(),
+        (None, TargetMpfr::NormalLoad(p2)) => 4.0 * params.l_s(p2).to_f64(),
     }
-    let Some((mut v, s, br)) = best else { return Ok(None) };
-    // Golden section on (s - h, s + h), keeping physical points only.
-    let h = cap / grid as f64;
-    let (mut a, mut b) = ((s - h).max(1e-6), (s + h).min(cap));
-    let mut arg = s;
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let eval = |x: f64| -> f64 {
-        let n = bucket(nodes_for(x, LOCATE_DIGITS));
-        let xf = Float::with_val(params.prec, x);
-        match branches(params, &xf, n).ok().and_then(|v| v.get(br).cloned()) {
-            Some(sol) if physical_at(params, &xf, &sol, n).is_ok() => sol.p2.to_f64(),
-            _ => f64::NEG_INFINITY,
-        }
-    };
-    for _ in 0..40 {
-        let x1 = b - g * (b - a);
-        let x2 = a + g * (b - a);
-        let (f1, f2) = (eval(x1), eval(x2));
-        if f1 > v {
-            v = f1;
-            arg = x1;
-        }
-        if f2 > v {
-            v = f2;
-            arg = x2;
-        }
-        if f1 >= f2 {
-            b = x2;
-        } else {
-            a = x1;
-        }
-    }
-    Ok(Some((v, arg)))
 }
 
-/// Why no physical contact of the sinusoid carries the load: the largest load it carries, in the
-/// problem's units (`params` at the locating precision), after `detail` (e.g. why the roots of
-/// the equations are not physical).
-fn sinusoid_refusal(params: &SlidingParamsMpfr, detail: Option<&SlidingError>) -> Result<String, SlidingError> {
-    let Some((v, lam)) = sinusoid_max_physical_load(params)? else {
-        return Ok("no physical contact exists at these friction and wear values".into());
-    };
-    let cap = Float::with_val(53, v) * &params.unit;
-    let prefix = detail.map(|e| format!("the solutions of the equations are not physical ({e}); ")).unwrap_or_default();
-    Ok(format!(
-        "{prefix}the sinusoid carries at most P2 = {} (at lambda = {}) at these friction and wear values",
-        readable_mpfr(&cap),
-        readable_f64(lam)
-    ))
+/// The admissible sizes and loads (P2/E*) by the direct problem at `params`' precision (the
+/// locating stage's), judged by the shared criterion.
+fn admissible_range(params: &SlidingParamsMpfr) -> Result<Admissible, SlidingError> {
+    admissible(scan_max(params), |s| -> Result<SizeContacts, SlidingError> {
+        let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS));
+        let sf = Float::with_val(params.prec, s);
+        let mut out = vec![];
+        for sol in branches(params, &sf, n)? {
+            if sol.p2 > 0u32 {
+                out.push((sol.p2.to_f64(), matches!(physical_at(params, &sf, &sol, n)?, Ok(_))));
+            }
+        }
+        Ok(out)
+    })
 }
 
-fn physical_at(params: &SlidingParamsMpfr, s: &Float, sol: &ShiftSolution, n: usize) -> Result<(), SlidingError> {
+/// The refusal when no contact is returned: `reasons` for each refused contact (empty: none
+/// carries the load), with the admissible range in the problem's units (`setup.locate` at the
+/// locating precision).
+fn refused(setup: &Setup, reasons: &[String]) -> Result<SlidingError, SlidingError> {
+    let lo = &setup.locate;
+    let adm = admissible_range(lo)?;
+    let unit = lo.unit.to_f64();
+    let ranges = match (&lo.target, &lo.period) {
+        (TargetMpfr::NormalLoad(_), Some(_)) => {
+            adm.loads_text(unit, |s| 2.0 * s / std::f64::consts::PI, "contact fraction 2l/L")
+        }
+        (TargetMpfr::NormalLoad(_), None) => adm.loads_text(unit, |s| s, "half_length"),
+        (TargetMpfr::HalfLength(_), Some(big_l)) => {
+            let big_l = big_l.to_f64();
+            adm.sizes_text(|s| s * big_l / std::f64::consts::PI)
+        }
+        (TargetMpfr::HalfLength(_), None) => adm.sizes_text(|s| s),
+    };
+    Ok(SlidingError::Core(refusal(&setup.load, reasons, &ranges)))
+}
+
+/// The shared criterion for the contact of branch solution `sol` at size `s` (the loads P1 =
+/// mu P2 + 2 l tau0 from it).
+fn physical_at(
+    params: &SlidingParamsMpfr,
+    s: &Float,
+    sol: &ShiftSolution,
+    n: usize,
+) -> Result<Result<Assessment, Refusal>, SlidingError> {
     let rule = inverse_rule(params, n)?;
     let size = Size::new(params, s);
     let contact = Contact::new(params, &size, sol.c.clone());
     let pr = Pressure::new(params, &contact, &rule);
-    check_pressure(params, &pr)?;
-    check_gap(params, &contact, &pr)
+    let p1 = p1_of(params, &size.l, &sol.p2);
+    Ok(physicality(params, &contact, &pr, &p1, &sol.p2))
+}
+
+/// P1 = mu P2 + 2 l tau0.
+fn p1_of(params: &SlidingParamsMpfr, l: &Float, p2: &Float) -> Float {
+    let p = params.prec;
+    Float::with_val(p, &params.mu * p2) + Float::with_val(p, l * &params.tau0) * 2u32
+}
+
+/// A refusal of the criterion as a reason (physics) or an error (numerics).
+fn reason_or_error(lambda: f64, r: Refusal) -> Result<String, SlidingError> {
+    if r.is_physical() {
+        Ok(format!("lambda = {}: {}", readable_f64(lambda), r.why()))
+    } else {
+        Err(SlidingError::NoConvergence(r.why()))
+    }
 }
 
 /// Secant refinement of a size `s0` on branch `br` so that the load equals `p2`, at the
@@ -439,10 +438,9 @@ pub(super) fn solve_located(
         }
         Ok((n as usize).div_ceil(4) * 4)
     };
-    // Candidate (size, centre) pairs at working precision.
+    // Candidate (size, centre) pairs at working precision, and why roots were refused.
     let mut cands: Vec<(Float, ShiftSolution, usize, Located)> = vec![];
-    let sinusoid = matches!(params.shape, ShapeMpfr::Sinusoidal { .. });
-    let no_solution = |why: String| SlidingError::NoSolution { load: setup.load_text.clone().unwrap_or_default(), why };
+    let mut reasons: Vec<String> = vec![];
     match &params.target {
         TargetMpfr::HalfLength(lf) => {
             let s = match &params.period {
@@ -455,11 +453,6 @@ pub(super) fn solve_located(
                     cands.push((s.clone(), b, n, (s.to_f64(), br)));
                 }
             }
-            if cands.is_empty() {
-                return Err(SlidingError::NotPhysical {
-                    why: "no centre of the contact gives a positive load at this half-length".into(),
-                });
-            }
         }
         TargetMpfr::NormalLoad(p2f) => {
             let found = match located {
@@ -467,16 +460,18 @@ pub(super) fn solve_located(
                 None => locate(setup)?,
             };
             for (s0, br) in found {
-                // Sinusoid: screen the roots for physicality at the locating precision first, so
-                // that non-physical roots (e.g. on the falling part of P2(lambda)) are not refined
-                // at full precision. A root within the checks' tolerance of the physical boundary
-                // could be misjudged here; such roots sit at the end of the physical range.
-                if sinusoid && check && located.is_none() {
+                // Screen the roots for physicality at the locating precision first, so that
+                // non-physical roots (e.g. on the falling part of the sinusoid's P2(lambda)) are
+                // not refined at full precision. A root within the checks' tolerance of the
+                // physical boundary could be misjudged here; such roots sit at the end of the
+                // physical range.
+                if check && located.is_none() {
                     let lo = &setup.locate;
                     let n_lo = bucket(nodes_for(lambda_of(lo, s0), LOCATE_DIGITS));
                     let s_lo = Float::with_val(LOCATE_PREC, s0);
                     if let Some(sol) = branches(lo, &s_lo, n_lo)?.get(br) {
-                        if physical_at(lo, &s_lo, sol, n_lo).is_err() {
+                        if let Err(r) = physical_at(lo, &s_lo, sol, n_lo)? {
+                            reasons.push(reason_or_error(lambda_of(lo, s0), r)?);
                             continue;
                         }
                     }
@@ -489,27 +484,17 @@ pub(super) fn solve_located(
                 sol.p2 = p2f.clone();
                 cands.push((s, sol, n, (s0, br)));
             }
-            if cands.is_empty() {
-                return Err(no_solution(sinusoid_refusal(&setup.locate, None)?));
-            }
         }
     }
     let mut out = vec![];
-    let mut first_err = None;
     for (s, sh, n, loc) in cands {
-        match build(params, &s, sh, n, points, check) {
+        match build(params, &s, sh, n, points, check)? {
             Ok(sol) => out.push((sol, loc)),
-            Err(e @ SlidingError::NotPhysical { .. }) if sinusoid => {
-                first_err.get_or_insert(e);
-            }
-            Err(e) => return Err(e),
+            Err(r) => reasons.push(reason_or_error(lambda_of(params, s.to_f64()), r)?),
         }
     }
     if out.is_empty() {
-        if let (TargetMpfr::NormalLoad(_), true) = (&params.target, sinusoid) {
-            return Err(no_solution(sinusoid_refusal(&setup.locate, first_err.as_ref())?));
-        }
-        return Err(first_err.unwrap_or(SlidingError::NoConvergence("no contact was found".into())));
+        return Err(refused(setup, &reasons)?);
     }
     out.sort_by(|x, y| x.0.l.partial_cmp(&y.0.l).unwrap_or(std::cmp::Ordering::Equal));
     Ok(out)
@@ -523,32 +508,26 @@ fn build(
     n: usize,
     points: &[Exact],
     check: bool,
-) -> Result<SlidingSolution, SlidingError> {
+) -> Result<Result<SlidingSolution, Refusal>, SlidingError> {
     let p = params.prec;
     let size = Size::new(params, s);
     let contact = Contact::new(params, &size, sh.c.clone());
     let l = size.l.clone();
     let a = Float::with_val(p, &l - &sh.c);
     let b = Float::with_val(p, &l + &sh.c);
-    if let (ShapeMpfr::Parabolic { .. }, Some(big_l)) = (&params.shape, &params.period) {
-        let half = Float::with_val(p, big_l / 2u32);
-        if a >= half || b >= half {
-            return Err(SlidingError::ContactOutsidePeriod {
-                left: readable_mpfr(&Float::with_val(p, -&a)),
-                right: readable_mpfr(&b),
-                half_period: readable_mpfr(&half),
-            });
-        }
-    }
     let rule = inverse_rule(params, n)?;
     let pressure = Pressure::new(params, &contact, &rule);
-    let max_pressure = if check {
-        let m = check_pressure(params, &pressure)?;
-        check_gap(params, &contact, &pressure)?;
-        m
+    let p2 = sh.p2;
+    let p1 = p1_of(params, &l, &p2);
+    let assessment = if check {
+        match physicality(params, &contact, &pressure, &p1, &p2) {
+            Ok(a) => Some(a),
+            Err(r) => return Ok(Err(r)),
+        }
     } else {
-        Float::with_val(p, 0)
+        None
     };
+    let max_pressure = if check { max_pressure(params, &pressure) } else { Float::with_val(p, 0) };
     let rule_w = weight_rule(params, n)?;
     let (_, f_def) = pressure.load_and_deformation_force(&rule_w);
     let mut pts = vec![];
@@ -561,8 +540,6 @@ fn build(
         let x = Float::with_val(p, &l * &xh) + &sh.c;
         pts.push(PressurePoint { p: pressure.p(&u), xh, x });
     }
-    let p2 = sh.p2;
-    let p1 = Float::with_val(p, &params.mu * &p2) + Float::with_val(p, &l * &params.tau0) * 2u32;
     let worn = Float::with_val(p, &params.wear * &p2);
     let wear_per_distance = params.period.as_ref().map(|big_l| Float::with_val(p, &worn / big_l));
     let wear_rate = match (&wear_per_distance, &params.speed) {
@@ -578,7 +555,7 @@ fn build(
             readable_mpfr(&l)
         )));
     }
-    Ok(SlidingSolution {
+    Ok(Ok(SlidingSolution {
         theta: params.theta.clone(),
         kappa: params.kappa.clone(),
         lambda: size.lambda.clone(),
@@ -597,5 +574,37 @@ fn build(
         k: params.k.clone(),
         nodes: n,
         prec: p,
+        physicality: assessment,
+    }))
+}
+
+/// The shared physicality criterion at a contact given from outside (e.g. by the series method):
+/// half-length `l` and centre `c` (the problem's lengths), load `p2` in the problem's units; the
+/// pressure [2.13] and the gap slope at that contact are evaluated with the node count for 16
+/// digits at `params`' precision. `Err` for a failure of the evaluation itself.
+pub fn physicality_at_contact(
+    problem: &SlidingProblem,
+    l: &Float,
+    c: &Float,
+    p2: &Float,
+    prec: u32,
+) -> Result<Result<Assessment, Refusal>, SlidingError> {
+    let params = SlidingParamsMpfr::new(problem, prec)?;
+    let s = match &params.period {
+        Some(big_l) => Float::with_val(prec, l * &params.pi) / big_l,
+        None => l.clone(),
+    };
+    let n = bucket(nodes_for(lambda_of(&params, s.to_f64()), LOCATE_DIGITS));
+    let p2_unit = Float::with_val(prec, p2 / &params.unit);
+    let sol = ShiftSolution { c: c.clone(), p2: p2_unit };
+    physical_at(&params, &s, &sol, n)
+}
+
+/// The refusal of a contact of `problem` for `reasons` (empty: no contact carries the load), with
+/// the admissible range computed by this method's direct problem at the locating precision.
+pub fn refusal_for(problem: &SlidingProblem, reasons: &[String]) -> crate::error::Error {
+    let err = Setup::new(problem).and_then(|setup| refused(&setup, reasons));
+    crate::error::Error::from(match err {
+        Ok(e) | Err(e) => e,
     })
 }

@@ -12,6 +12,8 @@ use crate::numerics::accuracy::{readable_f64, readable_mpfr, verified_digits_mpf
 use crate::numerics::exact::to_float;
 use crate::numerics::precision::precision_for;
 use crate::params::sliding::SlidingParamsMpfr;
+use crate::sliding::physicality::Assessment;
+use crate::sliding::reduction_mpfr::{physicality_at_contact, refusal_for};
 use crate::sliding::PressurePoint;
 use rug::Float;
 
@@ -73,6 +75,8 @@ pub struct SeriesSolution {
     pub prec: u32,
     /// Estimated digits per quantity.
     pub accuracy: SeriesAccuracy,
+    /// The shared physicality criterion at the series' contact ([`crate::sliding::physicality`]).
+    pub physicality: Assessment,
 }
 
 /// The expansion shape of a punch.
@@ -173,7 +177,17 @@ pub fn solve_series_with(
         });
     }
     let accuracy = SeriesAccuracy { contact, f_def, pressure, headline, rate: rho };
-    Ok(solution(&params, &sp, hi, &xh, max_p, order, accuracy))
+    let mut s = solution(&params, &sp, hi, &xh, max_p, order, accuracy);
+    // The shared physicality criterion at the series' contact (pressure [2.13] and gap there).
+    match physicality_at_contact(problem, &s.l, &s.c, &s.p2, prec)? {
+        Ok(a) => s.physicality = a,
+        Err(r) if r.is_physical() => {
+            let reason = format!("the series' contact at lambda = {}: {}", readable_mpfr(&s.lambda), r.why());
+            return Err(refusal_for(problem, &[reason]));
+        }
+        Err(r) => return Err(Error::NoConvergence { what: r.why() }),
+    }
+    Ok(s)
 }
 
 /// The solution in the units of the problem from the values through Lambda^order.
@@ -227,5 +241,6 @@ fn solution(
         order,
         prec,
         accuracy,
+        physicality: Assessment::default(),
     }
 }

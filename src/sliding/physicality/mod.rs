@@ -1,0 +1,377 @@
+//! One physicality criterion for every Problem 1 method (THEORY.md section 8).
+//!
+//! A method (MPFR reduction, f64 collocation, or the series method through one of them) hands its
+//! solution over as two functions, [`ContactFunctions`]: the bounded factor p(u)/omega(u) of the
+//! pressure [2.13] on the contact (tangent variable u in [-1, 1]) and the slope of the gap off the
+//! contact. This module chooses the points, integrates, applies the tolerances and words the
+//! verdict, so two methods given the same contact reach the same verdict for the same reason.
+//!
+//! The criterion, in both conventions:
+//! 1. the contact lies inside the cell: for a profile repeated from the cell (-L/2, L/2) (the
+//!    parabola) -a > -L/2 and b < L/2; for a periodic profile (the sinusoid) 2 l < L;
+//! 2. p >= 0 on [-a, b]: p/omega sampled at 68 Chebyshev–Lobatto points -cos(pi k/67) and at
+//!    1 - 10^-j, -1 + 10^-j (j = 2..10), refused below -`pressure_tol` times the largest |p/omega|;
+//! 3. the gap h between the punch and the (worn) surface, integrated from the leading end b and
+//!    from the trailing end -a, each to the middle of the free arc x - c = +-L/2 (single punch:
+//!    4 l beyond each end), must be >= 0. The slope used is the gap slope without the step
+//!    2 beta tau0/E* that the adhesive shear q1 = tau0 puts into v' at the contact ends (just past
+//!    the leading edge it would make h < 0 for every tau0 > 0: a property of the tau0 model, not
+//!    of the contact); that step is reported as `edge_step`. Near an end h ~ d^(3/2 -+ theta), so
+//!    the points are graded as x = end +- R s^4 (32 panels of 6-point Gauss–Legendre in s).
+//!
+//! Where the surface closes over a period (the `periodic` convention; or `paper` with K = 0, i.e.
+//! M = 0, where the two conventions are the same problem) the two halves of the gap meet: with the
+//! full slope, h_lead(mid) - h_trail(mid) = 0, checked (its value is reported as `closure_defect`,
+//! round-off), and a negative gap is a refusal. In `paper` with M != 0 the two halves differ by
+//! the closure defect M = (2/E*) beta P1 - cW P2 (checked against the formula): the gap is defined
+//! only up to M, so a negative gap is a warning reported beside `closure_defect`, not a refusal.
+//! A single punch has no closure (K = 0 as L -> infinity): a negative gap is a refusal.
+//!
+//! The admissible range of the load (or size) that a refusal quotes is computed by
+//! [`admissible`] from the method's own direct problem.
+
+pub mod admissible;
+
+use crate::error::Error;
+use crate::model::{readable, Convention, SlidingLoad};
+use crate::numerics::accuracy::readable_f64;
+use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
+
+/// A method's solution as the criterion sees it (lengths and loads in any one consistent unit).
+pub trait ContactFunctions {
+    /// p(u)/omega(u) at the tangent variable u in [-1, 1] (its sign is the sign of p).
+    fn pressure_factor(&self, u: f64) -> f64;
+    /// The gap slope h'(x) at x - c = `xi` off the contact (|xi| > l, up to the middle of the
+    /// free arc), with the surface convention's constant K included and the adhesive shear's
+    /// edge step 2 beta tau0/E* left out (module doc).
+    fn gap_slope(&self, xi: f64) -> f64;
+}
+
+/// Where the contact must lie.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Cell {
+    /// The profile is repeated from the cell (-L/2, L/2) (kinks at +-L/2): -a > -L/2, b < L/2.
+    Fixed {
+        /// L/2.
+        half_period: f64,
+    },
+    /// The profile is periodic by itself: only 2 l < L.
+    Periodic {
+        /// L.
+        period: f64,
+    },
+    /// A single punch: anywhere.
+    Unbounded,
+}
+
+/// The contact and the data of the criterion that do not come from [`ContactFunctions`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Setting {
+    /// Surface convention.
+    pub convention: Convention,
+    /// Where the contact must lie (also gives the period).
+    pub cell: Cell,
+    /// Trailing end -a is at x = -`a`.
+    pub a: f64,
+    /// Leading end.
+    pub b: f64,
+    /// 2 beta tau0/E*: the slope step the adhesive shear puts just past the contact ends.
+    pub edge_step: f64,
+    /// The closure defect by its formula, M = (2/E*) beta P1 - cW P2, in `paper` with a period;
+    /// 0 otherwise (THEORY.md section 8).
+    pub closure_formula: f64,
+    /// Relative tolerance of the pressure test (the method's accuracy of p/omega).
+    pub pressure_tol: f64,
+}
+
+impl Setting {
+    fn l(&self) -> f64 {
+        0.5 * (self.a + self.b)
+    }
+    fn c(&self) -> f64 {
+        0.5 * (self.b - self.a)
+    }
+    fn period(&self) -> Option<f64> {
+        match self.cell {
+            Cell::Fixed { half_period } => Some(2.0 * half_period),
+            Cell::Periodic { period } => Some(period),
+            Cell::Unbounded => None,
+        }
+    }
+    /// Whether the surface closes over a period (a negative gap is then a refusal).
+    fn closes(&self) -> bool {
+        self.convention == Convention::PeriodicSurface || self.closure_formula == 0.0 || self.period().is_none()
+    }
+}
+
+/// Relative tolerance of the gap test: the f64 quadrature of the gap (32 graded panels of 6-point
+/// Gauss–Legendre) is accurate to ~1e-10 of max |h| on the test cases; 1e-8 leaves a margin.
+pub const GAP_TOL: f64 = 1e-8;
+/// Relative tolerance on the closure check: |measured - expected| <= this times max |h| + |M|.
+pub const CLOSURE_TOL: f64 = 1e-6;
+
+/// Which end a gap was integrated from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum End {
+    /// The leading end x = b.
+    Leading,
+    /// The trailing end x = -a.
+    Trailing,
+}
+
+impl End {
+    fn name(self) -> &'static str {
+        match self {
+            End::Leading => "leading",
+            End::Trailing => "trailing",
+        }
+    }
+}
+
+/// What the criterion found for an admissible contact (the default: nothing found yet).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Assessment {
+    /// Largest |p/omega| over the samples.
+    pub max_pressure_factor: f64,
+    /// The most negative gap of the criterion (0 when none is below round-off).
+    pub min_gap: f64,
+    /// Where it is (x).
+    pub min_gap_x: f64,
+    /// h_lead(mid) - h_trail(mid) with the full slope, measured: M = (2/E*) beta P1 - cW P2 in
+    /// `paper`, round-off in `periodic`; 0 for a single punch.
+    pub closure_defect: f64,
+    /// 2 beta tau0/E* (0 without adhesive friction).
+    pub edge_step: f64,
+    /// In `paper` (M != 0): the gap is negative somewhere; the message says how much and why it
+    /// is not a refusal.
+    pub warning: Option<String>,
+}
+
+/// Why a contact is refused.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Refusal {
+    /// The contact leaves its cell.
+    OutsideCell {
+        /// -a.
+        neg_a: f64,
+        /// b.
+        b: f64,
+        /// L/2.
+        half_period: f64,
+    },
+    /// p < 0 somewhere on the contact.
+    NegativePressure {
+        /// The tangent variable where it was found.
+        u: f64,
+        /// p/omega there, relative to the largest |p/omega|.
+        relative: f64,
+    },
+    /// The punch overlaps the surface outside the contact.
+    NegativeGap {
+        /// The gap.
+        h: f64,
+        /// Where (x).
+        x: f64,
+        /// Integrated from which end.
+        from: End,
+    },
+    /// The two halves of the gap disagree with the closure they must have: the method's gap
+    /// slope or its integration is not accurate enough (a failure to converge, not physics).
+    Inconsistent {
+        /// h_lead(mid) - h_trail(mid) measured.
+        measured: f64,
+        /// What it must be (0 or M).
+        expected: f64,
+    },
+}
+
+impl Refusal {
+    /// Whether this is a finding about the physics (else a numerical failure).
+    pub fn is_physical(&self) -> bool {
+        !matches!(self, Refusal::Inconsistent { .. })
+    }
+
+    /// The reason in words (the same for every method).
+    pub fn why(&self) -> String {
+        match self {
+            Refusal::OutsideCell { neg_a, b, half_period } => format!(
+                "the contact [-a, b] = [{}, {}] leaves the cell (-L/2, L/2) = (-{h}, {h}) of the periodic profile",
+                readable_f64(*neg_a),
+                readable_f64(*b),
+                h = readable_f64(*half_period)
+            ),
+            Refusal::NegativePressure { u, relative } => format!(
+                "negative pressure: p/omega = {} of its maximum at u = {} (tangent variable; u = -1 is the trailing end, u = 1 the leading end)",
+                readable_f64(*relative),
+                readable_f64(*u)
+            ),
+            Refusal::NegativeGap { h, x, from } => format!(
+                "negative gap h = {} at x = {} (the punch overlaps the surface outside the contact; gap integrated from the {} end)",
+                readable_f64(*h),
+                readable_f64(*x),
+                from.name()
+            ),
+            Refusal::Inconsistent { measured, expected } => format!(
+                "the two halves of the gap differ by {}, expected {} (the gap slope is not accurate enough)",
+                readable_f64(*measured),
+                readable_f64(*expected)
+            ),
+        }
+    }
+}
+
+/// The pressure samples of criterion 2 (module doc).
+pub fn pressure_points() -> Vec<f64> {
+    let mut us: Vec<f64> = (0..=67).map(|k| -(std::f64::consts::PI * k as f64 / 67.0).cos()).collect();
+    for j in 2..=10 {
+        let e = 10f64.powi(-j);
+        us.push(1.0 - e);
+        us.push(e - 1.0);
+    }
+    us
+}
+
+/// Panels per side of the gap integration (one more per kink of the profile on that side).
+const GAP_PANELS: usize = 32;
+
+/// Criterion 3 on one side: samples (x, h) of the gap integrated from the end at x - c = `start`
+/// over `reach` in direction `dir` (+1 leading, -1 trailing). `kinks` are the x where the
+/// profile's slope jumps (the edges of a cell the profile is repeated from): a panel that
+/// contains one is split there, so each Gauss–Legendre panel sees a smooth slope.
+fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64, kinks: &[f64]) -> Vec<(f64, f64)> {
+    let gl = gauss_jacobi(6, 0.0, 0.0).expect("6-point Gauss-Legendre");
+    // Breakpoints in s (x - c = start + dir R s^4).
+    let mut breaks: Vec<f64> = (0..=GAP_PANELS).map(|j| j as f64 / GAP_PANELS as f64).collect();
+    for &xk in kinks {
+        let d = dir * (xk - c - start);
+        if d > 0.0 && d < reach {
+            breaks.push((d / reach).powf(0.25));
+        }
+    }
+    breaks.sort_by(f64::total_cmp);
+    let mut h = 0.0;
+    let mut out = Vec::with_capacity(breaks.len());
+    for w2 in breaks.windows(2) {
+        let (s0, s1) = (w2[0], w2[1]);
+        if s1 <= s0 {
+            continue;
+        }
+        let mut inc = 0.0;
+        for (z, w) in gl.nodes.iter().zip(&gl.weights) {
+            let s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * z;
+            // x - c = start + dir R s^4, dx/ds = 4 R s^3 (times dir).
+            let xi = start + dir * reach * s.powi(4);
+            inc += w * f.gap_slope(xi) * 4.0 * reach * s.powi(3);
+        }
+        // h(x) = int_end^x h': d h = h' dx = dir h' |dx|.
+        h += dir * inc * 0.5 * (s1 - s0);
+        out.push((c + start + dir * reach * s1.powi(4), h));
+    }
+    out
+}
+
+/// Applies the criterion (module doc) to a contact. `Ok` carries what is reported beside an
+/// admissible contact; `Err` the first reason to refuse it.
+pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment, Refusal> {
+    let (l, c) = (setting.l(), setting.c());
+    // 1. The cell.
+    match setting.cell {
+        Cell::Fixed { half_period } if setting.a >= half_period || setting.b >= half_period => {
+            return Err(Refusal::OutsideCell { neg_a: -setting.a, b: setting.b, half_period });
+        }
+        Cell::Periodic { period } if 2.0 * l >= period => {
+            return Err(Refusal::OutsideCell { neg_a: -setting.a, b: setting.b, half_period: 0.5 * period });
+        }
+        _ => {}
+    }
+    // 2. p >= 0.
+    let us = pressure_points();
+    let vals: Vec<f64> = us.iter().map(|&u| f.pressure_factor(u)).collect();
+    let max_pressure_factor = vals.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if let Some((u, v)) = us.iter().zip(&vals).find(|(_, v)| **v < -setting.pressure_tol * max_pressure_factor) {
+        return Err(Refusal::NegativePressure { u: *u, relative: v / max_pressure_factor });
+    }
+    // 3. The gap, from each end to the middle of the free arc.
+    let reach = match setting.period() {
+        Some(big_l) => 0.5 * big_l - l,
+        None => 4.0 * l,
+    };
+    let kinks: &[f64] = match setting.cell {
+        Cell::Fixed { half_period } => &[-half_period, half_period],
+        _ => &[],
+    };
+    let lead = gap_side(f, c, l, reach, 1.0, kinks);
+    let trail = gap_side(f, c, -l, reach, -1.0, kinks);
+    let hmax = lead.iter().chain(&trail).fold(0.0f64, |m, v| m.max(v.1.abs())).max(f64::MIN_POSITIVE);
+    // The closure: with the criterion's slope (step left out) the halves differ by
+    // M + edge_step (L - 2 l) (the step integrates to edge_step over the arc's length).
+    let closure_defect = match setting.period() {
+        Some(_) => {
+            let measured = lead.last().map_or(0.0, |v| v.1) - trail.last().map_or(0.0, |v| v.1);
+            let defect = measured - setting.edge_step * 2.0 * reach;
+            let expected =
+                if setting.convention == Convention::PeriodicSurface { 0.0 } else { setting.closure_formula };
+            if (defect - expected).abs() > CLOSURE_TOL * (hmax + expected.abs()) {
+                return Err(Refusal::Inconsistent { measured: defect, expected });
+            }
+            defect
+        }
+        None => 0.0,
+    };
+    let mut worst = (0.0f64, c + l, End::Leading);
+    for (side, end) in [(&lead, End::Leading), (&trail, End::Trailing)] {
+        for &(x, h) in side.iter() {
+            if h < worst.0 {
+                worst = (h, x, end);
+            }
+        }
+    }
+    let negative = worst.0 < -GAP_TOL * hmax;
+    let mut warning = None;
+    if negative {
+        if setting.closes() {
+            return Err(Refusal::NegativeGap { h: worst.0, x: worst.1, from: worst.2 });
+        }
+        warning = Some(format!(
+            "{}; in the paper's convention the surface does not close over a period (closure_defect = {}), so the gap is \
+             defined only up to that defect: not refused (the `periodic` convention closes it)",
+            Refusal::NegativeGap { h: worst.0, x: worst.1, from: worst.2 }.why(),
+            readable_f64(closure_defect)
+        ));
+    }
+    Ok(Assessment {
+        max_pressure_factor,
+        min_gap: if negative { worst.0 } else { 0.0 },
+        min_gap_x: worst.1,
+        closure_defect,
+        edge_step: setting.edge_step,
+        warning,
+    })
+}
+
+/// The refusal of a method that returns no contact, in one wording for every method: `reasons`
+/// are why each contact the equations gave was refused (empty: the equations gave none, i.e. no
+/// contact carries the load: "no solution"); `ranges` is the admissible range in words
+/// ([`admissible::Admissible::loads_text`] or [`admissible::Admissible::sizes_text`]).
+pub fn refusal(load: &SlidingLoad, reasons: &[String], ranges: &str) -> Error {
+    let (name, value) = match load {
+        SlidingLoad::NormalLoad(v) => ("normal_load", readable(v)),
+        SlidingLoad::HalfLength(v) => ("half_length", readable(v)),
+    };
+    if reasons.is_empty() {
+        let what = match load {
+            SlidingLoad::NormalLoad(_) => format!("no contact carries {name} = {value} at these parameters"),
+            SlidingLoad::HalfLength(_) => {
+                format!("no centre of a contact with {name} = {value} gives a positive load at these parameters")
+            }
+        };
+        return Error::NoSolution { why: format!("{what}; {ranges}") };
+    }
+    let (subject, verb) = if reasons.len() == 1 { ("the contact", "is") } else { ("the contacts", "are") };
+    Error::NotPhysical {
+        why: format!("{subject} with {name} = {value} {verb} not physical ({}); {ranges}", reasons.join("; ")),
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,156 @@
+use super::admissible::{admissible, SizeContacts};
+use super::*;
+
+/// Hertz (single punch, theta = 0, g = k x^2, E* = 1): p = 2 k sqrt(a^2 - x^2), so p/omega = 2 k a
+/// (omega = sqrt(1 - u^2), x = a u); off the contact h' = 2 k sqrt(x^2 - a^2) sign(x), h = k (|x|
+/// sqrt(x^2 - a^2) - a^2 acosh(|x|/a)) in closed form.
+struct Hertz {
+    k: f64,
+    a: f64,
+    /// A constant added to the slope (to make the gap fail on purpose).
+    tilt: f64,
+    /// A constant added to p/omega near u = 1 (to make p fail).
+    dent: f64,
+}
+
+impl ContactFunctions for Hertz {
+    fn pressure_factor(&self, u: f64) -> f64 {
+        2.0 * self.k * self.a + if u > 0.99 { self.dent } else { 0.0 }
+    }
+    fn gap_slope(&self, xi: f64) -> f64 {
+        2.0 * self.k * (xi * xi - self.a * self.a).max(0.0).sqrt() * xi.signum() + self.tilt
+    }
+}
+
+fn single(a: f64) -> Setting {
+    Setting {
+        convention: Convention::Paper,
+        cell: Cell::Unbounded,
+        a,
+        b: a,
+        edge_step: 0.0,
+        closure_formula: 0.0,
+        pressure_tol: 1e-9,
+    }
+}
+
+#[test]
+fn hertz_is_admissible_and_its_gap_matches_the_closed_form() {
+    let (k, a) = (1.0, 0.3);
+    let f = Hertz { k, a, tilt: 0.0, dent: 0.0 };
+    let r = assess(&f, &single(a)).expect("Hertz is physical");
+    assert_eq!(r.min_gap, 0.0);
+    assert_eq!(r.closure_defect, 0.0);
+    assert!(r.warning.is_none());
+    // The integrated gap at 4 l beyond the leading end against the closed form.
+    let side = gap_side(&f, 0.0, a, 4.0 * a, 1.0, &[]);
+    let (x, h) = *side.last().unwrap();
+    let exact = k * (x * (x * x - a * a).sqrt() - a * a * (x / a).acosh());
+    assert!((h - exact).abs() < 1e-10 * exact, "{h} vs {exact}");
+    // By symmetry the trailing side ends at the same height.
+    let back = gap_side(&f, 0.0, -a, 4.0 * a, -1.0, &[]);
+    assert!((back.last().unwrap().1 - h).abs() < 1e-12 * h);
+}
+
+#[test]
+fn negative_pressure_is_refused_with_the_place() {
+    let f = Hertz { k: 1.0, a: 0.3, tilt: 0.0, dent: -1.0 };
+    match assess(&f, &single(0.3)) {
+        Err(Refusal::NegativePressure { u, relative }) => {
+            assert!(u > 0.99 && relative < 0.0, "{u} {relative}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_negative_gap_refuses_where_the_surface_closes_and_warns_where_it_does_not() {
+    // A tilt of the slope makes the gap negative beyond the trailing end (h = -int over (x, -a)).
+    let f = Hertz { k: 1.0, a: 0.1, tilt: 0.3, dent: 0.0 };
+    let big_l = 1.0;
+    // Periodic: refused. The two halves then differ by 2 tilt (L/2 - l), which is not 0: the
+    // closure check catches it first, as it must (this slope cannot come from a closed surface).
+    let periodic =
+        Setting { convention: Convention::PeriodicSurface, cell: Cell::Periodic { period: big_l }, ..single(0.1) };
+    assert!(matches!(assess(&f, &periodic), Err(Refusal::Inconsistent { .. })));
+    // Paper with the closure defect the tilt implies (M = 2 tilt (L/2 - l)): a warning.
+    let m = 2.0 * 0.3 * (0.5 * big_l - 0.1);
+    let paper = Setting { cell: Cell::Periodic { period: big_l }, closure_formula: m, ..single(0.1) };
+    let r = assess(&f, &paper).expect("paper: a warning, not a refusal");
+    assert!(r.min_gap < 0.0 && r.min_gap_x < -0.1, "{r:?}");
+    assert!((r.closure_defect - m).abs() < 1e-9, "{}", r.closure_defect);
+    assert!(r.warning.as_deref().unwrap_or("").contains("closure_defect"), "{r:?}");
+    // Single punch: refused as a negative gap, from the trailing end.
+    match assess(&f, &single(0.1)) {
+        Err(Refusal::NegativeGap { h, x, from }) => {
+            assert!(h < 0.0 && x < -0.1 && from == End::Trailing, "{h} {x} {from:?}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn the_edge_step_is_left_out_and_the_closure_accounts_for_it() {
+    // A closed surface (periodic) whose criterion slope is the Hertz-like one: the full slope has
+    // -edge_step in it; the halves of the criterion's gap differ by edge_step (L - 2 l).
+    struct Closed;
+    impl ContactFunctions for Closed {
+        fn pressure_factor(&self, _: f64) -> f64 {
+            1.0
+        }
+        // Odd in xi: the two halves of the full gap (slope - step) then differ by exactly
+        // 2 step reach, which the closure check removes.
+        fn gap_slope(&self, xi: f64) -> f64 {
+            (xi * xi - 0.01f64).max(0.0).sqrt() * xi.signum()
+        }
+    }
+    let s = Setting {
+        convention: Convention::PeriodicSurface,
+        cell: Cell::Periodic { period: 1.0 },
+        a: 0.1,
+        b: 0.1,
+        edge_step: 0.0,
+        closure_formula: 0.0,
+        pressure_tol: 1e-9,
+    };
+    // Without a step the odd slope gives halves of equal height: closes.
+    let r = assess(&Closed, &s).expect("closes");
+    assert!(r.closure_defect.abs() < 1e-12, "{}", r.closure_defect);
+    // With a step the criterion's halves differ by 2 step reach; the check accounts for it, and
+    // the defect of the full slope is -2 step reach (not 0): refused as inconsistent.
+    let with_step = Setting { edge_step: 0.01, ..s };
+    match assess(&Closed, &with_step) {
+        Err(Refusal::Inconsistent { measured, expected }) => {
+            assert!((measured + 0.01 * 2.0 * 0.4).abs() < 1e-12 && expected == 0.0, "{measured}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_contact_outside_its_cell_is_refused() {
+    let f = Hertz { k: 1.0, a: 0.3, tilt: 0.0, dent: 0.0 };
+    let s = Setting { cell: Cell::Fixed { half_period: 0.5 }, a: 0.2, b: 0.55, ..single(0.3) };
+    assert!(matches!(assess(&f, &s), Err(Refusal::OutsideCell { .. })));
+    assert!(Refusal::OutsideCell { neg_a: -0.2, b: 0.55, half_period: 0.5 }.why().contains("leaves the cell"));
+}
+
+#[test]
+fn admissible_runs_find_the_ends_and_an_interior_maximum() {
+    // Load s (1 - s) physical for s < 0.7 and for s in (0.9, 1.2): two runs; the first has its
+    // maximum 1/4 inside (at s = 1/2), the second its largest load at its lower end.
+    let at = |s: f64| -> Result<SizeContacts, ()> { Ok(vec![(s * (1.3 - s), s < 0.7 || (s > 0.9 && s < 1.2))]) };
+    let adm = admissible(1.45, at).unwrap();
+    assert_eq!(adm.runs.len(), 2, "{adm:?}");
+    let (r0, r1) = (&adm.runs[0], &adm.runs[1]);
+    assert_eq!(r0.size_lo, 0.0);
+    assert!((r0.size_hi - 0.7).abs() < 1e-9, "{}", r0.size_hi);
+    assert!((r0.load_hi.0 - 0.4225).abs() < 1e-12 && (r0.load_hi.1 - 0.65).abs() < 1e-5, "{:?}", r0.load_hi);
+    assert!((r1.size_lo - 0.9).abs() < 1e-9 && (r1.size_hi - 1.2).abs() < 1e-9, "{r1:?}");
+    assert!((r1.load_lo - 1.2 * 0.1).abs() < 1e-8 && (r1.load_hi.0 - 0.9 * 0.4).abs() < 1e-8, "{r1:?}");
+    assert!(!r1.open_above);
+    assert_eq!(adm.max_load().map(|m| m.0), Some(r0.load_hi.0));
+    assert!(adm.carries(0.3) && !adm.carries(0.43));
+    let text = adm.loads_text(1.0, |s| s, "lambda");
+    assert!(text.starts_with("physical contacts carry normal_load in (0, 0.4225]"), "{text}");
+}
