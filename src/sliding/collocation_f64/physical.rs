@@ -14,7 +14,7 @@ use crate::model::Convention;
 use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior;
 use crate::params::sliding::ShapeF64;
 use crate::params::sliding::SlidingParamsF64;
-use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting};
+use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
 /// H[p](x) for x outside the contact (THEORY.md section 2). Near the contact (|u| <= 3) the
@@ -94,6 +94,7 @@ pub(super) fn setting(prm: &SlidingParamsF64, out: &Outputs) -> Setting {
         edge_step: 2.0 * prm.beta * prm.tau0 / prm.e_star,
         closure_formula,
         pressure_tol: PRESSURE_TOL,
+        closure_tol: CLOSURE_TOL,
     }
 }
 

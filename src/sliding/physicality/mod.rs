@@ -82,6 +82,9 @@ pub struct Setting {
     pub closure_formula: f64,
     /// Relative tolerance of the pressure test (the method's accuracy of p/omega).
     pub pressure_tol: f64,
+    /// Relative tolerance of the closure check ([`CLOSURE_TOL`] for a solution of the equations;
+    /// larger for a contact known only to an estimated accuracy, e.g. the series method's).
+    pub closure_tol: f64,
 }
 
 impl Setting {
@@ -311,7 +314,7 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
             let defect = measured - setting.edge_step * 2.0 * reach;
             let expected =
                 if setting.convention == Convention::PeriodicSurface { 0.0 } else { setting.closure_formula };
-            if (defect - expected).abs() > CLOSURE_TOL * (hmax + expected.abs()) {
+            if (defect - expected).abs() > setting.closure_tol * (hmax + expected.abs()) {
                 return Err(Refusal::Inconsistent { measured: defect, expected });
             }
             defect

@@ -31,6 +31,7 @@ fn single(a: f64) -> Setting {
         edge_step: 0.0,
         closure_formula: 0.0,
         pressure_tol: 1e-9,
+        closure_tol: CLOSURE_TOL,
     }
 }
 
@@ -112,6 +113,7 @@ fn the_edge_step_is_left_out_and_the_closure_accounts_for_it() {
         edge_step: 0.0,
         closure_formula: 0.0,
         pressure_tol: 1e-9,
+        closure_tol: CLOSURE_TOL,
     };
     // Without a step the odd slope gives halves of equal height: closes.
     let r = assess(&Closed, &s).expect("closes");

@@ -17,7 +17,9 @@ use super::contact::Contact;
 use super::pressure::Pressure;
 use crate::model::Convention;
 use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
-use crate::sliding::physicality::{assess, pressure_points, Assessment, Cell, ContactFunctions, Refusal, Setting};
+use crate::sliding::physicality::{
+    assess, pressure_points, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL,
+};
 use rug::Float;
 
 /// The MPFR solution seen by the criterion (in units of E*; lengths unchanged).
@@ -42,7 +44,7 @@ fn pressure_tol(prec: u32) -> f64 {
 }
 
 /// The criterion's data for a contact with loads `p1`, `p2` (units of E*).
-fn setting(params: &SlidingParamsMpfr, contact: &Contact, p1: &Float, p2: &Float) -> Setting {
+fn setting(params: &SlidingParamsMpfr, contact: &Contact, p1: &Float, p2: &Float, closure_tol: f64) -> Setting {
     let p = params.prec;
     let l = &contact.size.l;
     let a = Float::with_val(p, l - &contact.c).to_f64();
@@ -67,10 +69,11 @@ fn setting(params: &SlidingParamsMpfr, contact: &Contact, p1: &Float, p2: &Float
         edge_step: Float::with_val(p, &params.beta * &params.tau0).to_f64() * 2.0,
         closure_formula,
         pressure_tol: pressure_tol(p),
+        closure_tol,
     }
 }
 
-/// The shared criterion applied to a contact with loads `p1`, `p2` (units of E*).
+/// The shared criterion applied to a solution of the equations with loads `p1`, `p2` (units of E*).
 pub fn physicality(
     params: &SlidingParamsMpfr,
     contact: &Contact,
@@ -78,7 +81,20 @@ pub fn physicality(
     p1: &Float,
     p2: &Float,
 ) -> Result<Assessment, Refusal> {
-    assess(&Functions { params, pressure }, &setting(params, contact, p1, p2))
+    physicality_with(params, contact, pressure, p1, p2, CLOSURE_TOL)
+}
+
+/// [`physicality`] with the closure check's relative tolerance `closure_tol` (for a contact that
+/// solves the equations only to an estimated accuracy).
+pub fn physicality_with(
+    params: &SlidingParamsMpfr,
+    contact: &Contact,
+    pressure: &Pressure<'_>,
+    p1: &Float,
+    p2: &Float,
+    closure_tol: f64,
+) -> Result<Assessment, Refusal> {
+    assess(&Functions { params, pressure }, &setting(params, contact, p1, p2, closure_tol))
 }
 
 /// The largest pressure over the criterion's pressure samples, at working precision (the scale of

@@ -15,7 +15,7 @@
 use super::contact::{Contact, Size};
 use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
-use super::physical::{max_pressure, physicality};
+use super::physical::{max_pressure, physicality, physicality_with};
 use super::pressure::Pressure;
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
@@ -581,12 +581,14 @@ fn build(
 /// The shared physicality criterion at a contact given from outside (e.g. by the series method):
 /// half-length `l` and centre `c` (the problem's lengths), load `p2` in the problem's units; the
 /// pressure [2.13] and the gap slope at that contact are evaluated with the node count for 16
-/// digits at `params`' precision. `Err` for a failure of the evaluation itself.
+/// digits at `params`' precision. `rel_error` is the contact's own relative accuracy: the closure
+/// of the gap holds only to it (it follows from the equations), so the closure check allows
+/// max(CLOSURE_TOL, 100 rel_error). `Err` for a failure of the evaluation itself.
 pub fn physicality_at_contact(
     problem: &SlidingProblem,
-    l: &Float,
-    c: &Float,
+    (l, c): (&Float, &Float),
     p2: &Float,
+    rel_error: f64,
     prec: u32,
 ) -> Result<Result<Assessment, Refusal>, SlidingError> {
     let params = SlidingParamsMpfr::new(problem, prec)?;
@@ -596,8 +598,13 @@ pub fn physicality_at_contact(
     };
     let n = bucket(nodes_for(lambda_of(&params, s.to_f64()), LOCATE_DIGITS));
     let p2_unit = Float::with_val(prec, p2 / &params.unit);
-    let sol = ShiftSolution { c: c.clone(), p2: p2_unit };
-    physical_at(&params, &s, &sol, n)
+    let rule = inverse_rule(&params, n)?;
+    let size = Size::new(&params, &s);
+    let contact = Contact::new(&params, &size, c.clone());
+    let pr = Pressure::new(&params, &contact, &rule);
+    let p1 = p1_of(&params, &size.l, &p2_unit);
+    let tol = crate::sliding::physicality::CLOSURE_TOL.max(100.0 * rel_error);
+    Ok(physicality_with(&params, &contact, &pr, &p1, &p2_unit, tol))
 }
 
 /// The refusal of a contact of `problem` for `reasons` (empty: no contact carries the load), with

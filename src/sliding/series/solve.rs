@@ -179,7 +179,8 @@ pub fn solve_series_with(
     let accuracy = SeriesAccuracy { contact, f_def, pressure, headline, rate: rho };
     let mut s = solution(&params, &sp, hi, &xh, max_p, order, accuracy);
     // The shared physicality criterion at the series' contact (pressure [2.13] and gap there).
-    match physicality_at_contact(problem, &s.l, &s.c, &s.p2, prec)? {
+    let rel_error = 10f64.powf(-s.accuracy.contact);
+    match physicality_at_contact(problem, (&s.l, &s.c), &s.p2, rel_error, prec)? {
         Ok(a) => s.physicality = a,
         Err(r) if r.is_physical() => {
             let reason = format!("the series' contact at lambda = {}: {}", readable_mpfr(&s.lambda), r.why());
