@@ -67,6 +67,8 @@ impl Case {
             SceneProblem::Sliding(p) => match p.shape() {
                 PunchShape::Parabolic { .. } => vec![Case::SlidingParabolic],
                 PunchShape::Sinusoidal { .. } => vec![Case::SlidingSinusoidal],
+                // Not calibrated separately: predicted from the parabola (same reduction).
+                PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => vec![Case::SlidingParabolic],
             },
             SceneProblem::Adhesion(_) => vec![Case::AdhesionNu0, Case::AdhesionNu03],
         }

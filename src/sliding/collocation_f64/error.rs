@@ -23,7 +23,7 @@ pub enum SlidingF64Error {
     },
     /// The periodic parabola's contact leaves the cell (-L/2, L/2) (its periodic extension has
     /// kinks at +-L/2; THEORY.md section 3, Validity).
-    #[error("the contact [-a, b] = [{neg_a}, {b}] leaves the cell (-L/2, L/2) = (-{half_period}, {half_period}) of the periodic parabola; reduce normal_load (or half_length)")]
+    #[error("the contact [-a, b] = [{neg_a}, {b}] leaves the cell (-L/2, L/2) = (-{half_period}, {half_period}) of the periodic profile (a parabola, polynomial or circle repeated with period L has kinks at +-L/2); reduce normal_load (or half_length)")]
     ContactLeavesCell {
         /// -a.
         neg_a: f64,
@@ -101,7 +101,7 @@ impl From<SlidingF64Error> for crate::error::Error {
             }
             SlidingF64Error::ContactLeavesCell { neg_a, b, half_period } => Error::NotPhysical {
                 why: format!(
-                    "the contact [-a, b] = [{}, {}] leaves the cell (-L/2, L/2) = (-{h}, {h}) of the periodic parabola; reduce normal_load (or half_length)",
+                    "the contact [-a, b] = [{}, {}] leaves the cell (-L/2, L/2) = (-{h}, {h}) of the periodic profile (a parabola, polynomial or circle repeated with period L has kinks at +-L/2); reduce normal_load (or half_length)",
                     readable_f64(neg_a),
                     readable_f64(b),
                     h = readable_f64(half_period)

@@ -107,6 +107,7 @@
 mod candidates;
 mod closure;
 mod error;
+mod general;
 mod interpolant;
 mod max_load;
 mod operator;

@@ -11,7 +11,7 @@ use super::solution::{SlidingSolutionF64, SlidingSolutionsF64, SolverOptions};
 use super::verify::check_run;
 use crate::model::SlidingProblem;
 use crate::numerics::accuracy::readable_f64;
-use crate::params::sliding::{ShapeF64, SlidingParamsF64, TargetF64};
+use crate::params::sliding::{check_profile_on_contact, ShapeF64, SlidingParamsF64, TargetF64};
 
 /// Every candidate root of the side conditions at the main run's nodes, before the physicality
 /// check removes some (for the sinusoid with theta != 0 a load below the maximum is reached
@@ -49,11 +49,15 @@ pub fn solve_sliding_f64(
         let col = collocation(prm.theta, n)?;
         let st = state_of(&prm, target, cand, n, false)?;
         let out = outputs(&col, &prm, &st, points);
-        if let (ShapeF64::Parabolic { .. }, Some(big_l)) = (prm.shape, prm.period) {
+        let non_periodic_profile =
+            matches!(prm.shape, ShapeF64::Parabolic { .. } | ShapeF64::Polynomial { .. } | ShapeF64::Circular { .. });
+        if let (true, Some(big_l)) = (non_periodic_profile, prm.period) {
             if out.a >= 0.5 * big_l || out.b >= 0.5 * big_l {
                 return Err(SlidingF64Error::ContactLeavesCell { neg_a: -out.a, b: out.b, half_period: 0.5 * big_l });
             }
         }
+        // Polynomial and circle: the contact inside |x| < R, convex, with a small slope.
+        check_profile_on_contact(problem, -out.a, out.b)?;
         let gap = match physicality(&col, &prm, &st, &out) {
             Ok(g) => g,
             Err(r) => {
@@ -104,7 +108,7 @@ pub fn solve_sliding_f64(
         });
     }
     if solutions.is_empty() {
-        if let (ShapeF64::Sinusoidal { .. }, TargetF64::NormalLoad(p2)) = (prm.shape, target) {
+        if let (ShapeF64::Sinusoidal { .. }, TargetF64::NormalLoad(p2)) = (&prm.shape, target) {
             if let Some((max_load, lam)) = sinusoid_max_physical_load(&prm, options)? {
                 if p2 > max_load {
                     return Err(SlidingF64Error::load_exceeds_maximum(&prm, p2, max_load, lam));

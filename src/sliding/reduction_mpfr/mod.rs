@@ -45,6 +45,7 @@ pub mod equation;
 pub mod error;
 pub mod physical;
 pub mod pressure;
+pub mod profile;
 pub mod setup;
 pub mod solution;
 pub mod solve;

@@ -17,6 +17,7 @@ use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
 use super::physical::{check_gap, check_pressure};
 use super::pressure::Pressure;
+use super::profile::{centre, is_general};
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
 use crate::model::{Exact, SlidingProblem};
@@ -24,7 +25,7 @@ use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::exact::to_float;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
 use crate::numerics::roots::{brent, Bracket, RootError};
-use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
+use crate::params::sliding::{check_profile_on_contact, ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
 use rug::Float;
 use std::sync::Arc;
 
@@ -63,6 +64,44 @@ pub fn nodes_for(lambda: f64, digits: f64) -> usize {
         usize::MAX
     } else {
         (n as usize).max(8)
+    }
+}
+
+/// Nodes a polynomial or circular profile needs beyond [`nodes_for`] at size `s` (lambda, or l
+/// for a single punch); 0 for the parabola and the sinusoid. A polynomial of degree N makes the
+/// single punch's integrands polynomials of degree about N + 1: N + 8 nodes. The circle's g' is
+/// singular at x = +-R, i.e. (for a contact centred near 0) at the real u* = R/l (single) or
+/// tan(pi R/L)/m (periodic, when R < L/2), so the error behaves like rho^(-2n),
+/// rho = u* + sqrt(u*^2 - 1) (Bernstein ellipse): n = (digits + 4) ln 10/(2 ln rho) [heuristic:
+/// the centre c != 0 moves the singularity; the second run of `solve_verified` measures the
+/// digits actually obtained].
+fn profile_nodes(params: &SlidingParamsMpfr, s: f64, digits: f64) -> usize {
+    match &params.shape {
+        ShapeMpfr::Polynomial { slope, .. } => slope.len() + 8,
+        ShapeMpfr::Circular { r } => {
+            let r = r.to_f64();
+            let u_star = match &params.period {
+                None => r / s,
+                Some(big_l) => {
+                    let angle = std::f64::consts::PI * r / big_l.to_f64();
+                    if angle >= std::f64::consts::FRAC_PI_2 {
+                        return 8;
+                    }
+                    angle.tan() / s.tan()
+                }
+            };
+            if !(u_star > 1.0) {
+                return usize::MAX;
+            }
+            let rho = u_star + (u_star * u_star - 1.0).sqrt();
+            let n = ((digits + 4.0) * std::f64::consts::LN_10 / (2.0 * rho.ln())).ceil();
+            if n > 1e9 {
+                usize::MAX
+            } else {
+                (n as usize).max(8)
+            }
+        }
+        _ => 0,
     }
 }
 
@@ -105,12 +144,15 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
 fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
     let rule = inverse_rule(params, n)?;
     let size = Size::new(params, s);
+    if is_general(&params.shape) {
+        return Ok(centre(params, &size, &rule).into_iter().collect());
+    }
     Ok(shift_solutions(params, &size, &equation_terms(params, &size, &rule)))
 }
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).
 fn load_lo(params: &SlidingParamsMpfr, s: f64, branch: usize) -> Result<Option<f64>, SlidingError> {
-    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS));
+    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS).max(profile_nodes(params, s, LOCATE_DIGITS)));
     let sf = Float::with_val(params.prec, s);
     Ok(branches(params, &sf, n)?.get(branch).map(|b| b.p2.to_f64()))
 }
@@ -238,8 +280,101 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
             found.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(std::cmp::Ordering::Equal));
             Ok(found)
         }
+        (ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. }, _, TargetMpfr::NormalLoad(p2)) => {
+            locate_profile(setup, params, p2, cap, f)
+        }
         (_, _, TargetMpfr::HalfLength(_)) => unreachable!("locate is called for a given load only"),
     }
+}
+
+/// The locating stage for a polynomial or circular punch (THEORY.md section 9): P2 grows with the
+/// contact size for a convex profile, so the size is bracketed geometrically from the
+/// single-punch estimate l_s of the curvature scale k ([`SlidingParamsMpfr::k`]) and refined by
+/// Brent's method, as for the parabola. The sizes are capped by the lambda of the node cap, by
+/// the cell (2 l < L) and, for the circle, by l < R. A size where no centre exists (the circle's
+/// contact reaching |x| = R) counts as too large.
+fn locate_profile(
+    setup: &Setup,
+    params: &SlidingParamsMpfr,
+    p2: &Float,
+    cap: f64,
+    f: impl Fn(f64, usize) -> Result<Option<f64>, SlidingError>,
+) -> Result<Vec<Located>, SlidingError> {
+    let ls = params.l_s(p2).to_f64();
+    let radius = match &params.shape {
+        ShapeMpfr::Circular { r } => Some(r.to_f64()),
+        _ => None,
+    };
+    let smax = match (&params.period, radius) {
+        (Some(big_l), r) => {
+            let big_l = big_l.to_f64();
+            let by_r = r.map_or(f64::INFINITY, |r| std::f64::consts::PI * r / big_l);
+            cap.min(by_r)
+        }
+        (None, Some(r)) => r,
+        (None, None) => f64::INFINITY,
+    };
+    let s_of_l = |l: f64| match &params.period {
+        Some(big_l) => std::f64::consts::PI * l / big_l.to_f64(),
+        None => l,
+    };
+    let too_large = || {
+        SlidingError::NoSolution {
+        load: setup.load_text.clone().unwrap_or_default(),
+        why: format!(
+            "the contact would exceed {} (lambda = pi l/L of about {LOCATE_NODES} nodes for {LOCATE_DIGITS} digits, the cell 2 l < L{})",
+            if params.period.is_some() { format!("lambda = {}", readable_f64(smax)) } else { format!("l = {}", readable_f64(smax)) },
+            if radius.is_some() { ", or the circle's |x| < R" } else { "" }
+        ),
+    }
+    };
+    let eval = |s: f64| -> Result<Option<f64>, SlidingError> { Ok(f(s, 0)?.filter(|v| v.is_finite())) };
+    let mut s0 = s_of_l(ls).min(0.5 * smax).max(1e-300);
+    let mut f0 = eval(s0)?;
+    let mut tries = 0;
+    while f0.is_none() {
+        s0 *= 0.5;
+        f0 = eval(s0)?;
+        tries += 1;
+        if tries > 60 {
+            return Err(SlidingError::NoConvergence(format!(
+                "no centre of the contact found below size {}",
+                readable_f64(s0)
+            )));
+        }
+    }
+    let f0 = f0.expect("loop exits with a value");
+    if f0.abs() <= RESIDUAL_NOISE {
+        return Ok(vec![(s0, 0)]);
+    }
+    let (mut lo, mut flo, mut hi, mut fhi) = (s0, f0, s0, f0);
+    let mut tries = 0;
+    while fhi < 0.0 {
+        lo = hi;
+        flo = fhi;
+        let next = if smax.is_finite() { (hi * 2.0).min(hi + 0.5 * (smax - hi)) } else { hi * 2.0 };
+        tries += 1;
+        if tries > 200 || (smax.is_finite() && smax - next < 1e-12 * smax) {
+            return Err(too_large());
+        }
+        hi = next;
+        fhi = match eval(hi)? {
+            Some(v) => v,
+            None => return Err(too_large()),
+        };
+    }
+    let mut tries = 0;
+    while flo > 0.0 {
+        hi = lo;
+        fhi = flo;
+        lo *= 0.5;
+        flo = eval(lo)?.ok_or_else(|| SlidingError::NoConvergence("no centre at a smaller contact".into()))?;
+        tries += 1;
+        if tries > 2000 {
+            return Err(SlidingError::NoConvergence("no lower bracket for the contact size".into()));
+        }
+    }
+    Ok(vec![(root_in(|x| f(x, 0), (lo, flo), (hi, fhi))?, 0)])
 }
 
 /// The largest load P2/E* on a physical solution of the sinusoid (low precision, `params` at the
@@ -426,8 +561,9 @@ pub(super) fn solve_located(
 ) -> Result<Vec<(SlidingSolution, Located)>, SlidingError> {
     let prec = params.prec;
     let check = checks == Checks::Physical;
-    let n_for = |lam: f64| -> Result<usize, SlidingError> {
-        let n0 = nodes_for(lam, nodes.digits);
+    let n_for = |size: f64| -> Result<usize, SlidingError> {
+        let lam = lambda_of(params, size);
+        let n0 = nodes_for(lam, nodes.digits).max(profile_nodes(params, size, nodes.digits));
         let n = (n0 as f64 * nodes.factor).ceil();
         if n0 == usize::MAX || n > NODE_CAP as f64 {
             return Err(SlidingError::NoConvergence(format!(
@@ -449,7 +585,7 @@ pub(super) fn solve_located(
                 Some(big_l) => Float::with_val(prec, lf * &params.pi) / big_l,
                 None => lf.clone(),
             };
-            let n = n_for(lambda_of(params, s.to_f64()))?;
+            let n = n_for(s.to_f64())?;
             for (br, b) in branches(params, &s, n)?.into_iter().enumerate() {
                 if b.p2 > 0u32 {
                     cands.push((s.clone(), b, n, (s.to_f64(), br)));
@@ -481,7 +617,7 @@ pub(super) fn solve_located(
                         }
                     }
                 }
-                let n = n_for(lambda_of(params, s0))?;
+                let n = n_for(s0)?;
                 let s = refine(params, s0, br, p2f, n)?;
                 let b = branches(params, &s, n)?;
                 let mut sol =
@@ -497,7 +633,13 @@ pub(super) fn solve_located(
     let mut out = vec![];
     let mut first_err = None;
     for (s, sh, n, loc) in cands {
-        match build(params, &s, sh, n, points, check) {
+        match build(params, &s, sh, n, points, check).and_then(|sol| {
+            if check {
+                let left = Float::with_val(53, -&sol.a).to_f64();
+                check_profile_on_contact(&setup.problem, left, sol.b.to_f64())?;
+            }
+            Ok(sol)
+        }) {
             Ok(sol) => out.push((sol, loc)),
             Err(e @ SlidingError::NotPhysical { .. }) if sinusoid => {
                 first_err.get_or_insert(e);
@@ -530,7 +672,9 @@ fn build(
     let l = size.l.clone();
     let a = Float::with_val(p, &l - &sh.c);
     let b = Float::with_val(p, &l + &sh.c);
-    if let (ShapeMpfr::Parabolic { .. }, Some(big_l)) = (&params.shape, &params.period) {
+    let non_periodic_profile =
+        matches!(params.shape, ShapeMpfr::Parabolic { .. } | ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. });
+    if let (true, Some(big_l)) = (non_periodic_profile, &params.period) {
         let half = Float::with_val(p, big_l / 2u32);
         if a >= half || b >= half {
             return Err(SlidingError::ContactOutsidePeriod {
