@@ -320,7 +320,10 @@ pub fn choose(table: &Table, problem: &SceneProblem, target: u32) -> Choice {
     let lambda = lambda_estimate(problem);
     let series_ok = match problem {
         SceneProblem::Sliding(p) => {
-            matches!(p.load(), SlidingLoad::NormalLoad(_)) && matches!(p.period(), Period::Finite(_))
+            matches!(p.load(), SlidingLoad::NormalLoad(_))
+                && matches!(p.period(), Period::Finite(_))
+                // The series method knows the parabola and the sinusoid only (issue 11).
+                && matches!(p.shape(), PunchShape::Parabolic { .. } | PunchShape::Sinusoidal { .. })
         }
         SceneProblem::Adhesion(_) => false,
     };
