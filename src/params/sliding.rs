@@ -558,6 +558,11 @@ impl SlidingParamsMpfr {
 /// keep their earlier behaviour: no slope limit.)
 pub const MAX_CONTACT_SLOPE: f64 = 0.5;
 
+/// Largest half-length, as a fraction of the circle's radius, that the locating stages search:
+/// there |g'| = 0.9/sqrt(1 - 0.81) = 2.06, far beyond [`MAX_CONTACT_SLOPE`], so no admissible
+/// contact is lost, and the quadrature near the singularity of g' at |x| = R stays affordable.
+pub const CIRCLE_SIZE_CAP: f64 = 0.9;
+
 /// Refusals of a polynomial or circular profile on a found contact [-a, b] = [`left`, `right`]
 /// (THEORY.md section 9), evaluated in `f64` from the exact profile: (i) the circle's contact
 /// must stay inside |x| < R; (ii) g'' >= 0 on [-a, b] (sampled at 257 Chebyshev points and the

@@ -19,7 +19,7 @@ use super::solution::SolverOptions;
 use super::tangent_map::{Map, LAMBDA_MAX};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::roots::{brent, Bracket};
-use crate::params::sliding::{ShapeF64, SlidingParamsF64};
+use crate::params::sliding::{ShapeF64, SlidingParamsF64, CIRCLE_SIZE_CAP};
 use std::f64::consts::PI;
 
 /// Most Newton steps for the centre.
@@ -38,10 +38,10 @@ pub(super) fn size_of_half_length(prm: &SlidingParamsF64, l: f64) -> f64 {
     prm.period.map_or(l, |big_l| PI * l / big_l)
 }
 
-/// Largest size: lambda below [`LAMBDA_MAX`] and, for the circle, l < R.
+/// Largest size: lambda below [`LAMBDA_MAX`] and, for the circle, l <= [`CIRCLE_SIZE_CAP`] R.
 fn size_cap(prm: &SlidingParamsF64) -> f64 {
     let by_radius = match prm.shape {
-        ShapeF64::Circular { r } => size_of_half_length(prm, r),
+        ShapeF64::Circular { r } => size_of_half_length(prm, r * CIRCLE_SIZE_CAP),
         _ => f64::INFINITY,
     };
     match prm.period {

@@ -6,8 +6,11 @@ use super::error::SlidingError;
 use super::setup::Setup;
 use super::solve::{root_in, Located, LOCATE_DIGITS, LOCATE_NODES, RESIDUAL_NOISE};
 use crate::numerics::accuracy::readable_f64;
-use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
+use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr, CIRCLE_SIZE_CAP};
 use rug::Float;
+
+/// A node count beyond every cap (the contact reaches the circle's singularity).
+const HOPELESS: usize = 1 << 20;
 
 /// Nodes a polynomial or circular profile needs beyond [`super::solve::nodes_for`] at size `s` (lambda, or l
 /// for a single punch); 0 for the parabola and the sinusoid. A polynomial of degree N makes the
@@ -33,12 +36,12 @@ pub(super) fn profile_nodes(params: &SlidingParamsMpfr, s: f64, digits: f64) -> 
                 }
             };
             if !(u_star > 1.0) {
-                return usize::MAX;
+                return HOPELESS;
             }
             let rho = u_star + (u_star * u_star - 1.0).sqrt();
             let n = ((digits + 4.0) * std::f64::consts::LN_10 / (2.0 * rho.ln())).ceil();
-            if n > 1e9 {
-                usize::MAX
+            if n > HOPELESS as f64 {
+                HOPELESS
             } else {
                 (n as usize).max(8)
             }
@@ -62,7 +65,7 @@ pub(super) fn locate_profile(
 ) -> Result<Vec<Located>, SlidingError> {
     let ls = params.l_s(p2).to_f64();
     let radius = match &params.shape {
-        ShapeMpfr::Circular { r } => Some(r.to_f64()),
+        ShapeMpfr::Circular { r } => Some(r.to_f64() * CIRCLE_SIZE_CAP),
         _ => None,
     };
     let smax = match (&params.period, radius) {
@@ -84,7 +87,7 @@ pub(super) fn locate_profile(
         why: format!(
             "the contact would exceed {} (lambda = pi l/L of about {LOCATE_NODES} nodes for {LOCATE_DIGITS} digits, the cell 2 l < L{})",
             if params.period.is_some() { format!("lambda = {}", readable_f64(smax)) } else { format!("l = {}", readable_f64(smax)) },
-            if radius.is_some() { ", or the circle's |x| < R" } else { "" }
+            if radius.is_some() { ", or the circle's |x| < R (l <= 0.9 R searched)" } else { "" }
         ),
     }
     };

@@ -115,7 +115,10 @@ fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<Shift
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).
 fn load_lo(params: &SlidingParamsMpfr, s: f64, branch: usize) -> Result<Option<f64>, SlidingError> {
-    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS).max(profile_nodes(params, s, LOCATE_DIGITS)));
+    // Capped: near the circle's radius the profile's rule would grow without bound (the solve
+    // stage refuses such sizes with a message; here they only need a sign).
+    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS).max(profile_nodes(params, s, LOCATE_DIGITS)))
+        .min(NODE_CAP);
     let sf = Float::with_val(params.prec, s);
     Ok(branches(params, &sf, n)?.get(branch).map(|b| b.p2.to_f64()))
 }
