@@ -49,7 +49,7 @@ pub fn equation_terms(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacob
 /// The left side of [2.14] split into its load (`re`, times L) and imaginary (`im`) parts for two
 /// integrands `values(u, prec)` evaluated at the nodes of `rule` (weight 1/omega) in place of
 /// g'(x(u)): the slope basis of the parabola and the sinusoid, or (g', g'') of a general profile
-/// at one centre ([`super::profile`]).
+/// at one centre ([`super::centre`]).
 pub fn kernel_sums(
     params: &SlidingParamsMpfr,
     size: &Size,
@@ -184,7 +184,7 @@ pub fn shift_solutions(params: &SlidingParamsMpfr, size: &Size, terms: &Equation
                 .collect()
         }
         ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. } => {
-            unreachable!("general profiles find their centre by Newton's method (super::profile::centre)")
+            unreachable!("general profiles find their centre by Newton's method (super::centre::centre)")
         }
     }
 }

@@ -2,9 +2,9 @@
 //! precision, and the node count such a profile needs; the stages of [`super::solve`] for the
 //! parabola and the sinusoid stay there.
 
+use super::bracket::{root_in, Located, LOCATE_DIGITS, LOCATE_NODES, RESIDUAL_NOISE};
 use super::error::SlidingError;
 use super::setup::Setup;
-use super::solve::{root_in, Located, LOCATE_DIGITS, LOCATE_NODES, RESIDUAL_NOISE};
 use crate::numerics::accuracy::readable_f64;
 use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr, CIRCLE_SIZE_CAP};
 use rug::Float;
@@ -12,7 +12,7 @@ use rug::Float;
 /// A node count beyond every cap (the contact reaches the circle's singularity).
 const HOPELESS: usize = 1 << 20;
 
-/// Nodes a polynomial or circular profile needs beyond [`super::solve::nodes_for`] at size `s` (lambda, or l
+/// Nodes a polynomial or circular profile needs beyond `super::solve::nodes_for` at size `s` (lambda, or l
 /// for a single punch); 0 for the parabola and the sinusoid. A polynomial of degree N makes the
 /// single punch's integrands polynomials of degree about N + 1: N + 8 nodes. The circle's g' is
 /// singular at x = +-R, i.e. (for a contact centred near 0) at the real u* = R/l (single) or

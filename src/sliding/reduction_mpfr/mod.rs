@@ -19,7 +19,8 @@
 //! the slope basis), `equation` ([2.14] and the centre), `pressure` ([2.13], gap slope, integrals
 //! of p), `physical` (p >= 0, gap >= 0), `solve` (locating and refining the contact), `verify`
 //! (two runs), `solution`, `error`; for a polynomial or circular punch (THEORY.md section 9)
-//! `profile` (g', g'' evaluated directly, the centre by Newton's method) and `locate_profile`.
+//! `profile` (g', g'' evaluated directly), `centre` (the centre by Newton's method) and
+//! `locate_profile`; `bracket` holds the locating stage's shared pieces.
 //!
 //! Conventions. By default the paper's (THEORY.md's) convention is used; the problem's
 //! [`crate::model::SlidingProblem::convention`] selects it. Two consequences found here
@@ -42,6 +43,8 @@
 //! equation [2.8] to 1e-30 relative to E* k l (direct tanh-sinh quadrature, no tangent map);
 //! P2 = int p dx by a separate rule; direct vs inverse problem.
 
+pub mod bracket;
+pub mod centre;
 pub mod contact;
 pub mod equation;
 pub mod error;

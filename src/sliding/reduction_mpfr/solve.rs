@@ -12,20 +12,22 @@
 //! Everything here works in units of E* ([`SlidingParamsMpfr`]); [`solve_at`] and
 //! [`super::verify::solve_verified`] return the solutions in the problem's units.
 
+pub use super::bracket::Located;
+use super::bracket::{root_in, LOCATE_DIGITS, LOCATE_NODES, RESIDUAL_NOISE};
+use super::centre::centre;
 use super::contact::{Contact, Size};
 use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
 use super::locate_profile::{locate_profile, profile_nodes};
 use super::physical::{check_gap, check_pressure};
 use super::pressure::Pressure;
-use super::profile::{centre, is_general};
+use super::profile::is_general;
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
 use crate::model::{Exact, SlidingProblem};
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::exact::to_float;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
-use crate::numerics::roots::{brent, Bracket, RootError};
 use crate::params::sliding::{check_profile_on_contact, ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
 use rug::Float;
 use std::sync::Arc;
@@ -33,13 +35,8 @@ use std::sync::Arc;
 /// Most nodes the solver will use for one rule.
 pub const NODE_CAP: usize = 3000;
 
-/// Digits the locating stage aims at.
-pub(super) const LOCATE_DIGITS: f64 = 16.0;
 /// Digits of the sinusoid's load-curve scan (signs only).
 const SCAN_DIGITS: f64 = 8.0;
-/// Most nodes of the locating stage.
-pub(super) const LOCATE_NODES: usize = 512;
-
 /// How many nodes a run uses: `factor` times the error-model count for `digits`.
 #[derive(Debug, Clone, Copy)]
 pub struct NodeRule {
@@ -121,31 +118,6 @@ fn load_lo(params: &SlidingParamsMpfr, s: f64, branch: usize) -> Result<Option<f
         .min(NODE_CAP);
     let sf = Float::with_val(params.prec, s);
     Ok(branches(params, &sf, n)?.get(branch).map(|b| b.p2.to_f64()))
-}
-
-/// The relative load residual of the locating stage is evaluated to ~16 digits: below this it is
-/// noise, and the size counts as a root.
-pub(super) const RESIDUAL_NOISE: f64 = 1e-15;
-
-/// A root of the relative load residual `f` (None: no centre on the branch, an error) in the
-/// bracket (lo, flo), (hi, fhi) with a sign change, by Brent's method to ~4 eps relative.
-pub(super) fn root_in(
-    mut f: impl FnMut(f64) -> Result<Option<f64>, SlidingError>,
-    (lo, flo): (f64, f64),
-    (hi, fhi): (f64, f64),
-) -> Result<f64, SlidingError> {
-    let denoise = |v: f64| if v.abs() <= RESIDUAL_NOISE { 0.0 } else { v };
-    let g = |x: f64| -> Result<f64, SlidingError> {
-        match f(x)? {
-            Some(v) => Ok(denoise(v)),
-            None => Err(SlidingError::NoConvergence(format!("the load curve has a gap at size {}", readable_f64(x)))),
-        }
-    };
-    let bracket = Bracket { a: lo, b: hi, fa: denoise(flo), fb: denoise(fhi) };
-    brent(g, bracket, 4.0 * f64::EPSILON * lo.abs().max(hi.abs())).map_err(|e| match e {
-        RootError::Function(e) => e,
-        other => SlidingError::NoConvergence(format!("locating the contact size: {other}")),
-    })
 }
 
 /// Contact sizes (with their centre branch) carrying the given load P2/E* (low precision, at the
@@ -420,9 +392,6 @@ pub fn solve_at(
     let sols = solve_located(&setup, &params, points, nodes, checks, None)?;
     Ok(sols.into_iter().map(|(s, _)| s.in_units_of(&params.unit)).collect())
 }
-
-/// Low-precision estimate of a contact size (lambda, or l for a single punch) and its centre branch.
-pub type Located = (f64, usize);
 
 /// [`solve_at`] with the parameters `params` of the working precision, in units of E* (the
 /// solutions too), reusing the sizes located by an earlier run when `located` is given (inverse
