@@ -406,7 +406,7 @@ fn chart_sinusoid_load_curve() {
                         .iter()
                         .map(|s| {
                             format!(
-                                "P2/(pi D) {:.6} c/l {:.4} mingap {:.1e} closure {:.1e}",
+                                "P2/(pi D) {:.6} c/l {:.4} mingap {:.1e} closure {:?}",
                                 s.p2 / (PI * 0.1),
                                 s.c / s.l,
                                 s.physicality.min_gap,

@@ -95,8 +95,8 @@ fn theory_check_value_in_both_conventions() {
         // The closure defect, measured by the shared criterion from the two halves of the gap:
         // M = (2/E*) beta P1 - cW P2 in `paper` (here E* = 1, beta = 1/4, cW = 0: P1/2), round-off
         // in `periodic`; the same in both methods.
-        let measured = f.physicality.closure_defect;
-        let mpfr = m.physicality.as_ref().expect("checked run").closure_defect;
+        let measured = f.physicality.closure_defect.expect("a period");
+        let mpfr = m.physicality.as_ref().expect("checked run").closure_defect.expect("a period");
         let expect = if conv == Convention::PeriodicSurface { 0.0 } else { 0.5 * f.p1 };
         assert!((measured - expect).abs() < 1e-9 * f.p1, "{conv:?}: closure {measured} vs {expect}");
         assert!((mpfr - expect).abs() < 1e-9 * f.p1, "{conv:?}: MPFR closure {mpfr} vs {expect}");

@@ -27,10 +27,10 @@ impl AdhesionProblem {
     /// (For a given load every P2 > 0 has a solution with 2a < L, since P2(a) -> infinity as
     /// 2a -> L.)
     pub fn new(material: Material, period: Period, shape: PunchShape, size: AdhesionSize) -> Result<Self, ModelError> {
-        if let PunchShape::Sinusoidal { .. } = shape {
+        if !matches!(shape, PunchShape::Parabolic { .. }) {
             return Err(ModelError::new(
                 "shape",
-                "sinusoidal",
+                shape.name(),
                 "the adhesion problem supports only the parabolic punch g = k x^2",
             ));
         }
@@ -78,7 +78,10 @@ impl AdhesionProblem {
     pub fn curvature(&self) -> &Exact {
         match &self.shape {
             PunchShape::Parabolic { k } => k,
-            PunchShape::Sinusoidal { amplitude } => amplitude, // unreachable after validation
+            // Unreachable after validation (parabolic only).
+            PunchShape::Sinusoidal { amplitude } => amplitude,
+            PunchShape::Polynomial { coefficients } => &coefficients[2],
+            PunchShape::Circular { radius } => radius,
         }
     }
 }

@@ -7,7 +7,9 @@
 //! Formulas:
 //! - kappa = E* cW/2 - beta mu [2.8] (exact, [`SlidingProblem::kappa`]); theta = arctan(kappa)/pi;
 //! - beta = (1 - 2 nu)/(2 (1 - nu)) (exact, `Material::beta`);
-//! - osculating curvature: k for g = k x^2; 2 pi^2 D/L^2 for g = D (1 - cos(2 pi x/L)) [2.16];
+//! - curvature scale k: osculating g''(0)/2 for g = k x^2 (k), g = D (1 - cos(2 pi x/L)) [2.16]
+//!   (2 pi^2 D/L^2) and the circle (1/(2R)); for a polynomial the mean curvature over its
+//!   single-punch contact (see [`SlidingParamsMpfr::k`]);
 //! - a0 = sqrt(2 P2/(pi E* k)) (Hertz half-width), l_s = a0/sqrt(1 - 4 theta^2) [3.10];
 //! - T = beta tau0/(E* k l_s) [3.10].
 //!
@@ -63,16 +65,20 @@ pub fn single_punch_half_length_mpfr(a0: &Float, theta: &Float) -> Float {
     Float::with_val(prec, a0 / Float::with_val(prec, 1u32 - t2).sqrt())
 }
 
-/// Curvature of the (osculating) parabola: k, or 2 pi^2 D/L^2 for the sinusoid [2.16], `f64`.
-pub fn osculating_k_f64(shape: ShapeF64, period: Option<f64>) -> f64 {
+/// Osculating curvature k = g''(0)/2 (THEORY.md section 9), `f64`: k for g = k x^2,
+/// 2 pi^2 D/L^2 for the sinusoid [2.16], c_2 for a polynomial, 1/(2 R) for the circle.
+pub fn osculating_k_f64(shape: &ShapeF64, period: Option<f64>) -> f64 {
     match (shape, period) {
-        (ShapeF64::Parabolic { k }, _) => k,
+        (ShapeF64::Parabolic { k }, _) => *k,
         (ShapeF64::Sinusoidal { d }, Some(l)) => 2.0 * PI * PI * d / (l * l),
         (ShapeF64::Sinusoidal { .. }, None) => f64::NAN, // refused by the model: a sinusoid has a period
+        (ShapeF64::Polynomial { curvature, .. }, _) => curvature.first().copied().unwrap_or(0.0) / 2.0,
+        (ShapeF64::Circular { r }, _) => 0.5 / r,
     }
 }
 
-/// Curvature of the (osculating) parabola: k, or 2 pi^2 D/L^2 for the sinusoid [2.16], MPFR.
+/// Osculating curvature k = g''(0)/2 (THEORY.md section 9), MPFR: k for g = k x^2,
+/// 2 pi^2 D/L^2 for the sinusoid [2.16], c_2 for a polynomial, 1/(2 R) for the circle.
 pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
     match (shape, period) {
         (ShapeMpfr::Parabolic { k }, _) => k.clone(),
@@ -82,11 +88,110 @@ pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
             Float::with_val(prec, &pi * &pi) * d * 2u32 / Float::with_val(prec, l * l)
         }
         (ShapeMpfr::Sinusoidal { d }, None) => Float::with_val(d.prec(), rug::float::Special::Nan),
+        (ShapeMpfr::Polynomial { slope, curvature }, _) => match curvature.first() {
+            Some(c) => Float::with_val(c.prec(), c / 2u32),
+            None => Float::with_val(slope[0].prec(), 0),
+        },
+        (ShapeMpfr::Circular { r }, _) => Float::with_val(r.prec(), 0.5f64 / r),
     }
 }
 
+/// P2/E* of a single punch (L = infinity) without friction for the EVEN part of the polynomial
+/// g with slope coefficients `slope` (g' = sum_j slope[j] x^j), at half-width a: the power law
+/// of THEORY.md section 9, P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! for g = A x^(2n), summed over
+/// the even terms (A = c_2n = slope[2n-1]/(2n)).
+pub fn even_part_single_punch_load_mpfr(slope: &[Float], a: &Float) -> Float {
+    let prec = a.prec();
+    let mut total = Float::with_val(prec, 0);
+    // ratio = (2n-1)!!/(2n)!!, a^(2n)
+    let mut ratio = Float::with_val(prec, 1);
+    let a2 = Float::with_val(prec, a.square_ref());
+    let mut pow = Float::with_val(prec, 1);
+    let mut n = 1u32;
+    while ((2 * n - 1) as usize) < slope.len() {
+        ratio *= 2 * n - 1;
+        ratio /= 2 * n;
+        pow *= &a2;
+        // n pi c_2n = pi slope[2n-1]/2
+        total += Float::with_val(prec, &slope[(2 * n - 1) as usize] * &pow) * &ratio / 2u32;
+        n += 1;
+    }
+    total * Float::with_val(prec, Constant::Pi)
+}
+
+/// The curvature scale of a polynomial punch (the `k` of [`SlidingParamsMpfr`], see there): the
+/// mean curvature (g'(l0) - g'(-l0))/(4 l0) over the centred contact of half-width l0, which is
+/// the given half-length, or the single-punch frictionless half-width of the even part of g at
+/// the given load P2/E* ([`even_part_single_punch_load_mpfr`], solved by bisection). Errors when
+/// the even part of g carries no load (g is then not convex around 0).
+pub fn polynomial_curvature_scale_mpfr(slope: &[Float], target: &TargetMpfr, prec: u32) -> Result<Float, Error> {
+    let l0 = match target {
+        TargetMpfr::HalfLength(l) => l.clone(),
+        TargetMpfr::NormalLoad(p2) => {
+            let f = |a: &Float| Float::with_val(prec, even_part_single_punch_load_mpfr(slope, a) - p2);
+            let refuse = || {
+                Error::Input(ModelError::new(
+                    "coefficients",
+                    "(polynomial)",
+                    "the even part of g must carry the load (g(x) + g(-x) > 0 somewhere: a convex, curved punch)",
+                ))
+            };
+            // Bracket [x, 2x] by doubling or halving from 1, then bisect to the precision.
+            let mut x = Float::with_val(prec, 1);
+            let up = f(&x) < 0u32;
+            let mut steps = 0;
+            loop {
+                let next = if up { Float::with_val(prec, &x * 2u32) } else { Float::with_val(prec, &x / 2u32) };
+                let fx = f(&next);
+                steps += 1;
+                if steps > 100_000 || !fx.is_finite() {
+                    return Err(refuse());
+                }
+                let crossed = if up { fx >= 0u32 } else { fx < 0u32 };
+                x = next;
+                if crossed {
+                    break;
+                }
+            }
+            let (mut lo, mut hi) =
+                if up { (Float::with_val(prec, &x / 2u32), x) } else { (x.clone(), Float::with_val(prec, &x * 2u32)) };
+            for _ in 0..prec + 4 {
+                let mid = Float::with_val(prec, &lo + &hi) / 2u32;
+                if f(&mid) < 0u32 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            Float::with_val(prec, &lo + &hi) / 2u32
+        }
+    };
+    let eval = |x: &Float| {
+        let mut acc = Float::with_val(prec, 0);
+        for c in slope.iter().rev() {
+            acc *= x;
+            acc += c;
+        }
+        acc
+    };
+    let minus = Float::with_val(prec, -&l0);
+    let k = Float::with_val(prec, eval(&l0) - eval(&minus)) / Float::with_val(prec, &l0 * 4u32);
+    if !(k.is_finite() && k > 0u32) {
+        return Err(Error::Input(ModelError::new(
+            "coefficients",
+            "(polynomial)",
+            format!(
+                "g must be convex: its mean curvature over (-{0}, {0}) is {1}",
+                crate::numerics::accuracy::readable_mpfr(&l0),
+                crate::numerics::accuracy::readable_mpfr(&k)
+            ),
+        )));
+    }
+    Ok(k)
+}
+
 /// Punch shape in `f64`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum ShapeF64 {
     /// g = k x^2.
     Parabolic {
@@ -97,6 +202,19 @@ pub enum ShapeF64 {
     Sinusoidal {
         /// D.
         d: f64,
+    },
+    /// g = sum_j c_j x^j (THEORY.md section 9), by the coefficients of its derivatives, each
+    /// formed exactly and rounded once (trailing zeros dropped).
+    Polynomial {
+        /// g' = sum_j slope[j] x^j, slope[j] = (j + 1) c_(j+1).
+        slope: Vec<f64>,
+        /// g'' = sum_j curvature[j] x^j, curvature[j] = (j + 2)(j + 1) c_(j+2).
+        curvature: Vec<f64>,
+    },
+    /// g = R - sqrt(R^2 - x^2) (THEORY.md section 9).
+    Circular {
+        /// R.
+        r: f64,
     },
 }
 
@@ -113,6 +231,55 @@ pub enum ShapeMpfr {
         /// D.
         d: Float,
     },
+    /// g = sum_j c_j x^j (THEORY.md section 9), by the coefficients of its derivatives, each
+    /// formed exactly and rounded once (trailing zeros dropped).
+    Polynomial {
+        /// g' = sum_j slope[j] x^j, slope[j] = (j + 1) c_(j+1).
+        slope: Vec<Float>,
+        /// g'' = sum_j curvature[j] x^j, curvature[j] = (j + 2)(j + 1) c_(j+2).
+        curvature: Vec<Float>,
+    },
+    /// g = R - sqrt(R^2 - x^2) (THEORY.md section 9).
+    Circular {
+        /// R.
+        r: Float,
+    },
+}
+
+/// The step of a polynomial profile repeated from the cell (-L/2, L/2) at its edge, crossing
+/// x = L/2 to the right: g(-L/2) - g(L/2) = -2 sum_(j odd) c_j (L/2)^j, from the coefficients of
+/// g' (slope[i] = (i + 1) c_(i+1)); 0 for an even profile.
+pub fn cell_edge_jump(slope: &[f64], half_period: f64) -> f64 {
+    -2.0 * slope
+        .iter()
+        .enumerate()
+        .step_by(2)
+        .map(|(i, s)| s / (i + 1) as f64 * half_period.powi(i as i32 + 1))
+        .sum::<f64>()
+}
+
+/// The exact coefficients of g^(order) for g = sum_j c_j x^j (order 1: g', 2: g''), trailing
+/// zeros dropped (at least one entry).
+pub fn polynomial_derivative(coefficients: &[Exact], order: usize) -> Vec<Exact> {
+    let mut d: Vec<Exact> = coefficients
+        .iter()
+        .enumerate()
+        .skip(order)
+        .map(|(j, c)| {
+            let mut f = Exact::from_integer(1.into());
+            for i in 0..order {
+                f *= Exact::from_integer(((j - i) as i64).into());
+            }
+            c * f
+        })
+        .collect();
+    while d.len() > 1 && d.last().is_some_and(num_traits::Zero::is_zero) {
+        d.pop();
+    }
+    if d.is_empty() {
+        d.push(Exact::from_integer(0.into()));
+    }
+    d
 }
 
 /// What fixes the contact, in `f64`.
@@ -147,7 +314,7 @@ pub struct SlidingParamsF64 {
     pub period: Option<f64>,
     /// Shape.
     pub shape: ShapeF64,
-    /// Osculating curvature k.
+    /// Curvature scale k ([`SlidingParamsMpfr::k`]).
     pub k: f64,
     /// Load or size.
     pub target: TargetF64,
@@ -196,6 +363,15 @@ impl SlidingParamsF64 {
         let shape = match problem.shape() {
             PunchShape::Parabolic { k } => ShapeF64::Parabolic { k: f64_of(k, "k", false)? },
             PunchShape::Sinusoidal { amplitude } => ShapeF64::Sinusoidal { d: f64_of(amplitude, "amplitude", false)? },
+            PunchShape::Polynomial { coefficients } => {
+                let round =
+                    |v: Vec<Exact>| v.iter().map(|c| f64_of(c, "coefficients", true)).collect::<Result<Vec<_>, _>>();
+                ShapeF64::Polynomial {
+                    slope: round(polynomial_derivative(coefficients, 1))?,
+                    curvature: round(polynomial_derivative(coefficients, 2))?,
+                }
+            }
+            PunchShape::Circular { radius } => ShapeF64::Circular { r: f64_of(radius, "radius", false)? },
         };
         let kappa = f64_of(&problem.kappa(), "kappa", true)?;
         let theta = theta_f64(kappa);
@@ -204,7 +380,11 @@ impl SlidingParamsF64 {
             SlidingLoad::NormalLoad(p) => TargetF64::NormalLoad(f64_of(p, "normal_load", false)?),
             SlidingLoad::HalfLength(l) => TargetF64::HalfLength(f64_of(l, "half_length", false)?),
         };
-        let k = osculating_k_f64(shape, period);
+        let k = match problem.shape() {
+            // The polynomial's curvature scale, formed in MPFR from the exact input and rounded once.
+            PunchShape::Polynomial { .. } => SlidingParamsMpfr::new(problem, 64)?.k.to_f64(),
+            _ => osculating_k_f64(&shape, period),
+        };
         Ok(SlidingParamsF64 {
             e_star,
             beta,
@@ -269,7 +449,12 @@ pub struct SlidingParamsMpfr {
     pub period: Option<Float>,
     /// Shape.
     pub shape: ShapeMpfr,
-    /// Osculating curvature k.
+    /// Curvature scale k: the osculating g''(0)/2 for the parabola (k), the sinusoid
+    /// (2 pi^2 D/L^2) and the circle (1/(2 R)); for a polynomial the mean curvature over the
+    /// centred single-punch contact of its even part at the given load, or over the given
+    /// half-length ([`polynomial_curvature_scale_mpfr`]; = k for g = k x^2, > 0 for g = A x^4
+    /// whose osculating curvature is 0). Used for scales (F_def ~ k l P2, the gap's k l^2) and
+    /// for the starting estimates a0, l_s of the locating stages.
     pub k: Float,
     /// Load P2 / E* (given) or half-length l (given).
     pub target: TargetMpfr,
@@ -308,11 +493,22 @@ impl SlidingParamsMpfr {
         let shape = match problem.shape() {
             PunchShape::Parabolic { k } => ShapeMpfr::Parabolic { k: to_float(k, prec) },
             PunchShape::Sinusoidal { amplitude } => ShapeMpfr::Sinusoidal { d: to_float(amplitude, prec) },
+            PunchShape::Polynomial { coefficients } => {
+                let round = |v: Vec<Exact>| v.iter().map(|c| to_float(c, prec)).collect::<Vec<_>>();
+                ShapeMpfr::Polynomial {
+                    slope: round(polynomial_derivative(coefficients, 1)),
+                    curvature: round(polynomial_derivative(coefficients, 2)),
+                }
+            }
+            PunchShape::Circular { radius } => ShapeMpfr::Circular { r: to_float(radius, prec) },
         };
-        let k = osculating_k_mpfr(&shape, period.as_ref());
         let target = match problem.load() {
             SlidingLoad::NormalLoad(p) => TargetMpfr::NormalLoad(to_float(&(p / e), prec)),
             SlidingLoad::HalfLength(l) => TargetMpfr::HalfLength(to_float(l, prec)),
+        };
+        let k = match &shape {
+            ShapeMpfr::Polynomial { slope, .. } => polynomial_curvature_scale_mpfr(slope, &target, prec)?,
+            _ => osculating_k_mpfr(&shape, period.as_ref()),
         };
         Ok(SlidingParamsMpfr {
             prec,
@@ -363,6 +559,101 @@ impl SlidingParamsMpfr {
         let b = Float::with_val(self.prec, &self.theta + 0.5f64);
         (a, b)
     }
+}
+
+/// Largest |g'| accepted on the contact of a polynomial or circular punch. The theory
+/// linearises the boundary conditions in the slope ([1.9]: |g'| << 1, the boundary of the
+/// half-plane and its normal are taken as those of the undeformed surface); the neglected terms
+/// are relative O(g'^2) (e.g. the normal's direction cosine 1/sqrt(1 + g'^2) = 1 - g'^2/2), i.e.
+/// up to 12% at |g'| = 1/2, already a coarse model. Beyond it the contact is refused rather than
+/// computed to many digits of a model that no longer describes it. (The parabola and the sinusoid
+/// keep their earlier behaviour: no slope limit.)
+pub const MAX_CONTACT_SLOPE: f64 = 0.5;
+
+/// Largest half-length, as a fraction of the circle's radius, that the locating stages search:
+/// there |g'| = 0.9/sqrt(1 - 0.81) = 2.06, far beyond [`MAX_CONTACT_SLOPE`], so no admissible
+/// contact is lost, and the quadrature near the singularity of g' at |x| = R stays affordable.
+pub const CIRCLE_SIZE_CAP: f64 = 0.9;
+
+/// Refusals of a polynomial or circular profile on a found contact [-a, b] = [`left`, `right`]
+/// (THEORY.md section 9), evaluated in `f64` from the exact profile: (i) the circle's contact
+/// must stay inside |x| < R; (ii) g'' >= 0 on [-a, b] (sampled at 257 Chebyshev points and the
+/// ends, relative tolerance 1e-12: a heuristic, a dip narrower than the sampling is missed);
+/// (iii) max |g'| on [-a, b] <= [`MAX_CONTACT_SLOPE`] (at the ends, g' being monotone once
+/// convex). The parabola and the sinusoid are not checked here. Each error names the parameter
+/// to change, its value and the valid range.
+pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64) -> Result<(), Error> {
+    let (size_name, size_value) = match problem.load() {
+        SlidingLoad::NormalLoad(p) => ("normal_load", crate::model::readable(p)),
+        SlidingLoad::HalfLength(l) => ("half_length", crate::model::readable(l)),
+    };
+    let contact = format!(
+        "[-a, b] = [{}, {}]",
+        crate::numerics::accuracy::readable_f64(left),
+        crate::numerics::accuracy::readable_f64(right)
+    );
+    let (slope_at, curvature_at): (Box<dyn Fn(f64) -> f64>, Box<dyn Fn(f64) -> f64>) = match problem.shape() {
+        PunchShape::Polynomial { coefficients } => {
+            let to = |v: Vec<Exact>| v.iter().map(|c| to_f64(c).unwrap_or(f64::NAN)).collect::<Vec<f64>>();
+            let d1 = to(polynomial_derivative(coefficients, 1));
+            let d2 = to(polynomial_derivative(coefficients, 2));
+            let horner = |c: Vec<f64>| move |x: f64| c.iter().rev().fold(0.0, |acc, v| acc * x + v);
+            (Box::new(horner(d1)), Box::new(horner(d2)))
+        }
+        PunchShape::Circular { radius } => {
+            let r = to_f64(radius).unwrap_or(f64::NAN);
+            if !(left.abs() < r && right.abs() < r) {
+                return Err(Error::Input(ModelError::new(
+                    size_name,
+                    size_value,
+                    format!(
+                        "the contact {contact} of the circular punch reaches |x| = R = {} (radius): reduce {size_name} or enlarge the radius",
+                        crate::model::readable(radius)
+                    ),
+                )));
+            }
+            (
+                Box::new(move |x: f64| x / ((r - x) * (r + x)).sqrt()),
+                Box::new(move |x: f64| r * r / ((r - x) * (r + x)).powf(1.5)),
+            )
+        }
+        _ => return Ok(()),
+    };
+    // (ii) convexity.
+    let n = 256;
+    let xs: Vec<f64> = (0..=n)
+        .map(|i| {
+            let t = -(PI * i as f64 / n as f64).cos();
+            0.5 * (left + right) + 0.5 * (right - left) * t
+        })
+        .collect();
+    let g2: Vec<f64> = xs.iter().map(|x| curvature_at(*x)).collect();
+    let scale = g2.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if let Some((x, v)) = xs.iter().zip(&g2).find(|(_, v)| !(**v >= -1e-12 * scale)) {
+        let (name, value) = problem.shape().parameters().remove(0);
+        return Err(Error::Input(ModelError::new(
+            name,
+            value,
+            format!(
+                "the profile must be convex on the contact {contact} (g'' >= 0; THEORY.md section 9), but g''({}) = {}",
+                crate::numerics::accuracy::readable_f64(*x),
+                crate::numerics::accuracy::readable_f64(*v)
+            ),
+        )));
+    }
+    // (iii) small slope.
+    let worst = slope_at(left).abs().max(slope_at(right).abs());
+    if !(worst <= MAX_CONTACT_SLOPE) {
+        return Err(Error::Input(ModelError::new(
+            size_name,
+            size_value,
+            format!(
+                "max |g'| on the contact {contact} is {} > {MAX_CONTACT_SLOPE}: the theory assumes a small slope |g'| << 1 [1.9] (neglected terms O(g'^2)); reduce {size_name}",
+                crate::numerics::accuracy::readable_f64(worst)
+            ),
+        )));
+    }
+    Ok(())
 }
 
 /// The scale of every Problem 1 output, the one table used by every method's accuracy and by the
@@ -445,7 +736,7 @@ mod tests {
 
     #[test]
     fn osculating_curvature_of_the_sinusoid() {
-        let k = osculating_k_f64(ShapeF64::Sinusoidal { d: 0.01 }, Some(2.0));
+        let k = osculating_k_f64(&ShapeF64::Sinusoidal { d: 0.01 }, Some(2.0));
         assert!((k - 2.0 * PI * PI * 0.01 / 4.0).abs() < 1e-17);
         let d = Float::with_val(100, 0.01f64);
         let km = osculating_k_mpfr(&ShapeMpfr::Sinusoidal { d }, Some(&Float::with_val(100, 2u32)));

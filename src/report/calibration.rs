@@ -67,6 +67,8 @@ impl Case {
             SceneProblem::Sliding(p) => match p.shape() {
                 PunchShape::Parabolic { .. } => vec![Case::SlidingParabolic],
                 PunchShape::Sinusoidal { .. } => vec![Case::SlidingSinusoidal],
+                // Not calibrated separately: predicted from the parabola (same reduction).
+                PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => vec![Case::SlidingParabolic],
             },
             SceneProblem::Adhesion(_) => vec![Case::AdhesionNu0, Case::AdhesionNu03],
         }
@@ -318,7 +320,10 @@ pub fn choose(table: &Table, problem: &SceneProblem, target: u32) -> Choice {
     let lambda = lambda_estimate(problem);
     let series_ok = match problem {
         SceneProblem::Sliding(p) => {
-            matches!(p.load(), SlidingLoad::NormalLoad(_)) && matches!(p.period(), Period::Finite(_))
+            matches!(p.load(), SlidingLoad::NormalLoad(_))
+                && matches!(p.period(), Period::Finite(_))
+                // The series method knows the parabola and the sinusoid only (issue 11).
+                && matches!(p.shape(), PunchShape::Parabolic { .. } | PunchShape::Sinusoidal { .. })
         }
         SceneProblem::Adhesion(_) => false,
     };

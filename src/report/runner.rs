@@ -162,10 +162,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
     let lam = |l: f64| period.map_or(0.0, |big_l| pi * l / big_l);
     match knob {
         Knob::Series(n) => {
-            let shape = match p.shape() {
-                PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
-                PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
-            };
+            let shape = crate::sliding::series::expansion_shape(p).map_err(|e| e.to_string())?;
             let e = cache.get(shape, p.convention(), MAX_SERIES_ORDER.max(n))?;
             let prec = SERIES_BITS;
             let start = Instant::now();
@@ -273,7 +270,7 @@ fn adhesion_series(p: &AdhesionProblem, n: usize) -> Result<Outcome, String> {
     let to = |q: &crate::model::Exact| crate::numerics::exact::to_float(q, prec);
     let k = match p.shape() {
         PunchShape::Parabolic { k } => to(k),
-        PunchShape::Sinusoidal { .. } => return Err("the adhesion problem is parabolic only".into()),
+        _ => return Err("the adhesion problem is parabolic only".into()),
     };
     let pi = Float::with_val(prec, rug::float::Constant::Pi);
     let big_l = match p.period() {

@@ -185,9 +185,34 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
             allow_keys(p, "punch", &["shape", "amplitude", "period"])?;
             PunchShape::sinusoidal(exact_req(p, "punch", "amplitude")?).map_err(|e| prefixed(e, "punch"))?
         }
-        other => return Err(ModelError::new("punch.shape", other, "must be \"parabolic\" or \"sinusoidal\"")),
+        "polynomial" => {
+            allow_keys(p, "punch", &["shape", "coefficients", "period"])?;
+            PunchShape::polynomial(coefficients(p)?).map_err(|e| prefixed(e, "punch"))?
+        }
+        "circular" => {
+            allow_keys(p, "punch", &["shape", "radius", "period"])?;
+            PunchShape::circular(exact_req(p, "punch", "radius")?).map_err(|e| prefixed(e, "punch"))?
+        }
+        other => {
+            return Err(ModelError::new(
+                "punch.shape",
+                other,
+                "must be \"parabolic\", \"sinusoidal\", \"polynomial\" or \"circular\"",
+            ))
+        }
     };
     Ok((shape, period))
+}
+
+/// `coefficients = ["0", "0", "1", "0", "1/10"]`: c_j of x^j (numpy's order), each an exact number
+/// (quoted, or a literal read from its text).
+fn coefficients(p: &Table) -> Result<Vec<Exact>, ModelError> {
+    let name = "punch.coefficients";
+    match value(p, "punch", "coefficients")? {
+        None => Err(ModelError::new(name, "(missing)", "is required: a list of exact numbers c_0, c_1, c_2, ...")),
+        Some(Value::Array(a)) => a.iter().enumerate().map(|(j, v)| exact_value(v, &format!("{name}[{j}]"))).collect(),
+        Some(v) => Err(ModelError::new(name, v.to_string().trim(), "must be a list such as [\"0\", \"0\", \"1\"]")),
+    }
 }
 
 fn parse_sliding(root: &Table, convention: Convention) -> Result<SlidingProblem, ModelError> {

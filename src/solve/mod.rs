@@ -92,9 +92,32 @@ fn first_non_finite(path: &str, v: &Value) -> Option<String> {
     }
 }
 
+/// `{"shape": "polynomial", "coefficients": ["0", "0", "1"]}`: the punch as the scene gives it
+/// (exact parameters as text), for the provenance of every Problem 1 answer.
+pub fn punch_json(shape: &crate::model::PunchShape) -> Value {
+    let mut m = Map::new();
+    m.insert("shape".into(), json!(shape.name()));
+    match shape {
+        crate::model::PunchShape::Polynomial { coefficients } => {
+            m.insert("coefficients".into(), json!(coefficients.iter().map(|c| c.to_string()).collect::<Vec<_>>()));
+        }
+        other => {
+            for (name, value) in other.parameters() {
+                m.insert(name.into(), json!(value));
+            }
+        }
+    }
+    Value::Object(m)
+}
+
 /// `{"problem": "sliding", ...first answer, "solutions": [...]}` (the list only when several
-/// contacts are physical).
-fn sliding_top(answers: Vec<Map<String, Value>>) -> Value {
+/// contacts are physical); each answer's provenance names the punch ([`punch_json`]).
+fn sliding_top(mut answers: Vec<Map<String, Value>>, p: &SlidingProblem) -> Value {
+    for a in answers.iter_mut() {
+        if let Some(Value::Object(prov)) = a.get_mut("provenance") {
+            prov.insert("punch".into(), punch_json(p.shape()));
+        }
+    }
     let mut top = Map::new();
     top.insert("problem".into(), json!("sliding"));
     if let Some(first) = answers.first() {
@@ -115,6 +138,7 @@ fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<
         sols.iter()
             .map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v, p.convention()), req.digits))
             .collect(),
+        p,
     ))
 }
 
@@ -134,15 +158,15 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<V
             m
         })
         .collect();
-    Ok(sliding_top(answers))
+    Ok(sliding_top(answers, p))
 }
 
 fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let s = sliding::series::solve_series(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(vec![render::sliding_json(
-        &answer_series::sliding_answer(&s, req.digits, p.convention()),
-        req.digits,
-    )]))
+    Ok(sliding_top(
+        vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits, p.convention()), req.digits)],
+        p,
+    ))
 }
 
 fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {

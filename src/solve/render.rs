@@ -250,7 +250,7 @@ pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
 /// criterion's tolerance), so they are printed to 7 significant digits and labelled so.
 fn physicality_json(ph: &Assessment) -> Value {
     let mut m = Map::new();
-    m.insert("closure_defect".into(), json!(readable_f64(ph.closure_defect)));
+    m.insert("closure_defect".into(), ph.closure_defect.map_or(Value::Null, |d| json!(readable_f64(d))));
     m.insert("min_gap".into(), json!(readable_f64(ph.min_gap)));
     if ph.min_gap < 0.0 {
         m.insert("min_gap_x".into(), json!(readable_f64(ph.min_gap_x)));

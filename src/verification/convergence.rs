@@ -73,7 +73,7 @@ pub fn sliding_convergence(
 ) -> Result<ConvergenceStudy, Error> {
     let order = 2 * max_corrections;
     let periodic = base.convention() == Convention::PeriodicSurface;
-    let shape = series::expansion_shape(base);
+    let shape = series::expansion_shape(base)?;
     // (truncation order, predicted order, predicted order of l) per row.
     let rows_of: Vec<(usize, f64, f64)> = if periodic {
         (1..=order)

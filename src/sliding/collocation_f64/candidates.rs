@@ -4,6 +4,7 @@
 
 use super::closure::tau0_side;
 use super::error::{Result, SlidingF64Error};
+use super::general::{map_of, profile_nodes, profile_size, profile_state, size_guess, size_of_half_length};
 use super::interpolant::State;
 use super::operator::{collocation, collocation_nodes};
 use super::parabola::{kuznetsov_guess, parabola_lambda, parabola_state};
@@ -24,6 +25,8 @@ pub(super) enum Candidate {
     ParabolaSingle,
     /// Sinusoid: lambda and (X, Y) branch sign (which intersection of line and circle).
     Sinusoid { lambda: f64, branch: i8 },
+    /// Polynomial or circle: the size (lambda, or l for a single punch; `general.rs`).
+    Profile(f64),
 }
 
 /// Period L (infinite for a single punch).
@@ -42,7 +45,15 @@ pub(super) fn state_of(
     resolve: bool,
 ) -> Result<State> {
     let col = collocation(prm.theta, n)?;
-    match (cand, prm.shape) {
+    match (cand, &prm.shape) {
+        (Candidate::Profile(s0), ShapeF64::Polynomial { .. } | ShapeF64::Circular { .. }) => {
+            let s = match target {
+                TargetF64::HalfLength(l) => size_of_half_length(prm, l),
+                TargetF64::NormalLoad(p2) if resolve => profile_size(prm, p2, n, Some(s0))?,
+                TargetF64::NormalLoad(_) => s0,
+            };
+            profile_state(&col, prm, map_of(prm, s))
+        }
         (Candidate::ParabolaSingle, ShapeF64::Parabolic { .. }) => {
             let l = match target {
                 TargetF64::HalfLength(l) => l,
@@ -65,7 +76,7 @@ pub(super) fn state_of(
         }
         (Candidate::Sinusoid { lambda, branch }, ShapeF64::Sinusoidal { d }) => {
             let big_l = period(prm);
-            let s = PI * prm.e_star * d / big_l;
+            let s = PI * prm.e_star * *d / big_l;
             match target {
                 TargetF64::HalfLength(l) => {
                     let map = Map::periodic(big_l, PI * l / big_l);
@@ -99,7 +110,38 @@ pub(super) fn candidates(
     options: &SolverOptions,
 ) -> Result<Vec<(Candidate, usize)>> {
     let pick = |lam: f64| options.nodes.unwrap_or_else(|| collocation_nodes(lam, options));
-    match (prm.shape, prm.period) {
+    match (&prm.shape, prm.period) {
+        (ShapeF64::Polynomial { .. } | ShapeF64::Circular { .. }, _) => {
+            let pick = |s: f64| {
+                options.nodes.unwrap_or_else(|| {
+                    collocation_nodes(if prm.period.is_some() { s } else { 0.0 }, options)
+                        .max(profile_nodes(prm, s, options))
+                })
+            };
+            match target {
+                TargetF64::HalfLength(l) => {
+                    let s = size_of_half_length(prm, l);
+                    Ok(vec![(Candidate::Profile(s), pick(s))])
+                }
+                TargetF64::NormalLoad(p2) => {
+                    // As the periodic parabola: nodes for the guess, then for the solved size
+                    // until the count settles (at most 3 more solves).
+                    let mut n = pick(size_guess(prm, p2));
+                    let mut s = profile_size(prm, p2, n, None)?;
+                    if options.nodes.is_none() {
+                        for _ in 0..3 {
+                            let n_new = pick(s);
+                            if n_new == n {
+                                break;
+                            }
+                            n = n_new;
+                            s = profile_size(prm, p2, n, Some(s))?;
+                        }
+                    }
+                    Ok(vec![(Candidate::Profile(s), n)])
+                }
+            }
+        }
         (ShapeF64::Parabolic { .. }, None) => Ok(vec![(Candidate::ParabolaSingle, options.nodes.unwrap_or(8))]),
         (ShapeF64::Parabolic { .. }, Some(big_l)) => {
             match target {
@@ -126,7 +168,7 @@ pub(super) fn candidates(
             }
         }
         (ShapeF64::Sinusoidal { d }, Some(big_l)) => {
-            let s = PI * prm.e_star * d / big_l;
+            let s = PI * prm.e_star * *d / big_l;
             match target {
                 TargetF64::HalfLength(l) => {
                     let lam = PI * l / big_l;

@@ -4,7 +4,9 @@
 
 use super::error::Result;
 use super::operator::Collocation;
+use super::profile::slope_divided_difference;
 use super::tangent_map::Map;
+use crate::params::sliding::ShapeF64;
 use nalgebra::DVector;
 use std::f64::consts::PI;
 
@@ -37,12 +39,14 @@ pub(super) struct State {
 }
 
 /// The shape part F(u) of the right-hand side in physical units (constants are absorbed in K).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(super) enum Rhs {
     /// F = s (x(u) - c): parabola, s = E* k.
     Offset { s: f64 },
     /// F = s (X sin 2phi + Y cos 2phi), phi = atan(m u): sinusoid, s = pi E* D/L.
     Sinusoid { s: f64, x: f64, y: f64 },
+    /// F = (E*/2) g'(c + x(u) - c): a polynomial or circular profile at the centre c.
+    Profile { half_e: f64, c: f64, shape: ShapeF64 },
 }
 
 impl Rhs {
@@ -52,9 +56,9 @@ impl Rhs {
     /// cos 2phi: -2 m^2 (u - v)(u + v)/((1 + m^2 u^2)(1 + m^2 v^2)).
     fn divided_difference(&self, map: &Map, u: f64, v: f64) -> f64 {
         let d = u - v;
-        match (*self, *map) {
-            (Rhs::Offset { s }, Map::Single { l }) => s * l,
-            (Rhs::Offset { s }, Map::Periodic { big_l, m, .. }) => {
+        match (self, *map) {
+            (&Rhs::Offset { s }, Map::Single { l }) => s * l,
+            (&Rhs::Offset { s }, Map::Periodic { big_l, m, .. }) => {
                 let q = 1.0 + m * m * u * v;
                 let dd = if d == 0.0 {
                     m / (1.0 + m * m * u * u)
@@ -65,11 +69,31 @@ impl Rhs {
                 };
                 s * big_l / PI * dd
             }
-            (Rhs::Sinusoid { s, x, y }, Map::Periodic { m, .. }) => {
+            (&Rhs::Sinusoid { s, x, y }, Map::Periodic { m, .. }) => {
                 let den = (1.0 + m * m * u * u) * (1.0 + m * m * v * v);
                 s * (x * 2.0 * m * (1.0 - m * m * u * v) - y * 2.0 * m * m * (u + v)) / den
             }
             (Rhs::Sinusoid { .. }, Map::Single { .. }) => unreachable!("sinusoid needs a period"),
+            // (E*/2) g'[x(u), x(v)] x[u, v]: both divided differences free of cancellation
+            // (`profile::slope_divided_difference` and the arctan form above).
+            (Rhs::Profile { half_e, c, shape }, map) => {
+                let (xu, xv) = (c + map.offset(u), c + map.offset(v));
+                let dx = match map {
+                    Map::Single { l } => l,
+                    Map::Periodic { big_l, m, .. } => {
+                        let q = 1.0 + m * m * u * v;
+                        let dd = if d == 0.0 {
+                            m / (1.0 + m * m * u * u)
+                        } else if q > 0.0 {
+                            (m * d / q).atan() / d
+                        } else {
+                            ((m * u).atan() - (m * v).atan()) / d
+                        };
+                        big_l / PI * dd
+                    }
+                };
+                half_e * slope_divided_difference(shape, xu, xv) * dx
+            }
         }
     }
 }

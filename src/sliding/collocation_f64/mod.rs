@@ -98,7 +98,9 @@
 //! `profile.rs` (g' of the periodic extension), `tangent_map.rs` (x(u), its Jacobian, the weight of
 //! C0), `operator.rs` (rules, LU-factored matrix, cache, node count), `interpolant.rs` (unit bases,
 //! discrete states, the Nyström interpolant), `parabola.rs` and `sinusoid.rs` (the scalar equation
-//! in lambda per shape), `candidates.rs` (every root at the main run's nodes), `outputs.rs` (l, a, b,
+//! in lambda per shape), `general.rs` (a polynomial or circular punch, THEORY.md section 9: F(u) =
+//! (E*/2) g'(x(u)) collocated directly, the centre by Newton's method in c with the g'' basis
+//! giving the derivative, P2(size) = P2 by Brent), `candidates.rs` (every root at the main run's nodes), `outputs.rs` (l, a, b,
 //! c, P1, P2, F_def, p of a state), `physical.rs` (p >= 0, gap), `max_load.rs` (largest physical
 //! load of the sinusoid), `verify.rs` (the check run), `solve.rs` (the driver), `solution.rs` (result
 //! types), `error.rs`. The MPFR method of the same problem is [`crate::sliding`] (parallel verbs:
@@ -108,6 +110,7 @@ mod admissible;
 mod candidates;
 mod closure;
 mod error;
+mod general;
 mod interpolant;
 mod operator;
 mod outputs;

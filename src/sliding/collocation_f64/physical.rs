@@ -12,8 +12,8 @@ use super::profile::slope;
 use super::tangent_map::Map;
 use crate::model::Convention;
 use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior;
-use crate::params::sliding::ShapeF64;
 use crate::params::sliding::SlidingParamsF64;
+use crate::params::sliding::{cell_edge_jump, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
@@ -77,10 +77,16 @@ const PRESSURE_TOL: f64 = 1e-9;
 
 /// The criterion's data for an f64 solution with outputs `out`.
 pub(super) fn setting(prm: &SlidingParamsF64, out: &Outputs) -> Setting {
-    let cell = match (prm.shape, prm.period) {
+    let cell = match (&prm.shape, prm.period) {
         (_, None) => Cell::Unbounded,
         (ShapeF64::Sinusoidal { .. }, Some(big_l)) => Cell::Periodic { period: big_l },
-        (_, Some(big_l)) => Cell::Fixed { half_period: 0.5 * big_l },
+        (shape, Some(big_l)) => Cell::Fixed {
+            half_period: 0.5 * big_l,
+            jump: match shape {
+                ShapeF64::Polynomial { slope, .. } => cell_edge_jump(slope, 0.5 * big_l),
+                _ => 0.0,
+            },
+        },
     };
     let closure_formula = match (prm.period, prm.convention) {
         (Some(_), Convention::Paper) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.wear * out.p2,
@@ -94,6 +100,10 @@ pub(super) fn setting(prm: &SlidingParamsF64, out: &Outputs) -> Setting {
         edge_step: 2.0 * prm.beta * prm.tau0 / prm.e_star,
         closure_formula,
         pressure_tol: PRESSURE_TOL,
+        extent: match &prm.shape {
+            ShapeF64::Circular { r } if prm.period.is_none_or(|big_l| *r < 0.5 * big_l) => Some(*r),
+            _ => None,
+        },
         closure_tol: CLOSURE_TOL,
     }
 }

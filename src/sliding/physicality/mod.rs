@@ -54,6 +54,9 @@ pub enum Cell {
     Fixed {
         /// L/2.
         half_period: f64,
+        /// The profile's step at the cell edge, crossing x = L/2 to the right: g(-L/2) - g(L/2)
+        /// (nonzero for odd polynomial terms); the gap jumps by it there.
+        jump: f64,
     },
     /// The profile is periodic by itself: only 2 l < L.
     Periodic {
@@ -82,6 +85,9 @@ pub struct Setting {
     pub closure_formula: f64,
     /// Relative tolerance of the pressure test (the method's accuracy of p/omega).
     pub pressure_tol: f64,
+    /// Where the profile ends (|x| < R for a circle narrower than the cell): beyond it there is
+    /// no punch, so the gap is integrated only up to it and the closure is not checked.
+    pub extent: Option<f64>,
     /// Relative tolerance of the closure check ([`CLOSURE_TOL`] for a solution of the equations;
     /// larger for a contact known only to an estimated accuracy, e.g. the series method's).
     pub closure_tol: f64,
@@ -96,7 +102,7 @@ impl Setting {
     }
     fn period(&self) -> Option<f64> {
         match self.cell {
-            Cell::Fixed { half_period } => Some(2.0 * half_period),
+            Cell::Fixed { half_period, .. } => Some(2.0 * half_period),
             Cell::Periodic { period } => Some(period),
             Cell::Unbounded => None,
         }
@@ -141,8 +147,9 @@ pub struct Assessment {
     /// Where it is (x).
     pub min_gap_x: f64,
     /// h_lead(mid) - h_trail(mid) with the full slope, measured: M = (2/E*) beta P1 - cW P2 in
-    /// `paper`, round-off in `periodic`; 0 for a single punch.
-    pub closure_defect: f64,
+    /// `paper`, round-off in `periodic`; None for a single punch or a profile that does not span
+    /// the free arc (a circle narrower than the cell).
+    pub closure_defect: Option<f64>,
     /// 2 beta tau0/E* (0 without adhesive friction).
     pub edge_step: f64,
     /// In `paper` (M != 0): the gap is negative somewhere; the message says how much and why it
@@ -178,6 +185,11 @@ pub enum Refusal {
         /// Integrated from which end.
         from: End,
     },
+    /// The gap slope is not finite at x (the method's evaluation failed there).
+    NonFinite {
+        /// Where (x).
+        x: f64,
+    },
     /// The two halves of the gap disagree with the closure they must have: the method's gap
     /// slope or its integration is not accurate enough (a failure to converge, not physics).
     Inconsistent {
@@ -191,7 +203,7 @@ pub enum Refusal {
 impl Refusal {
     /// Whether this is a finding about the physics (else a numerical failure).
     pub fn is_physical(&self) -> bool {
-        !matches!(self, Refusal::Inconsistent { .. })
+        !matches!(self, Refusal::Inconsistent { .. } | Refusal::NonFinite { .. })
     }
 
     /// The reason in words (the same for every method).
@@ -214,6 +226,9 @@ impl Refusal {
                 readable_f64(*x),
                 from.name()
             ),
+            Refusal::NonFinite { x } => {
+                format!("the gap slope is not finite at x = {} (its evaluation failed)", readable_f64(*x))
+            }
             Refusal::Inconsistent { measured, expected } => format!(
                 "the two halves of the gap differ by {}, expected {} (the gap slope is not accurate enough)",
                 readable_f64(*measured),
@@ -239,16 +254,30 @@ const GAP_PANELS: usize = 32;
 
 /// Criterion 3 on one side: samples (x, h) of the gap integrated from the end at x - c = `start`
 /// over `reach` in direction `dir` (+1 leading, -1 trailing). `kinks` are the x where the
-/// profile's slope jumps (the edges of a cell the profile is repeated from): a panel that
-/// contains one is split there, so each Gauss–Legendre panel sees a smooth slope.
-fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64, kinks: &[f64]) -> Vec<(f64, f64)> {
+/// profile's slope jumps (the edges of a cell the profile is repeated from), each with the step
+/// of the profile crossing it to the right: a panel that contains one is split there, so each
+/// Gauss–Legendre panel sees a smooth slope, and the gap jumps by the step (to the right) or
+/// minus it (to the left) there. A kink exactly at the end of a leading side counts as crossed
+/// (the two halves then meet on its right).
+fn gap_side(
+    f: &impl ContactFunctions,
+    c: f64,
+    start: f64,
+    reach: f64,
+    dir: f64,
+    kinks: &[(f64, f64)],
+) -> Vec<(f64, f64)> {
     let gl = gauss_jacobi(6, 0.0, 0.0).expect("6-point Gauss-Legendre");
     // Breakpoints in s (x - c = start + dir R s^4).
     let mut breaks: Vec<f64> = (0..=GAP_PANELS).map(|j| j as f64 / GAP_PANELS as f64).collect();
-    for &xk in kinks {
+    // (s of the kink, the gap's jump there in the direction of integration).
+    let mut jumps: Vec<(f64, f64)> = Vec::new();
+    for &(xk, step) in kinks {
         let d = dir * (xk - c - start);
-        if d > 0.0 && d < reach {
-            breaks.push((d / reach).powf(0.25));
+        if d > 0.0 && (d < reach || (d == reach && dir > 0.0)) {
+            let sk = (d / reach).powf(0.25);
+            breaks.push(sk);
+            jumps.push((sk, dir * step));
         }
     }
     breaks.sort_by(f64::total_cmp);
@@ -268,6 +297,8 @@ fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64,
         }
         // h(x) = int_end^x h': d h = h' dx = dir h' |dx|.
         h += dir * inc * 0.5 * (s1 - s0);
+        // The profile's step at a kink that ends this panel: the value just past it.
+        h += jumps.iter().filter(|(sk, _)| *sk == s1).map(|(_, j)| j).sum::<f64>();
         out.push((c + start + dir * reach * s1.powi(4), h));
     }
     out
@@ -279,7 +310,7 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
     let (l, c) = (setting.l(), setting.c());
     // 1. The cell.
     match setting.cell {
-        Cell::Fixed { half_period } if setting.a >= half_period || setting.b >= half_period => {
+        Cell::Fixed { half_period, .. } if setting.a >= half_period || setting.b >= half_period => {
             return Err(Refusal::OutsideCell { neg_a: -setting.a, b: setting.b, half_period });
         }
         Cell::Periodic { period } if 2.0 * l >= period => {
@@ -299,17 +330,27 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
         Some(big_l) => 0.5 * big_l - l,
         None => 4.0 * l,
     };
-    let kinks: &[f64] = match setting.cell {
-        Cell::Fixed { half_period } => &[-half_period, half_period],
-        _ => &[],
+    let kinks: Vec<(f64, f64)> = match setting.cell {
+        Cell::Fixed { half_period, jump } => vec![(-half_period, jump), (half_period, jump)],
+        _ => vec![],
     };
-    let lead = gap_side(f, c, l, reach, 1.0, kinks);
-    let trail = gap_side(f, c, -l, reach, -1.0, kinks);
+    let kinks = kinks.as_slice();
+    // Where the profile ends (a narrow circle), the gap stops: no punch beyond.
+    let (reach_lead, reach_trail) = match setting.extent {
+        Some(r) => (reach.min(r - setting.b), reach.min(r - setting.a)),
+        None => (reach, reach),
+    };
+    let lead = gap_side(f, c, l, reach_lead, 1.0, kinks);
+    let trail = gap_side(f, c, -l, reach_trail, -1.0, kinks);
+    if let Some(&(x, _)) = lead.iter().chain(&trail).find(|v| !v.1.is_finite()) {
+        return Err(Refusal::NonFinite { x });
+    }
     let hmax = lead.iter().chain(&trail).fold(0.0f64, |m, v| m.max(v.1.abs())).max(f64::MIN_POSITIVE);
     // The closure: with the criterion's slope (step left out) the halves differ by
     // M + edge_step (L - 2 l) (the step integrates to edge_step over the arc's length).
+    let spans = reach_lead == reach && reach_trail == reach;
     let closure_defect = match setting.period() {
-        Some(_) => {
+        Some(_) if spans => {
             let measured = lead.last().map_or(0.0, |v| v.1) - trail.last().map_or(0.0, |v| v.1);
             let defect = measured - setting.edge_step * 2.0 * reach;
             let expected =
@@ -317,9 +358,9 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
             if (defect - expected).abs() > setting.closure_tol * (hmax + expected.abs()) {
                 return Err(Refusal::Inconsistent { measured: defect, expected });
             }
-            defect
+            Some(defect)
         }
-        None => 0.0,
+        _ => None,
     };
     let mut worst = (0.0f64, c + l, End::Leading);
     for (side, end) in [(&lead, End::Leading), (&trail, End::Trailing)] {
@@ -336,10 +377,10 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
             return Err(Refusal::NegativeGap { h: worst.0, x: worst.1, from: worst.2 });
         }
         warning = Some(format!(
-            "{}; in the paper's convention the surface does not close over a period (closure_defect = {}), so the gap is \
+            "{}; in the paper's convention the surface does not close over a period (closure defect M = {}), so the gap is \
              defined only up to that defect: not refused (the `periodic` convention closes it)",
             Refusal::NegativeGap { h: worst.0, x: worst.1, from: worst.2 }.why(),
-            readable_f64(closure_defect)
+            readable_f64(closure_defect.unwrap_or(setting.closure_formula))
         ));
     }
     Ok(Assessment {

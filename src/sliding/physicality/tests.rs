@@ -31,6 +31,7 @@ fn single(a: f64) -> Setting {
         edge_step: 0.0,
         closure_formula: 0.0,
         pressure_tol: 1e-9,
+        extent: None,
         closure_tol: CLOSURE_TOL,
     }
 }
@@ -41,7 +42,7 @@ fn hertz_is_admissible_and_its_gap_matches_the_closed_form() {
     let f = Hertz { k, a, tilt: 0.0, dent: 0.0 };
     let r = assess(&f, &single(a)).expect("Hertz is physical");
     assert_eq!(r.min_gap, 0.0);
-    assert_eq!(r.closure_defect, 0.0);
+    assert_eq!(r.closure_defect, None);
     assert!(r.warning.is_none());
     // The integrated gap at 4 l beyond the leading end against the closed form.
     let side = gap_side(&f, 0.0, a, 4.0 * a, 1.0, &[]);
@@ -79,8 +80,9 @@ fn a_negative_gap_refuses_where_the_surface_closes_and_warns_where_it_does_not()
     let paper = Setting { cell: Cell::Periodic { period: big_l }, closure_formula: m, ..single(0.1) };
     let r = assess(&f, &paper).expect("paper: a warning, not a refusal");
     assert!(r.min_gap < 0.0 && r.min_gap_x < -0.1, "{r:?}");
-    assert!((r.closure_defect - m).abs() < 1e-9, "{}", r.closure_defect);
-    assert!(r.warning.as_deref().unwrap_or("").contains("closure_defect"), "{r:?}");
+    let defect = r.closure_defect.expect("measured");
+    assert!((defect - m).abs() < 1e-9, "{defect}");
+    assert!(r.warning.as_deref().unwrap_or("").contains("closure defect"), "{r:?}");
     // Single punch: refused as a negative gap, from the trailing end.
     match assess(&f, &single(0.1)) {
         Err(Refusal::NegativeGap { h, x, from }) => {
@@ -113,11 +115,12 @@ fn the_edge_step_is_left_out_and_the_closure_accounts_for_it() {
         edge_step: 0.0,
         closure_formula: 0.0,
         pressure_tol: 1e-9,
+        extent: None,
         closure_tol: CLOSURE_TOL,
     };
     // Without a step the odd slope gives halves of equal height: closes.
     let r = assess(&Closed, &s).expect("closes");
-    assert!(r.closure_defect.abs() < 1e-12, "{}", r.closure_defect);
+    assert!(r.closure_defect.expect("measured").abs() < 1e-12, "{:?}", r.closure_defect);
     // With a step the criterion's halves differ by 2 step reach; the check accounts for it, and
     // the defect of the full slope is -2 step reach (not 0): refused as inconsistent.
     let with_step = Setting { edge_step: 0.01, ..s };
@@ -132,7 +135,7 @@ fn the_edge_step_is_left_out_and_the_closure_accounts_for_it() {
 #[test]
 fn a_contact_outside_its_cell_is_refused() {
     let f = Hertz { k: 1.0, a: 0.3, tilt: 0.0, dent: 0.0 };
-    let s = Setting { cell: Cell::Fixed { half_period: 0.5 }, a: 0.2, b: 0.55, ..single(0.3) };
+    let s = Setting { cell: Cell::Fixed { half_period: 0.5, jump: 0.0 }, a: 0.2, b: 0.55, ..single(0.3) };
     assert!(matches!(assess(&f, &s), Err(Refusal::OutsideCell { .. })));
     assert!(Refusal::OutsideCell { neg_a: -0.2, b: 0.55, half_period: 0.5 }.why().contains("leaves the cell"));
 }
@@ -155,4 +158,39 @@ fn admissible_runs_find_the_ends_and_an_interior_maximum() {
     assert!(adm.carries(0.3) && !adm.carries(0.43));
     let text = adm.loads_text(1.0, |s| s, "lambda");
     assert!(text.starts_with("physical contacts carry normal_load in (0, 0.4225]"), "{text}");
+}
+
+#[test]
+fn a_step_of_the_profile_at_the_cell_edge_enters_the_gap() {
+    // An odd slope (halves of equal height) on a cell whose profile steps up by 0.1 crossing
+    // x = L/2 to the right: with c = 0 the kink is the middle of the free arc, counted on the
+    // leading side, so the halves differ by exactly the step.
+    struct Odd;
+    impl ContactFunctions for Odd {
+        fn pressure_factor(&self, _: f64) -> f64 {
+            1.0
+        }
+        fn gap_slope(&self, xi: f64) -> f64 {
+            (xi * xi - 0.01f64).max(0.0).sqrt() * xi.signum()
+        }
+    }
+    let s = Setting {
+        convention: Convention::Paper,
+        cell: Cell::Fixed { half_period: 0.5, jump: 0.1 },
+        a: 0.1,
+        b: 0.1,
+        edge_step: 0.0,
+        closure_formula: 0.1,
+        pressure_tol: 1e-9,
+        extent: None,
+        closure_tol: CLOSURE_TOL,
+    };
+    let r = assess(&Odd, &s).expect("the step is the closure defect");
+    assert!((r.closure_defect.unwrap() - 0.1).abs() < 1e-12, "{:?}", r.closure_defect);
+    // Off centre (c = 0.05) the kink lies inside the leading half: the same defect.
+    let r = assess(&Odd, &Setting { a: 0.05, b: 0.15, ..s }).expect("off centre");
+    assert!((r.closure_defect.unwrap() - 0.1).abs() < 1e-9, "{:?}", r.closure_defect);
+    // In `periodic` the same slope cannot close: a numerical failure, not physics.
+    let e = assess(&Odd, &Setting { convention: Convention::PeriodicSurface, ..s }).unwrap_err();
+    assert!(!e.is_physical(), "{e:?}");
 }

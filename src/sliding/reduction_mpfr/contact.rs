@@ -10,7 +10,12 @@
 //! - parabola, single:   q = (2 k c, 2 k), B = (1, l u);
 //! - sinusoid [2.16]: with phi = 2 pi c/L and s = m u, sin(2 pi x(u)/L) = sin(phi + 2 arctan s), so
 //!   q = (2 pi D/L) (sin phi, cos phi), B = ((1 - s^2)/(1 + s^2), 2 s/(1 + s^2)).
+//!
+//! A polynomial or circular profile (THEORY.md section 9) has no such basis: g'(x(u)) is
+//! evaluated directly at each node for each (lambda, c) ([`super::profile`]), and the centre is
+//! found by Newton's method there.
 
+use super::profile::{is_general, profile_curvature, profile_slope};
 use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
 use rug::Float;
 
@@ -69,6 +74,9 @@ impl Size {
             (ShapeMpfr::Sinusoidal { .. }, None) => {
                 unreachable!("a sinusoid needs a finite period (validated by the model)")
             }
+            (ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. }, _) => {
+                unreachable!("general profiles are evaluated directly (Contact::f), not by a slope basis")
+            }
         }
     }
 
@@ -92,6 +100,9 @@ impl Size {
                 [b0, b1]
             }
             (ShapeMpfr::Sinusoidal { .. }, None) => unreachable!("a sinusoid needs a finite period"),
+            (ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. }, _) => {
+                unreachable!("general profiles are evaluated directly (Contact::f), not by a slope basis")
+            }
         }
     }
 
@@ -146,6 +157,8 @@ impl Contact {
                 let (s, co) = phi.sin_cos(Float::new(p));
                 [Float::with_val(p, &amp * &s), amp * co]
             }
+            // Evaluated directly at x(u) (Contact::f); no basis coefficients.
+            ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. } => [Float::with_val(p, 0), Float::with_val(p, 0)],
         };
         Contact { size: size.clone(), c, q }
     }
@@ -153,6 +166,10 @@ impl Contact {
     /// F(u) = (E*/2) g'(x(u)) at precision `wp` (the right-hand side of [2.8] without beta tau0), in
     /// units of E* (E* = 1 in the parameters): g'(x(u))/2.
     pub fn f(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+        if is_general(&params.shape) {
+            let x = Float::with_val(wp, self.size.offset(params, u, wp) + &self.c);
+            return profile_slope(&params.shape, &x, wp) / 2u32;
+        }
         let b = self.size.basis(params, u, wp);
         let v = Float::with_val(wp, &self.q[0] * &b[0]) + Float::with_val(wp, &self.q[1] * &b[1]);
         v / 2u32
@@ -160,6 +177,11 @@ impl Contact {
 
     /// F'(u) at precision `wp`.
     pub fn f_prime(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+        if is_general(&params.shape) {
+            let x = Float::with_val(wp, self.size.offset(params, u, wp) + &self.c);
+            let g2 = profile_curvature(&params.shape, &x, wp);
+            return g2 * self.size.jacobian(params, u, wp) / 2u32;
+        }
         let b = self.size.basis_derivative(params, u, wp);
         let v = Float::with_val(wp, &self.q[0] * &b[0]) + Float::with_val(wp, &self.q[1] * &b[1]);
         v / 2u32

@@ -43,13 +43,26 @@ pub struct EquationTerms {
 
 /// Evaluates the two basis integrals of [2.14] with the rule `rule` (weight 1/omega).
 pub fn equation_terms(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacobiRule) -> EquationTerms {
+    kernel_sums(params, size, rule, |u, p| size.basis(params, u, p))
+}
+
+/// The left side of [2.14] split into its load (`re`, times L) and imaginary (`im`) parts for two
+/// integrands `values(u, prec)` evaluated at the nodes of `rule` (weight 1/omega) in place of
+/// g'(x(u)): the slope basis of the parabola and the sinusoid, or (g', g'') of a general profile
+/// at one centre ([`super::centre`]).
+pub fn kernel_sums(
+    params: &SlidingParamsMpfr,
+    size: &Size,
+    rule: &GaussJacobiRule,
+    values: impl Fn(&Float, u32) -> [Float; 2],
+) -> EquationTerms {
     let p = params.prec;
     let mut sr = [Float::with_val(p, 0), Float::with_val(p, 0)];
     let mut si = [Float::with_val(p, 0), Float::with_val(p, 0)];
     match (&size.m, &size.lambda, &params.period) {
         (Some(m), Some(lambda), Some(big_l)) => {
             for (u, w) in rule.nodes.iter().zip(&rule.weights) {
-                let b = size.basis(params, u, p);
+                let b = values(u, p);
                 let s = Float::with_val(p, m * u);
                 let inv = Float::with_val(p, 1u32) / (Float::with_val(p, s.square_ref()) + 1u32);
                 let wi = Float::with_val(p, w * &inv);
@@ -76,7 +89,7 @@ pub fn equation_terms(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacob
         _ => {
             let two_theta = Float::with_val(p, &params.theta * 2u32);
             for (u, w) in rule.nodes.iter().zip(&rule.weights) {
-                let b = size.basis(params, u, p);
+                let b = values(u, p);
                 let wr = Float::with_val(p, w * Float::with_val(p, u + &two_theta));
                 for j in 0..2 {
                     sr[j] += Float::with_val(p, &wr * &b[j]);
@@ -91,6 +104,23 @@ pub fn equation_terms(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacob
             EquationTerms { re: [sr0 * &fr, sr1 * &fr], im: [si0 * &fi, si1 * &fi] }
         }
     }
+}
+
+/// The convention's form of the solvability residual (see [`shift_solutions`]): with
+/// [`Convention::PeriodicSurface`], im_j -> im_j + kappa re_j/L and beta tau0 -> beta tau0
+/// (1 - 2 l/L); returns the adjusted terms and the constant beta tau0 (or its periodic form).
+pub fn closed_terms(params: &SlidingParamsMpfr, size: &Size, terms: &EquationTerms) -> (EquationTerms, Float) {
+    let p = params.prec;
+    let mut bt = Float::with_val(p, &params.beta * &params.tau0);
+    let mut terms = terms.clone();
+    if let (Convention::PeriodicSurface, Some(big_l)) = (params.convention, &params.period) {
+        for j in 0..2 {
+            terms.im[j] += Float::with_val(p, &params.kappa * &terms.re[j]) / big_l;
+        }
+        let f = 1u32 - Float::with_val(p, &size.l * 2u32) / big_l;
+        bt *= f;
+    }
+    (terms, bt)
 }
 
 /// A centre c solving the imaginary part of [2.14] at a given size, and the load it carries.
@@ -115,15 +145,7 @@ pub struct ShiftSolution {
 /// P2 = sum_j q_j re_j, i.e. im_j -> im_j + kappa re_j/L and beta tau0 -> beta tau0 (1 - 2 l/L).
 pub fn shift_solutions(params: &SlidingParamsMpfr, size: &Size, terms: &EquationTerms) -> Vec<ShiftSolution> {
     let p = params.prec;
-    let mut bt = Float::with_val(p, &params.beta * &params.tau0);
-    let mut terms = terms.clone();
-    if let (Convention::PeriodicSurface, Some(big_l)) = (params.convention, &params.period) {
-        for j in 0..2 {
-            terms.im[j] += Float::with_val(p, &params.kappa * &terms.re[j]) / big_l;
-        }
-        let f = 1u32 - Float::with_val(p, &size.l * 2u32) / big_l;
-        bt *= f;
-    }
+    let (terms, bt) = closed_terms(params, size, terms);
     let terms = &terms;
     match &params.shape {
         ShapeMpfr::Parabolic { k } => {
@@ -160,6 +182,9 @@ pub fn shift_solutions(params: &SlidingParamsMpfr, size: &Size, terms: &Equation
                     ShiftSolution { c, p2 }
                 })
                 .collect()
+        }
+        ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. } => {
+            unreachable!("general profiles find their centre by Newton's method (super::centre::centre)")
         }
     }
 }

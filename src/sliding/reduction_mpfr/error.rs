@@ -19,9 +19,9 @@ pub enum SlidingError {
         /// The valid range, in words.
         expected: String,
     },
-    /// The periodic parabola's contact would leave (-L/2, L/2), where the periodic extension of
-    /// g = k x^2 has kinks (THEORY.md section 3, "Validity").
-    #[error("the contact [{left}, {right}] leaves (-L/2, L/2) = (-{half_period}, {half_period}): the periodic parabola is not valid there (reduce the load or the contact size)")]
+    /// The contact of a periodic parabola, polynomial or circle would leave (-L/2, L/2), where
+    /// the periodic extension of the profile has kinks (THEORY.md sections 3 "Validity", 9).
+    #[error("the contact [{left}, {right}] leaves (-L/2, L/2) = (-{half_period}, {half_period}): the periodic extension of the profile has kinks there, so it is not valid (reduce the load or the contact size)")]
     ContactOutsidePeriod {
         /// -a.
         left: String,

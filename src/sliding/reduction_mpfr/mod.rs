@@ -1,7 +1,8 @@
 //! Problem 1 at high precision: the exact reduction of THEORY.md section 3 evaluated with MPFR (rug).
 //!
-//! The contact [-a, b] of a parabolic (g = k x^2) or sinusoidal (g = D (1 - cos(2 pi x/L)) [2.16])
-//! punch, periodic with period L or single (L = infinity), under the load P2 (inverse problem) or
+//! The contact [-a, b] of a parabolic (g = k x^2), sinusoidal (g = D (1 - cos(2 pi x/L)) [2.16]),
+//! polynomial (g = sum_j c_j x^j) or circular (g = R - sqrt(R^2 - x^2)) punch (THEORY.md section 9),
+//! periodic with period L or single (L = infinity), under the load P2 (inverse problem) or
 //! for a given half-length l (direct problem). The canonical equation [2.8]
 //!     kappa p + H[p] = (E*/2) g' + beta tau0,  theta = arctan(kappa)/pi,
 //! reduces to one complex equation for (lambda, c) [2.14] ([`equation`]) and the pressure formula
@@ -17,7 +18,9 @@
 //! Files: `setup` (the parameters of one solve, once per precision), `contact` (the map x(u) and
 //! the slope basis), `equation` ([2.14] and the centre), `pressure` ([2.13], gap slope, integrals
 //! of p), `physical` (p >= 0, gap >= 0), `solve` (locating and refining the contact), `verify`
-//! (two runs), `solution`, `error`.
+//! (two runs), `solution`, `error`; for a polynomial or circular punch (THEORY.md section 9)
+//! `profile` (g', g'' evaluated directly), `centre` (the centre by Newton's method) and
+//! `locate_profile`; `bracket` holds the locating stage's shared pieces.
 //!
 //! Conventions. By default the paper's (THEORY.md's) convention is used; the problem's
 //! [`crate::model::SlidingProblem::convention`] selects it. Two consequences found here
@@ -40,11 +43,15 @@
 //! equation [2.8] to 1e-30 relative to E* k l (direct tanh-sinh quadrature, no tangent map);
 //! P2 = int p dx by a separate rule; direct vs inverse problem.
 
+pub mod bracket;
+pub mod centre;
 pub mod contact;
 pub mod equation;
 pub mod error;
+pub mod locate_profile;
 pub mod physical;
 pub mod pressure;
+pub mod profile;
 pub mod setup;
 pub mod solution;
 pub mod solve;

@@ -16,7 +16,7 @@
 use super::contact::Contact;
 use super::pressure::Pressure;
 use crate::model::Convention;
-use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
+use crate::params::sliding::{cell_edge_jump, ShapeMpfr, SlidingParamsMpfr};
 use crate::sliding::physicality::{
     assess, pressure_points, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL,
 };
@@ -52,7 +52,15 @@ fn setting(params: &SlidingParamsMpfr, contact: &Contact, p1: &Float, p2: &Float
     let cell = match (&params.shape, &params.period) {
         (_, None) => Cell::Unbounded,
         (ShapeMpfr::Sinusoidal { .. }, Some(big_l)) => Cell::Periodic { period: big_l.to_f64() },
-        (_, Some(big_l)) => Cell::Fixed { half_period: big_l.to_f64() / 2.0 },
+        (shape, Some(big_l)) => Cell::Fixed {
+            half_period: big_l.to_f64() / 2.0,
+            jump: match shape {
+                ShapeMpfr::Polynomial { slope, .. } => {
+                    cell_edge_jump(&slope.iter().map(Float::to_f64).collect::<Vec<_>>(), big_l.to_f64() / 2.0)
+                }
+                _ => 0.0,
+            },
+        },
     };
     // M = (2/E*) beta P1 - cW P2 with E* = 1.
     let closure_formula = match (&params.period, params.convention) {
@@ -69,6 +77,14 @@ fn setting(params: &SlidingParamsMpfr, contact: &Contact, p1: &Float, p2: &Float
         edge_step: Float::with_val(p, &params.beta * &params.tau0).to_f64() * 2.0,
         closure_formula,
         pressure_tol: pressure_tol(p),
+        extent: match &params.shape {
+            ShapeMpfr::Circular { r }
+                if params.period.as_ref().is_none_or(|big_l| r.to_f64() < 0.5 * big_l.to_f64()) =>
+            {
+                Some(r.to_f64())
+            }
+            _ => None,
+        },
         closure_tol,
     }
 }

@@ -11,6 +11,7 @@
 //! with F(t) the analytic continuation of F. (Check: Hertz, theta = 0: h' = 2 k sqrt(x^2 - a^2).)
 
 use super::contact::Contact;
+use super::profile::{is_general, profile_slope, row_slope};
 use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
 use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
 use rug::ops::Pow;
@@ -113,6 +114,9 @@ impl<'a> Pressure<'a> {
         if t.is_sign_negative() {
             xt = -xt;
         }
+        if is_general(&s.shape) {
+            return self.general_gap_slope(x_minus_c, &t, &xt);
+        }
         let mut h = xt * self.d(&t) * &s.cos_pi_theta / &s.pi * 2u32; // (2/E*) with E* = 1 (units of E*)
         if let (ShapeMpfr::Parabolic { k }, Some(big_l)) = (&s.shape, &s.period) {
             // True slope 2k (x - n L) vs the continuation 2k x(t), x(t) in (c - L/2, c + L/2).
@@ -124,6 +128,36 @@ impl<'a> Pressure<'a> {
             h += Float::with_val(p, x_true - x_cont) * k * 2u32;
         }
         h
+    }
+
+    /// [`Pressure::gap_slope`] of a polynomial or circular punch (THEORY.md section 9), with
+    /// g'_row the slope of the punch row ([`super::profile::row_slope`]: reduced to the cell;
+    /// +-infinity beyond the circle's |x| >= R, where no punch is):
+    /// h' = g'_row(x) - g'(x(t)) + (2/E*) X(t) cos(pi theta) D(t)/pi while the analytic g' is
+    /// defined at x(t) = c + (L/pi) arctan(m t) (always for a polynomial); otherwise (the circle
+    /// beyond R, far from the contact) the unsubtracted form
+    /// h' = g'_row(x) + (2/E*) X(t) cos(pi theta)/pi sum_j w_j F(u_j)/(u_j - t), which follows
+    /// from D(t) = sum_j w_j F(u_j)/(u_j - t) - F(t) sum_j w_j/(u_j - t) and the exact
+    /// int du/(omega (u - t)) = -pi/(cos(pi theta) X(t)).
+    fn general_gap_slope(&self, x_minus_c: &Float, t: &Float, xt: &Float) -> Float {
+        let s = self.params;
+        let p = s.prec;
+        let x = Float::with_val(p, x_minus_c + &self.contact.c);
+        let row = row_slope(s, &x, p);
+        if row.is_infinite() {
+            return row;
+        }
+        let x_cont = Float::with_val(p, self.contact.size.offset(s, t, p) + &self.contact.c);
+        let cont = profile_slope(&s.shape, &x_cont, p);
+        let factor = Float::with_val(p, xt * &s.cos_pi_theta) / &s.pi * 2u32;
+        if cont.is_finite() {
+            return Float::with_val(p, &factor * self.d(t)) + Float::with_val(p, &row - &cont);
+        }
+        let mut sum = Float::with_val(p, 0);
+        for ((u, w), f) in self.rule.nodes.iter().zip(&self.rule.weights).zip(&self.f_nodes) {
+            sum += Float::with_val(p, w * f) / Float::with_val(p, u - t);
+        }
+        row + factor * sum
     }
 
     /// (P2, F_def) = (int p dx, int p g' dx) over the contact, by the n-point rule `rule_omega`

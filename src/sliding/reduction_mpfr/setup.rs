@@ -27,8 +27,9 @@ pub struct Setup {
     pub target: Option<f64>,
     /// The given load P2 as the user wrote it, readable (for messages; None: half-length given).
     pub load_text: Option<String>,
-    /// The given load or size, exact (for the refusals' wording).
-    pub load: SlidingLoad,
+    /// The problem as given (for the refusals of a general profile on its contact,
+    /// [`crate::params::sliding::check_profile_on_contact`]).
+    pub problem: SlidingProblem,
 }
 
 impl Setup {
@@ -51,6 +52,6 @@ impl Setup {
             }
             SlidingLoad::HalfLength(_) => (None, None),
         };
-        Ok(Setup { locate, target, load_text, load: problem.load().clone() })
+        Ok(Setup { locate, target, load_text, problem: problem.clone() })
     }
 }

@@ -49,8 +49,9 @@ pub struct SlidingSolution {
     pub pressure: Vec<PressurePoint>,
     /// Largest pressure over the dense samples of the physicality check (the scale of p(x)).
     pub max_pressure: Float,
-    /// Osculating curvature k of the punch (k, or 2 pi^2 D/L^2): with l and P2 it gives the scale
-    /// k l P2 of F_def ([`crate::params::sliding::SlidingScale`]).
+    /// Curvature scale k of the punch (k, 2 pi^2 D/L^2, 1/(2 R), or a polynomial's mean curvature:
+    /// [`crate::params::sliding::SlidingParamsMpfr::k`]): with l and P2 it gives the scale k l P2
+    /// of F_def ([`crate::params::sliding::SlidingScale`]).
     pub k: Float,
     /// Number of Gauss–Jacobi nodes used.
     pub nodes: usize,

@@ -12,19 +12,23 @@
 //! Everything here works in units of E* ([`SlidingParamsMpfr`]); [`solve_at`] and
 //! [`super::verify::solve_verified`] return the solutions in the problem's units.
 
+pub use super::bracket::Located;
+use super::bracket::{root_in, LOCATE_DIGITS, LOCATE_NODES, RESIDUAL_NOISE};
+use super::centre::centre;
 use super::contact::{Contact, Size};
 use super::equation::{equation_terms, shift_solutions, ShiftSolution};
 use super::error::SlidingError;
+use super::locate_profile::{locate_profile, profile_nodes};
 use super::physical::{max_pressure, physicality, physicality_with};
 use super::pressure::Pressure;
+use super::profile::is_general;
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
 use crate::model::{Exact, SlidingProblem};
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::exact::to_float;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
-use crate::numerics::roots::{brent, Bracket, RootError};
-use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
+use crate::params::sliding::{check_profile_on_contact, ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
 use crate::sliding::physicality::admissible::{admissible, Admissible, SizeContacts, LAMBDA_SCAN_MAX};
 use crate::sliding::physicality::{refusal, Assessment, Refusal};
 use rug::Float;
@@ -33,13 +37,8 @@ use std::sync::Arc;
 /// Most nodes the solver will use for one rule.
 pub const NODE_CAP: usize = 3000;
 
-/// Digits the locating stage aims at.
-const LOCATE_DIGITS: f64 = 16.0;
 /// Digits of the sinusoid's load-curve scan (signs only).
 const SCAN_DIGITS: f64 = 8.0;
-/// Most nodes of the locating stage.
-const LOCATE_NODES: usize = 512;
-
 /// How many nodes a run uses: `factor` times the error-model count for `digits`.
 #[derive(Debug, Clone, Copy)]
 pub struct NodeRule {
@@ -107,39 +106,20 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
 fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
     let rule = inverse_rule(params, n)?;
     let size = Size::new(params, s);
+    if is_general(&params.shape) {
+        return Ok(centre(params, &size, &rule).into_iter().collect());
+    }
     Ok(shift_solutions(params, &size, &equation_terms(params, &size, &rule)))
 }
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).
 fn load_lo(params: &SlidingParamsMpfr, s: f64, branch: usize) -> Result<Option<f64>, SlidingError> {
-    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS));
+    // Capped: near the circle's radius the profile's rule would grow without bound (the solve
+    // stage refuses such sizes with a message; here they only need a sign).
+    let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS).max(profile_nodes(params, s, LOCATE_DIGITS)))
+        .min(NODE_CAP);
     let sf = Float::with_val(params.prec, s);
     Ok(branches(params, &sf, n)?.get(branch).map(|b| b.p2.to_f64()))
-}
-
-/// The relative load residual of the locating stage is evaluated to ~16 digits: below this it is
-/// noise, and the size counts as a root.
-const RESIDUAL_NOISE: f64 = 1e-15;
-
-/// A root of the relative load residual `f` (None: no centre on the branch, an error) in the
-/// bracket (lo, flo), (hi, fhi) with a sign change, by Brent's method to ~4 eps relative.
-fn root_in(
-    mut f: impl FnMut(f64) -> Result<Option<f64>, SlidingError>,
-    (lo, flo): (f64, f64),
-    (hi, fhi): (f64, f64),
-) -> Result<f64, SlidingError> {
-    let denoise = |v: f64| if v.abs() <= RESIDUAL_NOISE { 0.0 } else { v };
-    let g = |x: f64| -> Result<f64, SlidingError> {
-        match f(x)? {
-            Some(v) => Ok(denoise(v)),
-            None => Err(SlidingError::NoConvergence(format!("the load curve has a gap at size {}", readable_f64(x)))),
-        }
-    };
-    let bracket = Bracket { a: lo, b: hi, fa: denoise(flo), fb: denoise(fhi) };
-    brent(g, bracket, 4.0 * f64::EPSILON * lo.abs().max(hi.abs())).map_err(|e| match e {
-        RootError::Function(e) => e,
-        other => SlidingError::NoConvergence(format!("locating the contact size: {other}")),
-    })
 }
 
 /// Contact sizes (with their centre branch) carrying the given load P2/E* (low precision, at the
@@ -240,6 +220,9 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
             found.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap_or(std::cmp::Ordering::Equal));
             Ok(found)
         }
+        (ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. }, _, TargetMpfr::NormalLoad(p2)) => {
+            locate_profile(setup, params, p2, cap, f)
+        }
         (_, _, TargetMpfr::HalfLength(_)) => unreachable!("locate is called for a given load only"),
     }
 }
@@ -289,7 +272,7 @@ fn refused(setup: &Setup, reasons: &[String]) -> Result<SlidingError, SlidingErr
         }
         (TargetMpfr::HalfLength(_), None) => adm.sizes_text(|s| s),
     };
-    Ok(SlidingError::Core(refusal(&setup.load, reasons, &ranges)))
+    Ok(SlidingError::Core(refusal(setup.problem.load(), reasons, &ranges)))
 }
 
 /// The shared criterion for the contact of branch solution `sol` at size `s` (the loads P1 =
@@ -409,9 +392,6 @@ pub fn solve_at(
     Ok(sols.into_iter().map(|(s, _)| s.in_units_of(&params.unit)).collect())
 }
 
-/// Low-precision estimate of a contact size (lambda, or l for a single punch) and its centre branch.
-pub type Located = (f64, usize);
-
 /// [`solve_at`] with the parameters `params` of the working precision, in units of E* (the
 /// solutions too), reusing the sizes located by an earlier run when `located` is given (inverse
 /// problem); returns with each solution the located size it came from. `points` are checked.
@@ -425,8 +405,9 @@ pub(super) fn solve_located(
 ) -> Result<Vec<(SlidingSolution, Located)>, SlidingError> {
     let prec = params.prec;
     let check = checks == Checks::Physical;
-    let n_for = |lam: f64| -> Result<usize, SlidingError> {
-        let n0 = nodes_for(lam, nodes.digits);
+    let n_for = |size: f64| -> Result<usize, SlidingError> {
+        let lam = lambda_of(params, size);
+        let n0 = nodes_for(lam, nodes.digits).max(profile_nodes(params, size, nodes.digits));
         let n = (n0 as f64 * nodes.factor).ceil();
         if n0 == usize::MAX || n > NODE_CAP as f64 {
             return Err(SlidingError::NoConvergence(format!(
@@ -447,7 +428,7 @@ pub(super) fn solve_located(
                 Some(big_l) => Float::with_val(prec, lf * &params.pi) / big_l,
                 None => lf.clone(),
             };
-            let n = n_for(lambda_of(params, s.to_f64()))?;
+            let n = n_for(s.to_f64())?;
             for (br, b) in branches(params, &s, n)?.into_iter().enumerate() {
                 if b.p2 > 0u32 {
                     cands.push((s.clone(), b, n, (s.to_f64(), br)));
@@ -476,7 +457,7 @@ pub(super) fn solve_located(
                         }
                     }
                 }
-                let n = n_for(lambda_of(params, s0))?;
+                let n = n_for(s0)?;
                 let s = refine(params, s0, br, p2f, n)?;
                 let b = branches(params, &s, n)?;
                 let mut sol =
@@ -488,6 +469,14 @@ pub(super) fn solve_located(
     }
     let mut out = vec![];
     for (s, sh, n, loc) in cands {
+        // A polynomial or circle: inside |x| < R, convex and with a small slope on the contact,
+        // before the physicality checks (an input the theory does not cover, not a solution).
+        if check {
+            let l = Size::new(params, &s).l;
+            let left = Float::with_val(53, &sh.c - &l).to_f64();
+            let right = Float::with_val(53, &sh.c + &l).to_f64();
+            check_profile_on_contact(&setup.problem, left, right)?;
+        }
         match build(params, &s, sh, n, points, check)? {
             Ok(sol) => out.push((sol, loc)),
             Err(r) => reasons.push(reason_or_error(lambda_of(params, s.to_f64()), r)?),

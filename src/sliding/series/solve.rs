@@ -79,11 +79,18 @@ pub struct SeriesSolution {
     pub physicality: Assessment,
 }
 
-/// The expansion shape of a punch.
-pub fn expansion_shape(problem: &SlidingProblem) -> SlidingShape {
+/// The expansion shape of a punch. The series method knows the parabola and the sinusoid; a
+/// polynomial or circular punch is refused (input error naming `punch.shape`): its exact series
+/// belongs to `asymptotics` (issue 11), and the MPFR and f64 methods solve it.
+pub fn expansion_shape(problem: &SlidingProblem) -> Result<SlidingShape, Error> {
     match problem.shape() {
-        PunchShape::Parabolic { .. } => SlidingShape::Parabolic,
-        PunchShape::Sinusoidal { .. } => SlidingShape::Sinusoidal,
+        PunchShape::Parabolic { .. } => Ok(SlidingShape::Parabolic),
+        PunchShape::Sinusoidal { .. } => Ok(SlidingShape::Sinusoidal),
+        other => Err(Error::input(
+            "punch.shape",
+            other.name(),
+            "the series method solves \"parabolic\" and \"sinusoidal\" punches; use --method mpfr or f64",
+        )),
     }
 }
 
@@ -96,7 +103,7 @@ pub fn solve_series(
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
     check_order(order)?;
-    let e = sliding_expansion_with(expansion_shape(problem), order, problem.convention())
+    let e = sliding_expansion_with(expansion_shape(problem)?, order, problem.convention())
         .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
     solve_series_with(&e, problem, points, order, digits)
 }
@@ -128,7 +135,7 @@ pub fn solve_series_with(
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
     check_order(order)?;
-    assert_eq!(e.shape, expansion_shape(problem), "the expansion is of another shape");
+    assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
     assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
     assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
     let prec = precision_for(digits);
