@@ -259,57 +259,73 @@ fn series_order(shape: &PunchShape, convention: Convention) -> usize {
     }
 }
 
-/// Runs the Problem 1 grid (`thetas` x `lambdas`, load of each lambda from `load`) of `shape` in
-/// both conventions, one thread per convention (each with its own copy of the expansion cache,
-/// merged back): the two maps are independent, so on two cores the section takes the longer of
-/// the two rather than their sum; the results do not depend on the threads. Timing lines (wall
-/// time of each map, concurrent) go to `s.timings`.
-fn p1_maps(
-    ctx: &mut Ctx,
-    s: &mut Section,
+/// One Problem 1 map: the grid (`thetas` x `lambdas`, load of each lambda from `load`) of
+/// `shape` in `convention`, with its own expansion cache; returns the map, the cache and the wall
+/// time.
+fn p1_map(
+    progress: &indicatif::ProgressBar,
+    mut cache: ExpansionCache,
     shape: &PunchShape,
     name: &str,
+    convention: Convention,
     grid: (&[f64], &[f64]),
     load: &(dyn Fn(f64) -> f64 + Sync),
-) -> Vec<ConventionMap> {
-    let run_map = |convention: Convention, mut cache: ExpansionCache| {
-        let t0 = std::time::Instant::now();
-        let knobs = vec![Knob::Series(series_order(shape, convention)), Knob::F64(None), Knob::MpfrVerified(30)];
-        let mut cells = Vec::new();
-        for &lam in grid.1 {
-            for &th in grid.0 {
-                ctx.progress
-                    .set_message(format!("stability, {name}, {}: theta = {th}, lambda = {lam}", convention.name()));
-                if let Some(p) = sliding_at(shape.clone(), th, load(lam), convention) {
-                    cells.push(run_cell(&mut cache, &SceneProblem::Sliding(p), &knobs, th, lam));
-                }
+) -> (ConventionMap, ExpansionCache, f64) {
+    let t0 = std::time::Instant::now();
+    let knobs = vec![Knob::Series(series_order(shape, convention)), Knob::F64(None), Knob::MpfrVerified(30)];
+    let mut cells = Vec::new();
+    for &lam in grid.1 {
+        for &th in grid.0 {
+            progress.set_message(format!("stability, {name}, {}: theta = {th}, lambda = {lam}", convention.name()));
+            if let Some(p) = sliding_at(shape.clone(), th, load(lam), convention) {
+                cells.push(run_cell(&mut cache, &SceneProblem::Sliding(p), &knobs, th, lam));
             }
         }
-        (ConventionMap { convention, knobs, cells }, cache, t0.elapsed().as_secs_f64())
-    };
-    let (paper_cache, periodic_cache) = (ctx.cache.clone(), ctx.cache.clone());
-    let results = std::thread::scope(|sc| {
-        let paper = sc.spawn(|| run_map(Convention::Paper, paper_cache));
-        let periodic = run_map(Convention::PeriodicSurface, periodic_cache);
-        // A panic in the `paper` thread is a bug: propagate it.
-        let paper = paper.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-        [paper, periodic]
-    });
-    let mut maps = Vec::new();
-    for (map, cache, seconds) in results {
-        let _ = writeln!(
-            s.timings,
-            "| stability map, {name}, `{}` ({} cells; concurrent with the other convention) | {seconds:.2} |",
-            map.convention.name(),
-            map.cells.len(),
-        );
-        ctx.cache.merge(cache);
-        maps.push(map);
     }
-    maps
+    (ConventionMap { convention, knobs, cells }, cache, t0.elapsed().as_secs_f64())
 }
 
-/// Builds section 4.
+fn timing_line(s: &mut Section, name: &str, map: &ConventionMap, seconds: f64, note: &str) {
+    let _ = writeln!(
+        s.timings,
+        "| stability map, {name}, `{}` ({} cells{note}) | {seconds:.2} |",
+        map.convention.name(),
+        map.cells.len()
+    );
+}
+
+/// The Problem 2 map: lambda vs nu.
+fn p2_cells(ctx: &mut Ctx, knobs: &[Knob]) -> Vec<Cell> {
+    let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if ctx.profile == Profile::Full {
+        (vec![(0, 1), (3, 20), (3, 10), (9, 20), (1, 2)], vec![0.2, 0.5, 0.8, 1.1, 1.4])
+    } else {
+        (vec![(3, 10)], vec![0.4])
+    };
+    let mut cells = Vec::new();
+    for &lam in &lambdas {
+        for &(n, d) in &nus {
+            let nu = n as f64 / d as f64;
+            ctx.step(format!("stability, adhesion: nu = {nu}, lambda = {lam}"));
+            let Ok(material) = Material::from_contact_modulus(q(n, d), q(1, 1)) else { continue };
+            let Ok(p) = AdhesionProblem::new(
+                material,
+                Period::Finite(q(1, 1)),
+                PunchShape::Parabolic { k: q(1, 1) },
+                AdhesionSize::HalfWidth(rational(lam / std::f64::consts::PI)),
+            ) else {
+                continue;
+            };
+            cells.push(run_cell(&mut ctx.cache, &SceneProblem::Adhesion(p), knobs, nu, lam));
+        }
+    }
+    cells
+}
+
+/// Builds section 4. The `periodic` parabola map is the costliest (its contacts stay physical up
+/// to lambda ~ 1.52, where the verified MPFR runs need hundreds of nodes): it runs on a second
+/// thread (with its own copy of the expansion cache, merged back) while this thread runs the
+/// other maps, so that on two cores the section takes about the longer of the two; the results
+/// do not depend on the threads.
 pub fn section(ctx: &mut Ctx) -> Section {
     let full = ctx.profile == Profile::Full;
     let mut s = Section::default();
@@ -326,8 +342,8 @@ pub fn section(ctx: &mut Ctx) -> Section {
          over a period); the series of the `periodic` sinusoid is kept through Lambda^8 (its exact derivation \
          through Lambda^12 would take minutes).\n"
     );
-    timings_header(&mut s);
-    let (thetas, lambdas): (Vec<f64>, Vec<f64>) = if full {
+    let _ = writeln!(s.timings, "### Stability maps\n\n| map | seconds |\n|---|---:|");
+    let (p_thetas, p_lambdas): (Vec<f64>, Vec<f64>) = if full {
         (vec![-0.4, -0.2, 0.0, 0.2, 0.4], vec![0.1, 0.4, 0.7, 1.0, 1.3, 1.5])
     } else {
         (vec![-0.2, 0.2], vec![0.3])
@@ -335,46 +351,52 @@ pub fn section(ctx: &mut Ctx) -> Section {
     // Kuznetsov [2.15] with E* = k = L = 1: P2 = ln sec(lambda)/pi.
     let kuznetsov = |lam: f64| (1.0 / lam.cos()).ln() / std::f64::consts::PI;
     let parabola = PunchShape::Parabolic { k: q(1, 1) };
-    let maps = p1_maps(ctx, &mut s, &parabola, "parabola", (&thetas, &lambdas), &kuznetsov);
-    map_section_conventions(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", &maps);
-    let (thetas, lambdas): (Vec<f64>, Vec<f64>) =
+    let (s_thetas, s_lambdas): (Vec<f64>, Vec<f64>) =
         if full { (vec![-0.2, 0.0, 0.2], vec![0.3, 0.7, 1.1, 1.4]) } else { (vec![0.2], vec![1.1]) };
     // Westergaard [2.17] with E* = L = 1, D = 1/100: P2 = pi D sin^2(lambda).
     let westergaard = |lam: f64| std::f64::consts::PI * 0.01 * lam.sin().powi(2);
     let sinusoid = PunchShape::Sinusoidal { amplitude: q(1, 100) };
-    let maps = p1_maps(ctx, &mut s, &sinusoid, "sinusoid", (&thetas, &lambdas), &westergaard);
-    map_section_conventions(&mut s, "stability_p1_sinusoid", "Problem 1, sinusoid (D = 1/100), up to high load", &maps);
     let adhesion_knobs = [Knob::F64(None), Knob::MpfrVerified(20)];
-    let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if full {
-        (vec![(0, 1), (3, 20), (3, 10), (9, 20), (1, 2)], vec![0.2, 0.5, 0.8, 1.1, 1.4])
-    } else {
-        (vec![(3, 10)], vec![0.4])
-    };
-    let t0 = std::time::Instant::now();
-    let mut cells = Vec::new();
-    for &lam in &lambdas {
-        for &(n, d) in &nus {
-            let nu = n as f64 / d as f64;
-            ctx.step(format!("stability, adhesion: nu = {nu}, lambda = {lam}"));
-            let Ok(material) = Material::from_contact_modulus(q(n, d), q(1, 1)) else { continue };
-            let Ok(p) = AdhesionProblem::new(
-                material,
-                Period::Finite(q(1, 1)),
-                PunchShape::Parabolic { k: q(1, 1) },
-                AdhesionSize::HalfWidth(rational(lam / std::f64::consts::PI)),
-            ) else {
-                continue;
-            };
-            cells.push(run_cell(&mut ctx.cache, &SceneProblem::Adhesion(p), &adhesion_knobs, nu, lam));
-        }
-    }
-    let _ =
-        writeln!(s.timings, "| stability map, Problem 2 ({} cells) | {:.2} |", cells.len(), t0.elapsed().as_secs_f64());
+    let progress = ctx.progress.clone();
+    let background_cache = ctx.cache.clone();
+    let p_grid = (p_thetas.as_slice(), p_lambdas.as_slice());
+    let s_grid = (s_thetas.as_slice(), s_lambdas.as_slice());
+    let (par_paper, sin_paper, sin_periodic, p2, par_periodic) = std::thread::scope(|sc| {
+        let background = sc.spawn(|| {
+            p1_map(&progress, background_cache, &parabola, "parabola", Convention::PeriodicSurface, p_grid, &kuznetsov)
+        });
+        let mut run = |shape: &PunchShape, name: &str, conv: Convention, grid, load: &(dyn Fn(f64) -> f64 + Sync)| {
+            let (map, cache, secs) = p1_map(&progress, std::mem::take(&mut ctx.cache), shape, name, conv, grid, load);
+            ctx.cache = cache;
+            (map, secs)
+        };
+        let par_paper = run(&parabola, "parabola", Convention::Paper, p_grid, &kuznetsov);
+        let sin_paper = run(&sinusoid, "sinusoid", Convention::Paper, s_grid, &westergaard);
+        let sin_periodic = run(&sinusoid, "sinusoid", Convention::PeriodicSurface, s_grid, &westergaard);
+        let t0 = std::time::Instant::now();
+        let p2 = (p2_cells(ctx, &adhesion_knobs), t0.elapsed().as_secs_f64());
+        // A panic in the background thread is a bug: propagate it.
+        let par_periodic = background.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        (par_paper, sin_paper, sin_periodic, p2, par_periodic)
+    });
+    let (par_periodic_map, background_cache, par_periodic_secs) = par_periodic;
+    ctx.cache.merge(background_cache);
+    timing_line(&mut s, "parabola", &par_paper.0, par_paper.1, "");
+    timing_line(
+        &mut s,
+        "parabola",
+        &par_periodic_map,
+        par_periodic_secs,
+        "; second thread, concurrent with the others",
+    );
+    timing_line(&mut s, "sinusoid", &sin_paper.0, sin_paper.1, "");
+    timing_line(&mut s, "sinusoid", &sin_periodic.0, sin_periodic.1, "");
+    let _ = writeln!(s.timings, "| stability map, Problem 2 ({} cells) | {:.2} |", p2.0.len(), p2.1);
+    let maps = [par_paper.0, par_periodic_map];
+    map_section_conventions(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", &maps);
+    let maps = [sin_paper.0, sin_periodic.0];
+    map_section_conventions(&mut s, "stability_p1_sinusoid", "Problem 1, sinusoid (D = 1/100), up to high load", &maps);
     let _ = writeln!(s.markdown, "Problem 2 exact series: {}\n", super::sweeps::adhesion_series_note());
-    map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &cells);
+    map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &p2.0);
     s
-}
-
-fn timings_header(s: &mut Section) {
-    let _ = writeln!(s.timings, "### Stability maps\n\n| map | seconds |\n|---|---:|");
 }
