@@ -259,7 +259,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
         s.markdown.push('\n');
     }
     let curve = |runs: &[Run], conv: Convention, y: &dyn Fn(&Point, f64) -> f64| Curve {
-        name: format!("`{}` (MPFR, {DIGITS} digits)", conv.name()),
+        name: format!("{} (MPFR, {DIGITS} digits)", conv.name()),
         points: runs.iter().filter_map(|(p2, r)| r.as_ref().ok().map(|pt| (*p2, y(pt, *p2)))).collect(),
         draw: Draw::LineMarkers,
         colour: None,
