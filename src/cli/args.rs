@@ -127,8 +127,8 @@ pub enum RawCommand {
         json: bool,
     },
     /// Write the report into a folder: the main job. Coefficient tables, method choice per scene,
-    /// convergence orders, speed against accuracy, stability maps, load-size curves (Markdown,
-    /// SVG charts with their CSV data, timings apart).
+    /// convergence orders, speed against accuracy, stability maps, load-size curves, paper vs
+    /// periodic (Markdown, SVG charts with their CSV data, timings apart).
     Report {
         /// Output folder.
         #[arg(long, value_name = "DIR", default_value = "report")]

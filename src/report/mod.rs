@@ -6,7 +6,9 @@
 //! 3. speed against accuracy ([`speed`]);
 //! 4. stability maps from actual runs ([`stability`]);
 //! 5. load-size curves from the scenes' sweeps with closed forms ([`sweeps`]);
-//! 6. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
+//! 6. paper vs periodic: the two surface conventions of Problem 1 on the friction and wear scenes
+//!    ([`conventions`]);
+//! 7. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
 //!    deterministic and snapshot-tested).
 //!
 //! Every chart is written as SVG ([`chart`], plotters) with the CSV of its data beside it.
@@ -15,6 +17,7 @@ pub mod calibration;
 pub mod chart;
 pub mod choice;
 pub mod coefficients;
+pub mod conventions;
 pub mod orders;
 pub mod runner;
 pub mod section;
@@ -131,7 +134,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     std::fs::create_dir_all(&opts.out).map_err(io(&opts.out))?;
     let scenes = load_scenes(&opts.scenes)?;
     let progress = if opts.progress {
-        let pb = ProgressBar::new(6);
+        let pb = ProgressBar::new(7);
         pb.set_style(
             ProgressStyle::with_template("{spinner} [{elapsed_precise}] section {pos}/{len} {wide_msg}")
                 .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -167,6 +170,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     sections.push(timed("3. speed against accuracy", &mut ctx, &mut |c| Ok(speed::section(c)))?);
     sections.push(timed("4. stability maps", &mut ctx, &mut |c| Ok(stability::section(c)))?);
     sections.push(timed("5. load-size curves", &mut ctx, &mut |c| Ok(sweeps::section(c, &scenes)))?);
+    sections.push(timed("6. paper vs periodic", &mut ctx, &mut |c| Ok(conventions::section(c, &scenes)))?);
     ctx.progress.finish_and_clear();
 
     let mut md = String::new();
@@ -175,14 +179,14 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
         if i == 1 {
             let _ = writeln!(
                 md,
-                "Scenes: {}. Timings of this run and the machine: `timings.md` (section 6; kept out of this \
+                "Scenes: {}. Timings of this run and the machine: `timings.md` (section 7; kept out of this \
                  text, which is deterministic).\n",
                 names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
             );
         }
         md.push_str(&s.markdown);
     }
-    let _ = writeln!(md, "## 6. Timings\n\nSee `timings.md`: measured in the run that wrote this report.");
+    let _ = writeln!(md, "## 7. Timings\n\nSee `timings.md`: measured in the run that wrote this report.");
     let write = |files: &mut Vec<PathBuf>, name: &str, text: &str| -> Result<(), ReportError> {
         let p = opts.out.join(name);
         std::fs::write(&p, text).map_err(io(&p))?;

@@ -107,20 +107,43 @@ pub fn given_size(p: &SceneProblem) -> bool {
     }
 }
 
-/// Exact expansions, derived once per shape at the largest order used (derivation time is not
-/// part of a run's time: it is a one-off, like the coefficient tables).
-#[derive(Default)]
+/// Exact expansions, derived once per (shape, convention) and kept at the largest order asked so
+/// far (derivation time is not part of a run's time: it is a one-off, like the coefficient
+/// tables). The parabola's are derived at once through [`MAX_SERIES_ORDER`] (under a second);
+/// the sinusoid's only through the order asked, since their cost grows steeply with the order
+/// (release build: `paper` about 3 s at order 12 and 24 s at 16, `periodic` about 2.5 s at order 8
+/// and 100 s at 12; measured by `cargo run --release --example expansion_timing`).
+#[derive(Default, Clone)]
 pub struct ExpansionCache {
-    map: HashMap<(bool, bool, usize), SlidingExpansion>,
+    map: HashMap<(bool, bool), SlidingExpansion>,
+    orders: HashMap<(bool, bool), usize>,
 }
 
 impl ExpansionCache {
-    fn get(&mut self, shape: SlidingShape, convention: Convention, order: usize) -> Result<&SlidingExpansion, String> {
-        let key = (shape == SlidingShape::Parabolic, convention == Convention::PeriodicSurface, order);
-        match self.map.entry(key) {
-            std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
-            std::collections::hash_map::Entry::Vacant(v) => {
-                Ok(v.insert(sliding_expansion_with(shape, order, convention).map_err(|e| e.to_string())?))
+    /// The expansion of `shape` in `convention` through at least Lambda^order.
+    pub fn get(
+        &mut self,
+        shape: SlidingShape,
+        convention: Convention,
+        order: usize,
+    ) -> Result<&SlidingExpansion, String> {
+        let key = (shape == SlidingShape::Parabolic, convention == Convention::PeriodicSurface);
+        if self.orders.get(&key).is_none_or(|&have| have < order) {
+            let at = if key.0 { MAX_SERIES_ORDER.max(order) } else { order };
+            let e = sliding_expansion_with(shape, at, convention).map_err(|e| e.to_string())?;
+            self.map.insert(key, e);
+            self.orders.insert(key, at);
+        }
+        self.map.get(&key).ok_or_else(|| "expansion cache: missing entry".to_string())
+    }
+
+    /// Keeps, per (shape, convention), the higher-order expansion of `self` and `other`.
+    pub fn merge(&mut self, other: ExpansionCache) {
+        for (key, e) in other.map {
+            let theirs = other.orders.get(&key).copied().unwrap_or(0);
+            if self.orders.get(&key).is_none_or(|&have| have < theirs) {
+                self.map.insert(key, e);
+                self.orders.insert(key, theirs);
             }
         }
     }
@@ -133,18 +156,18 @@ fn f(x: f64) -> Float {
     Float::with_val(COMPARE_BITS, x)
 }
 
-/// Runs `knob` on `problem`. Errors are the method's own (no solution, no convergence, not
-/// Working precision of the series evaluations of the report: 128 bits (38 digits), beyond the
-/// accuracy of every truncated series the report shows (at most ~30 digits at its smallest
 /// A method's failure as the report states it: through the project's error type, so that its kind
 /// prefix ("no solution:", "not physical:", ...) is said once and its numbers are readable.
 fn why(e: impl Into<crate::error::Error>) -> String {
     e.into().to_string()
 }
 
+/// Working precision of the series evaluations of the report: 128 bits (38 digits), beyond the
+/// accuracy of every truncated series the report shows (at most ~30 digits at its smallest
 /// contacts), so that rounding never shows in their measured errors.
 pub const SERIES_BITS: u32 = 128;
 
+/// Runs `knob` on `problem`. Errors are the method's own (no solution, no convergence, not
 /// applicable), as text for the report.
 pub fn run(problem: &SceneProblem, knob: Knob, cache: &mut ExpansionCache) -> Result<Outcome, String> {
     match problem {
@@ -163,7 +186,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
     match knob {
         Knob::Series(n) => {
             let shape = crate::sliding::series::expansion_shape(p).map_err(|e| e.to_string())?;
-            let e = cache.get(shape, p.convention(), MAX_SERIES_ORDER.max(n))?;
+            let e = cache.get(shape, p.convention(), n)?;
             let prec = SERIES_BITS;
             let start = Instant::now();
             let sp = series_point(p, prec).map_err(|e| e.to_string())?;

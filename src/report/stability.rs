@@ -1,15 +1,17 @@
 //! Report section 4: stability maps from actual runs. Problem 1: lambda vs theta for the
-//! parabola and the sinusoid (up to high load); Problem 2: lambda vs nu. Each cell runs every
-//! method; its digits are judged against the verified MPFR run of the same cell (whose own
-//! digits are its verified ones). A cell is "failed" when the method returned an error (no
-//! solution, no convergence, contact outside (-L/2, L/2), load above the sinusoid's maximum,
-//! ill-conditioning).
+//! parabola and the sinusoid (up to high load), on the same grid in both surface conventions
+//! `paper` and `periodic` (THEORY.md section 8), side by side; Problem 2: lambda vs nu (the same
+//! in both conventions). Each cell runs every method; its digits are judged against the verified
+//! MPFR run of the same cell (whose own digits are its verified ones). A cell is "failed" when the
+//! method returned an error (no solution, no convergence, not physical, contact outside
+//! (-L/2, L/2), load above the sinusoid's maximum, ill-conditioning): the error is listed as the
+//! method stated it.
 
 use super::calibration::rational;
 use super::chart::{Chart, Curve, Draw, Legend};
-use super::runner::{self, Knob, Outcome};
+use super::runner::{self, ExpansionCache, Knob, Outcome};
 use super::section::{fmt_digits, Ctx, Profile, Section};
-use crate::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape, SlidingProblem};
+use crate::model::{AdhesionProblem, AdhesionSize, Convention, Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::scene::SceneProblem;
 use exact_series::Q;
 use std::fmt::Write as _;
@@ -34,8 +36,9 @@ fn q(n: i64, d: i64) -> Exact {
 }
 
 /// Problem 1 at nu = 0.3, E* = 1, L = 1 with theta set by wear (theta > 0: cW = 2 tan(pi theta))
-/// or friction (theta < 0: mu = tan(pi |theta|)/beta), kappa = E* cW/2 - beta mu [2.8].
-fn sliding_at(shape: PunchShape, theta: f64, p2: f64) -> Option<SlidingProblem> {
+/// or friction (theta < 0: mu = tan(pi |theta|)/beta), kappa = E* cW/2 - beta mu [2.8], in the
+/// surface convention `convention`.
+fn sliding_at(shape: PunchShape, theta: f64, p2: f64, convention: Convention) -> Option<SlidingProblem> {
     let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).ok()?;
     let beta = crate::numerics::exact::to_f64(&material.beta())?;
     let t = (std::f64::consts::PI * theta.abs()).tan();
@@ -47,6 +50,7 @@ fn sliding_at(shape: PunchShape, theta: f64, p2: f64) -> Option<SlidingProblem> 
         .friction(mu)
         .wear(cw)
         .normal_load(Q::new(((p2 * 1e12).round() as i64).into(), 1_000_000_000_000i64.into()))
+        .convention(convention)
         .build()
         .ok()
 }
@@ -59,15 +63,15 @@ struct Cell {
     why: Vec<Option<String>>,
 }
 
-fn run_cell(ctx: &mut Ctx, problem: &SceneProblem, knobs: &[Knob], x: f64, lambda_target: f64) -> Cell {
+fn run_cell(cache: &mut ExpansionCache, problem: &SceneProblem, knobs: &[Knob], x: f64, lambda_target: f64) -> Cell {
     let reference_knob = knobs[knobs.len() - 1];
-    let reference: Result<Outcome, String> = runner::run(problem, reference_knob, &mut ctx.cache);
+    let reference: Result<Outcome, String> = runner::run(problem, reference_knob, cache);
     let given = runner::given_size(problem);
     let mut digits = Vec::new();
     let mut why = Vec::new();
     let ref_ok = reference.as_ref().ok().filter(|r| r.verified_digits.unwrap_or(0.0) >= 2.0);
     for &k in &knobs[..knobs.len() - 1] {
-        match runner::run(problem, k, &mut ctx.cache) {
+        match runner::run(problem, k, cache) {
             Ok(o) => {
                 digits.push(Ok(ref_ok.map(|r| runner::digits_of(runner::error(&o, r, given), 16.0))));
                 why.push(None);
@@ -92,6 +96,69 @@ fn run_cell(ctx: &mut Ctx, problem: &SceneProblem, knobs: &[Knob], x: f64, lambd
     Cell { x, lambda, digits, why }
 }
 
+fn cell_text(d: &Result<Option<f64>, ()>) -> String {
+    match d {
+        Ok(Some(x)) => fmt_digits(Some(*x)),
+        Ok(None) => "unjudged".into(),
+        Err(()) => "fail".into(),
+    }
+}
+
+/// The failures of `cells`, one line each, as the methods reported them; `prefix` names the
+/// convention (empty for Problem 2).
+fn failures(prefix: &str, x_name: &str, knobs: &[Knob], cells: &[Cell]) -> Vec<String> {
+    let mut out = Vec::new();
+    for c in cells {
+        for (i, w) in c.why.iter().enumerate() {
+            if let Some(w) = w {
+                out.push(format!(
+                    "{prefix}{} at {x_name} = {:.3}, lambda ~ {:.3}: {w}",
+                    knobs[i].label(),
+                    c.x,
+                    c.lambda
+                ));
+            }
+        }
+    }
+    out
+}
+
+fn write_failures(s: &mut Section, lines: &[String]) {
+    if !lines.is_empty() {
+        let _ = writeln!(s.markdown, "Failures, as the methods reported them:\n");
+        for f in lines {
+            let _ = writeln!(s.markdown, "- {f}");
+        }
+        s.markdown.push('\n');
+    }
+}
+
+/// One map per method: the cells binned by digits (legend: the bins).
+fn map_chart(stem: &str, title: &str, x_name: &str, knob: &Knob, i: usize, cells: &[Cell]) -> Chart {
+    let curves = BINS
+        .iter()
+        .enumerate()
+        .map(|(b, name)| Curve {
+            name: name.to_string(),
+            points: cells.iter().filter(|c| bin(c.digits[i]) == b).map(|c| (c.x, c.lambda)).collect(),
+            draw: Draw::Markers,
+            colour: Some(BIN_COLOURS[b]),
+        })
+        .filter(|c| !c.points.is_empty())
+        .collect();
+    Chart {
+        stem: stem.to_string(),
+        title: format!("{title}: {}", knob.label()),
+        x_label: format!("{x_name} [-]"),
+        // Problem 2 maps have nu on the x axis; their contact size is the half-width a.
+        y_label: if x_name == "nu" { "lambda = pi a/L [-]".into() } else { "lambda = pi l/L [-]".into() },
+        x_log: false,
+        y_log: false,
+        curves,
+        legend: Legend::Above,
+    }
+}
+
 fn map_section(s: &mut Section, stem: &str, title: &str, x_name: &str, knobs: &[Knob], cells: &[Cell]) {
     let _ = writeln!(s.markdown, "### {title}\n");
     let mut head = format!("| {x_name} | lambda |");
@@ -101,119 +168,135 @@ fn map_section(s: &mut Section, stem: &str, title: &str, x_name: &str, knobs: &[
         rule.push_str("---:|");
     }
     let _ = writeln!(s.markdown, "{head}\n{rule}");
-    let mut failures = Vec::new();
     for c in cells {
         let mut row = format!("| {:.3} | {:.4} |", c.x, c.lambda);
-        for (i, d) in c.digits.iter().enumerate() {
-            let cell = match d {
-                Ok(Some(x)) => fmt_digits(Some(*x)),
-                Ok(None) => "unjudged".into(),
-                Err(()) => "fail".into(),
-            };
-            row.push_str(&format!(" {cell} |"));
-            if let Some(w) = &c.why[i] {
-                failures.push(format!(
-                    "{} at {x_name} = {:.3}, lambda ~ {:.3}: {}",
-                    knobs[i].label(),
-                    c.x,
-                    c.lambda,
-                    w
-                ));
+        for d in &c.digits {
+            row.push_str(&format!(" {} |", cell_text(d)));
+        }
+        let _ = writeln!(s.markdown, "{row}");
+    }
+    s.markdown.push('\n');
+    write_failures(s, &failures("", x_name, knobs, cells));
+    for (i, k) in knobs.iter().enumerate() {
+        let stem_i = format!("{stem}_{}", k.method());
+        let _ = writeln!(s.markdown, "![{title}: {}]({stem_i}.svg) (data: `{stem_i}.csv`)\n", k.label());
+        s.charts.push(map_chart(&stem_i, title, x_name, k, i, cells));
+    }
+}
+
+/// One Problem 1 map in one convention: its knobs and cells.
+struct ConventionMap {
+    convention: Convention,
+    knobs: Vec<Knob>,
+    cells: Vec<Cell>,
+}
+
+/// Problem 1 maps of one shape on one grid in both conventions, side by side: one table (each
+/// convention's computed lambda and digits per method), the failures of each convention, and per
+/// method the `paper` and `periodic` maps beside each other.
+fn map_section_conventions(s: &mut Section, stem: &str, title: &str, maps: &[ConventionMap]) {
+    let _ = writeln!(s.markdown, "### {title}\n");
+    let mut head = "| theta |".to_string();
+    let mut rule = "|---:|".to_string();
+    for m in maps {
+        head.push_str(&format!(" `{}`: lambda |", m.convention.name()));
+        rule.push_str("---:|");
+        for k in &m.knobs {
+            head.push_str(&format!(" {} |", k.label()));
+            rule.push_str("---:|");
+        }
+    }
+    let _ = writeln!(s.markdown, "{head}\n{rule}");
+    let rows = maps.iter().map(|m| m.cells.len()).min().unwrap_or(0);
+    for r in 0..rows {
+        let mut row = format!("| {:.3} |", maps[0].cells[r].x);
+        for m in maps {
+            let c = &m.cells[r];
+            row.push_str(&format!(" {:.4} |", c.lambda));
+            for d in &c.digits {
+                row.push_str(&format!(" {} |", cell_text(d)));
             }
         }
         let _ = writeln!(s.markdown, "{row}");
     }
     s.markdown.push('\n');
-    if !failures.is_empty() {
-        let _ = writeln!(s.markdown, "Failures, as the methods reported them:\n");
-        for f in failures {
-            let _ = writeln!(s.markdown, "- {f}");
-        }
-        s.markdown.push('\n');
+    let lines: Vec<String> = maps
+        .iter()
+        .flat_map(|m| failures(&format!("`{}`, ", m.convention.name()), "theta", &m.knobs, &m.cells))
+        .collect();
+    write_failures(s, &lines);
+    let mut head = "| method |".to_string();
+    let mut rule = "|---|".to_string();
+    for m in maps {
+        head.push_str(&format!(" `{}` |", m.convention.name()));
+        rule.push_str("---|");
     }
-    for (i, k) in knobs.iter().enumerate() {
-        let stem_i = format!("{stem}_{}", k.method());
-        let curves = BINS
-            .iter()
-            .enumerate()
-            .map(|(b, name)| Curve {
-                name: name.to_string(),
-                points: cells.iter().filter(|c| bin(c.digits[i]) == b).map(|c| (c.x, c.lambda)).collect(),
-                draw: Draw::Markers,
-                colour: Some(BIN_COLOURS[b]),
-            })
-            .filter(|c| !c.points.is_empty())
-            .collect();
-        let _ = writeln!(s.markdown, "![{title}: {}]({stem_i}.svg) (data: `{stem_i}.csv`)\n", k.label());
-        s.charts.push(Chart {
-            stem: stem_i,
-            title: format!("{title}: {}", k.label()),
-            x_label: format!("{x_name} [-]"),
-            // Problem 2 maps have nu on the x axis; their contact size is the half-width a.
-            y_label: if x_name == "nu" { "lambda = pi a/L [-]".into() } else { "lambda = pi l/L [-]".into() },
-            x_log: false,
-            y_log: false,
-            curves,
-            legend: Legend::Above,
-        });
+    let _ = writeln!(s.markdown, "{head}\n{rule}");
+    let methods = maps.iter().map(|m| m.knobs.len()).min().unwrap_or(0);
+    let mut data = Vec::new();
+    for i in 0..methods {
+        let mut row = format!("| {} |", maps[0].knobs[i].method());
+        for m in maps {
+            let k = &m.knobs[i];
+            let stem_i = format!("{stem}_{}_{}", m.convention.name(), k.method());
+            let t = format!("{title}, {}", m.convention.name());
+            row.push_str(&format!(" ![{t}: {}]({stem_i}.svg) |", k.label()));
+            data.push(format!("`{stem_i}.csv`"));
+            s.charts.push(map_chart(&stem_i, &t, "theta", k, i, &m.cells));
+        }
+        let _ = writeln!(s.markdown, "{row}");
+    }
+    let _ = writeln!(s.markdown, "\nData: {}.\n", data.join(", "));
+}
+
+/// Series order of the Problem 1 maps: 12, except the `periodic` sinusoid's 8 (its exact
+/// derivation takes about 2.5 s through Lambda^8 and 100 s through Lambda^12, release build,
+/// `cargo run --release --example expansion_timing`).
+fn series_order(shape: &PunchShape, convention: Convention) -> usize {
+    match (shape, convention) {
+        (PunchShape::Sinusoidal { .. }, Convention::PeriodicSurface) => 8,
+        _ => 12,
     }
 }
 
-/// Builds section 4.
-pub fn section(ctx: &mut Ctx) -> Section {
-    let full = ctx.profile == Profile::Full;
-    let mut s = Section::default();
+/// One Problem 1 map: the grid (`thetas` x `lambdas`, load of each lambda from `load`) of
+/// `shape` in `convention`, with its own expansion cache; returns the map, the cache and the wall
+/// time.
+fn p1_map(
+    progress: &indicatif::ProgressBar,
+    mut cache: ExpansionCache,
+    shape: &PunchShape,
+    name: &str,
+    convention: Convention,
+    grid: (&[f64], &[f64]),
+    load: &(dyn Fn(f64) -> f64 + Sync),
+) -> (ConventionMap, ExpansionCache, f64) {
+    let t0 = std::time::Instant::now();
+    let knobs = vec![Knob::Series(series_order(shape, convention)), Knob::F64(None), Knob::MpfrVerified(30)];
+    let mut cells = Vec::new();
+    for &lam in grid.1 {
+        for &th in grid.0 {
+            progress.set_message(format!("stability, {name}, {}: theta = {th}, lambda = {lam}", convention.name()));
+            if let Some(p) = sliding_at(shape.clone(), th, load(lam), convention) {
+                cells.push(run_cell(&mut cache, &SceneProblem::Sliding(p), &knobs, th, lam));
+            }
+        }
+    }
+    (ConventionMap { convention, knobs, cells }, cache, t0.elapsed().as_secs_f64())
+}
+
+fn timing_line(s: &mut Section, name: &str, map: &ConventionMap, seconds: f64, note: &str) {
     let _ = writeln!(
-        s.markdown,
-        "## 4. Stability maps\n\n\
-         Every cell is an actual run of every method. Digits of the series and of f64 are judged against the \
-         verified MPFR run of the same cell (capped at 16); the MPFR column shows its own verified digits \
-         (two runs). \"fail\": the method returned an error (listed below each table); \"unjudged\": the \
-         reference failed. Problem 1 cells: nu = 0.3, E* = 1, L = 1, theta set by wear (theta > 0) or Coulomb \
-         friction (theta < 0), the load from Kuznetsov's (parabola) or Westergaard's (sinusoid) law at the grid \
-         lambda; the lambda shown is the computed one.\n"
+        s.timings,
+        "| stability map, {name}, `{}` ({} cells{note}) | {seconds:.2} |",
+        map.convention.name(),
+        map.cells.len()
     );
-    let sliding_knobs = [Knob::Series(12), Knob::F64(None), Knob::MpfrVerified(30)];
-    let (thetas, lambdas): (Vec<f64>, Vec<f64>) = if full {
-        (vec![-0.4, -0.2, 0.0, 0.2, 0.4], vec![0.1, 0.4, 0.7, 1.0, 1.3, 1.5])
-    } else {
-        (vec![-0.2, 0.2], vec![0.3])
-    };
-    let mut cells = Vec::new();
-    for &lam in &lambdas {
-        for &th in &thetas {
-            ctx.step(format!("stability, parabola: theta = {th}, lambda = {lam}"));
-            // Kuznetsov [2.15] with E* = k = L = 1: P2 = ln sec(lambda)/pi.
-            let p2 = (1.0 / lam.cos()).ln() / std::f64::consts::PI;
-            if let Some(p) = sliding_at(PunchShape::Parabolic { k: q(1, 1) }, th, p2) {
-                cells.push(run_cell(ctx, &SceneProblem::Sliding(p), &sliding_knobs, th, lam));
-            }
-        }
-    }
-    map_section(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", "theta", &sliding_knobs, &cells);
-    let (thetas, lambdas): (Vec<f64>, Vec<f64>) =
-        if full { (vec![-0.2, 0.0, 0.2], vec![0.3, 0.7, 1.1, 1.4]) } else { (vec![0.2], vec![1.1]) };
-    let mut cells = Vec::new();
-    for &lam in &lambdas {
-        for &th in &thetas {
-            ctx.step(format!("stability, sinusoid: theta = {th}, lambda = {lam}"));
-            // Westergaard [2.17] with E* = L = 1, D = 1/100: P2 = pi D sin^2(lambda).
-            let p2 = std::f64::consts::PI * 0.01 * lam.sin().powi(2);
-            if let Some(p) = sliding_at(PunchShape::Sinusoidal { amplitude: q(1, 100) }, th, p2) {
-                cells.push(run_cell(ctx, &SceneProblem::Sliding(p), &sliding_knobs, th, lam));
-            }
-        }
-    }
-    map_section(
-        &mut s,
-        "stability_p1_sinusoid",
-        "Problem 1, sinusoid (D = 1/100), up to high load",
-        "theta",
-        &sliding_knobs,
-        &cells,
-    );
-    let adhesion_knobs = [Knob::F64(None), Knob::MpfrVerified(20)];
-    let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if full {
+}
+
+/// The Problem 2 map: lambda vs nu.
+fn p2_cells(ctx: &mut Ctx, knobs: &[Knob]) -> Vec<Cell> {
+    let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if ctx.profile == Profile::Full {
         (vec![(0, 1), (3, 20), (3, 10), (9, 20), (1, 2)], vec![0.2, 0.5, 0.8, 1.1, 1.4])
     } else {
         (vec![(3, 10)], vec![0.4])
@@ -232,10 +315,88 @@ pub fn section(ctx: &mut Ctx) -> Section {
             ) else {
                 continue;
             };
-            cells.push(run_cell(ctx, &SceneProblem::Adhesion(p), &adhesion_knobs, nu, lam));
+            cells.push(run_cell(&mut ctx.cache, &SceneProblem::Adhesion(p), knobs, nu, lam));
         }
     }
+    cells
+}
+
+/// Builds section 4. The `periodic` parabola map is the costliest (its contacts stay physical up
+/// to lambda ~ 1.52, where the verified MPFR runs need hundreds of nodes): it runs on a second
+/// thread (with its own copy of the expansion cache, merged back) while this thread runs the
+/// other maps, so that on two cores the section takes about the longer of the two; the results
+/// do not depend on the threads.
+pub fn section(ctx: &mut Ctx) -> Section {
+    let full = ctx.profile == Profile::Full;
+    let mut s = Section::default();
+    let _ = writeln!(
+        s.markdown,
+        "## 4. Stability maps\n\n\
+         Every cell is an actual run of every method. Digits of the series and of f64 are judged against the \
+         verified MPFR run of the same cell (capped at 16); the MPFR column shows its own verified digits \
+         (two runs). \"fail\": the method returned an error (listed below each table); \"unjudged\": the \
+         reference failed. Problem 1 cells: nu = 0.3, E* = 1, L = 1, theta set by wear (theta > 0) or Coulomb \
+         friction (theta < 0), the load from Kuznetsov's (parabola) or Westergaard's (sinusoid) law at the grid \
+         lambda; the lambda shown is the computed one. Problem 1 is mapped on the same grid in both surface \
+         conventions (THEORY.md section 8): `paper` (the paper's equations) and `periodic` (the surface closes \
+         over a period); the series of the `periodic` sinusoid is kept through Lambda^8 (its exact derivation \
+         through Lambda^12 would take minutes).\n"
+    );
+    let _ = writeln!(s.timings, "### Stability maps\n\n| map | seconds |\n|---|---:|");
+    let (p_thetas, p_lambdas): (Vec<f64>, Vec<f64>) = if full {
+        (vec![-0.4, -0.2, 0.0, 0.2, 0.4], vec![0.1, 0.4, 0.7, 1.0, 1.3, 1.5])
+    } else {
+        (vec![-0.2, 0.2], vec![0.3])
+    };
+    // Kuznetsov [2.15] with E* = k = L = 1: P2 = ln sec(lambda)/pi.
+    let kuznetsov = |lam: f64| (1.0 / lam.cos()).ln() / std::f64::consts::PI;
+    let parabola = PunchShape::Parabolic { k: q(1, 1) };
+    let (s_thetas, s_lambdas): (Vec<f64>, Vec<f64>) =
+        if full { (vec![-0.2, 0.0, 0.2], vec![0.3, 0.7, 1.1, 1.4]) } else { (vec![0.2], vec![1.1]) };
+    // Westergaard [2.17] with E* = L = 1, D = 1/100: P2 = pi D sin^2(lambda).
+    let westergaard = |lam: f64| std::f64::consts::PI * 0.01 * lam.sin().powi(2);
+    let sinusoid = PunchShape::Sinusoidal { amplitude: q(1, 100) };
+    let adhesion_knobs = [Knob::F64(None), Knob::MpfrVerified(20)];
+    let progress = ctx.progress.clone();
+    let background_cache = ctx.cache.clone();
+    let p_grid = (p_thetas.as_slice(), p_lambdas.as_slice());
+    let s_grid = (s_thetas.as_slice(), s_lambdas.as_slice());
+    let (par_paper, sin_paper, sin_periodic, p2, par_periodic) = std::thread::scope(|sc| {
+        let background = sc.spawn(|| {
+            p1_map(&progress, background_cache, &parabola, "parabola", Convention::PeriodicSurface, p_grid, &kuznetsov)
+        });
+        let mut run = |shape: &PunchShape, name: &str, conv: Convention, grid, load: &(dyn Fn(f64) -> f64 + Sync)| {
+            let (map, cache, secs) = p1_map(&progress, std::mem::take(&mut ctx.cache), shape, name, conv, grid, load);
+            ctx.cache = cache;
+            (map, secs)
+        };
+        let par_paper = run(&parabola, "parabola", Convention::Paper, p_grid, &kuznetsov);
+        let sin_paper = run(&sinusoid, "sinusoid", Convention::Paper, s_grid, &westergaard);
+        let sin_periodic = run(&sinusoid, "sinusoid", Convention::PeriodicSurface, s_grid, &westergaard);
+        let t0 = std::time::Instant::now();
+        let p2 = (p2_cells(ctx, &adhesion_knobs), t0.elapsed().as_secs_f64());
+        // A panic in the background thread is a bug: propagate it.
+        let par_periodic = background.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        (par_paper, sin_paper, sin_periodic, p2, par_periodic)
+    });
+    let (par_periodic_map, background_cache, par_periodic_secs) = par_periodic;
+    ctx.cache.merge(background_cache);
+    timing_line(&mut s, "parabola", &par_paper.0, par_paper.1, "");
+    timing_line(
+        &mut s,
+        "parabola",
+        &par_periodic_map,
+        par_periodic_secs,
+        "; second thread, concurrent with the others",
+    );
+    timing_line(&mut s, "sinusoid", &sin_paper.0, sin_paper.1, "");
+    timing_line(&mut s, "sinusoid", &sin_periodic.0, sin_periodic.1, "");
+    let _ = writeln!(s.timings, "| stability map, Problem 2 ({} cells) | {:.2} |", p2.0.len(), p2.1);
+    let maps = [par_paper.0, par_periodic_map];
+    map_section_conventions(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", &maps);
+    let maps = [sin_paper.0, sin_periodic.0];
+    map_section_conventions(&mut s, "stability_p1_sinusoid", "Problem 1, sinusoid (D = 1/100), up to high load", &maps);
     let _ = writeln!(s.markdown, "Problem 2 exact series: {}\n", super::sweeps::adhesion_series_note());
-    map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &cells);
+    map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &p2.0);
     s
 }
