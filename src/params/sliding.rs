@@ -246,16 +246,39 @@ pub enum ShapeMpfr {
     },
 }
 
-/// The step of a polynomial profile repeated from the cell (-L/2, L/2) at its edge, crossing
-/// x = L/2 to the right: g(-L/2) - g(L/2) = -2 sum_(j odd) c_j (L/2)^j, from the coefficients of
-/// g' (slope[i] = (i + 1) c_(i+1)); 0 for an even profile.
-pub fn cell_edge_jump(slope: &[f64], half_period: f64) -> f64 {
-    -2.0 * slope
-        .iter()
-        .enumerate()
-        .step_by(2)
-        .map(|(i, s)| s / (i + 1) as f64 * half_period.powi(i as i32 + 1))
-        .sum::<f64>()
+/// g of the punch row at x (THEORY.md sections 1, 9): the profile on the cell (-L/2, L/2)
+/// repeated with period L (x reduced to the cell; the sinusoid is periodic by itself), so a
+/// profile with odd terms steps at the cell edges; +infinity where a circle has no punch
+/// (|x| >= R in the cell). For the physicality criterion's gap (a check, in f64).
+pub fn row_height_f64(shape: &ShapeF64, period: Option<f64>, x: f64) -> f64 {
+    let xr = period.map_or(x, |l| x - l * (x / l).round());
+    match shape {
+        ShapeF64::Parabolic { k } => k * xr * xr,
+        ShapeF64::Sinusoidal { d } => {
+            period.map_or(f64::NAN, |l| d * (1.0 - (2.0 * std::f64::consts::PI * x / l).cos()))
+        }
+        // g = sum_i slope_i x^(i+1)/(i+1).
+        ShapeF64::Polynomial { slope, .. } => {
+            slope.iter().enumerate().rev().fold(0.0, |acc, (i, s)| acc * xr + s / (i + 1) as f64) * xr
+        }
+        ShapeF64::Circular { r } if xr.abs() >= *r => f64::INFINITY,
+        ShapeF64::Circular { r } => r - ((r - xr) * (r + xr)).sqrt(),
+    }
+}
+
+impl ShapeMpfr {
+    /// The shape rounded to f64 (for checks evaluated in f64).
+    pub fn to_f64(&self) -> ShapeF64 {
+        let v = |c: &[Float]| c.iter().map(Float::to_f64).collect::<Vec<_>>();
+        match self {
+            ShapeMpfr::Parabolic { k } => ShapeF64::Parabolic { k: k.to_f64() },
+            ShapeMpfr::Sinusoidal { d } => ShapeF64::Sinusoidal { d: d.to_f64() },
+            ShapeMpfr::Polynomial { slope, curvature } => {
+                ShapeF64::Polynomial { slope: v(slope), curvature: v(curvature) }
+            }
+            ShapeMpfr::Circular { r } => ShapeF64::Circular { r: r.to_f64() },
+        }
+    }
 }
 
 /// The exact coefficients of g^(order) for g = sum_j c_j x^j (order 1: g', 2: g''), trailing

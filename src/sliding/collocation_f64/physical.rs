@@ -1,19 +1,18 @@
 //! The f64 method's side of the shared physicality criterion ([`crate::sliding::physicality`]):
-//! p/omega = G(u) from the Nyström interpolant, and the gap slope off the contact from H[p]
-//! (THEORY.md section 2): h' = g' - (2/E*) (H[p] - K) + 2 beta tau0/E* (the last term removes the
-//! adhesive shear's edge step, which the criterion leaves out; K of the `periodic` convention,
-//! `closure.rs`).
+//! p/omega = G(u) from the Nyström interpolant, and the surface slope off the contact from H[p]
+//! (THEORY.md section 2): w = g' - h' = (2/E*) (H[p] - K) - 2 beta tau0/E* (the last term removes
+//! the adhesive shear's edge step, which the criterion leaves out; K of the `periodic` convention,
+//! `closure.rs`); the profile's height from [`row_height_f64`].
 
 use super::closure::k_constant;
 use super::interpolant::{g_at, State};
 use super::operator::Collocation;
 use super::outputs::Outputs;
-use super::profile::slope;
 use super::tangent_map::Map;
 use crate::model::Convention;
 use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior;
 use crate::params::sliding::SlidingParamsF64;
-use crate::params::sliding::{cell_edge_jump, ShapeF64};
+use crate::params::sliding::{row_height_f64, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
@@ -65,10 +64,13 @@ impl ContactFunctions for Functions<'_> {
     fn pressure_factor(&self, u: f64) -> f64 {
         g_at(self.col, self.st, u)
     }
-    fn gap_slope(&self, xi: f64) -> f64 {
+    fn surface_slope(&self, xi: f64) -> f64 {
         let (prm, x) = (self.prm, self.st.c + xi);
-        slope(prm, x) - 2.0 / prm.e_star * (hilbert_outside(self.col, prm, self.st, self.c0, x) - self.k_const)
-            + 2.0 * prm.beta * prm.tau0 / prm.e_star
+        2.0 / prm.e_star * (hilbert_outside(self.col, prm, self.st, self.c0, x) - self.k_const)
+            - 2.0 * prm.beta * prm.tau0 / prm.e_star
+    }
+    fn profile_height(&self, x: f64) -> f64 {
+        row_height_f64(&self.prm.shape, self.prm.period, x)
     }
 }
 
@@ -80,13 +82,7 @@ pub(super) fn setting(prm: &SlidingParamsF64, out: &Outputs) -> Setting {
     let cell = match (&prm.shape, prm.period) {
         (_, None) => Cell::Unbounded,
         (ShapeF64::Sinusoidal { .. }, Some(big_l)) => Cell::Periodic { period: big_l },
-        (shape, Some(big_l)) => Cell::Fixed {
-            half_period: 0.5 * big_l,
-            jump: match shape {
-                ShapeF64::Polynomial { slope, .. } => cell_edge_jump(slope, 0.5 * big_l),
-                _ => 0.0,
-            },
-        },
+        (_, Some(big_l)) => Cell::Fixed { half_period: 0.5 * big_l },
     };
     let closure_formula = match (prm.period, prm.convention) {
         (Some(_), Convention::Paper) => 2.0 * prm.beta * out.p1 / prm.e_star - prm.wear * out.p2,

@@ -41,10 +41,14 @@ use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
 pub trait ContactFunctions {
     /// p(u)/omega(u) at the tangent variable u in [-1, 1] (its sign is the sign of p).
     fn pressure_factor(&self, u: f64) -> f64;
-    /// The gap slope h'(x) at x - c = `xi` off the contact (|xi| > l, up to the middle of the
-    /// free arc), with the surface convention's constant K included and the adhesive shear's
-    /// edge step 2 beta tau0/E* left out (module doc).
-    fn gap_slope(&self, xi: f64) -> f64;
+    /// The slope of the (worn) surface that the gap is measured to, w = g'_row(x) - h'(x), at
+    /// x - c = `xi` off the contact (|xi| > l, up to the middle of the free arc): smooth there
+    /// (it is the elastic response plus constants), with the surface convention's constant K
+    /// included and the adhesive shear's edge step 2 beta tau0/E* left out (module doc).
+    fn surface_slope(&self, xi: f64) -> f64;
+    /// g of the punch row at x (the profile repeated from its cell, steps and all; +infinity
+    /// where there is no punch), e.g. [`crate::params::sliding::row_height_f64`].
+    fn profile_height(&self, x: f64) -> f64;
 }
 
 /// Where the contact must lie.
@@ -54,9 +58,6 @@ pub enum Cell {
     Fixed {
         /// L/2.
         half_period: f64,
-        /// The profile's step at the cell edge, crossing x = L/2 to the right: g(-L/2) - g(L/2)
-        /// (nonzero for odd polynomial terms); the gap jumps by it there.
-        jump: f64,
     },
     /// The profile is periodic by itself: only 2 l < L.
     Periodic {
@@ -102,7 +103,7 @@ impl Setting {
     }
     fn period(&self) -> Option<f64> {
         match self.cell {
-            Cell::Fixed { half_period, .. } => Some(2.0 * half_period),
+            Cell::Fixed { half_period } => Some(2.0 * half_period),
             Cell::Periodic { period } => Some(period),
             Cell::Unbounded => None,
         }
@@ -185,7 +186,7 @@ pub enum Refusal {
         /// Integrated from which end.
         from: End,
     },
-    /// The gap slope is not finite at x (the method's evaluation failed there).
+    /// The gap is NaN or -infinity at x (the method's evaluation failed there).
     NonFinite {
         /// Where (x).
         x: f64,
@@ -227,7 +228,7 @@ impl Refusal {
                 from.name()
             ),
             Refusal::NonFinite { x } => {
-                format!("the gap slope is not finite at x = {} (its evaluation failed)", readable_f64(*x))
+                format!("the gap is not finite at x = {} (its evaluation failed)", readable_f64(*x))
             }
             Refusal::Inconsistent { measured, expected } => format!(
                 "the two halves of the gap differ by {}, expected {} (the gap slope is not accurate enough)",
@@ -249,57 +250,34 @@ pub fn pressure_points() -> Vec<f64> {
     us
 }
 
-/// Panels per side of the gap integration (one more per kink of the profile on that side).
+/// Panels per side of the gap integration.
 const GAP_PANELS: usize = 32;
 
-/// Criterion 3 on one side: samples (x, h) of the gap integrated from the end at x - c = `start`
-/// over `reach` in direction `dir` (+1 leading, -1 trailing). `kinks` are the x where the
-/// profile's slope jumps (the edges of a cell the profile is repeated from), each with the step
-/// of the profile crossing it to the right: a panel that contains one is split there, so each
-/// Gauss–Legendre panel sees a smooth slope, and the gap jumps by the step (to the right) or
-/// minus it (to the left) there. A kink exactly at the end of a leading side counts as crossed
-/// (the two halves then meet on its right).
-fn gap_side(
-    f: &impl ContactFunctions,
-    c: f64,
-    start: f64,
-    reach: f64,
-    dir: f64,
-    kinks: &[(f64, f64)],
-) -> Vec<(f64, f64)> {
+/// Criterion 3 on one side: samples (x, h) of the gap from the end at x - c = `start` over
+/// `reach` in direction `dir` (+1 leading, -1 trailing):
+///     h(x) = g_row(x) - g_row(end) - int_end^x w,
+/// w the surface slope ([`ContactFunctions::surface_slope`], smooth off the contact) integrated
+/// by 6-point Gauss–Legendre on 32 panels graded as x - c = start + dir R s^4 (w ~ d^(1/2 -+
+/// theta) next to the end), the profile's own height taken exactly (so its steps at the cell
+/// edges and a slope singular at the edge of a circle need no quadrature).
+fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64) -> Vec<(f64, f64)> {
     let gl = gauss_jacobi(6, 0.0, 0.0).expect("6-point Gauss-Legendre");
-    // Breakpoints in s (x - c = start + dir R s^4).
-    let mut breaks: Vec<f64> = (0..=GAP_PANELS).map(|j| j as f64 / GAP_PANELS as f64).collect();
-    // (s of the kink, the gap's jump there in the direction of integration).
-    let mut jumps: Vec<(f64, f64)> = Vec::new();
-    for &(xk, step) in kinks {
-        let d = dir * (xk - c - start);
-        if d > 0.0 && (d < reach || (d == reach && dir > 0.0)) {
-            let sk = (d / reach).powf(0.25);
-            breaks.push(sk);
-            jumps.push((sk, dir * step));
-        }
-    }
-    breaks.sort_by(f64::total_cmp);
-    let mut h = 0.0;
-    let mut out = Vec::with_capacity(breaks.len());
-    for w2 in breaks.windows(2) {
-        let (s0, s1) = (w2[0], w2[1]);
-        if s1 <= s0 {
-            continue;
-        }
+    let g_end = f.profile_height(c + start);
+    let mut w_int = 0.0;
+    let mut out = Vec::with_capacity(GAP_PANELS);
+    for j in 0..GAP_PANELS {
+        let (s0, s1) = (j as f64 / GAP_PANELS as f64, (j + 1) as f64 / GAP_PANELS as f64);
         let mut inc = 0.0;
         for (z, w) in gl.nodes.iter().zip(&gl.weights) {
             let s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * z;
             // x - c = start + dir R s^4, dx/ds = 4 R s^3 (times dir).
             let xi = start + dir * reach * s.powi(4);
-            inc += w * f.gap_slope(xi) * 4.0 * reach * s.powi(3);
+            inc += w * f.surface_slope(xi) * 4.0 * reach * s.powi(3);
         }
-        // h(x) = int_end^x h': d h = h' dx = dir h' |dx|.
-        h += dir * inc * 0.5 * (s1 - s0);
-        // The profile's step at a kink that ends this panel: the value just past it.
-        h += jumps.iter().filter(|(sk, _)| *sk == s1).map(|(_, j)| j).sum::<f64>();
-        out.push((c + start + dir * reach * s1.powi(4), h));
+        // int_end^x w = dir int |dx| w.
+        w_int += dir * inc * 0.5 * (s1 - s0);
+        let x = c + start + dir * reach * s1.powi(4);
+        out.push((x, f.profile_height(x) - g_end - w_int));
     }
     out
 }
@@ -310,7 +288,7 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
     let (l, c) = (setting.l(), setting.c());
     // 1. The cell.
     match setting.cell {
-        Cell::Fixed { half_period, .. } if setting.a >= half_period || setting.b >= half_period => {
+        Cell::Fixed { half_period } if setting.a >= half_period || setting.b >= half_period => {
             return Err(Refusal::OutsideCell { neg_a: -setting.a, b: setting.b, half_period });
         }
         Cell::Periodic { period } if 2.0 * l >= period => {
@@ -330,22 +308,23 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
         Some(big_l) => 0.5 * big_l - l,
         None => 4.0 * l,
     };
-    let kinks: Vec<(f64, f64)> = match setting.cell {
-        Cell::Fixed { half_period, jump } => vec![(-half_period, jump), (half_period, jump)],
-        _ => vec![],
-    };
-    let kinks = kinks.as_slice();
     // Where the profile ends (a narrow circle), the gap stops: no punch beyond.
     let (reach_lead, reach_trail) = match setting.extent {
         Some(r) => (reach.min(r - setting.b), reach.min(r - setting.a)),
         None => (reach, reach),
     };
-    let lead = gap_side(f, c, l, reach_lead, 1.0, kinks);
-    let trail = gap_side(f, c, -l, reach_trail, -1.0, kinks);
-    if let Some(&(x, _)) = lead.iter().chain(&trail).find(|v| !v.1.is_finite()) {
+    let lead = gap_side(f, c, l, reach_lead, 1.0);
+    let trail = gap_side(f, c, -l, reach_trail, -1.0);
+    // +infinity is a gap where no punch is (beyond a circle's wall); NaN a failed evaluation.
+    if let Some(&(x, _)) = lead.iter().chain(&trail).find(|v| v.1.is_nan() || v.1 == f64::NEG_INFINITY) {
         return Err(Refusal::NonFinite { x });
     }
-    let hmax = lead.iter().chain(&trail).fold(0.0f64, |m, v| m.max(v.1.abs())).max(f64::MIN_POSITIVE);
+    let hmax = lead
+        .iter()
+        .chain(&trail)
+        .filter(|v| v.1.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.1.abs()))
+        .max(f64::MIN_POSITIVE);
     // The closure: with the criterion's slope (step left out) the halves differ by
     // M + edge_step (L - 2 l) (the step integrates to edge_step over the arc's length).
     let spans = reach_lead == reach && reach_trail == reach;

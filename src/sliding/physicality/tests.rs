@@ -2,7 +2,8 @@ use super::admissible::{admissible, SizeContacts};
 use super::*;
 
 /// Hertz (single punch, theta = 0, g = k x^2, E* = 1): p = 2 k sqrt(a^2 - x^2), so p/omega = 2 k a
-/// (omega = sqrt(1 - u^2), x = a u); off the contact h' = 2 k sqrt(x^2 - a^2) sign(x), h = k (|x|
+/// (omega = sqrt(1 - u^2), x = a u); off the contact h' = 2 k sqrt(x^2 - a^2) sign(x), so the
+/// surface slope is w = g' - h' = 2 k (x - sqrt(x^2 - a^2) sign(x)), and h = k (|x|
 /// sqrt(x^2 - a^2) - a^2 acosh(|x|/a)) in closed form.
 struct Hertz {
     k: f64,
@@ -17,8 +18,11 @@ impl ContactFunctions for Hertz {
     fn pressure_factor(&self, u: f64) -> f64 {
         2.0 * self.k * self.a + if u > 0.99 { self.dent } else { 0.0 }
     }
-    fn gap_slope(&self, xi: f64) -> f64 {
-        2.0 * self.k * (xi * xi - self.a * self.a).max(0.0).sqrt() * xi.signum() + self.tilt
+    fn surface_slope(&self, xi: f64) -> f64 {
+        2.0 * self.k * xi - (2.0 * self.k * (xi * xi - self.a * self.a).max(0.0).sqrt() * xi.signum() + self.tilt)
+    }
+    fn profile_height(&self, x: f64) -> f64 {
+        self.k * x * x
     }
 }
 
@@ -45,12 +49,12 @@ fn hertz_is_admissible_and_its_gap_matches_the_closed_form() {
     assert_eq!(r.closure_defect, None);
     assert!(r.warning.is_none());
     // The integrated gap at 4 l beyond the leading end against the closed form.
-    let side = gap_side(&f, 0.0, a, 4.0 * a, 1.0, &[]);
+    let side = gap_side(&f, 0.0, a, 4.0 * a, 1.0);
     let (x, h) = *side.last().unwrap();
     let exact = k * (x * (x * x - a * a).sqrt() - a * a * (x / a).acosh());
     assert!((h - exact).abs() < 1e-10 * exact, "{h} vs {exact}");
     // By symmetry the trailing side ends at the same height.
-    let back = gap_side(&f, 0.0, -a, 4.0 * a, -1.0, &[]);
+    let back = gap_side(&f, 0.0, -a, 4.0 * a, -1.0);
     assert!((back.last().unwrap().1 - h).abs() < 1e-12 * h);
 }
 
@@ -101,10 +105,13 @@ fn the_edge_step_is_left_out_and_the_closure_accounts_for_it() {
         fn pressure_factor(&self, _: f64) -> f64 {
             1.0
         }
-        // Odd in xi: the two halves of the full gap (slope - step) then differ by exactly
-        // 2 step reach, which the closure check removes.
-        fn gap_slope(&self, xi: f64) -> f64 {
-            (xi * xi - 0.01f64).max(0.0).sqrt() * xi.signum()
+        // A flat profile and a gap slope odd in xi: the two halves of the full gap (slope -
+        // step) then differ by exactly 2 step reach, which the closure check removes.
+        fn surface_slope(&self, xi: f64) -> f64 {
+            -(xi * xi - 0.01f64).max(0.0).sqrt() * xi.signum()
+        }
+        fn profile_height(&self, _: f64) -> f64 {
+            0.0
         }
     }
     let s = Setting {
@@ -135,7 +142,7 @@ fn the_edge_step_is_left_out_and_the_closure_accounts_for_it() {
 #[test]
 fn a_contact_outside_its_cell_is_refused() {
     let f = Hertz { k: 1.0, a: 0.3, tilt: 0.0, dent: 0.0 };
-    let s = Setting { cell: Cell::Fixed { half_period: 0.5, jump: 0.0 }, a: 0.2, b: 0.55, ..single(0.3) };
+    let s = Setting { cell: Cell::Fixed { half_period: 0.5 }, a: 0.2, b: 0.55, ..single(0.3) };
     assert!(matches!(assess(&f, &s), Err(Refusal::OutsideCell { .. })));
     assert!(Refusal::OutsideCell { neg_a: -0.2, b: 0.55, half_period: 0.5 }.why().contains("leaves the cell"));
 }
@@ -162,35 +169,35 @@ fn admissible_runs_find_the_ends_and_an_interior_maximum() {
 
 #[test]
 fn a_step_of_the_profile_at_the_cell_edge_enters_the_gap() {
-    // An odd slope (halves of equal height) on a cell whose profile steps up by 0.1 crossing
-    // x = L/2 to the right: with c = 0 the kink is the middle of the free arc, counted on the
-    // leading side, so the halves differ by exactly the step.
-    struct Odd;
-    impl ContactFunctions for Odd {
+    // The profile g = x/5 on the cell (-1/2, 1/2), repeated: it steps by g(-1/2) - g(1/2) = -1/5
+    // crossing x = 1/2 to the right. With a gap slope odd about the centre c = 0.05 (so x = 1/2 is
+    // inside the leading half) the halves differ by exactly that step.
+    struct Ramp;
+    impl ContactFunctions for Ramp {
         fn pressure_factor(&self, _: f64) -> f64 {
             1.0
         }
-        fn gap_slope(&self, xi: f64) -> f64 {
-            (xi * xi - 0.01f64).max(0.0).sqrt() * xi.signum()
+        fn surface_slope(&self, xi: f64) -> f64 {
+            0.2 - (xi * xi - 0.01f64).max(0.0).sqrt() * xi.signum()
+        }
+        fn profile_height(&self, x: f64) -> f64 {
+            0.2 * (x - x.round())
         }
     }
     let s = Setting {
         convention: Convention::Paper,
-        cell: Cell::Fixed { half_period: 0.5, jump: 0.1 },
-        a: 0.1,
-        b: 0.1,
+        cell: Cell::Fixed { half_period: 0.5 },
+        a: 0.05,
+        b: 0.15,
         edge_step: 0.0,
-        closure_formula: 0.1,
+        closure_formula: -0.2,
         pressure_tol: 1e-9,
         extent: None,
         closure_tol: CLOSURE_TOL,
     };
-    let r = assess(&Odd, &s).expect("the step is the closure defect");
-    assert!((r.closure_defect.unwrap() - 0.1).abs() < 1e-12, "{:?}", r.closure_defect);
-    // Off centre (c = 0.05) the kink lies inside the leading half: the same defect.
-    let r = assess(&Odd, &Setting { a: 0.05, b: 0.15, ..s }).expect("off centre");
-    assert!((r.closure_defect.unwrap() - 0.1).abs() < 1e-9, "{:?}", r.closure_defect);
-    // In `periodic` the same slope cannot close: a numerical failure, not physics.
-    let e = assess(&Odd, &Setting { convention: Convention::PeriodicSurface, ..s }).unwrap_err();
+    let r = assess(&Ramp, &s).expect("the step is the closure defect");
+    assert!((r.closure_defect.unwrap() + 0.2).abs() < 1e-9, "{:?}", r.closure_defect);
+    // In `periodic` the same surface cannot close: a numerical failure, not physics.
+    let e = assess(&Ramp, &Setting { convention: Convention::PeriodicSurface, ..s }).unwrap_err();
     assert!(!e.is_physical(), "{e:?}");
 }

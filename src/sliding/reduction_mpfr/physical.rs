@@ -15,8 +15,9 @@
 
 use super::contact::Contact;
 use super::pressure::Pressure;
+use super::profile::row_slope;
 use crate::model::Convention;
-use crate::params::sliding::{cell_edge_jump, ShapeMpfr, SlidingParamsMpfr};
+use crate::params::sliding::{row_height_f64, ShapeF64, ShapeMpfr, SlidingParamsMpfr};
 use crate::sliding::physicality::{
     assess, pressure_points, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL,
 };
@@ -25,15 +26,25 @@ use rug::Float;
 /// The MPFR solution seen by the criterion (in units of E*; lengths unchanged).
 struct Functions<'a, 'b> {
     params: &'a SlidingParamsMpfr,
+    contact: &'a Contact,
     pressure: &'a Pressure<'b>,
+    shape: ShapeF64,
+    period: Option<f64>,
 }
 
 impl ContactFunctions for Functions<'_, '_> {
     fn pressure_factor(&self, u: f64) -> f64 {
         self.pressure.p_over_omega(&Float::with_val(self.params.prec, u)).to_f64()
     }
-    fn gap_slope(&self, xi: f64) -> f64 {
-        self.pressure.gap_slope(&Float::with_val(self.params.prec, xi)).to_f64()
+    fn surface_slope(&self, xi: f64) -> f64 {
+        let p = self.params.prec;
+        let xi = Float::with_val(p, xi);
+        let x = Float::with_val(p, &xi + &self.contact.c);
+        // w = g'_row - h', formed at working precision (both are large next to a circle's wall).
+        Float::with_val(p, row_slope(self.params, &x, p) - self.pressure.gap_slope(&xi)).to_f64()
+    }
+    fn profile_height(&self, x: f64) -> f64 {
+        row_height_f64(&self.shape, self.period, x)
     }
 }
 
@@ -52,15 +63,7 @@ fn setting(params: &SlidingParamsMpfr, contact: &Contact, p1: &Float, p2: &Float
     let cell = match (&params.shape, &params.period) {
         (_, None) => Cell::Unbounded,
         (ShapeMpfr::Sinusoidal { .. }, Some(big_l)) => Cell::Periodic { period: big_l.to_f64() },
-        (shape, Some(big_l)) => Cell::Fixed {
-            half_period: big_l.to_f64() / 2.0,
-            jump: match shape {
-                ShapeMpfr::Polynomial { slope, .. } => {
-                    cell_edge_jump(&slope.iter().map(Float::to_f64).collect::<Vec<_>>(), big_l.to_f64() / 2.0)
-                }
-                _ => 0.0,
-            },
-        },
+        (_, Some(big_l)) => Cell::Fixed { half_period: big_l.to_f64() / 2.0 },
     };
     // M = (2/E*) beta P1 - cW P2 with E* = 1.
     let closure_formula = match (&params.period, params.convention) {
@@ -110,7 +113,14 @@ pub fn physicality_with(
     p2: &Float,
     closure_tol: f64,
 ) -> Result<Assessment, Refusal> {
-    assess(&Functions { params, pressure }, &setting(params, contact, p1, p2, closure_tol))
+    let f = Functions {
+        params,
+        contact,
+        pressure,
+        shape: params.shape.to_f64(),
+        period: params.period.as_ref().map(Float::to_f64),
+    };
+    assess(&f, &setting(params, contact, p1, p2, closure_tol))
 }
 
 /// The largest pressure over the criterion's pressure samples, at working precision (the scale of

@@ -51,7 +51,7 @@ pub fn profile_curvature(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
     }
 }
 
-/// g' of the punch row at x (THEORY.md section 9: the profile on the cell (-L/2, L/2) repeated
+/// g' of the punch row at x, any shape (THEORY.md sections 1, 9: the profile on the cell (-L/2, L/2) repeated
 /// with period L): x is reduced to the cell first. For the circle, where the cell reaches beyond
 /// |x| >= R there is no punch (its wall is vertical at |x| = R): +infinity for x >= R and
 /// -infinity for x <= -R, so that a gap integrated outward from the contact becomes +infinity.
@@ -63,11 +63,21 @@ pub fn row_slope(params: &SlidingParamsMpfr, x: &Float, wp: u32) -> Float {
         }
         None => Float::with_val(wp, x),
     };
-    if let ShapeMpfr::Circular { r } = &params.shape {
-        if Float::with_val(wp, x.abs_ref()) >= *r {
+    match (&params.shape, &params.period) {
+        (ShapeMpfr::Circular { r }, _) if Float::with_val(wp, x.abs_ref()) >= *r => {
             let inf = Float::with_val(wp, rug::float::Special::Infinity);
-            return if x.is_sign_negative() { -inf } else { inf };
+            if x.is_sign_negative() {
+                -inf
+            } else {
+                inf
+            }
         }
+        // 2 k x (reduced), and (2 pi D/L) sin(2 pi x/L) [2.16].
+        (ShapeMpfr::Parabolic { k }, _) => Float::with_val(wp, k * &x) * 2u32,
+        (ShapeMpfr::Sinusoidal { d }, Some(big_l)) => {
+            let w = Float::with_val(wp, &params.pi * 2u32) / big_l;
+            Float::with_val(wp, Float::with_val(wp, &w * &x).sin() * &w) * d
+        }
+        _ => profile_slope(&params.shape, &x, wp),
     }
-    profile_slope(&params.shape, &x, wp)
 }
