@@ -120,6 +120,26 @@ fn best<E>(at: &mut impl FnMut(f64) -> Result<SizeContacts, E>, s: f64) -> Resul
         .fold(None, |m: Option<f64>, p| Some(m.map_or(p, |m| m.max(p)))))
 }
 
+/// The end of a run between a physical size `good` (with its load) and a non-physical one `bad`,
+/// by [`BISECTIONS`] bisections: the last physical size and its load.
+fn boundary<E>(
+    at: &mut impl FnMut(f64) -> Result<SizeContacts, E>,
+    (mut good, mut load): (f64, f64),
+    mut bad: f64,
+) -> Result<(f64, f64), E> {
+    for _ in 0..BISECTIONS {
+        let mid = 0.5 * (good + bad);
+        match best(at, mid)? {
+            Some(p) => {
+                good = mid;
+                load = p;
+            }
+            None => bad = mid,
+        }
+    }
+    Ok((good, load))
+}
+
 /// The admissible runs over s in (0, `s_max`] (module doc); `at(s)` solves the direct problem at
 /// size s and judges each contact with [`super::assess`].
 pub fn admissible<E>(s_max: f64, mut at: impl FnMut(f64) -> Result<SizeContacts, E>) -> Result<Admissible, E> {
@@ -143,39 +163,14 @@ pub fn admissible<E>(s_max: f64, mut at: impl FnMut(f64) -> Result<SizeContacts,
         let j1 = j;
         j += 1;
         // Lower end: bisect between the last non-physical sample and the first physical one.
-        let (size_lo, load_at_lo) = if j0 == 0 {
-            (0.0, 0.0)
-        } else {
-            let (mut bad, mut good, mut load) = (grid[j0 - 1], grid[j0], vals[j0].unwrap_or(0.0));
-            for _ in 0..BISECTIONS {
-                let mid = 0.5 * (bad + good);
-                match best(&mut at, mid)? {
-                    Some(p) => {
-                        good = mid;
-                        load = p;
-                    }
-                    None => bad = mid,
-                }
-            }
-            (good, load)
-        };
+        let (size_lo, load_at_lo) =
+            if j0 == 0 { (0.0, 0.0) } else { boundary(&mut at, (grid[j0], vals[j0].unwrap_or(0.0)), grid[j0 - 1])? };
         // Upper end.
         let open_above = j1 == n - 1;
         let (size_hi, load_at_hi) = if open_above {
             (grid[j1], vals[j1].unwrap_or(0.0))
         } else {
-            let (mut good, mut bad, mut load) = (grid[j1], grid[j1 + 1], vals[j1].unwrap_or(0.0));
-            for _ in 0..BISECTIONS {
-                let mid = 0.5 * (good + bad);
-                match best(&mut at, mid)? {
-                    Some(p) => {
-                        good = mid;
-                        load = p;
-                    }
-                    None => bad = mid,
-                }
-            }
-            (good, load)
+            boundary(&mut at, (grid[j1], vals[j1].unwrap_or(0.0)), grid[j1 + 1])?
         };
         // Loads over the run: samples, ends, and the largest sample refined by golden section.
         let mut hi = if load_at_lo > load_at_hi { (load_at_lo, size_lo) } else { (load_at_hi, size_hi) };
