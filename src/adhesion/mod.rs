@@ -29,6 +29,7 @@
 
 pub mod error;
 pub mod points;
+pub mod profile;
 pub mod scales;
 pub mod series_f64;
 pub mod tension;

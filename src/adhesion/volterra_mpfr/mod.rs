@@ -53,10 +53,12 @@
 //! runs, verified digits). The f64 method has the same files in [`crate::adhesion::series_f64`].
 
 pub mod kernel;
+pub mod right_side;
 pub mod solution;
 pub mod solve;
 pub mod verify;
 pub mod volterra;
 
-pub use solve::{chebyshev_size, solve, solve_with_nodes, VolterraParams, MAX_NODES};
+pub use right_side::RightSide;
+pub use solve::{chebyshev_size, solve, solve_rhs, solve_with_nodes, solve_with_nodes_rhs, VolterraParams, MAX_NODES};
 pub use volterra::{lambda_of, VolterraSolution};
