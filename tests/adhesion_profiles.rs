@@ -83,6 +83,7 @@ fn nu_half_quartic_load_equals_closed_form() {
         let s = solve_mpfr(&problem("1/2", quartic(), Some("1"), a), &[], VolterraParams::for_digits(30)).unwrap();
         let want = closed_form_load(&quartic_slope, a, "1");
         let e = rel(&s.normal_load, &want);
+        eprintln!("a = {a}: P2 rel error vs closed form {e:e}");
         assert!(e < 1e-25, "a = {a}: P2 = {} vs closed form {}: rel {e:e}", s.normal_load.to_f64(), want.to_f64());
     }
 }
@@ -95,6 +96,7 @@ fn nu_half_circle_load_equals_closed_form() {
         let s = solve_mpfr(&problem("1/2", circle.clone(), Some("2"), a), &[], VolterraParams::for_digits(30)).unwrap();
         let want = closed_form_load(&circle_slope("2"), a, "2");
         let e = rel(&s.normal_load, &want);
+        eprintln!("a = {a}: P2 rel error vs closed form {e:e}");
         assert!(e < 1e-25, "a = {a}: P2 = {} vs closed form {}: rel {e:e}", s.normal_load.to_f64(), want.to_f64());
     }
 }
@@ -126,6 +128,7 @@ fn single_punch_quartic_power_law() {
         let pi = Float::with_val(PREC, Constant::Pi);
         let want = pi * 3u32 / 4u32 * f("3/5") * f(a).square().square();
         let e = rel(&s.normal_load, &want);
+        eprintln!("a = {a}: P2 rel error vs closed form {e:e}");
         assert!(e < 1e-28, "a = {a}: rel {e:e}");
     }
 }
@@ -147,4 +150,38 @@ fn bad_even_profiles_are_refused_naming_the_parameter() {
     // The f64 method is the parabola's: a quartic is refused there.
     let e = solve_f64(&problem("3/10", quartic(), Some("1"), "1/5"), &[]).unwrap_err();
     assert!(matches!(e, AdhesionError::InvalidArgument { parameter: "shape", .. }), "{e}");
+}
+
+#[test]
+fn shipped_quartic_scene_solves_with_json() {
+    let bin = env!("CARGO_BIN_EXE_periodic-contact");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/adhesion_quartic.toml");
+    let out = std::process::Command::new(bin).args(["solve", scene, "--json"]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let digits: f64 = v["digits_verified"].as_str().unwrap().parse().unwrap();
+    assert!(digits >= 25.0, "{v}");
+    let p2 = f(v["P2"].as_str().unwrap());
+    let lib = solve_mpfr(&problem("3/10", quartic(), Some("1"), "1/5"), &[], VolterraParams::for_digits(30)).unwrap();
+    assert!(rel(&lib.normal_load, &p2) < 1e-25, "{} vs {}", lib.normal_load.to_f64(), p2.to_f64());
+    // The f64 method is refused by name, as an input error.
+    let out = std::process::Command::new(bin).args(["solve", scene, "--json", "--method", "f64"]).output().unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("shape"), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn given_load_finds_the_half_width_for_quartic_and_circle() {
+    let circle = PunchShape::circular(q("2")).unwrap();
+    for (shape, l, a) in [(quartic(), "1", "1/5"), (circle, "2", "9/20")] {
+        let direct =
+            solve_mpfr(&problem("3/10", shape.clone(), Some(l), a), &[], VolterraParams::for_digits(30)).unwrap();
+        let p2 = exact_series::parse_rational(&direct.normal_load.to_string_radix(10, Some(40))).unwrap();
+        let m = Material::from_contact_modulus(q("3/10"), q("1")).unwrap();
+        let pr = AdhesionProblem::new(m, Period::finite(q(l)).unwrap(), shape, AdhesionSize::NormalLoad(p2)).unwrap();
+        let back = solve_mpfr(&pr, &[], VolterraParams::for_digits(30)).unwrap();
+        let e = rel(&back.half_width, &f(a));
+        eprintln!("{} a = {a}: half-width from the load, rel {e:e}", pr.shape().name());
+        assert!(e < 1e-25, "a = {a}: rel {e:e}");
+    }
 }
