@@ -9,7 +9,8 @@
 //!   universal coefficients), `solve` (one lambda), `solution` (dimensional), `verify` (two runs,
 //!   estimated digits).
 //!
-//! Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
+//! Punches: the parabola, and (MPFR only) even polynomials and the circle, with the refusals of
+//! [`profile`] (convexity, |x| < R, slope limit). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
 //! relative to it), [`tension`] (the tension zones at the oscillating edge), [`error`]. The
 //! derived material constants (eps, cosh(pi eps), B, S, C_P) are computed once per solve in
 //! [`crate::params::adhesion`] and passed as data; the quadrature and interpolation are
@@ -29,6 +30,7 @@
 
 pub mod error;
 pub mod points;
+pub mod profile;
 pub mod scales;
 pub mod series_f64;
 pub mod tension;

@@ -2,7 +2,7 @@
 //! (THEORY.md section 4; the paper's (1.4), (2.18)-(2.26)).
 
 use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
-use num_traits::Signed;
+use num_traits::{Signed, Zero};
 
 /// What fixes the state of the monotone indentation.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,19 +20,39 @@ pub struct AdhesionProblem {
     period: Period,
     shape: PunchShape,
     size: AdhesionSize,
+    reference_curvature: Exact,
 }
 
 impl AdhesionProblem {
-    /// Validates the statement: parabolic punch only, positive sizes, 2a < L for a given a.
-    /// (For a given load every P2 > 0 has a solution with 2a < L, since P2(a) -> infinity as
-    /// 2a -> L.)
+    /// Validates the statement: a parabolic, even polynomial or circular punch (Problem 2 here
+    /// is symmetric: a polynomial with a non-zero odd coefficient is refused, naming
+    /// `coefficients`), positive sizes, 2a < L for a given a. (For a given load every P2 > 0 has
+    /// a solution with 2a < L, since P2(a) -> infinity as 2a -> L.) A single punch with a given
+    /// load is accepted for the parabola only (its solution is self-similar; for another profile
+    /// give `half_width`). Convexity, the circle's |x| < R and the slope limit on the contact are
+    /// checked by the solvers once a is known ([`crate::adhesion::profile`]).
     pub fn new(material: Material, period: Period, shape: PunchShape, size: AdhesionSize) -> Result<Self, ModelError> {
-        if !matches!(shape, PunchShape::Parabolic { .. }) {
-            return Err(ModelError::new(
-                "shape",
-                shape.name(),
-                "the adhesion problem supports only the parabolic punch g = k x^2",
-            ));
+        match &shape {
+            PunchShape::Parabolic { .. } | PunchShape::Circular { .. } => {}
+            PunchShape::Polynomial { coefficients } => {
+                if let Some((j, c)) = coefficients.iter().enumerate().find(|(j, c)| j % 2 == 1 && !c.is_zero()) {
+                    return Err(ModelError::new(
+                        "coefficients",
+                        shape.parameters().remove(0).1,
+                        format!(
+                            "the adhesion problem is symmetric (g even): every odd coefficient must be 0, but coefficients[{j}] = c_{j} = {}",
+                            readable(c)
+                        ),
+                    ));
+                }
+            }
+            PunchShape::Sinusoidal { .. } => {
+                return Err(ModelError::new(
+                    "shape",
+                    shape.name(),
+                    "the adhesion problem supports the parabolic, even polynomial and circular punches",
+                ))
+            }
         }
         shape.validate()?;
         period.validate()?;
@@ -54,7 +74,20 @@ impl AdhesionProblem {
                 ));
             }
         }
-        Ok(AdhesionProblem { material, period, shape, size })
+        if let (AdhesionSize::NormalLoad(p), Period::Infinite, false) =
+            (&size, &period, matches!(shape, PunchShape::Parabolic { .. }))
+        {
+            return Err(ModelError::new(
+                "normal_load",
+                readable(p),
+                format!(
+                    "a single punch (period \"inf\") with a given load is solved for the parabola only; for the {} punch give half_width",
+                    shape.name()
+                ),
+            ));
+        }
+        let reference_curvature = reference_curvature(&shape, &period, &size);
+        Ok(AdhesionProblem { material, period, shape, size, reference_curvature })
     }
 
     /// Half-plane material.
@@ -65,7 +98,7 @@ impl AdhesionProblem {
     pub fn period(&self) -> &Period {
         &self.period
     }
-    /// Punch shape (only the parabola g = k x^2 is supported).
+    /// Punch shape (parabolic, even polynomial or circular).
     pub fn shape(&self) -> &PunchShape {
         &self.shape
     }
@@ -74,14 +107,44 @@ impl AdhesionProblem {
         &self.size
     }
 
-    /// Curvature k of the parabola g = k x^2.
+    /// The reference curvature k of the scalings P2 = E* k (L/pi)^2 P, psi ~ k a, phi ~ k a^2,
+    /// q ~ E* k a (exact): the parabola's k; for the circle 1/(2R) (its osculating parabola);
+    /// for an even polynomial the secant curvature g'(l)/(2 l) = sum_m m c_2m l^(2m-2) at l = a
+    /// (given half-width) or l = L/4 (given load, finite period). Any positive value is a valid
+    /// scale: it only sets the units of F and of the digits' scales. A polynomial g = k x^2 gives
+    /// the parabola's k exactly.
     pub fn curvature(&self) -> &Exact {
-        match &self.shape {
-            PunchShape::Parabolic { k } => k,
-            // Unreachable after validation (parabolic only).
-            PunchShape::Sinusoidal { amplitude } => amplitude,
-            PunchShape::Polynomial { coefficients } => &coefficients[2],
-            PunchShape::Circular { radius } => radius,
+        &self.reference_curvature
+    }
+}
+
+/// See [`AdhesionProblem::curvature`]. A non-positive secant curvature (a non-convex
+/// polynomial) falls back to |c_j| of the first non-zero j >= 2 so the scale stays positive; the
+/// solver then refuses the profile as not convex.
+fn reference_curvature(shape: &PunchShape, period: &Period, size: &AdhesionSize) -> Exact {
+    let one = Exact::from_integer(1.into());
+    match shape {
+        PunchShape::Parabolic { k } => k.clone(),
+        PunchShape::Circular { radius } => one / (radius * Exact::from_integer(2.into())),
+        PunchShape::Sinusoidal { amplitude } => amplitude.clone(),
+        PunchShape::Polynomial { coefficients } => {
+            let l = match (size, period) {
+                (AdhesionSize::HalfWidth(a), _) => a.clone(),
+                (AdhesionSize::NormalLoad(_), Period::Finite(l)) => l / Exact::from_integer(4.into()),
+                (AdhesionSize::NormalLoad(_), Period::Infinite) => one.clone(),
+            };
+            let l2 = &l * &l;
+            let mut pow = one.clone();
+            let mut sum = Exact::zero();
+            for (j, c) in coefficients.iter().enumerate().skip(2).step_by(2) {
+                sum += c * Exact::from_integer(((j / 2) as i64).into()) * &pow;
+                pow *= &l2;
+            }
+            if sum.is_positive() {
+                sum
+            } else {
+                coefficients.iter().skip(2).find(|c| !c.is_zero()).map(|c| c.abs()).unwrap_or(one)
+            }
         }
     }
 }
@@ -109,5 +172,27 @@ mod tests {
         let e = AdhesionProblem::new(mat(), l, s, AdhesionSize::HalfWidth(q(1, 4))).unwrap_err();
         assert_eq!(e.parameter, "shape");
         assert!(AdhesionProblem::new(mat(), Period::Infinite, k, AdhesionSize::HalfWidth(q(7, 1))).is_ok());
+    }
+
+    #[test]
+    fn adhesion_even_profiles_accepted_odd_terms_refused() {
+        let l = Period::finite(q(1, 1)).unwrap();
+        let quartic = PunchShape::polynomial(vec![q(0, 1), q(0, 1), q(1, 4), q(0, 1), q(1, 2)]).unwrap();
+        let p = AdhesionProblem::new(mat(), l.clone(), quartic, AdhesionSize::HalfWidth(q(1, 5))).unwrap();
+        // g'(a)/(2a) = c_2 + 2 c_4 a^2 = 1/4 + 1/25.
+        assert_eq!(p.curvature(), &q(29, 100));
+        let parabola = PunchShape::polynomial(vec![q(0, 1), q(0, 1), q(3, 7)]).unwrap();
+        let p = AdhesionProblem::new(mat(), l.clone(), parabola, AdhesionSize::NormalLoad(q(1, 1))).unwrap();
+        assert_eq!(p.curvature(), &q(3, 7));
+        let circle = PunchShape::circular(q(2, 1)).unwrap();
+        let p = AdhesionProblem::new(mat(), l.clone(), circle.clone(), AdhesionSize::HalfWidth(q(1, 5))).unwrap();
+        assert_eq!(p.curvature(), &q(1, 4));
+        let cubic = PunchShape::polynomial(vec![q(0, 1), q(0, 1), q(1, 1), q(1, 10)]).unwrap();
+        let e = AdhesionProblem::new(mat(), l, cubic, AdhesionSize::HalfWidth(q(1, 5))).unwrap_err();
+        assert_eq!(e.parameter, "coefficients");
+        assert!(e.expected.contains("coefficients[3] = c_3 = 1/10") && e.value.contains("\"1/10\""), "{e}");
+        let e = AdhesionProblem::new(mat(), Period::Infinite, circle, AdhesionSize::NormalLoad(q(1, 1))).unwrap_err();
+        assert_eq!(e.parameter, "normal_load");
+        assert!(e.expected.contains("half_width"), "{e}");
     }
 }

@@ -18,6 +18,11 @@
 //!   phi/(k a^2) = -(1/pi) int_0^{sigma^2} Im I(sqrt tau) d tau,
 //! and the stresses by [`kernel::stress_integrand`].
 //! lambda = 0 is the single punch (G = 1, F = pi/Re M_1 constant: self-similar).
+//! A general even profile (THEORY.md section 9: even polynomial, circle) replaces the right side
+//! pi by pi g'(x)/(2 k x), x = a sigma, k the reference curvature ([`right_side`]); the load, psi,
+//! phi and the stresses follow from F by the same formulas. At nu = 1/2 its load equals THEORY 9's
+//! closed form to ~1e-40 relative at 30 requested digits (quartic x^2/4 + x^4/2 and circle R = 2,
+//! lambda = 0.2-1.1: `cargo test --test adhesion_profiles -- --nocapture`).
 //!
 //! # Conditioning (measured; THEORY.md section 7)
 //! For nu = 1/2 (eps = 0) and nu >= 0.45 the method verifies 20+ digits up to lambda ~ 1.49.
@@ -53,10 +58,12 @@
 //! runs, verified digits). The f64 method has the same files in [`crate::adhesion::series_f64`].
 
 pub mod kernel;
+pub mod right_side;
 pub mod solution;
 pub mod solve;
 pub mod verify;
 pub mod volterra;
 
-pub use solve::{chebyshev_size, solve, solve_with_nodes, VolterraParams, MAX_NODES};
+pub use right_side::RightSide;
+pub use solve::{chebyshev_size, solve, solve_rhs, solve_with_nodes, solve_with_nodes_rhs, VolterraParams, MAX_NODES};
 pub use volterra::{lambda_of, VolterraSolution};

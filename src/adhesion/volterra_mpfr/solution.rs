@@ -2,10 +2,12 @@
 //! period or single punch) at the requested points x/a, with the tension zones.
 //! Scalings: [`crate::adhesion::scales`].
 
-use super::solve::{solve, VolterraParams};
+use super::right_side::RightSide;
+use super::solve::{solve_rhs, VolterraParams};
 use super::volterra::{lambda_of, VolterraSolution};
 use crate::adhesion::error::AdhesionError;
 use crate::adhesion::points::check_points;
+use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
 use crate::adhesion::tension::{tension_report, TensionReport};
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::chebyshev;
@@ -84,18 +86,22 @@ pub fn solve_mpfr_with(
     let (e_star, k) = (to_float(problem.material().contact_modulus(), prec), to_float(problem.curvature(), prec));
     let pi = Float::with_val(prec, Constant::Pi);
     let zero = Float::with_val(prec, 0);
+    let rhs_for_a = |a: &Exact| RightSide::new(problem, to_float(&(a * a), prec), prec);
     let (lambda, a, sol) = match (problem.size(), problem.period()) {
         (AdhesionSize::HalfWidth(a), Period::Infinite) => {
-            let sol = solve(&constants, &zero, params)?;
+            check_profile_on_contact(problem, to_float(a, 64).to_f64())?;
+            let sol = solve_rhs(&constants, &zero, params, &rhs_for_a(a))?;
             (zero.clone(), to_float(a, prec), sol)
         }
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
+            check_profile_on_contact(problem, to_float(a, 64).to_f64())?;
             let lam = lambda_of(a, l, prec);
-            let sol = solve(&constants, &lam, params)?;
+            let sol = solve_rhs(&constants, &lam, params, &rhs_for_a(a))?;
             (lam, to_float(a, prec), sol)
         }
         (AdhesionSize::NormalLoad(p2), Period::Infinite) => {
-            let sol = solve(&constants, &zero, params)?;
+            // The parabola only (AdhesionProblem::new): self-similar, F constant.
+            let sol = solve_rhs(&constants, &zero, params, &RightSide::Parabola)?;
             let p = to_float(p2, prec);
             let a = Float::with_val(prec, p / (sol.load_ratio() * &e_star * &k)).sqrt();
             (zero.clone(), a, sol)
@@ -104,9 +110,17 @@ pub fn solve_mpfr_with(
             let lf = to_float(l, prec);
             let target = Float::with_val(prec, to_float(p2, prec) * &pi * &pi)
                 / (Float::with_val(prec, &lf * &lf) * &e_star * &k);
-            let (lam, big) = lambda_for_load(&constants, first_guess_load_constant(problem), &target, p2, params)?;
+            // x = l sigma with l = L lambda/pi at the solved lambda.
+            let rhs_at = |lam: &Float| {
+                let ell = Float::with_val(prec, lam * &lf) / &pi;
+                RightSide::new(problem, ell.square(), prec)
+            };
+            let cap = largest_admissible_half_width(problem).map(|a_max| std::f64::consts::PI * a_max / lf.to_f64());
+            let search = LoadSearch { cp: first_guess_load_constant(problem), lambda_cap: cap, rhs_at: &rhs_at };
+            let (lam, big) = lambda_for_load(&constants, &search, &target, p2, params)?;
             let sol = big.restrict(&lam);
             let a = Float::with_val(prec, &lam * &lf) / &pi;
+            check_profile_on_contact(problem, a.to_f64())?;
             (lam, a, sol)
         }
     };
@@ -157,14 +171,25 @@ pub fn solve_mpfr_with(
 /// Newton on one Chebyshev solution over [0, Lambda] (f does not depend on lambda:
 /// P(lambda) = (1/2) int_0^{lambda^2} f, P'(lambda) = lambda f(lambda^2)). `normal_load` (the
 /// given P2) names the input in the error; `cp` = C_P in `f64` sets the first guess.
+/// What the search for the half-width of a given load needs beside the material: `cp` = C_P in
+/// `f64` (first guess), the largest admissible lambda (the slope limit of a polynomial or
+/// circular profile, [`largest_admissible_half_width`]; None for the parabola) and the right side
+/// at a solved lambda.
+struct LoadSearch<'a> {
+    cp: f64,
+    lambda_cap: Option<f64>,
+    rhs_at: &'a dyn Fn(&Float) -> RightSide,
+}
+
 fn lambda_for_load(
     constants: &AdhesionParamsMpfr,
-    cp: f64,
+    search: &LoadSearch,
     target: &Float,
     normal_load: &Exact,
     params: VolterraParams,
 ) -> Result<(Float, VolterraSolution), AdhesionError> {
     let prec = params.prec;
+    let cp = search.cp;
     let half_pi = std::f64::consts::FRAC_PI_2;
     // Kuznetsov-like first guess: P ~ 2 C_P ln sec(lambda).
     let t = target.to_f64();
@@ -173,9 +198,13 @@ fn lambda_for_load(
         lam0 = (t / cp).sqrt().min(1.0);
     }
     for _attempt in 0..6 {
-        let big = (lam0 * 1.15 + 0.02).min(0.5 * (lam0 + half_pi));
+        let mut big = (lam0 * 1.15 + 0.02).min(0.5 * (lam0 + half_pi));
+        let capped = search.lambda_cap.is_some_and(|c| big >= c);
+        if let Some(c) = search.lambda_cap {
+            big = big.min(c);
+        }
         let big_f = Float::with_val(prec, big);
-        let sol = solve(&constants, &big_f, params)?;
+        let sol = solve_rhs(constants, &big_f, params, &(search.rhs_at)(&big_f))?;
         let big2 = Float::with_val(prec, &big_f * &big_f);
         let p_of = |sol: &VolterraSolution, lam: &Float| -> (Float, Float) {
             let tau = Float::with_val(prec, lam * lam) / &big2;
@@ -185,6 +214,17 @@ fn lambda_for_load(
         };
         let (pmax, _) = p_of(&sol, &big_f);
         if &pmax < target {
+            if capped {
+                return Err(crate::model::ModelError::new(
+                    "normal_load",
+                    readable(normal_load),
+                    format!(
+                        "the contact would pass lambda = pi a/L = {big:.6}, where g'(a) reaches the slope limit {}: the theory assumes a small slope |g'| << 1 [1.9]; reduce normal_load",
+                        crate::params::sliding::MAX_CONTACT_SLOPE
+                    ),
+                )
+                .into());
+            }
             lam0 = 0.5 * (big + half_pi);
             continue;
         }

@@ -3,6 +3,7 @@
 //! collocation system and its Gaussian elimination.
 
 use super::kernel;
+use super::right_side::RightSide;
 use super::volterra::VolterraSolution;
 use crate::adhesion::error::AdhesionError;
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
@@ -10,7 +11,6 @@ use crate::numerics::chebyshev;
 use crate::numerics::precision::{bits_for_digits, SOLVER_GUARD_BITS};
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsMpfr;
-use rug::float::Constant;
 use rug::Float;
 
 /// Largest collocation size accepted; beyond it lambda is too close to pi/2.
@@ -77,10 +77,32 @@ pub fn solve(
     lambda: &Float,
     params: VolterraParams,
 ) -> Result<VolterraSolution, AdhesionError> {
-    let mut n = chebyshev_size(lambda.to_f64(), params.target_bits, params.refine)?;
+    solve_rhs(constants, lambda, params, &RightSide::Parabola)
+}
+
+/// [`solve`] with the right side of a general even profile (THEORY.md section 9,
+/// [`RightSide`]): Re I(sigma) = pi g'(x)/(2 k x). The Chebyshev size is the larger of the
+/// full-contact estimate and the right side's own ([`RightSide::min_nodes`]).
+pub fn solve_rhs(
+    constants: &AdhesionParamsMpfr,
+    lambda: &Float,
+    params: VolterraParams,
+    rhs: &RightSide,
+) -> Result<VolterraSolution, AdhesionError> {
+    let mut n = chebyshev_size(lambda.to_f64(), params.target_bits, params.refine)?
+        .max(rhs.min_nodes(params.target_bits, params.refine));
+    if n > MAX_NODES {
+        return Err(AdhesionError::IllConditioned {
+            method: "mpfr-volterra",
+            parameter: "half_width",
+            value: readable_mpfr(lambda),
+            valid: format!("a contact for which {MAX_NODES} Chebyshev nodes suffice"),
+            reason: "the profile's slope is singular too close to the contact's edge (circle: |x| = R)".into(),
+        });
+    }
     let goal = (params.target_bits as f64) * std::f64::consts::LN_2;
     for _ in 0..5 {
-        let sol = solve_with_nodes(constants, lambda, params, n)?;
+        let sol = solve_with_nodes_rhs(constants, lambda, params, n, rhs)?;
         let c: Vec<f64> = sol.f_coeffs.iter().map(|x| x.clone().abs().to_f64()).collect();
         let c0 = c[0].max(f64::MIN_POSITIVE);
         let m = c.len();
@@ -118,13 +140,23 @@ pub fn solve_with_nodes(
     params: VolterraParams,
     n: usize,
 ) -> Result<VolterraSolution, AdhesionError> {
+    solve_with_nodes_rhs(constants, lambda, params, n, &RightSide::Parabola)
+}
+
+/// [`solve_with_nodes`] with the right side `rhs`.
+pub fn solve_with_nodes_rhs(
+    constants: &AdhesionParamsMpfr,
+    lambda: &Float,
+    params: VolterraParams,
+    n: usize,
+    rhs: &RightSide,
+) -> Result<VolterraSolution, AdhesionError> {
     let prec = params.prec;
     let eps = Float::with_val(prec, &constants.eps);
     let cosh_pi_eps = Float::with_val(prec, &constants.cosh_pi_eps);
     let rule = TanhSinh::new(params.target_bits + 8, params.refine, prec);
     let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
     let tau = chebyshev::nodes(n, prec);
-    let pi = Float::with_val(prec, Constant::Pi);
     // Rows: A_ij = sum_q Re z_iq T_j(x_iq), x_iq = 2 tau_i s_q^2 - 1; keep Im z_iq, x_iq for J.
     let mut a = vec![vec![Float::with_val(prec, 0); n]; n];
     let mut keep: Vec<Vec<(Float, Float)>> = Vec::with_capacity(n);
@@ -147,8 +179,8 @@ pub fn solve_with_nodes(
         }
         keep.push(row_keep);
     }
-    let rhs = vec![pi.clone(); n];
-    let (f_coeffs, pivot_ratio) = gauss_solve(a, rhs, prec)?;
+    let b: Vec<Float> = tau.iter().map(|t| rhs.at(t, prec)).collect();
+    let (f_coeffs, pivot_ratio) = gauss_solve(a, b, prec)?;
     let j_values: Vec<Float> = keep
         .iter()
         .map(|row| {
@@ -172,12 +204,13 @@ pub fn solve_with_nodes(
         rule,
         pre,
     };
-    // Residual of Re I = pi between collocation nodes (a posteriori check).
+    // Residual of Re I = pi g'/(2 k x) between collocation nodes (a posteriori check).
     let mut res = 0f64;
     for k in 0..4 {
         let sg = Float::with_val(prec, 0.13 + 0.29 * k as f64);
         let (re, _) = sol.integral_i(&sg);
-        res = res.max(Float::with_val(prec, re - &pi).abs().to_f64());
+        let want = rhs.at(&Float::with_val(prec, &sg * &sg), prec);
+        res = res.max(Float::with_val(prec, re - want).abs().to_f64());
     }
     sol.residual = res;
     Ok(sol)
