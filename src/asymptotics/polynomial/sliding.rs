@@ -243,7 +243,7 @@ pub struct FixedValues {
 /// let one = Some(Q::from_integer(1.into()));
 /// let g = PolynomialProfile::new(vec![zero.clone(), zero, one]).unwrap(); // g = x^2
 /// let e = polynomial_sliding_expansion(&g, 2, Convention::Paper).unwrap();
-/// assert_eq!(e.tbar_single.text(), "-rbar_s + 2*theta"); // rbar_s = 2 theta - T [3.10]
+/// assert_eq!(e.tbar_single.text(), "2*theta - rbar_s"); // rbar_s = 2 theta - T [3.10]
 /// ```
 pub fn polynomial_sliding_expansion(
     profile: &PolynomialProfile,
