@@ -2,7 +2,7 @@
 //! 0 success, 2 invalid input (clap errors too), 1 no solution, no convergence or I/O failure.
 
 use clap::Parser;
-use periodic_contact::asymptotics::catalog::{derive_sliding, SeriesObject};
+use periodic_contact::asymptotics::catalog::{derive_polynomial_sliding, derive_sliding, SeriesObject};
 use periodic_contact::cli::{args::Format, args::RawArgs, config::RunConfig};
 use periodic_contact::error::{Error, ErrorKind};
 use periodic_contact::model::ModelError;
@@ -14,6 +14,10 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
         RunConfig::Series { object, order, subs, convention, format } => {
             let parts = match object {
                 SeriesObject::Sliding(shape) => derive_sliding(shape, convention, order, &subs)?,
+                SeriesObject::PolynomialSliding => match &subs.profile {
+                    Some(profile) => derive_polynomial_sliding(profile, convention, order, &subs)?,
+                    None => object.derive(order, &subs)?,
+                },
                 other => other.derive(order, &subs)?,
             };
             let text = match format {

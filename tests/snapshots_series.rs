@@ -41,7 +41,7 @@ fn weight_order12() {
 
 #[test]
 fn weight_order12_theta_1_10() {
-    let subs = Substitutions { theta: Some(exact_series::Q::new(1.into(), 10.into())), xh: None, t: None, nu: None };
+    let subs = Substitutions { theta: Some(exact_series::Q::new(1.into(), 10.into())), ..Substitutions::default() };
     snap("weight_order12_theta_1_10", SeriesObject::Weight, subs);
 }
 

@@ -39,6 +39,42 @@ impl Frac {
         let inv = lc.recip();
         Some(Frac { num: n.scale(&inv), den: d.scale(&inv) })
     }
+    /// `num / base^e`, reduced, without forming the gcd of `num` and `base^e`: factors `base`
+    /// are first removed by exact division; if what is left of `num` is coprime to `base` (one
+    /// gcd with `base`, not with its power), the pair is already reduced; otherwise this falls
+    /// back to [`Frac::new`]. The same canonical form as [`Frac::new`]; `None` if `base = 0`.
+    ///
+    /// ```
+    /// use exact_series::{Frac, Poly, Ring};
+    /// let x = Poly::var("x").unwrap();
+    /// let d = x.add(&Poly::one()); // x + 1
+    /// let f = Frac::over_power(x.mul(&d), &d, 3).unwrap();
+    /// assert_eq!(f, Frac::new(x.mul(&d), d.mul(&d).mul(&d)).unwrap());
+    /// assert_eq!(f.text(), "(x)/(x^2 + 2*x + 1)");
+    /// ```
+    pub fn over_power(num: Poly, base: &Poly, e: u32) -> Option<Frac> {
+        if base.is_zero() {
+            return None;
+        }
+        let mut num = num;
+        let mut e = e;
+        while e > 0 && !num.is_zero() {
+            match num.div_exact(base) {
+                Some(q) => {
+                    num = q;
+                    e -= 1;
+                }
+                None => break,
+            }
+        }
+        let den = (0..e).fold(Poly::one(), |acc, _| acc.mul(base));
+        if num.is_zero() || e == 0 || base.as_q().is_some() || num.gcd(base).as_q().is_none() {
+            return Frac::new(num, den);
+        }
+        let inv = den.leading_coefficient_lex().recip();
+        Some(Frac { num: num.scale(&inv), den: den.scale(&inv) })
+    }
+
     /// The polynomial `p` as a fraction `p/1`.
     pub fn from_poly(p: Poly) -> Frac {
         Frac { num: p, den: Poly::one() }

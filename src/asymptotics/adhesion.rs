@@ -231,7 +231,7 @@ fn product(ps: &[Poly]) -> Poly {
 /// `num / (dens[0] dens[1] ...)`, reduced: the known factors D_i that divide `num` are cancelled
 /// by exact division first, so that [`Frac::new`] meets (almost always) a coprime pair, which the
 /// engine certifies cheaply.
-fn frac(num: Poly, dens: &[Poly]) -> Frac {
+pub(crate) fn frac(num: Poly, dens: &[Poly]) -> Frac {
     let mut num = num;
     let mut rest: Vec<Poly> = Vec::new();
     for d in dens {
@@ -262,6 +262,41 @@ pub fn adhesion_expansion(order: usize) -> Result<AdhesionExpansion, SeriesError
 /// ([`AdhesionExpansion::stress`] is then the empty series, `prec() == 0`): what a table of A_n
 /// and c_n needs (order 12 in about 12 s instead of 60 s; the MPFR values then take 10 ms).
 pub fn adhesion_expansion_with(order: usize, with_stress: bool) -> Result<AdhesionExpansion, SeriesError> {
+    let v = volterra_solution(order, &[Poly::one()])?;
+    let (num, d) = (&v.num, &v.d);
+    // Load: c_{2j} = n_j/((j+1) D_1 ... D_j).
+    let mut load = vec![Frac::zero(); order + 1];
+    for (j, nj) in num.iter().enumerate() {
+        load[2 * j] = frac(nj.div_int(j as i64 + 1), &d[1..=j]);
+    }
+    Ok(AdhesionExpansion {
+        order,
+        load_constant: frac(Poly::one(), &[d[0].mul_int(2)]),
+        load: Series::from_coeffs(load),
+        slope: v.slope(order),
+        volterra: v.volterra(),
+        stress: v.stress(with_stress)?,
+    })
+}
+
+/// The solved recurrence of steps 2-3 (module doc) for a general right side (THEORY.md
+/// section 9): `Re I(chi) = pi sum_N rhs_N chi^(2N+1)` (the parabola: rhs = [1]), i.e.
+/// `p_N Re M_(2N+1) = rhs_N - Re sum_{n=1}^{N} p_(N-n) T_(n,N-n)`, kept as numerators over the
+/// common denominator: `p_N = n_N/(D_0 ... D_N)`,
+/// `n_N = rhs_N D_0 ... D_(N-1) - Re sum_n n_(N-n) T_(n,N-n) D_(N-n+1) ... D_(N-1)`.
+pub(crate) struct VolterraSolution {
+    /// J = order/2: p_0 .. p_J.
+    pub(crate) jmax: usize,
+    /// n_N.
+    pub(crate) num: Vec<Poly>,
+    /// D_N = Re M_(2N+1).
+    pub(crate) d: Vec<Poly>,
+    /// T_(n,j), n + j <= J.
+    t: Vec<Vec<GPoly>>,
+}
+
+/// Solves the recurrence through p_(order/2) for the right side `rhs` (missing entries are 0).
+pub(crate) fn volterra_solution(order: usize, rhs: &[Poly]) -> Result<VolterraSolution, SeriesError> {
     let jmax = order / 2;
     let prec = 2 * jmax + 1;
     let s_sym = symbol(SVAR)?;
@@ -273,8 +308,9 @@ pub fn adhesion_expansion_with(order: usize, with_stress: bool) -> Result<Adhesi
         .map(|n| (0..=jmax - n).map(|j| moment_integral(&g.coeffs()[2 * n], 2 * j + 1, s_sym, &moments)).collect())
         .collect();
     let d: Vec<Poly> = (0..=jmax).map(|i| moments[2 * i + 1].re.clone()).collect();
+    let rhs_at = |n: usize| rhs.get(n).cloned().unwrap_or_else(Poly::zero);
     // Numerators n_N of p_N = n_N/(D_0 ... D_N).
-    let mut num: Vec<Poly> = vec![Poly::one()];
+    let mut num: Vec<Poly> = vec![rhs_at(0)];
     for nn in 1..=jmax {
         let mut acc = Poly::zero();
         for (n, tn) in t.iter().enumerate().take(nn + 1).skip(1) {
@@ -282,46 +318,54 @@ pub fn adhesion_expansion_with(order: usize, with_stress: bool) -> Result<Adhesi
             let f = num[j].mul(&product(&d[j + 1..nn]));
             acc = acc.add(&f.mul(&tn[j].re));
         }
-        num.push(acc.neg());
+        let r = rhs_at(nn);
+        num.push(if r.is_zero() { acc.neg() } else { r.mul(&product(&d[..nn])).sub(&acc) });
     }
-    let volterra: Vec<Frac> = (0..=jmax).map(|j| frac(num[j].clone(), &d[..=j])).collect();
-    // Load: c_{2j} = n_j/((j+1) D_1 ... D_j).
-    let mut load = vec![Frac::zero(); order + 1];
-    for (j, nj) in num.iter().enumerate() {
-        load[2 * j] = frac(nj.div_int(j as i64 + 1), &d[1..=j]);
+    Ok(VolterraSolution { jmax, num, d, t })
+}
+
+impl VolterraSolution {
+    /// p_j = n_j/(D_0 ... D_j), reduced.
+    pub(crate) fn volterra(&self) -> Vec<Frac> {
+        (0..=self.jmax).map(|j| frac(self.num[j].clone(), &self.d[..=j])).collect()
     }
-    // Slope: psi_J = -2 [sum_j n_j Im T_{J-j,j} D_{j+1}...D_J]/(D_0...D_J).
-    let mut slope = vec![Frac::zero(); order + 2];
-    for jj in 0..=jmax {
-        let mut acc = Poly::zero();
-        for (j, nj) in num.iter().enumerate().take(jj + 1) {
-            acc = acc.add(&nj.mul(&t[jj - j][j].im).mul(&product(&d[j + 1..=jj])));
+
+    /// The slope series of step 4: coefficient of chi^(2J+1) is
+    /// psi_J = -2 [sum_j n_j Im T_(J-j,j) D_(j+1)...D_J]/(D_0...D_J), through chi^(order+1).
+    pub(crate) fn slope(&self, order: usize) -> Series<Frac> {
+        let (num, d, t) = (&self.num, &self.d, &self.t);
+        let mut slope = vec![Frac::zero(); order + 2];
+        for jj in 0..=self.jmax {
+            let mut acc = Poly::zero();
+            for (j, nj) in num.iter().enumerate().take(jj + 1) {
+                acc = acc.add(&nj.mul(&t[jj - j][j].im).mul(&product(&d[j + 1..=jj])));
+            }
+            slope[2 * jj + 1] = frac(acc.mul_int(-2), &d[..=jj]);
         }
-        slope[2 * jj + 1] = frac(acc.mul_int(-2), &d[..=jj]);
+        Series::from_coeffs(slope)
     }
-    // Stress kernels h_N = sum_j p_j tau^(2j+1) H_{N-j}(xi, tau), common denominator D_0...D_N.
-    let xi = Poly::symbol(symbol(XI)?);
-    let tau = Poly::symbol(symbol(TAU)?);
-    let h = kernel_factor(prec, &xi, &tau)?;
-    let mut stress = vec![Gaussian::<Frac>::zero(); if with_stress { prec } else { 0 }];
-    for nn in (0..=jmax).filter(|_| with_stress) {
-        let mut acc = GPoly::zero();
-        let mut tau_pow = tau.clone();
-        for (j, nj) in num.iter().enumerate().take(nn + 1) {
-            let f = GPoly::real(nj.mul(&product(&d[j + 1..=nn])).mul(&tau_pow));
-            acc = acc.add(&f.mul(&h.coeffs()[2 * (nn - j)]));
-            tau_pow = tau_pow.mul(&tau).mul(&tau);
+
+    /// The stress kernels of step 6, h_N = sum_j p_j tau^(2j+1) H_(N-j)(xi, tau), common
+    /// denominator D_0...D_N; the empty series without stresses.
+    pub(crate) fn stress(&self, with_stress: bool) -> Result<Series<Gaussian<Frac>>, SeriesError> {
+        let (jmax, num, d) = (self.jmax, &self.num, &self.d);
+        let prec = 2 * jmax + 1;
+        let xi = Poly::symbol(symbol(XI)?);
+        let tau = Poly::symbol(symbol(TAU)?);
+        let h = kernel_factor(prec, &xi, &tau)?;
+        let mut stress = vec![Gaussian::<Frac>::zero(); if with_stress { prec } else { 0 }];
+        for nn in (0..=jmax).filter(|_| with_stress) {
+            let mut acc = GPoly::zero();
+            let mut tau_pow = tau.clone();
+            for (j, nj) in num.iter().enumerate().take(nn + 1) {
+                let f = GPoly::real(nj.mul(&product(&d[j + 1..=nn])).mul(&tau_pow));
+                acc = acc.add(&f.mul(&h.coeffs()[2 * (nn - j)]));
+                tau_pow = tau_pow.mul(&tau).mul(&tau);
+            }
+            stress[2 * nn] = Gaussian::new(frac(acc.re, &d[..=nn]), frac(acc.im, &d[..=nn]));
         }
-        stress[2 * nn] = Gaussian::new(frac(acc.re, &d[..=nn]), frac(acc.im, &d[..=nn]));
+        Ok(Series::from_coeffs(stress))
     }
-    Ok(AdhesionExpansion {
-        order,
-        load_constant: frac(Poly::one(), &[d[0].mul_int(2)]),
-        load: Series::from_coeffs(load),
-        slope: Series::from_coeffs(slope),
-        volterra,
-        stress: Series::from_coeffs(stress),
-    })
 }
 
 /// Why an expansion could not be evaluated.

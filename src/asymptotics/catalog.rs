@@ -1,6 +1,9 @@
 //! The catalogue of derived series objects that the CLI (`periodic-contact series OBJECT`) and
 //! the report print: each with its name, formula, equation number and expansion variable.
 
+use super::polynomial::{
+    polynomial_adhesion_expansion, polynomial_sliding_expansion_at, FixedValues, PolynomialProfile,
+};
 use super::sliding::{sliding_expansion, sliding_expansion_with, SlidingExpansion, SlidingShape};
 use super::{jacobi_moments::jacobi_moments, kernel::kernel_series, weight::weight_series};
 use crate::model::Convention;
@@ -21,6 +24,9 @@ pub struct Derived {
     pub series: Series<Frac>,
     /// Symbols that may occur in the coefficients.
     pub symbols: Vec<Symbol>,
+    /// Definitions of the parameters (polynomial profiles: the coefficients, rho_j, T), printed
+    /// after the source; empty for the other objects.
+    pub notes: Vec<String>,
     /// Numerical values of the coefficients at a material, when asked for (Problem 2 with
     /// `--nu`): the parameter as text, and `(power, value to 30 digits)`.
     pub values: Option<(String, Vec<(usize, String)>)>,
@@ -39,6 +45,10 @@ pub enum SeriesObject {
     Sliding(SlidingShape),
     /// Problem 2 expansions: c_n of the load [3.18] and A_n of the slope [3.16]-[3.17].
     Adhesion,
+    /// Problem 1 expansions for the polynomial profile of [`Substitutions::profile`].
+    PolynomialSliding,
+    /// Problem 2 expansions for the even polynomial profile of [`Substitutions::profile`].
+    PolynomialAdhesion,
 }
 
 /// Exact values substituted for symbols before printing.
@@ -52,6 +62,10 @@ pub struct Substitutions {
     pub t: Option<Q>,
     /// Poisson's ratio, for numerical values of the Problem 2 coefficients.
     pub nu: Option<Q>,
+    /// rbar_s, the single-punch centre over l_s (polynomial profiles, Problem 1).
+    pub rbar_s: Option<Q>,
+    /// The polynomial profile (the objects `PolynomialSliding`, `PolynomialAdhesion`).
+    pub profile: Option<PolynomialProfile>,
 }
 
 /// Digits of the numerical values printed beside the exact Problem 2 coefficients.
@@ -64,7 +78,7 @@ fn substitute(
     subs: &Substitutions,
 ) -> Result<Series<Frac>, SeriesError> {
     let mut series = series;
-    for (name, value) in [("theta", &subs.theta), ("xh", &subs.xh), ("T", &subs.t)] {
+    for (name, value) in [("theta", &subs.theta), ("xh", &subs.xh), ("T", &subs.t), ("rbar_s", &subs.rbar_s)] {
         if let Some(v) = value {
             let s = Symbol::new(name)?;
             let mapped: Option<Vec<Frac>> = series.coeffs().iter().map(|c| c.subs(s, v)).collect();
@@ -160,15 +174,143 @@ pub fn derive_sliding(
         .into_iter()
         .map(|(object, formula, source, variable, series, mut symbols)| {
             let series = substitute(series, &mut symbols, subs)?;
-            Ok(Derived { object, formula, source, variable, series, symbols, values: None })
+            Ok(Derived { object, formula, source, variable, series, symbols, notes: vec![], values: None })
         })
         .collect()
+}
+
+/// The symbols occurring in a series of rational functions, in name order.
+fn symbols_of(series: &Series<Frac>) -> Vec<Symbol> {
+    let mut v: Vec<Symbol> =
+        series.coeffs().iter().flat_map(|c| c.numer().symbols().into_iter().chain(c.denom().symbols())).collect();
+    v.sort();
+    v.dedup();
+    v
+}
+
+/// The profile's lines for the printed header.
+fn profile_notes(profile: &PolynomialProfile) -> Vec<String> {
+    let r = profile.reference_degree();
+    let mut notes = vec![format!(
+        "profile g = sum_j c_j x^j, coefficients {} (index j multiplies x^j; ? = symbolic), reference degree r = {r}",
+        super::polynomial::profile::coefficients_text(profile)
+    )];
+    notes.extend(profile.ratio_definitions());
+    notes
+}
+
+fn one_coefficient(p: &Poly) -> Series<Frac> {
+    Series::from_coeffs(vec![Frac::from_poly(p.clone())])
+}
+
+/// Applies the substitutions and lists the symbols left.
+fn finish(parts: Vec<Part>, notes: &[String], subs: &Substitutions) -> Result<Vec<Derived>, SeriesError> {
+    parts
+        .into_iter()
+        .map(|(object, formula, source, variable, series, _)| {
+            let series = substitute(series, &mut vec![], subs)?;
+            let symbols = symbols_of(&series);
+            Ok(Derived { object, formula, source, variable, series, symbols, notes: notes.to_vec(), values: None })
+        })
+        .collect()
+}
+
+/// The Problem 1 expansions of a polynomial punch in either surface convention through
+/// `order` ([`polynomial_sliding_expansion`]; THEORY.md sections 5, 8, 9).
+pub fn derive_polynomial_sliding(
+    profile: &PolynomialProfile,
+    convention: Convention,
+    order: usize,
+    subs: &Substitutions,
+) -> Result<Vec<Derived>, SeriesError> {
+    // theta, rbar_s, T fixed before the derivation: the same objects, much faster.
+    let fixed = FixedValues { theta: subs.theta.clone(), rbar_s: subs.rbar_s.clone(), t: subs.t.clone() };
+    let e = polynomial_sliding_expansion_at(profile, order, convention, &fixed)?;
+    let mut notes = profile_notes(profile);
+    notes.push(
+        "l_s: single-punch half-length at the same load P2; Lambda = pi l_s/L; rbar_s = c_s/l_s, the single punch's centre; T = beta tau0/(E* c_r l_s^(r-1))"
+            .into(),
+    );
+    notes.push(match convention {
+        Convention::Paper => "convention: paper (THEORY.md section 3; even in Lambda)".into(),
+        Convention::PeriodicSurface => {
+            "convention: periodic (K of THEORY.md section 8 added; kappa = tan(pi theta), invpi = 1/pi)".into()
+        }
+    });
+    let src = "THEORY.md sections 5, 8, 9; paper [2.13]-[2.14], [3.7]-[3.11]";
+    let v = Vec::new;
+    let parts: Vec<Part> = vec![
+        ("Tb_single", "single punch: T + rho_1/2 = Tb_s(theta, rbar_s, rho_j), the solvability condition [2.14] at Lambda = 0 (it fixes rbar_s)", src, "Lambda", one_coefficient(&e.tbar_single), v()),
+        ("m0s_single", "single punch load: P2 = pi E* c_r l_s^r (1/4 - theta^2) m0s; the coefficient is m0s", src, "Lambda", one_coefficient(&e.load_single), v()),
+        ("Delta", "Delta = det of the single-punch Jacobian in (rbar, rho): every denominator below divides a power of Delta", src, "Lambda", one_coefficient(&e.jacobian), v()),
+        ("l_over_ls", "l/l_s at fixed P2", src, "Lambda", e.l_over_ls, v()),
+        ("rbar_minus_rbar_s", "rbar - rbar_s, rbar = c/l", src, "Lambda", e.rbar_minus_rbar_s, v()),
+        ("F_def_scaled", "F_def/(pi E* c_r^2 l_s^(2r-1)), F_def = int p g' dx", src, "Lambda", e.f_def_scaled, v()),
+        ("pressure_B", "p = E* c_r l^(r-1) cos(pi theta) omega(xh) B(xh); coefficient of Lambda^n is B_n(xh) (B_0: the single punch)", src, "Lambda", e.pressure, v()),
+    ];
+    finish(parts, &notes, subs)
+}
+
+/// The Problem 2 expansions of an even polynomial punch through `order`
+/// ([`polynomial_adhesion_expansion`]; THEORY.md sections 4, 5, 9).
+pub fn derive_polynomial_adhesion(
+    profile: &PolynomialProfile,
+    order: usize,
+    subs: &Substitutions,
+) -> Result<Vec<Derived>, SeriesError> {
+    let e = polynomial_adhesion_expansion(profile, order)?;
+    let r = profile.reference_degree();
+    let mut notes = vec![format!(
+        "profile g = sum_j c_j x^j, coefficients {} (index j multiplies x^j; ? = symbolic), reference degree r = {r}",
+        super::polynomial::profile::coefficients_text(profile)
+    )];
+    notes.extend(profile.period_ratio_definitions());
+    notes.push("lambda = pi a/L, chi = pi x/L, L_pi = L/pi; B = pi/cosh(pi eps), S = S(eps)".into());
+    let src = "THEORY.md sections 4, 5, 9; paper [3.13]-[3.18]";
+    let v = Vec::new;
+    let parts: Vec<Part> = vec![
+        (
+            "load_P_over_pi",
+            "P2 = E* c_r (L/pi)^r P(lambda), P(lambda)/pi = sum_j p_j lambda^(2j+2)/(2j+2) [3.18]",
+            src,
+            "lambda",
+            e.load,
+            v(),
+        ),
+        (
+            "slope_A",
+            "A_n: psi(x) = sum_n A_n |x|^n [3.16]; coefficient of chi^n is A_n/(c_r (pi/L)^(n+1-r)); even A_n vanish",
+            src,
+            "chi",
+            e.slope,
+            v(),
+        ),
+    ];
+    finish(parts, &notes, subs)
+}
+
+fn missing_profile() -> SeriesError {
+    SeriesError::NotInvertible {
+        operation: "polynomial series",
+        value: "no profile given (--coefficients or --degree)".into(),
+    }
 }
 
 impl SeriesObject {
     /// Derives the object through `order` (THEORY.md section 5 order convention): one part for
     /// the foundation objects, several for the Problem 1 expansions.
     pub fn derive(self, order: usize, subs: &Substitutions) -> Result<Vec<Derived>, SeriesError> {
+        match self {
+            SeriesObject::PolynomialSliding => {
+                let profile = subs.profile.as_ref().ok_or_else(missing_profile)?;
+                return derive_polynomial_sliding(profile, Convention::Paper, order, subs);
+            }
+            SeriesObject::PolynomialAdhesion => {
+                let profile = subs.profile.as_ref().ok_or_else(missing_profile)?;
+                return derive_polynomial_adhesion(profile, order, subs);
+            }
+            _ => {}
+        }
         let theta = Symbol::new("theta")?;
         let xh = Symbol::new("xh")?;
         let frac = |s: Series<Poly>| s.map(|c| Frac::from_poly(c.clone()));
@@ -229,12 +371,13 @@ impl SeriesObject {
                 ]
             }
             SeriesObject::Sliding(shape) => sliding_parts(&sliding_expansion(shape, order)?, order, subs)?,
+            SeriesObject::PolynomialSliding | SeriesObject::PolynomialAdhesion => unreachable!("handled above"),
         };
         let mut out: Vec<Derived> = parts
             .into_iter()
             .map(|(object, formula, source, variable, series, mut symbols)| {
                 let series = substitute(series, &mut symbols, subs)?;
-                Ok(Derived { object, formula, source, variable, series, symbols, values: None })
+                Ok(Derived { object, formula, source, variable, series, symbols, notes: vec![], values: None })
             })
             .collect::<Result<_, SeriesError>>()?;
         if let (SeriesObject::Adhesion, Some(nu)) = (self, &subs.nu) {
@@ -280,7 +423,11 @@ impl Derived {
         } else {
             format!("variable {v}, order {n} (every term through {v}^{n})", v = self.variable)
         };
-        let mut s = format!("object: {}\nformula: {}\nsource: {}\n{range}\n", self.object, self.formula, self.source);
+        let mut s = format!("object: {}\nformula: {}\nsource: {}\n", self.object, self.formula, self.source);
+        for n in &self.notes {
+            s.push_str(&format!("note: {n}\n"));
+        }
+        s.push_str(&format!("{range}\n"));
         for (k, c) in self.series.coeffs().iter().enumerate() {
             if !c.is_zero() {
                 let label = if self.object == "jacobi" { format!("j_{k}") } else { format!("[{}^{k}]", self.variable) };
@@ -298,7 +445,11 @@ impl Derived {
 
     /// LaTeX: one `align*` line per non-zero coefficient.
     pub fn latex(&self) -> String {
-        let mut s = format!("% {}: {} ({})\n\\begin{{align*}}\n", self.object, self.formula, self.source);
+        let mut s = format!("% {}: {} ({})\n", self.object, self.formula, self.source);
+        for n in &self.notes {
+            s.push_str(&format!("% {n}\n"));
+        }
+        s.push_str("\\begin{align*}\n");
         let v = match self.variable {
             "lambda" => "\\lambda",
             other => other,
@@ -322,6 +473,9 @@ impl Derived {
     /// JSON in the layout `{"object", "variable", "order", "symbols", "coefficients"}`.
     pub fn json(&self) -> serde_json::Value {
         let mut v = self.series.to_json(self.object, self.variable, &self.symbols);
+        if !self.notes.is_empty() {
+            v["notes"] = serde_json::json!(self.notes);
+        }
         if let Some((nu, vals)) = &self.values {
             v["nu"] = serde_json::json!(nu);
             v["values"] = serde_json::Value::Array(
@@ -348,7 +502,7 @@ mod tests {
 
     #[test]
     fn weight_substitution_is_exact() {
-        let subs = Substitutions { theta: Some(q(1, 10)), xh: Some(q(0, 1)), t: None, nu: None };
+        let subs = Substitutions { theta: Some(q(1, 10)), xh: Some(q(0, 1)), ..Substitutions::default() };
         let d = SeriesObject::Weight.derive(2, &subs).unwrap().remove(0);
         // At xh = 0: Y = sinc(lambda) = 1 - lambda^2/6 + ..., independent of theta.
         assert_eq!(d.series.coeff(2).unwrap().as_q(), Some(q(-1, 6)));
@@ -364,7 +518,8 @@ impl SeriesObject {
             SeriesObject::Weight => "weight",
             SeriesObject::Jacobi => "jacobi",
             SeriesObject::Sliding(_) => "sliding",
-            SeriesObject::Adhesion => "adhesion",
+            SeriesObject::Adhesion | SeriesObject::PolynomialAdhesion => "adhesion",
+            SeriesObject::PolynomialSliding => "sliding",
         }
     }
 }

@@ -6,5 +6,6 @@ pub mod adhesion;
 pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;
+pub mod polynomial;
 pub mod sliding;
 pub mod weight;

@@ -73,9 +73,10 @@ pub struct SlidingExpansion {
 }
 
 /// Polynomials in xh whose coefficients are Lambda-series: `c[i]` multiplies xh^i.
-type XPoly = Vec<Series<Poly>>;
+pub(super) type XPoly = Vec<Series<Poly>>;
 
-fn xp_add(a: &mut XPoly, i: usize, s: &Series<Poly>) {
+/// `a[i] += s`, growing `a` as needed.
+pub(super) fn xp_add(a: &mut XPoly, i: usize, s: &Series<Poly>) {
     let prec = s.prec();
     while a.len() <= i {
         a.push(Series::zero(prec));
@@ -83,7 +84,8 @@ fn xp_add(a: &mut XPoly, i: usize, s: &Series<Poly>) {
     a[i] = a[i].add(s);
 }
 
-fn xp_mul(a: &XPoly, b: &XPoly, prec: usize) -> XPoly {
+/// The product of two polynomials in xh, each coefficient truncated to `prec`.
+pub(super) fn xp_mul(a: &XPoly, b: &XPoly, prec: usize) -> XPoly {
     let mut out: XPoly = vec![Series::zero(prec); a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
         for (j, y) in b.iter().enumerate() {
@@ -94,22 +96,24 @@ fn xp_mul(a: &XPoly, b: &XPoly, prec: usize) -> XPoly {
 }
 
 /// Pure data of the derivation that does not change between sweeps.
-struct Tables {
-    prec: usize,
+pub(super) struct Tables {
+    pub(super) prec: usize,
     /// j_n(theta).
-    j: Vec<Poly>,
+    pub(super) j: Vec<Poly>,
     /// nu_n = (j_n(-theta) - j_{n+2}(-theta)) / (1/4 - theta^2).
-    nu: Vec<Poly>,
+    pub(super) nu: Vec<Poly>,
     /// z_k, Z(z) = 1 + sum_k z_k z^(2k).
-    z: Vec<Q>,
+    pub(super) z: Vec<Q>,
     /// 1/4 - theta^2.
-    quarter: Poly,
+    pub(super) quarter: Poly,
 }
 
 impl Tables {
-    fn new(order: usize, theta: &Poly) -> Result<Tables, SeriesError> {
+    /// Tables through Lambda^order for a right-hand side of degree at most `max(degree,
+    /// order + 2)` in xh (the kernel correction alone has degree `2 (order/2) - 1`).
+    pub(super) fn new(order: usize, theta: &Poly, degree: usize) -> Result<Tables, SeriesError> {
         let k_max = order / 2;
-        let deg = 2 * k_max + 2;
+        let deg = (2 * k_max + 2).max(degree);
         let j = jacobi_moments_at(2 * deg + 2, theta).coeffs().to_vec();
         let jm = jacobi_moments_at(4 * deg + 6, &theta.neg()).coeffs().to_vec();
         let quarter = Poly::from_q(&Q::new(1.into(), 4.into())).sub(&theta.mul(theta));
@@ -128,7 +132,7 @@ impl Tables {
     }
 
     /// sum_i F_i sum_{r+s=i-1} j_s w_{n+r}: the moment functional of the bounded solution.
-    fn moment(&self, f: &XPoly, w: &[Poly], n: usize) -> Series<Poly> {
+    pub(super) fn moment(&self, f: &XPoly, w: &[Poly], n: usize) -> Series<Poly> {
         let mut acc = Series::zero(self.prec);
         for (i, fi) in f.iter().enumerate().skip(1) {
             let mut c = Poly::zero();
@@ -167,73 +171,96 @@ pub fn sliding_expansion_with(
     let periodic = convention == Convention::PeriodicSurface;
     let theta = Poly::symbol(Symbol::new("theta")?);
     let t = Poly::symbol(Symbol::new("T")?);
-    let tab = Tables::new(order, &theta)?;
+    let tab = Tables::new(order, &theta, 0)?;
     let prec = tab.prec;
     let k_max = order / 2;
-    let cst = |p: &Poly| Series::constant(p.clone(), prec);
-    let big_lambda = Series::<Poly>::var(prec);
     let half = Q::new(1.into(), 2.into());
+    let step = if periodic { 1 } else { 2 };
 
     // Single punch: F = rbar + xh + T, u = rbar + T/rho = -j_1 = 2 theta, rho = 1.
-    let mut rho = Series::<Poly>::one(prec);
-    let mut rbar = cst(&theta.mul_int(2).sub(&t));
+    let mut rho = Series::<Poly>::one(1);
+    let mut rbar = Series::constant(theta.mul_int(2).sub(&t), 1);
     let mut mt: Vec<Series<Poly>> = {
-        let f: XPoly = vec![Series::zero(prec), Series::one(prec)];
+        let f: XPoly = vec![Series::zero(1), Series::one(1)];
         let mu: Vec<Poly> = tab.nu.iter().map(|n| n.mul(&tab.quarter)).collect();
         (0..2 * k_max + 3).map(|n| tab.moment(&f, &mu, n)).collect()
     };
-    let mut previous: Option<(Series<Poly>, Series<Poly>)> = None;
-    let mut result = None;
     // K/(E* k l) = Lambda (kappa (1 - 4 theta^2)/2 (1/rho) - 2 T invpi) in `periodic` (module doc).
-    let (k_rho, k_const) = if periodic {
+    let k_coeffs = if periodic {
         let kappa = Poly::symbol(Symbol::new("kappa")?);
         let invpi = Poly::symbol(Symbol::new("invpi")?);
-        let a = kappa.mul(&tab.quarter).mul_int(2);
-        let b = t.mul(&invpi).mul_int(-2);
-        (big_lambda.mul_scalar(&a), big_lambda.mul_scalar(&b))
+        Some((kappa.mul(&tab.quarter).mul_int(2), t.mul(&invpi).mul_int(-2)))
     } else {
-        (Series::zero(prec), Series::zero(prec))
+        None
     };
+    let mut previous: Option<(Series<Poly>, Series<Poly>)> = None;
+    let mut result = None;
+    // Sweep s maps a state exact through Lambda^(step (s-1)) to one exact through Lambda^(step s)
+    // (each unknown enters F multiplied by lambda^2, or by Lambda through K), so sweep s works at
+    // precision min(prec, step s + 1) and only the last sweeps run at full order; the iteration is
+    // run until two full-order sweeps agree (the truncated fixed point is unique, so the result
+    // does not depend on the schedule).
     let sweeps = if periodic { order + 3 } else { k_max + 3 };
-    for _sweep in 0..sweeps {
-        let lambda = big_lambda.mul(&rho).truncate(prec);
-        let lambda2 = lambda.mul(&lambda).truncate(prec);
+    for sweep in 1..=sweeps + 1 {
+        let wprec = prec.min(step * sweep + 1);
+        let pad = |s: &Series<Poly>| Series::new(s.coeffs().to_vec(), wprec);
+        rho = pad(&rho);
+        rbar = pad(&rbar);
+        mt = mt.iter().map(pad).collect();
+        let cst = |p: &Poly| Series::constant(p.clone(), wprec);
+        let big_lambda = Series::<Poly>::var(wprec);
+        let (k_rho, k_const) = match &k_coeffs {
+            Some((a, b)) => (big_lambda.mul_scalar(a), big_lambda.mul_scalar(b)),
+            None => (Series::zero(wprec), Series::zero(wprec)),
+        };
+        let lambda = big_lambda.mul(&rho).truncate(wprec);
+        let lambda2 = lambda.mul(&lambda).truncate(wprec);
         // The shape term s(rbar + xh) as a polynomial in xh.
-        let y: XPoly = vec![rbar.clone(), Series::one(prec)];
+        let y: XPoly = vec![rbar.clone(), Series::one(wprec)];
         let mut shape_poly: XPoly = y.clone();
         if shape == SlidingShape::Sinusoidal {
-            // sin(2 lambda y)/(2 lambda) - y = sum_{n>=1} (-1)^n 4^n lambda^(2n) y^(2n+1)/(2n+1)!
-            let mut y_pow = y.clone();
-            let mut lam_pow = Series::<Poly>::one(prec);
+            // s(rbar + xh) = sin(2 lambda (rbar + xh))/(2 lambda) by Taylor's formula in xh:
+            // [xh^0] = rbar sinc(2 lambda rbar), [xh^m] = (2 lambda)^(m-1) sin^(m)(2 lambda rbar)/m!
+            // (m >= 1; sin^(m) = cos, -sin, -cos, sin). Terms with m > 2 k_max + 1 are
+            // O(lambda^(2 k_max + 2)), beyond the order. Exact: the same series as the power
+            // expansion of sin in y, at a fraction of the cost.
+            let two_lambda = lambda.scale(&Q::from_integer(2.into()));
+            let z = two_lambda.mul(&rbar).truncate(wprec);
+            let (sin_z, cos_z) = z.sin_cos()?;
+            shape_poly = vec![rbar.mul(&z.sinc()?).truncate(wprec)];
+            let mut lam_pow = Series::<Poly>::one(wprec);
             let mut fact = Q::from_integer(1.into());
-            for n in 1..=k_max {
-                y_pow = xp_mul(&xp_mul(&y_pow, &y, prec), &y, prec);
-                lam_pow = lam_pow.mul(&lambda2).truncate(prec);
-                fact = fact * Q::from_integer(((2 * n) * (2 * n + 1)).into());
-                let sign = if n % 2 == 0 { 1 } else { -1 };
-                let c = Q::from_integer((sign * 4i64.pow(n as u32)).into()) / &fact;
-                for (i, yi) in y_pow.iter().enumerate() {
-                    xp_add(&mut shape_poly, i, &yi.mul(&lam_pow).truncate(prec).scale(&c));
+            for m in 1..=2 * k_max + 1 {
+                if m >= 2 {
+                    lam_pow = lam_pow.mul(&two_lambda).truncate(wprec);
                 }
+                fact = fact * Q::from_integer((m as i64).into());
+                let trig = match m % 4 {
+                    1 => cos_z.clone(),
+                    2 => sin_z.neg(),
+                    3 => cos_z.neg(),
+                    _ => sin_z.clone(),
+                };
+                shape_poly.push(trig.mul(&lam_pow).truncate(wprec).scale(&fact.recip()));
             }
         }
         // H = s(rbar + xh) - rbar + kernel correction: everything but u = rbar + T/rho.
         let mut h = shape_poly.clone();
         h[0] = h[0].sub(&rbar);
-        let mut lam_pow = Series::<Poly>::one(prec);
+        let mut lam_pow = Series::<Poly>::one(wprec);
         for k in 1..=k_max {
-            lam_pow = lam_pow.mul(&lambda2).truncate(prec);
+            lam_pow = lam_pow.mul(&lambda2).truncate(wprec);
             let zk = &tab.z[k];
             let mut binom = Q::from_integer(1.into()); // C(2k-1, j)
             for j in 0..2 * k {
                 let sign = if j % 2 == 0 { Q::from_integer(1.into()) } else { Q::from_integer((-1).into()) };
                 let c = -(zk * &binom * sign);
-                xp_add(&mut h, 2 * k - 1 - j, &mt[j].mul(&lam_pow).truncate(prec).scale(&c));
+                xp_add(&mut h, 2 * k - 1 - j, &mt[j].mul(&lam_pow).truncate(wprec).scale(&c));
                 binom = binom * Q::new(((2 * k - 1 - j) as i64).into(), ((j + 1) as i64).into());
             }
         }
         // Solvability [2.14]: u + sum_i H_i j_i = 0.
-        let mut u = Series::zero(prec);
+        let mut u = Series::zero(wprec);
         for (i, hi) in h.iter().enumerate() {
             u = u.sub(&hi.mul_scalar(&tab.j[i]));
         }
@@ -241,22 +268,25 @@ pub fn sliding_expansion_with(
         let mut f = h.clone();
         f[0] = f[0].add(&u);
         let mu: Vec<Poly> = tab.nu.iter().map(|n| n.mul(&tab.quarter)).collect();
-        mt = (0..2 * k_max + 3).map(|n| tab.moment(&f, &mu, n)).collect();
+        mt = (0..2 * k_max + 3).map(|n| tab.moment(&f, &mu, n).truncate(wprec)).collect();
         let s0_half = tab.moment(&f, &tab.nu, 0).scale(&half);
         let sqrt_s0_half = s0_half.pow_q(&half)?;
-        rho = sqrt_s0_half.inv()?;
+        rho = sqrt_s0_half.inv()?.truncate(wprec);
         // rbar = u - (T + K-term)/rho: the constant of F divided out of u.
         let c_rho = cst(&t).add(&k_rho);
-        rbar = u.sub(&sqrt_s0_half.mul(&c_rho).truncate(prec)).sub(&k_const);
+        rbar = u.sub(&sqrt_s0_half.mul(&c_rho).truncate(wprec)).sub(&k_const).truncate(wprec);
+        if wprec < prec {
+            continue;
+        }
         let fdef = {
-            let mut acc = Series::zero(prec);
+            let mut acc = Series::zero(wprec);
             for (i, si) in shape_poly.iter().enumerate() {
-                acc = acc.add(&si.mul(&mt[i]).truncate(prec));
+                acc = acc.add(&si.mul(&mt[i]).truncate(wprec));
             }
-            acc.mul(&rho.powi(3)?).truncate(prec).scale(&Q::from_integer(2.into()))
+            acc.mul(&rho.powi(3)?).truncate(wprec).scale(&Q::from_integer(2.into()))
         };
         // Pressure B(xh) = sum_i F_i sum_{r+s=i-1} xh^r j_s.
-        let mut b: XPoly = vec![Series::zero(prec)];
+        let mut b: XPoly = vec![Series::zero(wprec)];
         for (i, fi) in f.iter().enumerate().skip(1) {
             for r in 0..i {
                 xp_add(&mut b, r, &fi.mul_scalar(&tab.j[i - 1 - r]));
@@ -278,7 +308,6 @@ pub fn sliding_expansion_with(
         });
     }
     let xh = Symbol::new("xh")?;
-    let step = if periodic { 1 } else { 2 };
     let pressure = (1..=order / step)
         .map(|jj| {
             b.iter().enumerate().fold(Poly::zero(), |acc, (r, br)| {
@@ -288,6 +317,7 @@ pub fn sliding_expansion_with(
         })
         .collect();
     let rbar_s = theta.mul_int(2).sub(&t);
+    let cst = |p: &Poly| Series::constant(p.clone(), prec);
     Ok(SlidingExpansion {
         shape,
         convention,

@@ -67,6 +67,8 @@ pub enum ShapeName {
     Parabolic,
     /// g = D (1 - cos(2 pi x/L)).
     Sinusoidal,
+    /// g = sum_j c_j x^j (with --coefficients or --degree).
+    Polynomial,
 }
 
 /// Subcommands.
@@ -94,6 +96,17 @@ pub enum RawCommand {
         /// Punch shape (sliding).
         #[arg(long, value_enum, default_value_t = ShapeName::Parabolic)]
         shape: ShapeName,
+        /// Polynomial profile (sliding --shape polynomial, adhesion): exact coefficients in numpy
+        /// order, index j multiplies x^j, e.g. 0,0,1,0,1/10 for x^2 + x^4/10; `?` keeps one symbolic.
+        #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+        coefficients: Option<String>,
+        /// Polynomial profile of degree D with every coefficient symbolic (adhesion: even ones).
+        #[arg(long, value_name = "D", allow_hyphen_values = true)]
+        degree: Option<String>,
+        /// Substitute an exact rational for rbar_s, the single punch's centre over l_s (sliding
+        /// --shape polynomial).
+        #[arg(long = "rbar-s", value_name = "R", allow_hyphen_values = true)]
+        rbar_s: Option<String>,
         /// Surface convention of the sliding expansions (THEORY.md section 8; default paper:
         /// even powers of Lambda; periodic: odd powers too, symbols kappa = tan(pi theta), invpi = 1/pi).
         #[arg(long, value_enum)]

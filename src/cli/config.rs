@@ -2,6 +2,7 @@
 
 use super::args::{ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
+use crate::asymptotics::polynomial::PolynomialProfile;
 use crate::asymptotics::sliding::SlidingShape;
 use crate::model::{Convention, ModelError};
 use crate::scene::{parse::parse_scene, Method, Scene, SceneProblem};
@@ -61,6 +62,7 @@ pub fn max_order(object: SeriesObject) -> usize {
         SeriesObject::Weight => 80,
         SeriesObject::Sliding(_) => 24,
         SeriesObject::Adhesion => 16,
+        SeriesObject::PolynomialSliding | SeriesObject::PolynomialAdhesion => 16,
     }
 }
 
@@ -78,6 +80,78 @@ pub fn parse_exact(flag: &str, text: &str) -> Result<Q, ModelError> {
     parse_rational(text).map_err(|_| {
         ModelError::new(flag, text, "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25")
     })
+}
+
+/// The polynomial profile of `--coefficients` (`?` = symbolic) or `--degree` (every coefficient
+/// symbolic; the adhesion series keeps the even ones only), for the polynomial objects; refused
+/// for the others, and required by them.
+fn polynomial_profile(
+    object: SeriesObject,
+    coefficients: Option<&str>,
+    degree: Option<&str>,
+) -> Result<Option<PolynomialProfile>, ModelError> {
+    let polynomial = matches!(object, SeriesObject::PolynomialSliding | SeriesObject::PolynomialAdhesion);
+    let even = object == SeriesObject::PolynomialAdhesion;
+    let profile = match (coefficients, degree) {
+        (Some(_), Some(d)) => return Err(ModelError::new("--degree", d, "give either --coefficients or --degree")),
+        (None, None) if polynomial => {
+            return Err(ModelError::new("--shape", "polynomial", "needs --coefficients LIST or --degree D"))
+        }
+        (None, None) => return Ok(None),
+        (Some(list), None) => {
+            let c = list
+                .split(',')
+                .map(|item| match item.trim() {
+                    "?" => Ok(None),
+                    x => parse_rational(x).map(Some).map_err(|_| {
+                        ModelError::new(
+                            "--coefficients",
+                            list,
+                            format!("{x:?} is not an exact number (or ? for a symbol)"),
+                        )
+                    }),
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            PolynomialProfile::new(c)
+        }
+        (None, Some(d)) => {
+            let n = d.trim().parse::<usize>().map_err(|_| ModelError::new("--degree", d, "must be an integer"))?;
+            if even && n % 2 == 1 {
+                return Err(ModelError::new(
+                    "--degree",
+                    d,
+                    "the adhesion series needs an even profile: an even degree",
+                ));
+            }
+            let mut p = PolynomialProfile::symbolic(n)?;
+            if even {
+                let c = p
+                    .coefficients()
+                    .iter()
+                    .enumerate()
+                    .map(|(j, c)| if j % 2 == 1 { Some(Q::from_integer(0.into())) } else { c.clone() })
+                    .collect();
+                p = PolynomialProfile::new(c)?;
+            }
+            Ok(p)
+        }
+    }
+    .map_err(|e| ModelError { parameter: e.parameter.replace("coefficients", "--coefficients"), ..e })?;
+    if !polynomial {
+        return Err(ModelError::new(
+            if coefficients.is_some() { "--coefficients" } else { "--degree" },
+            coefficients.or(degree).unwrap_or_default(),
+            "only the sliding series with --shape polynomial and the adhesion series take a polynomial profile",
+        ));
+    }
+    if even && !profile.is_even() {
+        return Err(ModelError::new(
+            "--coefficients",
+            coefficients.unwrap_or_default(),
+            "the adhesion series needs an even profile: every odd coefficient 0",
+        ));
+    }
+    Ok(Some(profile))
 }
 
 /// The model's convention named on the command line.
@@ -102,7 +176,20 @@ impl RunConfig {
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, ModelError> {
         match args.command {
-            RawCommand::Series { object, order, theta, xh, t, nu, shape, convention, format } => {
+            RawCommand::Series {
+                object,
+                order,
+                theta,
+                xh,
+                t,
+                nu,
+                shape,
+                coefficients,
+                degree,
+                rbar_s,
+                convention,
+                format,
+            } => {
                 if let (Some(c), false) = (convention, object == ObjectName::Sliding) {
                     return Err(ModelError::new(
                         "--convention",
@@ -115,12 +202,25 @@ impl RunConfig {
                     ObjectName::Kernel => SeriesObject::Kernel,
                     ObjectName::Weight => SeriesObject::Weight,
                     ObjectName::Jacobi => SeriesObject::Jacobi,
+                    ObjectName::Adhesion if coefficients.is_some() || degree.is_some() => {
+                        SeriesObject::PolynomialAdhesion
+                    }
                     ObjectName::Adhesion => SeriesObject::Adhesion,
-                    ObjectName::Sliding => SeriesObject::Sliding(match shape {
-                        ShapeName::Parabolic => SlidingShape::Parabolic,
-                        ShapeName::Sinusoidal => SlidingShape::Sinusoidal,
-                    }),
+                    ObjectName::Sliding => match shape {
+                        ShapeName::Parabolic => SeriesObject::Sliding(SlidingShape::Parabolic),
+                        ShapeName::Sinusoidal => SeriesObject::Sliding(SlidingShape::Sinusoidal),
+                        ShapeName::Polynomial => SeriesObject::PolynomialSliding,
+                    },
                 };
+                let profile = polynomial_profile(object, coefficients.as_deref(), degree.as_deref())?;
+                let rbar_s = rbar_s.map(|v| parse_exact("--rbar-s", &v)).transpose()?;
+                if let (Some(v), false) = (&rbar_s, object == SeriesObject::PolynomialSliding) {
+                    return Err(ModelError::new(
+                        "--rbar-s",
+                        v,
+                        "only the sliding series with --shape polynomial has rbar_s",
+                    ));
+                }
                 let order = parse_order(&order, max_order(object))?;
                 let theta = theta.map(|t| parse_exact("--theta", &t)).transpose()?;
                 if let Some(t) = &theta {
@@ -155,10 +255,15 @@ impl RunConfig {
                         return Err(ModelError::new("--nu", v, "must lie in [0, 1/2]"));
                     }
                     if object != SeriesObject::Adhesion {
-                        return Err(ModelError::new("--nu", v, "only the adhesion series takes nu"));
+                        return Err(ModelError::new(
+                            "--nu",
+                            v,
+                            "only the adhesion series of the parabola takes nu (a polynomial profile keeps symbols)",
+                        ));
                     }
                 }
-                Ok(RunConfig::Series { object, order, subs: Substitutions { theta, xh, t, nu }, convention, format })
+                let subs = Substitutions { theta, xh, t, nu, rbar_s, profile };
+                Ok(RunConfig::Series { object, order, subs, convention, format })
             }
             RawCommand::Solve { scene, digits, method, order, convention, format, json } => {
                 let text = std::fs::read_to_string(&scene)
