@@ -121,9 +121,15 @@ impl PolynomialProfile {
 
     /// rho_j for j = 0..=D as exact polynomials (module doc): `rho[r] = 1`, `rho[0] = 0`.
     pub fn ratios(&self) -> Result<Vec<Poly>, SeriesError> {
+        self.ratios_in(LS, "rho")
+    }
+
+    /// Ratios c_j/c_r times `length`^(j - r) for j = 0..=D (1 at r, 0 for a known zero), the
+    /// symbol `{name}_j` where c_j or c_r is symbolic.
+    fn ratios_in(&self, length: &str, name: &str) -> Result<Vec<Poly>, SeriesError> {
         let r = self.reference;
         let cr = self.coefficients[r].clone();
-        let ls = Symbol::new(LS)?;
+        let len = Symbol::new(length)?;
         self.coefficients
             .iter()
             .enumerate()
@@ -131,8 +137,8 @@ impl PolynomialProfile {
                 Ok(match (j, c, &cr) {
                     (_, Some(v), _) if Zero::is_zero(v) => Poly::zero(),
                     (j, _, _) if j == r => Poly::one(),
-                    (j, Some(v), Some(cr)) if j > r => Poly::term(&(v / cr), Monomial::power(ls, (j - r) as u32)),
-                    (j, _, _) => Poly::symbol(Symbol::new(&format!("rho_{j}"))?),
+                    (j, Some(v), Some(cr)) if j > r => Poly::term(&(v / cr), Monomial::power(len, (j - r) as u32)),
+                    (j, _, _) => Poly::symbol(Symbol::new(&format!("{name}_{j}"))?),
                 })
             })
             .collect()
@@ -144,21 +150,7 @@ impl PolynomialProfile {
     /// the natural constants are period-based. A known c_j with a known c_r enters as
     /// (c_j/c_r) L_pi^(j-r) in the symbol `L_pi` = L/pi; otherwise `sigma_j` is a symbol.
     pub fn period_ratios(&self) -> Result<Vec<Poly>, SeriesError> {
-        let r = self.reference;
-        let cr = self.coefficients[r].clone();
-        let lpi = Symbol::new(LPI)?;
-        self.coefficients
-            .iter()
-            .enumerate()
-            .map(|(j, c)| {
-                Ok(match (j, c, &cr) {
-                    (_, Some(v), _) if Zero::is_zero(v) => Poly::zero(),
-                    (j, _, _) if j == r => Poly::one(),
-                    (j, Some(v), Some(cr)) if j > r => Poly::term(&(v / cr), Monomial::power(lpi, (j - r) as u32)),
-                    (j, _, _) => Poly::symbol(Symbol::new(&format!("sigma_{j}"))?),
-                })
-            })
-            .collect()
+        self.ratios_in(LPI, "sigma")
     }
 
     /// What each sigma_j stands for (Problem 2), for printed headers.
