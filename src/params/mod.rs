@@ -7,4 +7,5 @@
 //! quantity is written here once per number type.
 
 pub mod adhesion;
+pub mod profile;
 pub mod sliding;

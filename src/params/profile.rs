@@ -1,0 +1,148 @@
+//! The punch profile as the checks see it (THEORY.md sections 1, 9): the exact derivatives of a
+//! polynomial, the height of the punch row, and the refusals of a general profile on its contact
+//! (convexity, slope, the circle's wall). Re-exported from [`super::sliding`].
+
+use super::sliding::ShapeF64;
+use crate::error::Error;
+use crate::model::{Exact, ModelError, PunchShape, SlidingLoad, SlidingProblem};
+use crate::numerics::exact::to_f64;
+use std::f64::consts::PI;
+
+/// g of the punch row at x (THEORY.md sections 1, 9): the profile on the cell (-L/2, L/2)
+/// repeated with period L (x reduced to the cell; the sinusoid is periodic by itself), so a
+/// profile with odd terms steps at the cell edges; +infinity where a circle has no punch
+/// (|x| >= R in the cell). For the physicality criterion's gap (a check, in f64).
+pub fn row_height_f64(shape: &ShapeF64, period: Option<f64>, x: f64) -> f64 {
+    let xr = period.map_or(x, |l| x - l * (x / l).round());
+    match shape {
+        ShapeF64::Parabolic { k } => k * xr * xr,
+        ShapeF64::Sinusoidal { d } => {
+            period.map_or(f64::NAN, |l| d * (1.0 - (2.0 * std::f64::consts::PI * x / l).cos()))
+        }
+        // g = sum_i slope_i x^(i+1)/(i+1).
+        ShapeF64::Polynomial { slope, .. } => {
+            slope.iter().enumerate().rev().fold(0.0, |acc, (i, s)| acc * xr + s / (i + 1) as f64) * xr
+        }
+        ShapeF64::Circular { r } if xr.abs() >= *r => f64::INFINITY,
+        ShapeF64::Circular { r } => r - ((r - xr) * (r + xr)).sqrt(),
+    }
+}
+
+/// The exact coefficients of g^(order) for g = sum_j c_j x^j (order 1: g', 2: g''), trailing
+/// zeros dropped (at least one entry).
+pub fn polynomial_derivative(coefficients: &[Exact], order: usize) -> Vec<Exact> {
+    let mut d: Vec<Exact> = coefficients
+        .iter()
+        .enumerate()
+        .skip(order)
+        .map(|(j, c)| {
+            let mut f = Exact::from_integer(1.into());
+            for i in 0..order {
+                f *= Exact::from_integer(((j - i) as i64).into());
+            }
+            c * f
+        })
+        .collect();
+    while d.len() > 1 && d.last().is_some_and(num_traits::Zero::is_zero) {
+        d.pop();
+    }
+    if d.is_empty() {
+        d.push(Exact::from_integer(0.into()));
+    }
+    d
+}
+
+/// Largest |g'| accepted on the contact of a polynomial or circular punch. The theory
+/// linearises the boundary conditions in the slope ([1.9]: |g'| << 1, the boundary of the
+/// half-plane and its normal are taken as those of the undeformed surface); the neglected terms
+/// are relative O(g'^2) (e.g. the normal's direction cosine 1/sqrt(1 + g'^2) = 1 - g'^2/2), i.e.
+/// up to 12% at |g'| = 1/2, already a coarse model. Beyond it the contact is refused rather than
+/// computed to many digits of a model that no longer describes it. (The parabola and the sinusoid
+/// keep their earlier behaviour: no slope limit.)
+pub const MAX_CONTACT_SLOPE: f64 = 0.5;
+
+/// Largest half-length, as a fraction of the circle's radius, that the locating stages search:
+/// there |g'| = 0.9/sqrt(1 - 0.81) = 2.06, far beyond [`MAX_CONTACT_SLOPE`], so no admissible
+/// contact is lost, and the quadrature near the singularity of g' at |x| = R stays affordable.
+pub const CIRCLE_SIZE_CAP: f64 = 0.9;
+
+/// Refusals of a polynomial or circular profile on a found contact [-a, b] = [`left`, `right`]
+/// (THEORY.md section 9), evaluated in `f64` from the exact profile: (i) the circle's contact
+/// must stay inside |x| < R; (ii) g'' >= 0 on [-a, b] (sampled at 257 Chebyshev points and the
+/// ends, relative tolerance 1e-12: a heuristic, a dip narrower than the sampling is missed);
+/// (iii) max |g'| on [-a, b] <= [`MAX_CONTACT_SLOPE`] (at the ends, g' being monotone once
+/// convex). The parabola and the sinusoid are not checked here. Each error names the parameter
+/// to change, its value and the valid range.
+pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64) -> Result<(), Error> {
+    let (size_name, size_value) = match problem.load() {
+        SlidingLoad::NormalLoad(p) => ("normal_load", crate::model::readable(p)),
+        SlidingLoad::HalfLength(l) => ("half_length", crate::model::readable(l)),
+    };
+    let contact = format!(
+        "[-a, b] = [{}, {}]",
+        crate::numerics::accuracy::readable_f64(left),
+        crate::numerics::accuracy::readable_f64(right)
+    );
+    let (slope_at, curvature_at): (Box<dyn Fn(f64) -> f64>, Box<dyn Fn(f64) -> f64>) = match problem.shape() {
+        PunchShape::Polynomial { coefficients } => {
+            let to = |v: Vec<Exact>| v.iter().map(|c| to_f64(c).unwrap_or(f64::NAN)).collect::<Vec<f64>>();
+            let d1 = to(polynomial_derivative(coefficients, 1));
+            let d2 = to(polynomial_derivative(coefficients, 2));
+            let horner = |c: Vec<f64>| move |x: f64| c.iter().rev().fold(0.0, |acc, v| acc * x + v);
+            (Box::new(horner(d1)), Box::new(horner(d2)))
+        }
+        PunchShape::Circular { radius } => {
+            let r = to_f64(radius).unwrap_or(f64::NAN);
+            if !(left.abs() < r && right.abs() < r) {
+                return Err(Error::Input(ModelError::new(
+                    size_name,
+                    size_value,
+                    format!(
+                        "the contact {contact} of the circular punch reaches |x| = R = {} (radius): reduce {size_name} or enlarge the radius",
+                        crate::model::readable(radius)
+                    ),
+                )));
+            }
+            (
+                Box::new(move |x: f64| x / ((r - x) * (r + x)).sqrt()),
+                Box::new(move |x: f64| r * r / ((r - x) * (r + x)).powf(1.5)),
+            )
+        }
+        _ => return Ok(()),
+    };
+    // (ii) convexity.
+    let n = 256;
+    let xs: Vec<f64> = (0..=n)
+        .map(|i| {
+            let t = -(PI * i as f64 / n as f64).cos();
+            0.5 * (left + right) + 0.5 * (right - left) * t
+        })
+        .collect();
+    let g2: Vec<f64> = xs.iter().map(|x| curvature_at(*x)).collect();
+    let scale = g2.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if let Some((x, v)) = xs.iter().zip(&g2).find(|(_, v)| !(**v >= -1e-12 * scale)) {
+        let (name, value) = problem.shape().parameters().remove(0);
+        return Err(Error::Input(ModelError::new(
+            name,
+            value,
+            format!(
+                "the profile must be convex on the contact {contact} (g'' >= 0; THEORY.md section 9), but g''({}) = {}",
+                crate::numerics::accuracy::readable_f64(*x),
+                crate::numerics::accuracy::readable_f64(*v)
+            ),
+        )));
+    }
+    // (iii) small slope.
+    let worst = slope_at(left).abs().max(slope_at(right).abs());
+    if !(worst <= MAX_CONTACT_SLOPE) {
+        return Err(Error::Input(ModelError::new(
+            size_name,
+            size_value,
+            format!(
+                "max |g'| on the contact {contact} is {} > {MAX_CONTACT_SLOPE}: the theory assumes a small slope |g'| << 1 [1.9] (neglected terms O(g'^2)); reduce {size_name}",
+                crate::numerics::accuracy::readable_f64(worst)
+            ),
+        )));
+    }
+    Ok(())
+}
