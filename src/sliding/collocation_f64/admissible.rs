@@ -28,7 +28,7 @@ fn contacts_at(prm: &SlidingParamsF64, s: f64, options: &SolverOptions) -> Resul
     let target = TargetF64::HalfLength(l);
     let cands = match candidates(prm, target, options) {
         Ok(c) => c,
-        Err(SlidingF64Error::NoConvergence { .. } | SlidingF64Error::LoadExceedsMaximum { .. }) => return Ok(vec![]),
+        Err(SlidingF64Error::NoConvergence { .. } | SlidingF64Error::NoRoot { .. }) => return Ok(vec![]),
         Err(e) => return Err(e),
     };
     let mut out = Vec::new();

@@ -102,7 +102,7 @@ pub(super) fn state_of(
 }
 
 /// All candidates of the problem (main-run accuracy), with the nodes to use for each. For the
-/// sinusoid under a load no root may exist: [`SlidingF64Error::LoadExceedsMaximum`] with the
+/// sinusoid under a load no root may exist: [`SlidingF64Error::NoRoot`] with the
 /// largest load of the scan.
 pub(super) fn candidates(
     prm: &SlidingParamsF64,

@@ -4,8 +4,6 @@
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::gauss_jacobi_f64::QuadratureError;
 use crate::numerics::roots::RootError;
-use crate::params::sliding::SlidingParamsF64;
-use std::f64::consts::PI;
 
 /// Why no solution is returned.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -25,22 +23,15 @@ pub enum SlidingF64Error {
     /// ([`crate::sliding::physicality::refusal`]), in its own kind.
     #[error(transparent)]
     Refused(crate::error::Error),
-    /// The sinusoid cannot carry this load at these friction and wear values: either P2(lambda)
-    /// never reaches it, or the solutions that reach it are not physical (p < 0 at an end or a
-    /// negative gap). `max_load` is the largest (physical, when known) load, reached at the
-    /// contact fraction `max_fraction` = 2 l/L.
-    #[error("no solution: normal_load = {load} exceeds the maximum load {max_load} this sinusoid carries with a physical contact at theta = {theta}, tau0 = {tau0} (reached at contact fraction 2l/L = {max_fraction})")]
-    LoadExceedsMaximum {
+    /// No root of the sinusoid's side conditions reaches this load on the scan of lambda (the
+    /// largest load seen is `largest`). [`super::solve_sliding_f64`] turns it into a refusal
+    /// with the admissible range ([`SlidingF64Error::Refused`]).
+    #[error("no solution: no root reaches normal_load = {load} (largest load on the scan {largest})")]
+    NoRoot {
         /// Requested P2.
         load: f64,
-        /// Largest load found (physical or not).
-        max_load: f64,
-        /// theta.
-        theta: f64,
-        /// tau0.
-        tau0: f64,
-        /// Largest contact fraction scanned.
-        max_fraction: f64,
+        /// Largest load on the scan (physical or not).
+        largest: f64,
     },
     /// Solutions exist but none is physical.
     #[error("no physical solution: {reason}")]
@@ -57,20 +48,6 @@ pub enum SlidingF64Error {
     /// The quadrature rule could not be built.
     #[error(transparent)]
     Quadrature(#[from] QuadratureError),
-}
-
-impl SlidingF64Error {
-    /// [`SlidingF64Error::LoadExceedsMaximum`]: the load `load` is above `max_load`, reached at
-    /// lambda (contact fraction 2 lambda/pi).
-    pub(super) fn load_exceeds_maximum(prm: &SlidingParamsF64, load: f64, max_load: f64, lambda: f64) -> Self {
-        SlidingF64Error::LoadExceedsMaximum {
-            load,
-            max_load,
-            theta: prm.theta,
-            tau0: prm.tau0,
-            max_fraction: 2.0 * lambda / PI,
-        }
-    }
 }
 
 impl From<crate::error::Error> for SlidingF64Error {
@@ -93,14 +70,11 @@ impl From<SlidingF64Error> for crate::error::Error {
                 Error::input("xh (output point)", readable_f64(value), "must lie in (-1, 1)")
             }
             SlidingF64Error::Refused(e) => e,
-            SlidingF64Error::LoadExceedsMaximum { load, max_load, theta, tau0, max_fraction } => Error::NoSolution {
+            SlidingF64Error::NoRoot { load, largest } => Error::NoSolution {
                 why: format!(
-                    "normal_load = {} exceeds the maximum load {} this sinusoid carries with a physical contact at theta = {}, tau0 = {} (reached at contact fraction 2l/L = {})",
+                    "no root reaches normal_load = {} (largest load on the scan {})",
                     readable_f64(load),
-                    readable_f64(max_load),
-                    readable_f64(theta),
-                    readable_f64(tau0),
-                    readable_f64(max_fraction)
+                    readable_f64(largest)
                 ),
             },
             SlidingF64Error::NotPhysical { reason } => Error::NotPhysical { why: reason },

@@ -69,16 +69,15 @@
 //! - Sinusoid with theta != 0: P2(lambda) rises to a maximum and falls; a load below the maximum
 //!   is reached twice, and on the branch past the maximum p < 0 at the leading end (theta > 0) or
 //!   the trailing end (theta < 0) (`-- two-roots`, `-- load-curve`). So at most one physical
-//!   solution was found in every case tried; above the maximum
-//!   [`SlidingF64Error::LoadExceedsMaximum`] reports it (`max_load.rs`; e.g. 0.426 pi E* D at
-//!   theta = 0.148, asserted between 0.40 and 0.45 by the test
-//!   `sinusoid_with_wear_matches_exact_reduction_and_reports_maximum_load`; 0.152 pi E* D at
-//!   theta = 0.352; pi E* D, full contact, at theta = 0).
+//!   solution was found in every case tried; above the largest physical load the refusal quotes
+//!   the admissible range (`admissible.rs`, the shared [`crate::sliding::physicality`]; e.g.
+//!   0.426 pi E* D at theta = 0.148, asserted between 0.40 and 0.45 by the test
+//!   `sinusoid_with_wear_matches_exact_reduction_and_reports_maximum_load`).
 //! - Gap: with the paper's convention (the default) v is not periodic, so the free surface does not close over a
-//!   period: h(L - a) - h(b) = (2 beta/E*) P1 - cW P2 ([`SlidingSolutionF64::gap_closure`]); with
-//!   tau0 > 0, v' jumps by 2 beta tau0/E* at the ends and the gap is slightly negative just past
-//!   b. See `physical.rs` for how the check copes; both are reported, not hidden. In the
-//!   `periodic` convention the surface closes (`gap_closure` = 0).
+//!   period: h(L - a) - h(b) = (2 beta/E*) P1 - cW P2 (measured by the shared criterion,
+//!   `physicality.closure_defect`); with tau0 > 0, v' jumps by 2 beta tau0/E* at the ends (the
+//!   criterion leaves that step out and reports it). In the `periodic` convention the surface
+//!   closes (the defect is round-off).
 //! - lambda -> pi/2 needs n ~ ln(1e14)/(2 ln cot(lambda/2)) nodes (381 at lambda = 1.5276,
 //!   about 60 ms; `-- hard-cases`); beyond `max_nodes` the solver reports non-convergence.
 //!   theta -> +-1/2 costs digits in the rules of 1/omega (estimate 2.5e-13 at theta = 0.4936,
@@ -101,8 +100,8 @@
 //! in lambda per shape), `general.rs` (a polynomial or circular punch, THEORY.md section 9: F(u) =
 //! (E*/2) g'(x(u)) collocated directly, the centre by Newton's method in c with the g'' basis
 //! giving the derivative, P2(size) = P2 by Brent), `candidates.rs` (every root at the main run's nodes), `outputs.rs` (l, a, b,
-//! c, P1, P2, F_def, p of a state), `physical.rs` (p >= 0, gap), `max_load.rs` (largest physical
-//! load of the sinusoid), `verify.rs` (the check run), `solve.rs` (the driver), `solution.rs` (result
+//! c, P1, P2, F_def, p of a state), `physical.rs` (p >= 0, gap), `admissible.rs` (the admissible range
+//! its refusals quote), `verify.rs` (the check run), `solve.rs` (the driver), `solution.rs` (result
 //! types), `error.rs`. The MPFR method of the same problem is [`crate::sliding`] (parallel verbs:
 //! solve, verify, physical, solution).
 

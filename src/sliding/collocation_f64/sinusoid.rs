@@ -126,9 +126,8 @@ pub(super) type Root = (f64, usize);
 
 /// Scans lambda in (0, 1.45] for sign changes of ln|(X, Y)| (Soldatenkov's P2(lambda) is not
 /// monotone for theta != 0, so there may be several), refines each with Brent at the nodes for
-/// that lambda. When there is none, returns [`SlidingF64Error::LoadExceedsMaximum`] with the
-/// largest load seen on the scan (physical or not; `max_load.rs` replaces it by the largest
-/// physical load).
+/// that lambda. When there is none, returns [`SlidingF64Error::NoRoot`] with the
+/// largest load seen on the scan (physical or not; the solver replaces it by the admissible range).
 pub(super) fn sinusoid_scan(
     prm: &SlidingParamsF64,
     big_l: f64,
@@ -172,7 +171,7 @@ pub(super) fn sinusoid_scan(
         prev = Some((lam, h));
     }
     if out.is_empty() {
-        return Err(SlidingF64Error::load_exceeds_maximum(prm, p2, max_load, SCAN_MAX));
+        return Err(SlidingF64Error::NoRoot { load: p2, largest: max_load });
     }
     Ok(out)
 }

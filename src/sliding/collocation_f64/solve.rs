@@ -19,7 +19,7 @@ use crate::sliding::physicality::refusal;
 /// twice). None reaching the load (the sinusoid's scan) is an empty list.
 fn all_candidates(prm: &SlidingParamsF64, options: &SolverOptions) -> Result<Vec<(Candidate, usize)>> {
     match candidates(prm, prm.target, options) {
-        Err(SlidingF64Error::LoadExceedsMaximum { .. }) => Ok(vec![]),
+        Err(SlidingF64Error::NoRoot { .. }) => Ok(vec![]),
         other => other,
     }
 }

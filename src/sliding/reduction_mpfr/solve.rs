@@ -30,6 +30,7 @@ use crate::numerics::exact::to_float;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
 use crate::params::sliding::{check_profile_on_contact, ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
 use crate::sliding::physicality::admissible::{admissible, Admissible, SizeContacts, LAMBDA_SCAN_MAX};
+use crate::sliding::physicality::CLOSURE_TOL;
 use crate::sliding::physicality::{refusal, Assessment, Refusal};
 use rug::Float;
 use std::sync::Arc;
@@ -276,19 +277,30 @@ fn refused(setup: &Setup, reasons: &[String]) -> Result<SlidingError, SlidingErr
 }
 
 /// The shared criterion for the contact of branch solution `sol` at size `s` (the loads P1 =
-/// mu P2 + 2 l tau0 from it).
+/// mu P2 + 2 l tau0 from it), a solution of the equations (closure to [`CLOSURE_TOL`]).
 fn physical_at(
     params: &SlidingParamsMpfr,
     s: &Float,
     sol: &ShiftSolution,
     n: usize,
 ) -> Result<Result<Assessment, Refusal>, SlidingError> {
+    physical_at_tol(params, s, sol, n, CLOSURE_TOL)
+}
+
+/// [`physical_at`] with the closure check's relative tolerance `closure_tol`.
+fn physical_at_tol(
+    params: &SlidingParamsMpfr,
+    s: &Float,
+    sol: &ShiftSolution,
+    n: usize,
+    closure_tol: f64,
+) -> Result<Result<Assessment, Refusal>, SlidingError> {
     let rule = inverse_rule(params, n)?;
     let size = Size::new(params, s);
     let contact = Contact::new(params, &size, sol.c.clone());
     let pr = Pressure::new(params, &contact, &rule);
     let p1 = p1_of(params, &size.l, &sol.p2);
-    Ok(physicality(params, &contact, &pr, &p1, &sol.p2))
+    Ok(physicality_with(params, &contact, &pr, &p1, &sol.p2, closure_tol))
 }
 
 /// P1 = mu P2 + 2 l tau0.
@@ -586,14 +598,8 @@ pub fn physicality_at_contact(
         None => l.clone(),
     };
     let n = bucket(nodes_for(lambda_of(&params, s.to_f64()), LOCATE_DIGITS));
-    let p2_unit = Float::with_val(prec, p2 / &params.unit);
-    let rule = inverse_rule(&params, n)?;
-    let size = Size::new(&params, &s);
-    let contact = Contact::new(&params, &size, c.clone());
-    let pr = Pressure::new(&params, &contact, &rule);
-    let p1 = p1_of(&params, &size.l, &p2_unit);
-    let tol = crate::sliding::physicality::CLOSURE_TOL.max(100.0 * rel_error);
-    Ok(physicality_with(&params, &contact, &pr, &p1, &p2_unit, tol))
+    let sol = ShiftSolution { c: c.clone(), p2: Float::with_val(prec, p2 / &params.unit) };
+    physical_at_tol(&params, &s, &sol, n, CLOSURE_TOL.max(100.0 * rel_error))
 }
 
 /// The refusal of a contact of `problem` for `reasons` (empty: no contact carries the load), with
