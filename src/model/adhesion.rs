@@ -27,9 +27,8 @@ impl AdhesionProblem {
     /// Validates the statement: a parabolic, even polynomial or circular punch (Problem 2 here
     /// is symmetric: a polynomial with a non-zero odd coefficient is refused, naming
     /// `coefficients`), positive sizes, 2a < L for a given a. (For a given load every P2 > 0 has
-    /// a solution with 2a < L, since P2(a) -> infinity as 2a -> L.) A single punch with a given
-    /// load is accepted for the parabola only (its solution is self-similar; for another profile
-    /// give `half_width`). Convexity, the circle's |x| < R and the slope limit on the contact are
+    /// a solution with 2a < L, since P2(a) -> infinity as 2a -> L; the single punch's half-width
+    /// under a given load is searched by the solvers for every profile.) Convexity, the circle's |x| < R and the slope limit on the contact are
     /// checked by the solvers once a is known ([`crate::adhesion::profile`]).
     pub fn new(material: Material, period: Period, shape: PunchShape, size: AdhesionSize) -> Result<Self, ModelError> {
         match &shape {
@@ -73,18 +72,6 @@ impl AdhesionProblem {
                     format!("must satisfy 2 a < L = {}", readable(l)),
                 ));
             }
-        }
-        if let (AdhesionSize::NormalLoad(p), Period::Infinite, false) =
-            (&size, &period, matches!(shape, PunchShape::Parabolic { .. }))
-        {
-            return Err(ModelError::new(
-                "normal_load",
-                readable(p),
-                format!(
-                    "a single punch (period \"inf\") with a given load is solved for the parabola only; for the {} punch give half_width",
-                    shape.name()
-                ),
-            ));
         }
         let reference_curvature = reference_curvature(&shape, &period, &size);
         Ok(AdhesionProblem { material, period, shape, size, reference_curvature })
@@ -191,8 +178,8 @@ mod tests {
         let e = AdhesionProblem::new(mat(), l, cubic, AdhesionSize::HalfWidth(q(1, 5))).unwrap_err();
         assert_eq!(e.parameter, "coefficients");
         assert!(e.expected.contains("coefficients[3] = c_3 = 1/10") && e.value.contains("\"1/10\""), "{e}");
-        let e = AdhesionProblem::new(mat(), Period::Infinite, circle, AdhesionSize::NormalLoad(q(1, 1))).unwrap_err();
-        assert_eq!(e.parameter, "normal_load");
-        assert!(e.expected.contains("half_width"), "{e}");
+        // A single punch under a given load: every even profile (the solvers search the half-width).
+        let p = AdhesionProblem::new(mat(), Period::Infinite, circle, AdhesionSize::NormalLoad(q(1, 1))).unwrap();
+        assert_eq!(p.curvature(), &q(1, 4));
     }
 }

@@ -20,21 +20,32 @@
 //! printed by `cargo run --release --example adhesion_charts -- series-ratios`), and the recursion divides by Re M_{2n+1}, which
 //! changes sign at n ~ 302 for nu = 0: the series is at best slowly convergent, possibly only
 //! asymptotic, at small nu. The method computes [`SERIES_TERMS`] coefficients, truncates where
-//! the terms fall below 1e-18 f_0, and returns `IllConditioned` when lambda^2 is not well inside the
-//! observed ratio (lambda <= ~0.74 at nu = 0, ~1.2 at nu >= 0.3).
+//! the terms fall below 1e-18 of the largest, and returns `IllConditioned` when lambda^2 is not
+//! well inside the observed ratio (lambda <= ~0.74 at nu = 0, ~1.2 at nu >= 0.3).
+//!
+//! A general even profile (THEORY.md section 9) replaces the right side pi by
+//! pi g'(x)/(2 k x) = pi sum_n r_n tau^n, tau = (x/a)^2 ([`right_side`]: a polynomial for an even
+//! polynomial punch, the binomial series of the circle), and the recursion is solved directly in
+//! tau for the contact at hand ([`solve::solve_rhs`]): F_n = f_n lambda^{2n},
+//!   sum_{j+m=n} F_j lambda^{2m} Re mu_{j,m} = pi r_n,
+//! which at lambda = 0 (single punch) is F_n = pi r_n/Re M_{2n+1}, THEORY 9's power law for
+//! g = A x^(2n). The formulas above hold with f_n lambda^{2n} -> F_n, c_n lambda^{2n} -> C_n.
 
 //!
 //! # Files
 //! [`kernel`] (the integrands in `f64`), [`series`] (the universal coefficients f_n, mu_{j,m},
-//! once per material), [`solve`] (truncation at one lambda, dimensionless values), [`solution`]
+//! once per material), [`right_side`] (a general even profile's right side as a series in
+//! (x/a)^2, THEORY.md section 9), [`solve`] (truncation at one lambda, dimensionless values), [`solution`]
 //! (dimensional results from the exact problem), [`verify`] (the accuracy estimate by a second,
 //! finer run). The MPFR method has the same files in [`crate::adhesion::volterra_mpfr`].
 
 pub mod kernel;
+pub mod right_side;
 pub mod series;
 pub mod solution;
 pub mod solve;
 pub mod verify;
 
+pub use right_side::RightSeries;
 pub use series::{universal_coefficients, SeriesParams, UniversalSeries, SERIES_TERMS};
-pub use solve::{solve, solve_nominal, SeriesSolution, SERIES_LAMBDA_MAX};
+pub use solve::{solve, solve_nominal, solve_rhs, SeriesSolution, SERIES_LAMBDA_MAX};

@@ -118,9 +118,10 @@ fn g_coeffs(s: f64, c: f64, eps: f64, lsinc: &[f64], terms: usize) -> Vec<C64> {
 /// Number of Taylor coefficients computed (f_n are universal: they do not depend on lambda).
 pub const SERIES_TERMS: usize = 90;
 
-/// Radius estimate R (in t = eta^2) from the last coefficient ratio f_{n-1}/f_n (all f_n observed
+/// Radius estimate R from the last coefficient ratio |f_{n-1}/f_n| (in the variable of the series
+/// given: t = eta^2 for the universal f_n, tau = t/lambda^2 for a solution's F_n; all f_n observed
 /// positive for nu in [0, 1/2]). The ratios decrease with n, so this is an over-estimate, used
-/// with a safety factor (lambda^2 < 0.8 R) and a truncation-error estimate.
+/// with a safety factor (lambda^2 < 0.8 R, i.e. 1.25 in tau) and a truncation-error estimate.
 pub(super) fn radius_estimate(f: &[f64]) -> f64 {
     let n = f.len();
     if n < 3 || f[n - 1] == 0.0 {

@@ -1,9 +1,11 @@
 //! Method 2 in dimensional form: the solution of the exact problem (given a or P2, period or
 //! single punch) at the requested points x/a. Scalings: [`crate::adhesion::scales`].
 
-use super::series::UniversalSeries;
-use super::solve::{solve, SERIES_LAMBDA_MAX};
+use super::right_side::RightSeries;
+use super::series::{UniversalSeries, SERIES_TERMS};
+use super::solve::{solve_rhs, SeriesSolution, SERIES_LAMBDA_MAX};
 use crate::adhesion::error::AdhesionError;
+use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
 use crate::adhesion::scales::Digits;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::exact::to_f64;
@@ -43,6 +45,8 @@ pub struct AdhesionSolutionF64 {
 
 /// One run of method 2 (f64 power series in lambda^2) on the universal series of the problem's
 /// material; `digits_estimated` is left at 0 (the estimate compares two runs: [`super::verify`]).
+/// A profile other than the parabola enters through its right side ([`RightSeries`]) and is
+/// checked on the contact found ([`check_profile_on_contact`]).
 pub(super) fn solve_run(
     problem: &AdhesionProblem,
     points: &[Exact],
@@ -58,44 +62,27 @@ pub(super) fn solve_run(
     let e_star = conv(problem.material().contact_modulus(), "contact_modulus")?;
     let k = conv(problem.curvature(), "k")?;
     let pi = std::f64::consts::PI;
-    let (lambda, a, sol) = match (problem.size(), problem.period()) {
-        (AdhesionSize::HalfWidth(a), Period::Infinite) => (0.0, conv(a, "half_width")?, solve(universal, 0.0)?),
-        (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
-            let lam = pi * conv(&(a / l), "half_width")?;
-            (lam, conv(a, "half_width")?, solve(universal, lam)?)
+    let right = RightSeries::new(problem)?;
+    let period = match problem.period() {
+        Period::Finite(l) => Some(conv(l, "period")?),
+        Period::Infinite => None,
+    };
+    let lambda_of = |a: f64| period.map_or(0.0, |l| pi * a / l);
+    let at = |a: f64| solve_rhs(universal, lambda_of(a), &right.coefficients(a, SERIES_TERMS));
+    let (a, sol) = match problem.size() {
+        AdhesionSize::HalfWidth(a) => {
+            let a = conv(a, "half_width")?;
+            check_profile_on_contact(problem, a)?;
+            (a, at(a)?)
         }
-        (AdhesionSize::NormalLoad(p2), Period::Infinite) => {
-            let sol = solve(universal, 0.0)?;
-            let a = (conv(p2, "normal_load")? / (sol.load_ratio() * e_star * k)).sqrt();
-            (0.0, a, sol)
-        }
-        (AdhesionSize::NormalLoad(p2), Period::Finite(l)) => {
-            let lf = conv(l, "period")?;
-            let target = conv(p2, "normal_load")? * pi * pi / (e_star * k * lf * lf);
-            // Newton on P(lambda) = lambda^2 P2~(lambda), re-solving the series each step.
-            let cp = universal.constants.load_constant;
-            let mut lam = (-target / (2.0 * cp)).exp().acos().min(SERIES_LAMBDA_MAX);
-            let mut sol = solve(universal, lam)?;
-            for it in 0..60 {
-                let p = lam * lam * sol.load_ratio();
-                let d = lam * sol.f_at(1.0);
-                let next = (lam - (p - target) / d).clamp(0.5 * lam, SERIES_LAMBDA_MAX);
-                let done = (next - lam).abs() <= 1e-15 * lam;
-                lam = next;
-                sol = solve(universal, lam)?;
-                if done {
-                    break;
-                }
-                if it == 59 {
-                    return Err(AdhesionError::NotConverged {
-                        what: "f64 Newton for the half-width",
-                        reason: "60 steps".into(),
-                    });
-                }
-            }
-            (lam, lam * lf / pi, sol)
+        AdhesionSize::NormalLoad(p2) => {
+            let target = conv(p2, "normal_load")?;
+            let (a, sol) = half_width_for_load(problem, universal, &at, target, e_star * k, period)?;
+            check_profile_on_contact(problem, a)?;
+            (a, sol)
         }
     };
+    let lambda = lambda_of(a);
     let load = sol.load_ratio() * e_star * k * a * a;
     let pts = points
         .iter()
@@ -119,4 +106,106 @@ pub(super) fn solve_run(
         terms: sol.f.len(),
         digits_estimated: Digits::from_points(0.0, [], 0.0),
     })
+}
+
+/// The half-width of the given load P2 (`target`), by Newton's method safeguarded by bisection
+/// on a in (0, a_max): P2(a) = E* k a^2 P~(a) increases with a, and dP2/da = E* k a F(1)
+/// (f does not depend on the contact size, THEORY.md section 4: P(lambda) = (1/2) int_0^(lambda^2) f,
+/// the same for the single punch in the limit L -> infinity). a_max: the series' range
+/// lambda <= [`SERIES_LAMBDA_MAX`] and the profile's slope limit
+/// ([`largest_admissible_half_width`]). A solve that fails inside the bracket (the series too
+/// close to its radius) shrinks the bracket from above; a load beyond the last solvable contact is
+/// refused with the reason of that contact. `ek` = E* k. The parabola's single punch is
+/// self-similar (P~ constant) and needs no iteration.
+fn half_width_for_load(
+    problem: &AdhesionProblem,
+    universal: &UniversalSeries,
+    at: &dyn Fn(f64) -> Result<SeriesSolution, AdhesionError>,
+    target: f64,
+    ek: f64,
+    period: Option<f64>,
+) -> Result<(f64, SeriesSolution), AdhesionError> {
+    let pi = std::f64::consts::PI;
+    let slope_cap = largest_admissible_half_width(problem);
+    if period.is_none() && slope_cap.is_none() {
+        let sol = at(1.0)?;
+        return Ok(((target / (sol.load_ratio() * ek)).sqrt(), sol));
+    }
+    let series_cap = period.map(|l| SERIES_LAMBDA_MAX * l / pi);
+    let a_max = match (series_cap, slope_cap) {
+        (Some(s), Some(c)) => s.min(c),
+        (Some(s), None) => s,
+        (None, Some(c)) => c,
+        (None, None) => f64::INFINITY,
+    };
+    // First guess: the parabola with curvature k (Kuznetsov-like P ~ 2 C_P ln sec lambda for a
+    // period, P2 ~ 2 C_P E* k a^2 for the single punch), inside the bracket.
+    let cp = universal.constants.load_constant;
+    let guess = match period {
+        Some(l) => {
+            let t = target * pi * pi / (ek * l * l);
+            (-t / (2.0 * cp)).exp().acos() * l / pi
+        }
+        None => (target / (cp * ek)).sqrt(),
+    };
+    let (mut lo, mut hi) = (0.0f64, a_max);
+    let mut a = if guess.is_finite() && guess > 0.0 && guess < a_max { guess } else { 0.5 * a_max };
+    let mut last_err: Option<AdhesionError> = None;
+    for _ in 0..200 {
+        match at(a) {
+            Ok(sol) => {
+                let p = ek * a * a * sol.load_ratio();
+                let d = ek * a * sol.f_at(1.0);
+                if p < target {
+                    lo = a;
+                } else {
+                    hi = a;
+                }
+                let newton = a - (p - target) / d;
+                // Converged on the Newton step itself (a bisection step near the bracket's end
+                // would also be small where the load is out of reach).
+                if (newton - a).abs() <= 4.0 * f64::EPSILON * a {
+                    return Ok((a, sol));
+                }
+                let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+                if hi - lo <= 4.0 * f64::EPSILON * hi {
+                    break;
+                }
+                a = next;
+            }
+            Err(e) => {
+                hi = a;
+                last_err = Some(e);
+                a = 0.5 * (lo + hi);
+            }
+        }
+    }
+    if hi < a_max * (1.0 - 1e-12) {
+        if let Some(e) = last_err {
+            return Err(e);
+        }
+    }
+    let size = readable(match problem.size() {
+        AdhesionSize::NormalLoad(p) => p,
+        AdhesionSize::HalfWidth(a) => a,
+    });
+    if slope_cap.is_some_and(|c| c <= a_max) {
+        return Err(crate::model::ModelError::new(
+            "normal_load",
+            size,
+            format!(
+                "the contact would pass a = {}, where g'(a) reaches the slope limit {}: the theory assumes a small slope |g'| << 1 [1.9]; reduce normal_load",
+                crate::numerics::accuracy::readable_f64(a_max),
+                crate::params::sliding::MAX_CONTACT_SLOPE
+            ),
+        )
+        .into());
+    }
+    Err(last_err.unwrap_or(AdhesionError::IllConditioned {
+        method: "f64-series",
+        parameter: "normal_load",
+        value: size,
+        valid: format!("a load whose contact has lambda = pi a/L <= {SERIES_LAMBDA_MAX}"),
+        reason: "the lambda^2 series converges too slowly near its radius".into(),
+    }))
 }

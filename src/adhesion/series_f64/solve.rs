@@ -11,7 +11,9 @@ use crate::params::adhesion::AdhesionParamsF64;
 /// Largest lambda accepted by the series method.
 pub const SERIES_LAMBDA_MAX: f64 = 1.2;
 
-/// The series solution at one lambda.
+/// The series solution at one lambda, in the contact's own variable tau = sigma^2 = (x/a)^2:
+/// F(tau) = f(lambda^2 tau) = sum_n F_n tau^n with F_n = f_n lambda^(2n) (so that the single punch,
+/// lambda = 0, with a profile other than the parabola, whose F is not constant, has a series too).
 #[derive(Debug, Clone)]
 pub struct SeriesSolution {
     /// lambda = pi a/L.
@@ -20,15 +22,25 @@ pub struct SeriesSolution {
     pub eps: f64,
     /// cosh(pi eps).
     pub cosh_pi_eps: f64,
-    /// Taylor coefficients f_n of f(t) (P'(eta) = eta f(eta^2)).
+    /// F_n = f_n lambda^(2n): F(tau) = sum F_n tau^n (P'(eta) = eta f(eta^2)).
     pub f: Vec<f64>,
-    /// c_n = sum_{j+m=n} f_j mu_{j,m}: I(chi) = sum c_n chi^{2n}.
+    /// C_n = c_n lambda^(2n), c_n = sum_{j+m=n} f_j mu_{j,m}: I(lambda sigma) = sum C_n sigma^(2n).
     pub c: Vec<C64>,
     rule: Vec<(f64, f64, f64)>,
 }
 
-/// Solves at lambda (0 = single punch) from the universal coefficients.
+/// Solves at lambda (0 = single punch) for the parabola (right side pi).
 pub fn solve(universal: &UniversalSeries, lambda: f64) -> Result<SeriesSolution, AdhesionError> {
+    solve_rhs(universal, lambda, &[1.0])
+}
+
+/// Solves at lambda (0 = single punch) with the right side pi r(tau), r = sum_n `rhs`[n] tau^n
+/// ([`super::right_side`]; the parabola: [1]). The triangular recursion of the module doc of
+/// [`super`] in the contact's variable:
+///   F_n = (pi r_n - sum_{j<n} F_j lambda^(2(n-j)) Re mu_{j,n-j}) / Re M_(2n+1),
+/// truncated where |F_n| falls below the cutoff times the largest |F_j| (not before the last
+/// non-zero r_n).
+pub fn solve_rhs(universal: &UniversalSeries, lambda: f64, rhs: &[f64]) -> Result<SeriesSolution, AdhesionError> {
     if !(0.0..=SERIES_LAMBDA_MAX).contains(&lambda) {
         return Err(AdhesionError::IllConditioned {
             method: "f64-series",
@@ -38,38 +50,60 @@ pub fn solve(universal: &UniversalSeries, lambda: f64) -> Result<SeriesSolution,
             reason: "the lambda^2 series converges too slowly near its radius".into(),
         });
     }
-    let (mut f, mu) = (universal.f.clone(), &universal.mu);
+    let mu = &universal.mu;
     let cutoff = universal.params.cutoff;
-    let terms = f.len();
-    // Truncate where the terms f_n lambda^{2n} fall below cutoff f_0 (1e-18 nominal), or fail.
-    let r = radius_estimate(&f);
+    let terms = universal.f.len();
     let l2 = lambda * lambda;
-    let mut keep = 2usize;
-    let mut p = 1.0;
+    let mut l2pow = vec![1.0; terms];
+    for m in 1..terms {
+        l2pow[m] = l2pow[m - 1] * l2;
+    }
+    let pi = std::f64::consts::PI;
+    let mut f: Vec<f64> = Vec::with_capacity(terms);
     for n in 0..terms {
-        keep = n + 1;
-        if n >= 2 && (f[n] * p).abs() < cutoff * f[0].abs() && l2 < r {
+        let mut acc = pi * rhs.get(n).copied().unwrap_or(0.0);
+        for (j, fj) in f.iter().enumerate() {
+            acc -= fj * l2pow[n - j] * mu[j][n - j].re;
+        }
+        let d = mu[n][0].re;
+        if !(d.abs() > 0.0) {
+            return Err(AdhesionError::NotConverged {
+                what: "f64-series recursion",
+                reason: format!("Re M_{} vanished", 2 * n + 1),
+            });
+        }
+        f.push(acc / d);
+    }
+    // Radius of the series in tau from its last two computed terms (module doc of [`super`]:
+    // the ratios decrease with n, so the last is the most cautious), before truncation.
+    let r = radius_estimate(&f);
+    let last_rhs = rhs.iter().rposition(|r| *r != 0.0).unwrap_or(0);
+    let mut scale = 0f64;
+    let mut keep = terms;
+    for (n, fn_) in f.iter().enumerate() {
+        scale = scale.max(fn_.abs());
+        if n >= 2 && n >= last_rhs && fn_.abs() < cutoff * scale {
+            keep = n + 1;
             break;
         }
-        p *= l2;
     }
-    let tail = (f[keep - 1] * p).abs() / (1.0 - (l2 / r).min(0.999)) / f[0].abs();
-    if !(l2 < 0.8 * r) || keep == terms && tail > 1e-16 {
+    f.truncate(keep);
+    // The tail bound assumes geometric decay at the ratio r.
+    let tail = f[keep - 1].abs() / (1.0 - (1.0 / r).min(0.999)) / scale.max(f64::MIN_POSITIVE);
+    if !(r > 1.25) || keep == terms && tail > 1e-16 {
         return Err(AdhesionError::IllConditioned {
             method: "f64-series",
             parameter: "lambda",
             value: readable_f64(lambda),
             valid: format!(
-                "lambda^2 well inside the radius of convergence R ~ {r:.4} of the lambda^2 series at this nu"
+                "the contact well inside the radius of convergence of the series (ratio of its last terms {r:.4} in tau = (x/a)^2, at least 1.25 needed)"
             ),
             reason: format!(
-                "truncation error estimate {tail:.1e}; the solution f = P'(eta)/eta is singular at eta^2 = R"
+                "truncation error estimate {tail:.1e}; the solution f = P'(eta)/eta is singular at the radius (lambda^2 series at this nu, or the profile's own singularity)"
             ),
         });
     }
-    f.truncate(keep);
-    let terms = keep;
-    let c = (0..terms).map(|n| (0..=n).map(|j| mu[j][n - j] * f[j]).sum()).collect();
+    let c = (0..keep).map(|n| (0..=n).map(|j| mu[j][n - j] * (f[j] * l2pow[n - j])).sum()).collect();
     Ok(SeriesSolution {
         lambda,
         eps: universal.constants.eps,
@@ -90,38 +124,29 @@ pub fn solve_nominal(material: &Material, lambda: f64) -> Result<SeriesSolution,
 impl SeriesSolution {
     /// F(tau) = f(lambda^2 tau).
     pub fn f_at(&self, tau: f64) -> f64 {
-        let x = self.lambda * self.lambda * tau;
-        self.f.iter().rev().fold(0.0, |acc, fn_| acc * x + fn_)
+        self.f.iter().rev().fold(0.0, |acc, fn_| acc * tau + fn_)
     }
-    /// P2/(E* k a^2).
+    /// P2/(E* k a^2) = (1/2) int_0^1 F = (1/2) sum F_n/(n+1).
     pub fn load_ratio(&self) -> f64 {
-        let l2 = self.lambda * self.lambda;
-        let mut p = 1.0;
-        let mut s = 0.0;
-        for (n, fn_) in self.f.iter().enumerate() {
-            s += fn_ * p / (n + 1) as f64;
-            p *= l2;
-        }
-        0.5 * s
+        0.5 * self.f.iter().enumerate().map(|(n, fn_)| fn_ / (n + 1) as f64).sum::<f64>()
     }
     /// I(lambda sigma).
     pub fn integral_i(&self, sigma: f64) -> C64 {
-        let x = (self.lambda * sigma).powi(2);
+        let x = sigma * sigma;
         self.c.iter().rev().fold(C64::new(0.0, 0.0), |acc, cn| acc * x + cn)
     }
     /// psi/(k a).
     pub fn psi_ratio(&self, sigma: f64) -> f64 {
         -2.0 * sigma / std::f64::consts::PI * self.integral_i(sigma).im
     }
-    /// phi/(k a^2).
+    /// phi/(k a^2) = -(1/pi) sum Im C_n sigma^(2n+2)/(n+1).
     pub fn phi_ratio(&self, sigma: f64) -> f64 {
-        let l2 = self.lambda * self.lambda;
         let s2 = sigma * sigma;
         let mut p = s2;
         let mut acc = 0.0;
         for (n, cn) in self.c.iter().enumerate() {
             acc += cn.im * p / (n + 1) as f64;
-            p *= l2 * s2;
+            p *= s2;
         }
         -acc / std::f64::consts::PI
     }
@@ -168,7 +193,8 @@ mod tests {
         let pi = std::f64::consts::PI;
         let want = [1.0, 1.0 / 3.0, 2.0 / 15.0, 17.0 / 315.0];
         for (n, w) in want.iter().enumerate() {
-            assert!((s.f[n] / pi - w).abs() < 1e-13, "f_{n} = {}", s.f[n] / pi);
+            let f_n = s.f[n] / 0.25f64.powi(n as i32);
+            assert!((f_n / pi - w).abs() < 1e-13, "f_{n} = {}", f_n / pi);
         }
         // Kuznetsov: P2/(E* k a^2) = ln sec(lambda)/lambda^2.
         let want = pi * (1.0 / 0.5f64.cos()).ln() / 0.25;

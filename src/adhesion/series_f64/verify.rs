@@ -20,15 +20,6 @@ use crate::params::adhesion::AdhesionParamsF64;
 /// Method 2 (f64 power series in lambda^2) with estimated digits per quantity (module doc).
 pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<AdhesionSolutionF64, AdhesionError> {
     check_points(points)?;
-    if !is_parabola(problem.shape()) {
-        return Err(AdhesionError::InvalidArgument {
-            parameter: "shape",
-            value: problem.shape().name().to_string(),
-            expected: "the f64 method (lambda^2 series) is built on the parabola's coefficients A_n: \
-                       solve a polynomial or circular punch with the method \"mpfr\""
-                .into(),
-        });
-    }
     let constants = AdhesionParamsF64::new(problem.material());
     let nominal = UniversalSeries::new(&constants, SeriesParams::NOMINAL)?;
     let mut sol = solve_run(problem, points, &nominal)?;
@@ -64,16 +55,4 @@ fn estimate(problem: &AdhesionProblem, sol: &AdhesionSolutionF64, fine: &Adhesio
         }),
         cap,
     )
-}
-
-/// g = k x^2, as `parabolic` or as a polynomial whose only non-zero coefficient is c_2.
-fn is_parabola(shape: &crate::model::PunchShape) -> bool {
-    use crate::model::PunchShape;
-    match shape {
-        PunchShape::Parabolic { .. } => true,
-        PunchShape::Polynomial { coefficients } => {
-            coefficients.iter().enumerate().all(|(j, c)| j == 2 || num_traits::Zero::is_zero(c))
-        }
-        _ => false,
-    }
 }

@@ -99,13 +99,24 @@ pub fn solve_mpfr_with(
             let sol = solve_rhs(&constants, &lam, params, &rhs_for_a(a))?;
             (lam, to_float(a, prec), sol)
         }
-        (AdhesionSize::NormalLoad(p2), Period::Infinite) => {
-            // The parabola only (AdhesionProblem::new): self-similar, F constant.
-            let sol = solve_rhs(&constants, &zero, params, &RightSide::Parabola)?;
-            let p = to_float(p2, prec);
-            let a = Float::with_val(prec, p / (sol.load_ratio() * &e_star * &k)).sqrt();
-            (zero.clone(), a, sol)
-        }
+        (AdhesionSize::NormalLoad(p2), Period::Infinite) => match largest_admissible_half_width(problem) {
+            // The parabola: self-similar, F constant.
+            None => {
+                let sol = solve_rhs(&constants, &zero, params, &RightSide::Parabola)?;
+                let p = to_float(p2, prec);
+                let a = Float::with_val(prec, p / (sol.load_ratio() * &e_star * &k)).sqrt();
+                (zero.clone(), a, sol)
+            }
+            Some(a_max) => {
+                let ek = Float::with_val(prec, &e_star * &k);
+                let rhs_at = |a: &Float| RightSide::new(problem, Float::with_val(prec, a * a), prec);
+                let guess = (p2_f64(p2) / (first_guess_load_constant(problem) * ek.to_f64())).sqrt();
+                let (a, sol) =
+                    single_punch_half_width(&constants, &rhs_at, &ek, p2, Float::with_val(prec, a_max), guess, params)?;
+                check_profile_on_contact(problem, a.to_f64())?;
+                (zero.clone(), a, sol)
+            }
+        },
         (AdhesionSize::NormalLoad(p2), Period::Finite(l)) => {
             let lf = to_float(l, prec);
             let target = Float::with_val(prec, to_float(p2, prec) * &pi * &pi)
@@ -262,4 +273,72 @@ fn lambda_for_load(
 /// MPFR constants of a run below 64 bits would move the guess, and with it the Chebyshev interval).
 fn first_guess_load_constant(problem: &AdhesionProblem) -> f64 {
     AdhesionParamsF64::new(problem.material()).load_constant
+}
+
+fn p2_f64(p2: &Exact) -> f64 {
+    crate::numerics::exact::to_f64(p2).unwrap_or(f64::NAN)
+}
+
+/// The half-width of a single punch (period "inf") of a profile other than the parabola under
+/// the given load P2: P2(a) = E* k a^2 P~(a) with P~ = (1/2) int_0^1 F (the right side, and so F,
+/// depends on a), dP2/da = E* k a F(1) (THEORY.md section 4 in the limit L -> infinity: f does
+/// not depend on the contact size). Newton's method safeguarded by bisection on (0, a_max), a_max
+/// the slope limit ([`largest_admissible_half_width`]); a load beyond P2(a_max) is refused naming
+/// `normal_load`. Each step is one collocation solve at lambda = 0 (the right side's own size,
+/// M + 2 nodes for an even polynomial of degree 2M).
+fn single_punch_half_width(
+    constants: &AdhesionParamsMpfr,
+    rhs_at: &dyn Fn(&Float) -> RightSide,
+    ek: &Float,
+    normal_load: &Exact,
+    a_max: Float,
+    guess: f64,
+    params: VolterraParams,
+) -> Result<(Float, VolterraSolution), AdhesionError> {
+    let prec = params.prec;
+    let zero = Float::with_val(prec, 0);
+    let one = Float::with_val(prec, 1);
+    let target = to_float(normal_load, prec);
+    let load_at = |a: &Float| -> Result<(Float, Float, VolterraSolution), AdhesionError> {
+        let sol = solve_rhs(constants, &zero, params, &rhs_at(a))?;
+        let p = Float::with_val(prec, ek * a) * a * sol.load_ratio();
+        let d = Float::with_val(prec, ek * a) * sol.f_at(&one);
+        Ok((p, d, sol))
+    };
+    let (p_max, _, _) = load_at(&a_max)?;
+    if p_max < target {
+        return Err(crate::model::ModelError::new(
+            "normal_load",
+            readable(normal_load),
+            format!(
+                "the contact would pass a = {}, where g'(a) reaches the slope limit {} (largest load {}): the theory assumes a small slope |g'| << 1 [1.9]; reduce normal_load",
+                crate::numerics::accuracy::readable_mpfr(&a_max),
+                crate::params::sliding::MAX_CONTACT_SLOPE,
+                crate::numerics::accuracy::readable_mpfr(&p_max)
+            ),
+        )
+        .into());
+    }
+    let (mut lo, mut hi) = (zero.clone(), a_max.clone());
+    let mut a = if guess.is_finite() && guess > 0.0 && guess < a_max.to_f64() {
+        Float::with_val(prec, guess)
+    } else {
+        Float::with_val(prec, &a_max / 2u32)
+    };
+    let tol = Float::with_val(prec, Float::i_exp(1, -(prec as i32) + 6));
+    for _ in 0..300 {
+        let (p, d, sol) = load_at(&a)?;
+        if p < target {
+            lo = a.clone();
+        } else {
+            hi = a.clone();
+        }
+        let newton = Float::with_val(prec, &a - Float::with_val(prec, &p - &target) / &d);
+        if Float::with_val(prec, &newton - &a).abs() <= Float::with_val(prec, &tol * &a) {
+            return Ok((a, sol));
+        }
+        let next = if newton > lo && newton < hi { newton } else { Float::with_val(prec, &lo + &hi) / 2u32 };
+        a = next;
+    }
+    Err(AdhesionError::NotConverged { what: "Newton for the single punch's half-width", reason: "300 steps".into() })
 }
