@@ -23,8 +23,13 @@ pub fn row_height_f64(shape: &ShapeF64, period: Option<f64>, x: f64) -> f64 {
         ShapeF64::Polynomial { slope, .. } => {
             slope.iter().enumerate().rev().fold(0.0, |acc, (i, s)| acc * xr + s / (i + 1) as f64) * xr
         }
-        ShapeF64::Circular { r } if xr.abs() >= *r => f64::INFINITY,
-        ShapeF64::Circular { r } => r - ((r - xr) * (r + xr)).sqrt(),
+        // Beyond the wall: no punch. At the wall (|x| = R up to the rounding of the point, e.g.
+        // the middle of the free arc of a circle with R = L/2 filling its cell): the height R.
+        ShapeF64::Circular { r } if xr.abs() > *r * (1.0 + 4.0 * f64::EPSILON) => f64::INFINITY,
+        ShapeF64::Circular { r } => {
+            let d = (r - xr.abs()).max(0.0);
+            r - (d * (r + xr.abs())).sqrt()
+        }
     }
 }
 
