@@ -107,10 +107,7 @@ fn f64_and_mpfr_never_disagree_on_physicality() {
 
 /// The largest physical load quoted by a refusal ("normal_load in (0, X]").
 fn largest_admissible_load(text: &str) -> f64 {
-    text.split("normal_load in (0, ")
-        .nth(1)
-        .and_then(|t| t.split(']').next())
-        .and_then(|t| t.parse().ok())
+    periodic_contact::sliding::physicality::admissible::Admissible::quoted_largest_load(text)
         .unwrap_or_else(|| panic!("no admissible range in: {text}"))
 }
 

@@ -33,12 +33,6 @@ pub enum SlidingF64Error {
         /// Largest load on the scan (physical or not).
         largest: f64,
     },
-    /// Solutions exist but none is physical.
-    #[error("no physical solution: {reason}")]
-    NotPhysical {
-        /// What failed (p < 0 inside or gap < 0 outside, where).
-        reason: String,
-    },
     /// The iteration or the node refinement did not reach the accuracy.
     #[error("did not converge: {reason}")]
     NoConvergence {
@@ -77,7 +71,6 @@ impl From<SlidingF64Error> for crate::error::Error {
                     readable_f64(largest)
                 ),
             },
-            SlidingF64Error::NotPhysical { reason } => Error::NotPhysical { why: reason },
             SlidingF64Error::NoConvergence { reason } => Error::NoConvergence { what: reason },
             SlidingF64Error::Quadrature(q) => Error::NoConvergence { what: q.to_string() },
         }

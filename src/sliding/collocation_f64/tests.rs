@@ -410,8 +410,6 @@ fn errors_keep_their_kind_and_print_readable_numbers() {
     assert!(!text.contains("no solution: no solution"), "{text}");
     let e: Error = SlidingF64Error::NoConvergence { reason: "x".into() }.into();
     assert_eq!(e.kind(), ErrorKind::NoConvergence);
-    let e: Error = SlidingF64Error::NotPhysical { reason: "x".into() }.into();
-    assert_eq!(e.kind(), ErrorKind::NotPhysical);
 }
 
 #[test]

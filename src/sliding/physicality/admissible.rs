@@ -86,6 +86,13 @@ impl Admissible {
         format!("physical contacts carry normal_load in {}", parts.join(" or "))
     }
 
+    /// The largest load of the first admissible run quoted in a message built with
+    /// [`Admissible::loads_text`] ("normal_load in (0, X]" -> X, as printed: 7 significant digits),
+    /// for a caller that holds only the refusal's text (a script reading the CLI's stderr, a test).
+    pub fn quoted_largest_load(message: &str) -> Option<f64> {
+        message.split("normal_load in (0, ").nth(1)?.split(']').next()?.parse().ok()
+    }
+
     /// The sizes in words, e.g. "half_length in (0, 0.21]"; `to_length` turns a size into l.
     pub fn sizes_text(&self, to_length: impl Fn(f64) -> f64) -> String {
         if self.runs.is_empty() {

@@ -19,23 +19,6 @@ pub enum SlidingError {
         /// The valid range, in words.
         expected: String,
     },
-    /// The contact of a periodic parabola, polynomial or circle would leave (-L/2, L/2), where
-    /// the periodic extension of the profile has kinks (THEORY.md sections 3 "Validity", 9).
-    #[error("the contact [{left}, {right}] leaves (-L/2, L/2) = (-{half_period}, {half_period}): the periodic extension of the profile has kinks there, so it is not valid (reduce the load or the contact size)")]
-    ContactOutsidePeriod {
-        /// -a.
-        left: String,
-        /// b.
-        right: String,
-        /// L/2.
-        half_period: String,
-    },
-    /// The solution of the equations is not physical.
-    #[error("the solution is not physical: {why}")]
-    NotPhysical {
-        /// What failed (negative pressure at a point, or a negative gap outside the contact).
-        why: String,
-    },
     /// No physical contact carries the requested load.
     #[error("no physical contact carries normal_load = {load}: {why}")]
     NoSolution {
@@ -71,8 +54,6 @@ impl From<SlidingError> for Error {
             SlidingError::Parameter { parameter, value, expected } => {
                 Error::Input(ModelError { parameter, value, expected })
             }
-            e @ SlidingError::ContactOutsidePeriod { .. } => Error::NotPhysical { why: e.to_string() },
-            SlidingError::NotPhysical { why } => Error::NotPhysical { why },
             SlidingError::NoSolution { load, why } => {
                 Error::NoSolution { why: format!("no physical contact carries normal_load = {load}: {why}") }
             }
@@ -103,15 +84,6 @@ mod tests {
     fn every_variant_keeps_its_kind_and_no_prefix_is_doubled() {
         let cases = [
             (SlidingError::parameter("points", "1", "must lie in (-1, 1)"), ErrorKind::Input),
-            (
-                SlidingError::ContactOutsidePeriod {
-                    left: "-0.5".into(),
-                    right: "0.6".into(),
-                    half_period: "0.5".into(),
-                },
-                ErrorKind::NotPhysical,
-            ),
-            (SlidingError::NotPhysical { why: "negative gap".into() }, ErrorKind::NotPhysical),
             (SlidingError::NoSolution { load: "7/3".into(), why: "at most P2 = 1.5".into() }, ErrorKind::NoSolution),
             (SlidingError::NoConvergence("secant".into()), ErrorKind::NoConvergence),
         ];

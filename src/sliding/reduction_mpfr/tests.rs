@@ -388,12 +388,9 @@ fn non_monotone_sinusoid() {
     }
 }
 
-/// The largest load of the first admissible run quoted by a refusal ("normal_load in (0, X]").
+/// The largest physical load quoted by a refusal ("normal_load in (0, X]").
 fn largest_admissible_load(text: &str) -> f64 {
-    text.split("normal_load in (0, ")
-        .nth(1)
-        .and_then(|t| t.split(']').next())
-        .and_then(|t| t.parse().ok())
+    crate::sliding::physicality::admissible::Admissible::quoted_largest_load(text)
         .unwrap_or_else(|| panic!("no admissible range in: {text}"))
 }
 
