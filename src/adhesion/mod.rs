@@ -1,4 +1,4 @@
-//! Problem 2: indentation of periodic parabolic punches with complete adhesion
+//! Problem 2: indentation of periodic convex punches with complete adhesion
 //! (THEORY.md section 4; Soldatenkov 2013, (1.4), (2.18)-(2.26)).
 //!
 //! Two independent methods, side by side with the same file names:
@@ -9,7 +9,7 @@
 //!   universal coefficients), `solve` (one lambda), `solution` (dimensional), `verify` (two runs,
 //!   estimated digits).
 //!
-//! Punches: the parabola, and (MPFR only) even polynomials and the circle, with the refusals of
+//! Punches: the parabola, even polynomials and the circle (both methods), with the refusals of
 //! [`profile`] (convexity, |x| < R, slope limit). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
 //! relative to it), [`tension`] (the tension zones at the oscillating edge), [`error`]. The
 //! derived material constants (eps, cosh(pi eps), B, S, C_P) are computed once per solve in
@@ -29,6 +29,7 @@
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
 pub mod error;
+pub mod loading_law;
 pub mod points;
 pub mod profile;
 pub mod scales;
