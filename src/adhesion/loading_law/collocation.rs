@@ -1,0 +1,347 @@
+//! The MPFR method for Problem 2 under a linear loading law P1 = n P2 (THEORY.md section 10,
+//! `paper` convention): the two moving-edge conditions as a nonlinear system of Volterra
+//! equations in the contact size, solved by Chebyshev collocation and a chord-Newton iteration.
+//!
+//! Variables: lambda = pi l/L (l = (a + b)/2, the loading parameter), gamma = pi c/L
+//! (c = (b - a)/2), P2 = E* k (L/pi)^2 P(lambda), dP = (1 + i n) dP2. Every earlier contact
+//! (eta < lambda, centre gamma(eta)) carried the increment dP(eta) and left on the surface outside
+//! it (E*/2)(dv' - i du') = dP K/L ([`super::kernel::outside_kernel`]). A point enters contact
+//! with the punch's slope, at the leading end chi_b = gamma(lambda) + lambda and at the trailing
+//! end chi_a = gamma(lambda) - lambda:
+//!   Re int_0^lambda (1 + i n) P'(eta) K(chi_e - gamma(eta), eta) d eta = G(chi_e),
+//!   G(chi) = pi^2 g'(L chi/pi)/(2 k L)   (the parabola: G = pi chi; section 4's equation when
+//!   n = 0 and gamma = 0).
+//! Unknowns on [0, Lambda] (Lambda the final size), t = eta/Lambda: P'(eta) = eta Phi(t) and
+//! gamma(eta) = eta Gam(t), both interpolated at N Chebyshev nodes of t (values as unknowns).
+//! With eta = lambda s the distance to the nearer end is
+//!   d = lambda (1 - s) (1 +- E),  E = Gam(t) + s t [Gam(t) - Gam(s t)]/(t - s t),
+//! (+ leading, - trailing), formed from the divided difference so that it keeps its accuracy as
+//! s -> 1 (tanh-sinh in s with the complement 1 - s). Both ends must advance: 1 +- E > 0.
+//! Each equation is divided by lambda (both sides are O(lambda)).
+//! Newton: the Jacobian by finite differences at 64 bits with a coarse rule, then chord steps at
+//! the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
+//! matter), until the correction falls below 2^-(target bits).
+
+use super::kernel::{outside_kernel, Side};
+use crate::adhesion::error::AdhesionError;
+use crate::model::{Exact, Material};
+use crate::numerics::chebyshev;
+use crate::numerics::exact::to_float;
+use crate::numerics::tanh_sinh::TanhSinh;
+use crate::params::adhesion::{AdhesionParamsF64, AdhesionParamsMpfr};
+use rug::float::Constant;
+use rug::{Complex, Float};
+
+/// What the collocation needs besides the unknowns: exact inputs, rounded once per precision.
+#[derive(Debug, Clone)]
+pub struct LawSetting {
+    /// The half-plane's material (eps and C_P are derived at each precision).
+    pub material: Material,
+    /// n = P1/P2 (linear law), exact.
+    pub ratio: Exact,
+    /// l/L at the final size, exact (Lambda = pi l/L).
+    pub size_over_period: Exact,
+}
+
+/// Working data of one precision.
+struct Ctx {
+    prec: u32,
+    eps: Float,
+    n: Float,
+    lambda_max: Float,
+    nodes: Vec<Float>,
+    rule: TanhSinh,
+}
+
+impl Ctx {
+    fn new(setting: &LawSetting, nodes: usize, rule_bits: u32, prec: u32) -> Self {
+        let constants = AdhesionParamsMpfr::new(&setting.material, prec);
+        let pi = Float::with_val(prec, Constant::Pi);
+        Ctx {
+            prec,
+            eps: constants.eps,
+            n: to_float(&setting.ratio, prec),
+            lambda_max: to_float(&setting.size_over_period, prec) * pi,
+            nodes: chebyshev::nodes(nodes, prec),
+            rule: TanhSinh::new(rule_bits, 1.0, prec),
+        }
+    }
+}
+
+/// sum_j c_j [T_j(x) - T_j(y)]/(x - y) by the recurrence d_(j+1) = 2 x d_j + 2 T_j(y) - d_(j-1)
+/// (d_0 = 0, d_1 = 1): accurate as y -> x.
+fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -> Float {
+    let mut acc = Float::with_val(prec, 0);
+    let (mut d_prev, mut d) = (Float::with_val(prec, 0), Float::with_val(prec, 1));
+    let (mut t_prev, mut t) = (Float::with_val(prec, 1), y.clone());
+    for cj in c.iter().skip(1) {
+        acc += Float::with_val(prec, cj * &d);
+        // d_(j+1) and T_(j+1)(y).
+        let d_next = Float::with_val(prec, x * &d) * 2u32 + Float::with_val(prec, &t * 2u32) - &d_prev;
+        let t_next = Float::with_val(prec, y * &t) * 2u32 - &t_prev;
+        d_prev = std::mem::replace(&mut d, d_next);
+        t_prev = std::mem::replace(&mut t, t_next);
+    }
+    acc
+}
+
+/// The residuals (2 per node: leading, trailing) of the state (Phi values, then Gam values).
+fn residual(ctx: &Ctx, state: &[Float]) -> Result<Vec<Float>, AdhesionError> {
+    let prec = ctx.prec;
+    let n_nodes = ctx.nodes.len();
+    let phi_c = chebyshev::coefficients(&state[..n_nodes], prec);
+    let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
+    let pi = Float::with_val(prec, Constant::Pi);
+    let at = |c: &[Float], t: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
+    let one_in = Complex::with_val(prec, (1, &ctx.n));
+    let mut out = Vec::with_capacity(2 * n_nodes);
+    for t in &ctx.nodes {
+        let lambda = Float::with_val(prec, &ctx.lambda_max * t);
+        let gam_t = at(&gam_c, t);
+        let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
+        let xt = Float::with_val(prec, t * 2u32) - 1u32;
+        for q in 0..ctx.rule.len() {
+            let (s, c, w) = (&ctx.rule.s[q], &ctx.rule.c[q], &ctx.rule.w[q]);
+            let ts = Float::with_val(prec, t * s);
+            let eta = Float::with_val(prec, &lambda * s);
+            let phi = at(&phi_c, &ts);
+            // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
+            let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
+            let dd = divided_difference(&gam_c, &xt, &xs, prec) * 2u32;
+            let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd));
+            let base = Float::with_val(prec, &lambda * c);
+            let weight = Float::with_val(prec, w * s) * &phi;
+            for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
+                let factor = Float::with_val(prec, &e * sign) + 1u32;
+                if !(factor > 0) {
+                    return Err(AdhesionError::NotConverged {
+                        what: "loading-law collocation",
+                        reason: format!(
+                            "the {} end recedes at lambda = {:.4} (the contact must grow at both ends)",
+                            if sign > 0 { "leading" } else { "trailing" },
+                            lambda.to_f64()
+                        ),
+                    });
+                }
+                let d = Float::with_val(prec, &base * &factor);
+                let k = outside_kernel(side, &d, &eta, &ctx.eps, prec);
+                *acc += k * &weight;
+            }
+        }
+        // int_0^lambda P' K d eta = lambda^2 int_0^1 s Phi(t s) K ds; divided by lambda.
+        for (acc, sign) in [(acc_b, 1i32), (acc_a, -1)] {
+            let v = Complex::with_val(prec, &one_in * &acc).real().clone() * &lambda;
+            // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.
+            let g = Float::with_val(prec, &gam_t + sign) * &pi;
+            out.push(v - g);
+        }
+    }
+    Ok(out)
+}
+
+/// The solution of the collocation: Phi and Gam values at the nodes and their Chebyshev
+/// coefficients.
+#[derive(Debug, Clone)]
+pub struct LawCollocation {
+    /// Working precision.
+    pub prec: u32,
+    /// Lambda.
+    pub lambda_max: Float,
+    /// Chebyshev coefficients of Phi(t), P'(eta) = eta Phi(eta/Lambda).
+    pub phi: Vec<Float>,
+    /// Chebyshev coefficients of Gam(t), gamma(eta) = eta Gam(eta/Lambda).
+    pub gam: Vec<Float>,
+    /// Largest |residual| at the last step.
+    pub residual: f64,
+    /// Chord steps taken.
+    pub steps: usize,
+}
+
+impl LawCollocation {
+    /// P(Lambda) = int_0^Lambda eta Phi d eta = Lambda^2 int_0^1 t Phi(t) dt (P2 = E* k (L/pi)^2 P).
+    pub fn load(&self) -> Float {
+        let prec = self.prec;
+        // t Phi(t) by values at fresh nodes, then the Chebyshev integral.
+        let n = self.phi.len() + 1;
+        let nodes = chebyshev::nodes(n, prec);
+        let vals: Vec<Float> = nodes
+            .iter()
+            .map(|t| chebyshev::evaluate(&self.phi, &(Float::with_val(prec, t * 2u32) - 1u32), prec) * t)
+            .collect();
+        let c = chebyshev::coefficients(&vals, prec);
+        chebyshev::integral(&c, &Float::with_val(prec, 1), prec) * Float::with_val(prec, self.lambda_max.square_ref())
+    }
+    /// gamma(Lambda)/Lambda = c/l.
+    pub fn centre_ratio(&self) -> Float {
+        chebyshev::evaluate(&self.gam, &Float::with_val(self.prec, 1), self.prec)
+    }
+}
+
+/// Solves with `nodes` Chebyshev nodes at `prec` bits for 2^-`target_bits`.
+pub fn solve(setting: &LawSetting, nodes: usize, target_bits: u32, prec: u32) -> Result<LawCollocation, AdhesionError> {
+    // Newton at 64 bits on a coarse rule to a first solution, from the symmetric single punch
+    // (Phi = 2 C_P, Gam = 0); the Jacobian by forward differences, refreshed while a step does
+    // not shrink the correction a thousandfold.
+    let low = Ctx::new(setting, nodes, 50, 64);
+    let load_constant = AdhesionParamsF64::new(&setting.material).load_constant;
+    let mut state64: Vec<Float> =
+        (0..2 * nodes).map(|i| Float::with_val(64, if i < nodes { 2.0 * load_constant } else { 0.0 })).collect();
+    let mut jac = jacobian(&low, &state64)?;
+    let mut previous = f64::INFINITY;
+    for _ in 0..30 {
+        let r = residual(&low, &state64)?;
+        let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
+        let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
+        for (x, d) in state64.iter_mut().zip(&delta) {
+            *x -= *d;
+        }
+        if size < 1e-13 {
+            break;
+        }
+        if size > 1e-3 * previous {
+            jac = jacobian(&low, &state64)?;
+        }
+        previous = size;
+    }
+    let ctx = Ctx::new(setting, nodes, target_bits + 8, prec);
+    let mut state: Vec<Float> = state64.iter().map(|v| Float::with_val(prec, v)).collect();
+    let goal = 2f64.powi(-(target_bits as i32));
+    let mut steps = 0;
+    let mut last = f64::INFINITY;
+    for _ in 0..40 {
+        steps += 1;
+        let r = residual(&ctx, &state)?;
+        last = r.iter().fold(0f64, |m, v| m.max(v.to_f64().abs()));
+        let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
+        let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
+        for (x, d) in state.iter_mut().zip(&delta) {
+            *x -= *d;
+        }
+        if size < goal {
+            let lambda_max = Float::with_val(prec, &ctx.lambda_max);
+            return Ok(LawCollocation {
+                prec,
+                lambda_max,
+                phi: chebyshev::coefficients(&state[..nodes], prec),
+                gam: chebyshev::coefficients(&state[nodes..], prec),
+                residual: last,
+                steps,
+            });
+        }
+    }
+    Err(AdhesionError::NotConverged {
+        what: "loading-law chord iteration",
+        reason: format!("40 steps, residual {last:.1e}"),
+    })
+}
+
+/// Forward-difference Jacobian of [`residual`] at `state` (accurate to ~1e-8: enough for the
+/// chord iteration, whose rate it sets).
+fn jacobian(ctx: &Ctx, state: &[Float]) -> Result<Vec<Vec<f64>>, AdhesionError> {
+    let m = state.len();
+    let base = residual(ctx, state)?;
+    let mut jac = vec![vec![0.0; m]; m];
+    for j in 0..m {
+        let h = 1e-8 * (1.0 + state[j].to_f64().abs());
+        let mut plus = state.to_vec();
+        plus[j] += h;
+        let rp = residual(ctx, &plus)?;
+        for i in 0..m {
+            jac[i][j] = (rp[i].to_f64() - base[i].to_f64()) / h;
+        }
+    }
+    Ok(jac)
+}
+
+/// J x = r in `f64` (LU with partial pivoting, nalgebra).
+fn solve_f64(jac: &[Vec<f64>], r: &[f64]) -> Result<Vec<f64>, AdhesionError> {
+    let m = r.len();
+    let a = nalgebra::DMatrix::from_fn(m, m, |i, j| jac[i][j]);
+    let b = nalgebra::DVector::from_column_slice(r);
+    a.lu()
+        .solve(&b)
+        .map(|x| x.iter().copied().collect())
+        .ok_or(AdhesionError::NotConverged { what: "loading-law Newton", reason: "singular Jacobian".into() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::adhesion::volterra_mpfr::{solve as volterra_solve, VolterraParams};
+    use crate::model::{Exact, Material};
+    use crate::params::adhesion::{AdhesionParamsF64, AdhesionParamsMpfr};
+
+    fn material(nu: (i64, i64)) -> Material {
+        Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
+    }
+
+    /// n = 0: the symmetric problem of section 4 (gamma = 0, the same load as the Volterra
+    /// method's at 30 digits). The error is the collocation's: 16 nodes 1.3e-18, 24 nodes 1.2e-26,
+    /// 32 nodes 1.3e-34 at Lambda = 0.5, nu = 0.3 (`LAW_NODES=24 cargo test --release --lib
+    /// loading_law::collocation::tests::zero -- --nocapture`).
+    #[test]
+    fn zero_ratio_is_the_symmetric_solution() {
+        let m = material((3, 10));
+        let setting = LawSetting {
+            material: m.clone(),
+            ratio: Exact::from_integer(0.into()),
+            size_over_period: Exact::new(1.into(), (2 * 314159).into()) * Exact::from_integer(100000.into()),
+        };
+        let t = std::time::Instant::now();
+        let nodes: usize = std::env::var("LAW_NODES").ok().and_then(|v| v.parse().ok()).unwrap_or(16);
+        let sol = solve(&setting, nodes, 100, 140).unwrap();
+        eprintln!("{:.2}s, {} steps, residual {:.1e}", t.elapsed().as_secs_f64(), sol.steps, sol.residual);
+        let params = VolterraParams::for_digits(30);
+        let constants = AdhesionParamsMpfr::new(&m, params.prec);
+        let lam = Float::with_val(params.prec, &sol.lambda_max);
+        let sym = volterra_solve(&constants, &lam, params).unwrap();
+        let p_sym = sym.load_ratio() * Float::with_val(params.prec, lam.square_ref());
+        let p = sol.load();
+        let rel = Float::with_val(140, &p - &p_sym).to_f64() / p_sym.to_f64();
+        eprintln!("P = {} vs {}: rel {rel:.1e}; c/l = {:.1e}", p.to_f64(), p_sym.to_f64(), sol.centre_ratio().to_f64());
+        let tol = [(16, 1e-17), (24, 1e-25), (32, 1e-33)].iter().find(|(n, _)| *n == nodes).map_or(1e-17, |v| v.1);
+        assert!(rel.abs() < tol, "{rel:e}");
+        assert!(sol.centre_ratio().abs().to_f64() < 1e-25);
+    }
+
+    /// nu = 1/2 (eps = 0, beta = 0): normal and tangential problems decouple, so for any n the
+    /// contact stays centred and P is Kuznetsov's 2 C_P ln sec(Lambda) = pi ln sec(Lambda).
+    #[test]
+    fn nu_half_decouples() {
+        let setting = LawSetting {
+            material: material((1, 2)),
+            ratio: Exact::new(1.into(), 2.into()),
+            size_over_period: Exact::new(1.into(), 5.into()),
+        };
+        let sol = solve(&setting, 16, 100, 140).unwrap();
+        let lam = Float::with_val(140, &sol.lambda_max);
+        let want = Float::with_val(140, lam.cos_ref()).recip().ln() * Float::with_val(140, Constant::Pi);
+        let rel = Float::with_val(140, sol.load() - &want).to_f64() / want.to_f64();
+        eprintln!("nu = 1/2, n = 1/2: P rel {rel:.1e}, c/l {:.1e}", sol.centre_ratio().to_f64());
+        assert!(rel.abs() < 1e-17, "{rel:e}");
+        assert!(sol.centre_ratio().abs().to_f64() < 1e-25);
+    }
+
+    /// n = 1/5 at nu = 0.3: the contact shifts (c != 0) and the load differs from the symmetric
+    /// one; printed for inspection.
+    #[test]
+    fn tangential_ratio_shifts_the_contact() {
+        let m = material((3, 10));
+        let setting = LawSetting {
+            material: m,
+            ratio: Exact::new(1.into(), 5.into()),
+            size_over_period: Exact::new(1.into(), 6.into()),
+        };
+        let t = std::time::Instant::now();
+        let sol = solve(&setting, 16, 100, 140).unwrap();
+        eprintln!(
+            "{:.2}s, {} steps, residual {:.1e}: P = {}, c/l = {}",
+            t.elapsed().as_secs_f64(),
+            sol.steps,
+            sol.residual,
+            sol.load().to_f64(),
+            sol.centre_ratio().to_f64()
+        );
+        assert!(sol.centre_ratio().abs().to_f64() > 1e-4);
+    }
+}
