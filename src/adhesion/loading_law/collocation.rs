@@ -70,7 +70,7 @@ impl Ctx {
 
 /// sum_j c_j [T_j(x) - T_j(y)]/(x - y) by the recurrence d_(j+1) = 2 x d_j + 2 T_j(y) - d_(j-1)
 /// (d_0 = 0, d_1 = 1): accurate as y -> x.
-fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -> Float {
+pub(super) fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -> Float {
     let mut acc = Float::with_val(prec, 0);
     let (mut d_prev, mut d) = (Float::with_val(prec, 0), Float::with_val(prec, 1));
     let (mut t_prev, mut t) = (Float::with_val(prec, 1), y.clone());
@@ -85,52 +85,73 @@ fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -> Float {
     acc
 }
 
-/// The residuals (2 per node: leading, trailing) of the state (Phi values, then Gam values).
+/// int_0^lambda P'(eta) L K(chi_e - gamma(eta), eta) d eta at lambda = Lambda t for the leading
+/// (chi_e = gamma + lambda) and the trailing (chi_e = gamma - lambda) end, from the Chebyshev
+/// coefficients of Phi and Gam (module doc), on `rule`.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn edge_integrals(
+    rule: &TanhSinh,
+    eps: &Float,
+    lambda_max: &Float,
+    phi_c: &[Float],
+    gam_c: &[Float],
+    t: &Float,
+    prec: u32,
+) -> Result<(Complex, Complex), AdhesionError> {
+    let at = |c: &[Float], t: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
+    let lambda = Float::with_val(prec, lambda_max * t);
+    let gam_t = at(gam_c, t);
+    let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
+    let xt = Float::with_val(prec, t * 2u32) - 1u32;
+    for q in 0..rule.len() {
+        let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
+        let ts = Float::with_val(prec, t * s);
+        let eta = Float::with_val(prec, &lambda * s);
+        let phi = at(phi_c, &ts);
+        // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
+        let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
+        let dd = divided_difference(gam_c, &xt, &xs, prec) * 2u32;
+        let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd));
+        let base = Float::with_val(prec, &lambda * c);
+        let weight = Float::with_val(prec, w * s) * &phi;
+        for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
+            let factor = Float::with_val(prec, &e * sign) + 1u32;
+            if !(factor > 0) {
+                return Err(AdhesionError::NotConverged {
+                    what: "loading-law collocation",
+                    reason: format!(
+                        "the {} end recedes at lambda = {:.4} (the contact must grow at both ends)",
+                        if sign > 0 { "leading" } else { "trailing" },
+                        lambda.to_f64()
+                    ),
+                });
+            }
+            let d = Float::with_val(prec, &base * &factor);
+            let k = outside_kernel(side, &d, &eta, eps, prec);
+            *acc += k * &weight;
+        }
+    }
+    // int_0^lambda P' K d eta = lambda^2 int_0^1 s Phi(t s) K ds.
+    let l2 = Float::with_val(prec, lambda.square_ref());
+    Ok((acc_b * &l2, acc_a * &l2))
+}
+
+/// The residuals (2 per node: leading, trailing) of the state (Phi values, then Gam values),
+/// each divided by lambda.
 fn residual(ctx: &Ctx, state: &[Float]) -> Result<Vec<Float>, AdhesionError> {
     let prec = ctx.prec;
     let n_nodes = ctx.nodes.len();
     let phi_c = chebyshev::coefficients(&state[..n_nodes], prec);
     let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
     let pi = Float::with_val(prec, Constant::Pi);
-    let at = |c: &[Float], t: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
     let one_in = Complex::with_val(prec, (1, &ctx.n));
     let mut out = Vec::with_capacity(2 * n_nodes);
     for t in &ctx.nodes {
         let lambda = Float::with_val(prec, &ctx.lambda_max * t);
-        let gam_t = at(&gam_c, t);
-        let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
-        let xt = Float::with_val(prec, t * 2u32) - 1u32;
-        for q in 0..ctx.rule.len() {
-            let (s, c, w) = (&ctx.rule.s[q], &ctx.rule.c[q], &ctx.rule.w[q]);
-            let ts = Float::with_val(prec, t * s);
-            let eta = Float::with_val(prec, &lambda * s);
-            let phi = at(&phi_c, &ts);
-            // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
-            let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
-            let dd = divided_difference(&gam_c, &xt, &xs, prec) * 2u32;
-            let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd));
-            let base = Float::with_val(prec, &lambda * c);
-            let weight = Float::with_val(prec, w * s) * &phi;
-            for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
-                let factor = Float::with_val(prec, &e * sign) + 1u32;
-                if !(factor > 0) {
-                    return Err(AdhesionError::NotConverged {
-                        what: "loading-law collocation",
-                        reason: format!(
-                            "the {} end recedes at lambda = {:.4} (the contact must grow at both ends)",
-                            if sign > 0 { "leading" } else { "trailing" },
-                            lambda.to_f64()
-                        ),
-                    });
-                }
-                let d = Float::with_val(prec, &base * &factor);
-                let k = outside_kernel(side, &d, &eta, &ctx.eps, prec);
-                *acc += k * &weight;
-            }
-        }
-        // int_0^lambda P' K d eta = lambda^2 int_0^1 s Phi(t s) K ds; divided by lambda.
+        let gam_t = chebyshev::evaluate(&gam_c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
+        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.eps, &ctx.lambda_max, &phi_c, &gam_c, t, prec)?;
         for (acc, sign) in [(acc_b, 1i32), (acc_a, -1)] {
-            let v = Complex::with_val(prec, &one_in * &acc).real().clone() * &lambda;
+            let v = Complex::with_val(prec, &one_in * &acc).real().clone() / &lambda;
             // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.
             let g = Float::with_val(prec, &gam_t + sign) * &pi;
             out.push(v - g);
@@ -151,6 +172,14 @@ pub struct LawCollocation {
     pub phi: Vec<Float>,
     /// Chebyshev coefficients of Gam(t), gamma(eta) = eta Gam(eta/Lambda).
     pub gam: Vec<Float>,
+    /// eps of the material at `prec`.
+    pub eps: Float,
+    /// cosh(pi eps) at `prec`.
+    pub cosh_pi_eps: Float,
+    /// n = P1/P2 at `prec`.
+    pub ratio: Float,
+    /// beta at `prec`.
+    pub beta: Float,
     /// Largest |residual| at the last step.
     pub residual: f64,
     /// Chord steps taken.
@@ -219,9 +248,14 @@ pub fn solve(setting: &LawSetting, nodes: usize, target_bits: u32, prec: u32) ->
         }
         if size < goal {
             let lambda_max = Float::with_val(prec, &ctx.lambda_max);
+            let constants = AdhesionParamsMpfr::new(&setting.material, prec);
             return Ok(LawCollocation {
                 prec,
                 lambda_max,
+                eps: constants.eps,
+                cosh_pi_eps: constants.cosh_pi_eps,
+                ratio: Float::with_val(prec, &ctx.n),
+                beta: constants.beta,
                 phi: chebyshev::coefficients(&state[..nodes], prec),
                 gam: chebyshev::coefficients(&state[nodes..], prec),
                 residual: last,

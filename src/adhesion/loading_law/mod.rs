@@ -5,11 +5,17 @@
 //! - [`collocation`]: the MPFR method for the linear law in the `paper` convention, the two
 //!   moving-edge conditions as a nonlinear Volterra system (Chebyshev collocation, chord Newton);
 //!   checked: n = 0 gives section 4's symmetric load (1.3e-34 with 32 nodes), nu = 1/2 decouples
-//!   (centred contact, Kuznetsov's load).
+//!   (centred contact, Kuznetsov's load);
+//! - [`fields`]: psi (frozen at entry) and q2 + i q1 from the increments, checked by the
+//!   independent residual test: the stresses put into the surface relations [1.8] (direct
+//!   principal-value quadrature of the cot kernel) reproduce v' = g' and u' = psi on the
+//!   asymmetric contact (n = 1/5, nu = 0.3) to 1e-16, and carry the load.
 //!
-//! Still to come (issue 12): psi, phi, q1, q2 from the increments; the `periodic` convention's
-//! rotation increment; polynomial laws; the independent f64 method; the residual check in [1.8];
-//! scenes, CLI, report.
+//! Still to come (issue 12): phi; the `periodic` convention's rotation increment (design in the
+//! session notes: sigma_rot = X(t)(A + B t) in the tangent variable, closed form by residues);
+//! polynomial laws and profiles; the independent f64 method; verified digits (two runs); the
+//! given-load search; scenes, CLI, report; the asymptotic expansion.
 
 pub mod collocation;
+pub mod fields;
 pub mod kernel;
