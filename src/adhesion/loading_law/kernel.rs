@@ -74,6 +74,109 @@ pub fn flat_punch_stress(
     cos * phase * mag
 }
 
+/// The tilted flat punch of the `periodic` convention (THEORY.md section 8 applied to Problem 2):
+/// with P1 != 0 the Flamant sum rotates the half-plane ((E*/2) mean v' = -beta P1/L), so in the
+/// paper's frame a punch that does not rotate keeps (E*/2) v' = (E*/2) g' - beta P1/L on its
+/// contact, and an increment dP brings, besides dP sigma_flat, the solution sigma_rot of
+///   (H + i beta) sigma_rot = 1 on the contact,  int sigma_rot = 0,
+/// times -beta dP1/L. Derivation (session 4): with t = tan chi', m = tan eta (THEORY 2's tangent
+/// map: H = C + C0, C the Cauchy operator in t, C0 = (1/pi) int rho t'/(1 + t'^2) dt'), every
+/// solution bounded at neither end is rho = X(t)(A + B t), X = (m + t)^(-1/2 + i eps)
+/// (m - t)^(-1/2 - i eps); with Z(z) = (z + m)^(-1/2 + i eps) (z - m)^(-1/2 - i eps) (cut on
+/// (-m, m), Z ~ 1/z) the Plemelj formulas give (C + i beta) rho = -B/cosh(pi eps) on the contact
+/// (beta = tanh(pi eps)), and residues at z = +-i give C0 and the load, so that
+///   Z(i)(A + i B) = -cosh(pi eps)(f + i P/L),  Z(-i)(A - i B) = -cosh(pi eps)(f - i P/L)
+/// for (H + i beta) rho = f with load P; outside, H[rho](t) = Z(t)(A + B t)/cosh(pi eps) + f.
+/// The rotation is f = 1, P = 0. (The same formulas with f = 0, P = 1 reproduce sigma_flat and K:
+/// checked in the tests.)
+#[derive(Debug, Clone)]
+pub struct TiltedPunch {
+    a: Complex,
+    b: Complex,
+}
+
+/// (z + m)^(-1/2 + i eps) (z - m)^(-1/2 - i eps), principal branches.
+fn z_function(z: &Complex, m: &Float, eps: &Float, prec: u32) -> Complex {
+    let e1 = Complex::with_val(prec, (-0.5, eps));
+    let e2 = Complex::with_val(prec, (-0.5, Float::with_val(prec, -eps)));
+    let zp = Complex::with_val(prec, z + m);
+    let zm = Complex::with_val(prec, z - m);
+    Complex::with_val(prec, zp.ln() * e1).exp() * Complex::with_val(prec, zm.ln() * e2).exp()
+}
+
+impl TiltedPunch {
+    /// The solution rho = X (A + B t) of (H + i beta) rho = `f` with load `p_over_l` = P/L on the
+    /// contact of half-length `eta` (doc above).
+    pub fn new(f: &Complex, p_over_l: &Complex, eta: &Float, eps: &Float, cosh_pi_eps: &Float, prec: u32) -> Self {
+        let m = Float::with_val(prec, eta.tan_ref());
+        let i = Complex::with_val(prec, (0, 1));
+        let zi = z_function(&i, &m, eps, prec);
+        let zmi = z_function(&Complex::with_val(prec, -&i), &m, eps, prec);
+        let ip = Complex::with_val(prec, &i * p_over_l);
+        let plus = Complex::with_val(prec, f + &ip) * cosh_pi_eps / &zi * -1i32; // A + iB
+        let minus = Complex::with_val(prec, f - &ip) * cosh_pi_eps / &zmi * -1i32; // A - iB
+        let a = Complex::with_val(prec, &plus + &minus) / 2u32;
+        let b = Complex::with_val(prec, &plus - &minus) / Complex::with_val(prec, &i * 2u32);
+        TiltedPunch { a, b }
+    }
+
+    /// The rotation of the doc above (f = 1, P = 0).
+    pub fn rotation(eta: &Float, eps: &Float, cosh_pi_eps: &Float, prec: u32) -> Self {
+        TiltedPunch::new(&Complex::with_val(prec, 1), &Complex::new(prec), eta, eps, cosh_pi_eps, prec)
+    }
+
+    /// rho on the contact at the point with distances `d_left`, `d_right` to its ends (as in
+    /// [`flat_punch_stress`]): t +- m = sin(eta +- chi')/(cos eta cos chi').
+    pub fn stress(&self, d_left: &Float, d_right: &Float, eta: &Float, eps: &Float, prec: u32) -> Complex {
+        let chi = Float::with_val(prec, d_left - d_right) / 2u32;
+        let cc = Float::with_val(prec, eta.cos_ref()) * Float::with_val(prec, chi.cos_ref());
+        let tp = Float::with_val(prec, d_left.sin_ref()) / &cc; // m + t
+        let tm = Float::with_val(prec, d_right.sin_ref()) / &cc; // m - t
+        let x = power(&tp, eps, 1, prec) * power(&tm, eps, -1, prec);
+        let t = Float::with_val(prec, chi.tan_ref());
+        x * Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &t))
+    }
+
+    /// Z(t)(A + B t)/cosh(pi eps) outside the contact (H[rho] - f), at distance `d_near` from the
+    /// nearer end on `side`.
+    pub fn outside(
+        &self,
+        side: Side,
+        d_near: &Float,
+        eta: &Float,
+        eps: &Float,
+        cosh_pi_eps: &Float,
+        prec: u32,
+    ) -> Complex {
+        let d_far = Float::with_val(prec, d_near + eta) + eta;
+        let chi = match side {
+            Side::Right => Float::with_val(prec, d_near + eta),
+            Side::Left => -Float::with_val(prec, d_near + eta),
+        };
+        let cc = Float::with_val(prec, eta.cos_ref()) * Float::with_val(prec, chi.cos_ref());
+        let (s_near, s_far) = (Float::with_val(prec, d_near.sin_ref()), Float::with_val(prec, d_far.sin_ref()));
+        // |t + m| and |t - m|: on the right t + m = far, t - m = near; on the left mirrored.
+        let (tp, tm) = match side {
+            Side::Right => (s_far / &cc, s_near / &cc),
+            Side::Left => (s_near / &cc, s_far / &cc),
+        };
+        let mut z = power(&tp, eps, 1, prec) * power(&tm, eps, -1, prec);
+        if side == Side::Left {
+            z = -z; // the phase e^(i pi (-1/2 + i eps)) e^(i pi (-1/2 - i eps)) = -1 of Z there.
+        }
+        let t = Float::with_val(prec, chi.tan_ref());
+        z * Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &t)) / cosh_pi_eps
+    }
+}
+
+/// r^(-1/2 + sign i eps) for r > 0.
+fn power(r: &Float, eps: &Float, sign: i32, prec: u32) -> Complex {
+    let ln = Float::with_val(prec, r.ln_ref());
+    let mag = Float::with_val(prec, r.sqrt_ref()).recip();
+    let theta = Float::with_val(prec, &ln * eps) * sign;
+    Complex::with_val(prec, (Float::with_val(prec, theta.cos_ref()), Float::with_val(prec, theta.sin_ref()))) * mag
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,6 +244,95 @@ mod tests {
             let k = outside_kernel(side, &d, &eta, &e, PREC) / &pi;
             let diff = Float::with_val(PREC, Complex::with_val(PREC, &h - &k).abs_ref());
             assert!(diff < 1e-40, "{side:?} d {d}: {h} vs {k}");
+        }
+    }
+
+    /// The tilted punch's closed form against the direct quadrature: f = 0, P = 1 reproduces
+    /// sigma_flat and K (two derivations); the rotation (f = 1, P = 0) carries no load, satisfies
+    /// (H + i beta) rho = 1 at a contact point (principal value) and H[rho] = outside + 1 on both
+    /// sides. L = pi.
+    #[test]
+    fn tilted_punch_closed_form_against_quadrature() {
+        let eta = f(0.6);
+        let e = eps();
+        let pi = Float::with_val(PREC, Constant::Pi);
+        let ch = Float::with_val(PREC, Float::with_val(PREC, &pi * &e).cosh_ref());
+        // f = 0, P/L = 1/pi: L rho = pi rho must equal L sigma_flat.
+        let flat =
+            TiltedPunch::new(&Complex::new(PREC), &Complex::with_val(PREC, pi.clone().recip()), &eta, &e, &ch, PREC);
+        for (dl, dr) in [(0.3, 0.9), (1.1, 0.1), (0.6, 0.6)] {
+            let (dl, dr) = (f(dl), f(dr));
+            let a = flat.stress(&dl, &dr, &eta, &e, PREC) * &pi;
+            let b = flat_punch_stress(&dl, &dr, &eta, &e, &ch, PREC);
+            let d = Float::with_val(PREC, Complex::with_val(PREC, &a - &b).abs_ref()).to_f64();
+            assert!(d < 1e-40, "flat: {a} vs {b}");
+        }
+        for (side, d) in [(Side::Right, 0.3), (Side::Left, 0.2)] {
+            let d = f(d);
+            let a = flat.outside(side, &d, &eta, &e, &ch, PREC) * &pi;
+            let b = outside_kernel(side, &d, &eta, &e, PREC);
+            let diff = Float::with_val(PREC, Complex::with_val(PREC, &a - &b).abs_ref()).to_f64();
+            assert!(diff < 1e-40, "K {side:?}: {a} vs {b}");
+        }
+        // The rotation.
+        let rot = TiltedPunch::rotation(&eta, &e, &ch, PREC);
+        let rule = TanhSinh::new(150, 3.0, PREC);
+        let integrate = |w: &dyn Fn(&Float) -> Complex| {
+            let mut acc = Complex::new(PREC);
+            for q in 0..rule.s.len() {
+                let near = Float::with_val(PREC, &eta * &rule.s[q]);
+                let far = Float::with_val(PREC, Float::with_val(PREC, &rule.c[q] + 1u32) * &eta);
+                for (d_left, d_right, sign) in [(&far, &near, 1i32), (&near, &far, -1)] {
+                    let chi = Float::with_val(PREC, &eta * &rule.c[q]) * sign;
+                    acc += rot.stress(d_left, d_right, &eta, &e, PREC)
+                        * w(&chi)
+                        * Float::with_val(PREC, &rule.w[q] * &eta);
+                }
+            }
+            acc
+        };
+        let load = integrate(&|_| Complex::with_val(PREC, 1));
+        assert!(Float::with_val(PREC, load.abs_ref()).to_f64() < 1e-40, "rotation load {load}");
+        // On the contact at chi0 = 0.2: (1/pi) PV int rho cot(chi0 - chi') d chi' + i beta rho(chi0) = 1,
+        // PV = int (rho - rho0) cot + rho0 ln|sin(chi0 + eta)/sin(chi0 - eta)|.
+        let chi0 = f(0.2);
+        let (dl0, dr0) = (Float::with_val(PREC, &eta + &chi0), Float::with_val(PREC, &eta - &chi0));
+        let rho0 = rot.stress(&dl0, &dr0, &eta, &e, PREC);
+        let mut pv = Complex::new(PREC);
+        for q in 0..rule.s.len() {
+            let near = Float::with_val(PREC, &eta * &rule.s[q]);
+            let far = Float::with_val(PREC, Float::with_val(PREC, &rule.c[q] + 1u32) * &eta);
+            for (d_left, d_right, sign) in [(&far, &near, 1i32), (&near, &far, -1)] {
+                let chi = Float::with_val(PREC, &eta * &rule.c[q]) * sign;
+                let z = Float::with_val(PREC, &chi0 - &chi);
+                if z.is_zero() {
+                    continue;
+                }
+                let cot = Float::with_val(PREC, z.tan_ref()).recip();
+                let diff = Complex::with_val(PREC, rot.stress(d_left, d_right, &eta, &e, PREC) - &rho0);
+                pv += diff * cot * Float::with_val(PREC, &rule.w[q] * &eta);
+            }
+        }
+        let log =
+            Float::with_val(PREC, Float::with_val(PREC, dl0.sin_ref()) / Float::with_val(PREC, dr0.sin_ref())).ln();
+        let beta = Float::with_val(PREC, Float::with_val(PREC, &pi * &e).tanh_ref());
+        let lhs = (pv + Complex::with_val(PREC, &rho0 * &log)) / &pi + Complex::with_val(PREC, (0, &beta)) * &rho0;
+        let diff = Float::with_val(PREC, Complex::with_val(PREC, &lhs - 1u32).abs_ref()).to_f64();
+        assert!(diff < 1e-30, "rotation on the contact: {lhs}");
+        for (side, d) in [(Side::Right, 0.3), (Side::Left, 0.3), (Side::Left, 0.05)] {
+            let d = f(d);
+            let chi = match side {
+                Side::Right => Float::with_val(PREC, &d + &eta),
+                Side::Left => -Float::with_val(PREC, &d + &eta),
+            };
+            // H[rho] = (1/L) int rho cot d xi = (1/pi) int rho cot d chi' (L = pi, d xi = d chi').
+            let h = integrate(&|xi| {
+                let z = Float::with_val(PREC, &chi - xi);
+                Complex::with_val(PREC, Float::with_val(PREC, z.tan_ref()).recip())
+            }) / &pi;
+            let want = rot.outside(side, &d, &eta, &e, &ch, PREC) + 1u32;
+            let diff = Float::with_val(PREC, Complex::with_val(PREC, &h - &want).abs_ref()).to_f64();
+            assert!(diff < 1e-38, "rotation outside {side:?} d {d}: {h} vs {want}");
         }
     }
 }
