@@ -22,9 +22,9 @@
 //! the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
 //! matter), until the correction falls below 2^-(target bits).
 
-use super::kernel::{outside_kernel, Side};
+use super::kernel::{outside_kernel, Side, TiltedPunch};
 use crate::adhesion::error::AdhesionError;
-use crate::model::{Exact, Material};
+use crate::model::{Convention, Exact, Material};
 use crate::numerics::chebyshev;
 use crate::numerics::exact::to_float;
 use crate::numerics::tanh_sinh::TanhSinh;
@@ -41,13 +41,44 @@ pub struct LawSetting {
     pub ratio: Exact,
     /// l/L at the final size, exact (Lambda = pi l/L).
     pub size_over_period: Exact,
+    /// The surface convention (THEORY.md section 8): `periodic` adds the tilted punch's increment
+    /// ([`super::kernel::TiltedPunch`]).
+    pub convention: Convention,
+}
+
+/// The material and law constants every increment needs, at one precision.
+#[derive(Debug, Clone)]
+pub struct Increment {
+    /// eps.
+    pub eps: Float,
+    /// cosh(pi eps).
+    pub cosh_pi_eps: Float,
+    /// beta.
+    pub beta: Float,
+    /// n = P1/P2.
+    pub ratio: Float,
+    /// Whether the `periodic` convention's rotation increment is added.
+    pub periodic: bool,
+}
+
+impl Increment {
+    /// From the setting at `prec` bits.
+    pub fn new(setting: &LawSetting, prec: u32) -> Self {
+        let constants = AdhesionParamsMpfr::new(&setting.material, prec);
+        Increment {
+            eps: constants.eps,
+            cosh_pi_eps: constants.cosh_pi_eps,
+            beta: constants.beta,
+            ratio: to_float(&setting.ratio, prec),
+            periodic: setting.convention == Convention::PeriodicSurface,
+        }
+    }
 }
 
 /// Working data of one precision.
 struct Ctx {
     prec: u32,
-    eps: Float,
-    n: Float,
+    inc: Increment,
     lambda_max: Float,
     nodes: Vec<Float>,
     rule: TanhSinh,
@@ -55,12 +86,10 @@ struct Ctx {
 
 impl Ctx {
     fn new(setting: &LawSetting, nodes: usize, rule_bits: u32, prec: u32) -> Self {
-        let constants = AdhesionParamsMpfr::new(&setting.material, prec);
         let pi = Float::with_val(prec, Constant::Pi);
         Ctx {
             prec,
-            eps: constants.eps,
-            n: to_float(&setting.ratio, prec),
+            inc: Increment::new(setting, prec),
             lambda_max: to_float(&setting.size_over_period, prec) * pi,
             nodes: chebyshev::nodes(nodes, prec),
             rule: TanhSinh::new(rule_bits, 1.0, prec),
@@ -85,13 +114,15 @@ pub(super) fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -
     acc
 }
 
-/// int_0^lambda P'(eta) L K(chi_e - gamma(eta), eta) d eta at lambda = Lambda t for the leading
-/// (chi_e = gamma + lambda) and the trailing (chi_e = gamma - lambda) end, from the Chebyshev
-/// coefficients of Phi and Gam (module doc), on `rule`.
-#[allow(clippy::too_many_arguments)]
+/// int_0^lambda P'(eta) [(1 + i n) L K(chi_e - gamma(eta), eta) - beta n R(chi_e; eta)] d eta at
+/// lambda = Lambda t for the leading (chi_e = gamma + lambda) and the trailing
+/// (chi_e = gamma - lambda) end, from the Chebyshev coefficients of Phi and Gam (module doc), on
+/// `rule`; R = Z(t)(A + B t)/cosh(pi eps) is the tilted punch's slope outside
+/// ([`super::kernel::TiltedPunch::outside`], `periodic` only; its constant f = 1 cancels against
+/// the -beta P1/L of the edge condition).
 pub(super) fn edge_integrals(
     rule: &TanhSinh,
-    eps: &Float,
+    inc: &Increment,
     lambda_max: &Float,
     phi_c: &[Float],
     gam_c: &[Float],
@@ -103,6 +134,8 @@ pub(super) fn edge_integrals(
     let gam_t = at(gam_c, t);
     let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
     let xt = Float::with_val(prec, t * 2u32) - 1u32;
+    let one_in = Complex::with_val(prec, (1, &inc.ratio));
+    let beta_n = Float::with_val(prec, &inc.beta * &inc.ratio);
     for q in 0..rule.len() {
         let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
         let ts = Float::with_val(prec, t * s);
@@ -127,7 +160,11 @@ pub(super) fn edge_integrals(
                 });
             }
             let d = Float::with_val(prec, &base * &factor);
-            let k = outside_kernel(side, &d, &eta, eps, prec);
+            let mut k = outside_kernel(side, &d, &eta, &inc.eps, prec) * &one_in;
+            if inc.periodic {
+                let tilt = TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec);
+                k -= tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &beta_n;
+            }
             *acc += k * &weight;
         }
     }
@@ -144,14 +181,13 @@ fn residual(ctx: &Ctx, state: &[Float]) -> Result<Vec<Float>, AdhesionError> {
     let phi_c = chebyshev::coefficients(&state[..n_nodes], prec);
     let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
     let pi = Float::with_val(prec, Constant::Pi);
-    let one_in = Complex::with_val(prec, (1, &ctx.n));
     let mut out = Vec::with_capacity(2 * n_nodes);
     for t in &ctx.nodes {
         let lambda = Float::with_val(prec, &ctx.lambda_max * t);
         let gam_t = chebyshev::evaluate(&gam_c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
-        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.eps, &ctx.lambda_max, &phi_c, &gam_c, t, prec)?;
+        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.inc, &ctx.lambda_max, &phi_c, &gam_c, t, prec)?;
         for (acc, sign) in [(acc_b, 1i32), (acc_a, -1)] {
-            let v = Complex::with_val(prec, &one_in * &acc).real().clone() / &lambda;
+            let v = acc.real().clone() / &lambda;
             // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.
             let g = Float::with_val(prec, &gam_t + sign) * &pi;
             out.push(v - g);
@@ -172,14 +208,8 @@ pub struct LawCollocation {
     pub phi: Vec<Float>,
     /// Chebyshev coefficients of Gam(t), gamma(eta) = eta Gam(eta/Lambda).
     pub gam: Vec<Float>,
-    /// eps of the material at `prec`.
-    pub eps: Float,
-    /// cosh(pi eps) at `prec`.
-    pub cosh_pi_eps: Float,
-    /// n = P1/P2 at `prec`.
-    pub ratio: Float,
-    /// beta at `prec`.
-    pub beta: Float,
+    /// The material and law constants at `prec`.
+    pub inc: Increment,
     /// Largest |residual| at the last step.
     pub residual: f64,
     /// Chord steps taken.
@@ -248,14 +278,10 @@ pub fn solve(setting: &LawSetting, nodes: usize, target_bits: u32, prec: u32) ->
         }
         if size < goal {
             let lambda_max = Float::with_val(prec, &ctx.lambda_max);
-            let constants = AdhesionParamsMpfr::new(&setting.material, prec);
             return Ok(LawCollocation {
                 prec,
                 lambda_max,
-                eps: constants.eps,
-                cosh_pi_eps: constants.cosh_pi_eps,
-                ratio: Float::with_val(prec, &ctx.n),
-                beta: constants.beta,
+                inc: ctx.inc.clone(),
                 phi: chebyshev::coefficients(&state[..nodes], prec),
                 gam: chebyshev::coefficients(&state[nodes..], prec),
                 residual: last,
@@ -302,8 +328,8 @@ fn solve_f64(jac: &[Vec<f64>], r: &[f64]) -> Result<Vec<f64>, AdhesionError> {
 mod tests {
     use super::*;
     use crate::adhesion::volterra_mpfr::{solve as volterra_solve, VolterraParams};
-    use crate::model::{Exact, Material};
-    use crate::params::adhesion::{AdhesionParamsF64, AdhesionParamsMpfr};
+    use crate::model::{Convention, Exact, Material};
+    use crate::params::adhesion::AdhesionParamsMpfr;
 
     fn material(nu: (i64, i64)) -> Material {
         Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
@@ -317,6 +343,7 @@ mod tests {
     fn zero_ratio_is_the_symmetric_solution() {
         let m = material((3, 10));
         let setting = LawSetting {
+            convention: Convention::Paper,
             material: m.clone(),
             ratio: Exact::from_integer(0.into()),
             size_over_period: Exact::new(1.into(), (2 * 314159).into()) * Exact::from_integer(100000.into()),
@@ -343,6 +370,7 @@ mod tests {
     #[test]
     fn nu_half_decouples() {
         let setting = LawSetting {
+            convention: Convention::Paper,
             material: material((1, 2)),
             ratio: Exact::new(1.into(), 2.into()),
             size_over_period: Exact::new(1.into(), 5.into()),
@@ -362,6 +390,7 @@ mod tests {
     fn tangential_ratio_shifts_the_contact() {
         let m = material((3, 10));
         let setting = LawSetting {
+            convention: Convention::Paper,
             material: m,
             ratio: Exact::new(1.into(), 5.into()),
             size_over_period: Exact::new(1.into(), 6.into()),

@@ -95,7 +95,9 @@ pub struct TiltedPunch {
     b: Complex,
 }
 
-/// (z + m)^(-1/2 + i eps) (z - m)^(-1/2 - i eps), principal branches.
+/// (z + m)^(-1/2 + i eps) (z - m)^(-1/2 - i eps), principal branches (the tests' check of the
+/// closed forms of Z(+-i)).
+#[cfg(test)]
 fn z_function(z: &Complex, m: &Float, eps: &Float, prec: u32) -> Complex {
     let e1 = Complex::with_val(prec, (-0.5, eps));
     let e2 = Complex::with_val(prec, (-0.5, Float::with_val(prec, -eps)));
@@ -108,13 +110,18 @@ impl TiltedPunch {
     /// The solution rho = X (A + B t) of (H + i beta) rho = `f` with load `p_over_l` = P/L on the
     /// contact of half-length `eta` (doc above).
     pub fn new(f: &Complex, p_over_l: &Complex, eta: &Float, eps: &Float, cosh_pi_eps: &Float, prec: u32) -> Self {
-        let m = Float::with_val(prec, eta.tan_ref());
+        // Z(+-i) in closed form: i +- m = +-i e^(-+i eta)/cos eta (principal arguments
+        // +-(pi/2 - eta) and +-(pi/2 + eta)) give Z(i) = -i cos(eta) e^(2 eps eta) and
+        // Z(-i) = i cos(eta) e^(-2 eps eta) (checked against the principal branches in the tests).
         let i = Complex::with_val(prec, (0, 1));
-        let zi = z_function(&i, &m, eps, prec);
-        let zmi = z_function(&Complex::with_val(prec, -&i), &m, eps, prec);
+        let cos = Float::with_val(prec, eta.cos_ref());
+        let grow = Float::with_val(prec, Float::with_val(prec, eps * eta) * 2u32).exp();
         let ip = Complex::with_val(prec, &i * p_over_l);
-        let plus = Complex::with_val(prec, f + &ip) * cosh_pi_eps / &zi * -1i32; // A + iB
-        let minus = Complex::with_val(prec, f - &ip) * cosh_pi_eps / &zmi * -1i32; // A - iB
+        // A + iB = -ch (f + iP/L)/Z(i) = -i ch (f + iP/L) e^(-2 eps eta)/cos eta; A - iB likewise.
+        let scale_plus = Float::with_val(prec, cosh_pi_eps / &grow) / &cos;
+        let scale_minus = Float::with_val(prec, cosh_pi_eps * &grow) / &cos;
+        let plus = Complex::with_val(prec, f + &ip) * &i * scale_plus * -1i32;
+        let minus = Complex::with_val(prec, f - &ip) * &i * scale_minus;
         let a = Complex::with_val(prec, &plus + &minus) / 2u32;
         let b = Complex::with_val(prec, &plus - &minus) / Complex::with_val(prec, &i * 2u32);
         TiltedPunch { a, b }
@@ -274,6 +281,16 @@ mod tests {
             let diff = Float::with_val(PREC, Complex::with_val(PREC, &a - &b).abs_ref()).to_f64();
             assert!(diff < 1e-40, "K {side:?}: {a} vs {b}");
         }
+        // Z(+-i) closed forms against the principal branches.
+        let m = Float::with_val(PREC, eta.tan_ref());
+        let cos = Float::with_val(PREC, eta.cos_ref());
+        let grow = Float::with_val(PREC, Float::with_val(PREC, &e * &eta) * 2u32).exp();
+        let zi = z_function(&Complex::with_val(PREC, (0, 1)), &m, &e, PREC);
+        let want = Complex::with_val(PREC, (0, -Float::with_val(PREC, &cos * &grow)));
+        assert!(Float::with_val(PREC, Complex::with_val(PREC, &zi - &want).abs_ref()).to_f64() < 1e-45, "{zi}");
+        let zmi = z_function(&Complex::with_val(PREC, (0, -1)), &m, &e, PREC);
+        let want = Complex::with_val(PREC, (0, Float::with_val(PREC, &cos / &grow)));
+        assert!(Float::with_val(PREC, Complex::with_val(PREC, &zmi - &want).abs_ref()).to_f64() < 1e-45, "{zmi}");
         // The rotation.
         let rot = TiltedPunch::rotation(&eta, &e, &ch, PREC);
         let rule = TanhSinh::new(150, 3.0, PREC);
