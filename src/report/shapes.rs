@@ -234,15 +234,18 @@ impl Row {
 }
 
 /// The grid of half-widths of `case` (exact, 6 decimals of L): the lambdas of `lambdas` below the
-/// slope edge, the edge itself (99% of it) when it lies inside the grid's range, and the first
-/// grid lambda beyond it (flagged `true`: run only to show the refusal).
+/// slope edge, the edge itself (99% of it) when the grid goes beyond it (and it is not within 2%
+/// of the grid size below it), and the first grid lambda beyond it (flagged `true`: run only to
+/// show the refusal).
 pub fn grid(case: &ShapeCase, lambdas: &[f64]) -> Vec<(Exact, bool)> {
     let Some(big_l) = case.period_value().and_then(to_f64) else { return Vec::new() };
     let edge = case.slope_edge(big_l) * PI / big_l;
     let exact = |lam: f64| super::calibration::rational(lam * big_l / PI);
     let mut out: Vec<(Exact, bool)> = lambdas.iter().filter(|&&l| l < edge).map(|&l| (exact(l), false)).collect();
     if let Some(&beyond) = lambdas.iter().find(|&&l| l >= edge) {
-        if 0.99 * edge > lambdas[0] {
+        // The edge, unless it is within 2% of the last grid size below it.
+        let last = lambdas.iter().copied().filter(|&l| l < edge).fold(0.0, f64::max);
+        if 0.99 * edge > 1.02 * last {
             out.push((exact(0.99 * edge), false));
         }
         out.push((exact(beyond), true));
@@ -489,7 +492,14 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
                 "| single punch, a = {} | 0 | {:.4} | {} | {} | {} | {} | {} | {} | {} | - | - |",
                 readable_f64(to_f64(&a).unwrap_or(f64::NAN)),
                 case.max_slope(to_f64(&a).unwrap_or(f64::NAN)),
-                closed.map_or("-".into(), |c| format!("{} ({})", fmt_mpfr(&c.value, PRINTED as usize), "exact")),
+                closed.map_or("-".into(), |c| {
+                    let digits = if c.abs_err.is_zero() {
+                        "exact".to_string()
+                    } else {
+                        format!("{:.0}", c.digits(crate::numerics::accuracy::digits_cap_for_bits(COMPARE_BITS)))
+                    };
+                    format!("{} ({digits})", fmt_mpfr(&c.value, PRINTED as usize))
+                }),
                 p2_text(&sp.mpfr, d),
                 if sp.mpfr.is_ok() { fmt_digits(Some(d)) } else { "-".into() },
                 rel_text(Some(&sp.mpfr), closed),
