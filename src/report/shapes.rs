@@ -393,14 +393,16 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
     let scenes: Vec<String> = case.scenes.iter().map(|n| format!("`{n}`")).collect();
     let big_l = case.period_value().and_then(to_f64).unwrap_or(f64::NAN);
     let edge = case.slope_edge(big_l);
-    let _ = writeln!(
-        s.markdown,
-        "### {} (scenes {})\n\nSlope limit: |g'| <= {MAX_CONTACT_SLOPE} up to a/L = {} (lambda = {}).\n",
-        describe(case),
-        scenes.join(", "),
-        readable_f64(edge / big_l),
-        readable_f64(edge * PI / big_l)
-    );
+    let limit = if edge >= 0.5 * big_l {
+        format!("|g'| <= {MAX_CONTACT_SLOPE} on the whole cell (a < L/2).")
+    } else {
+        format!(
+            "|g'| <= {MAX_CONTACT_SLOPE} up to a/L = {} (lambda = {}).",
+            readable_f64(edge / big_l),
+            readable_f64(edge * PI / big_l)
+        )
+    };
+    let _ = writeln!(s.markdown, "### {} (scenes {})\n\nSlope limit: {limit}\n", describe(case), scenes.join(", "));
     let mut rows = Vec::new();
     for (a, beyond) in grid(case, lambdas) {
         ctx.step(format!("punch shapes: {}, a = {}", case.shape.name(), crate::model::readable(&a)));
