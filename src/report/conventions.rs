@@ -289,6 +289,14 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
             legend: Legend::Above,
         });
     }
+    if matches!(case.problem.shape(), PunchShape::Polynomial { .. } | PunchShape::Circular { .. }) {
+        let _ = writeln!(
+            s.markdown,
+            "No series terms: the report evaluates the exact series of the parabola and the sinusoid only (the \
+             section \"Punch shapes\" checks this profile against the closed form of THEORY.md section 9).\n"
+        );
+        return;
+    }
     match centre_terms(&mut ctx.cache, &case.problem) {
         Ok(t) => terms_chart(s, name, &t, ctx.profile),
         Err(e) => {

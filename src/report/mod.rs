@@ -8,6 +8,8 @@
 //! 5. load-size curves from the scenes' sweeps with closed forms ([`sweeps`]);
 //! 6. paper vs periodic: the two surface conventions of Problem 1 on the friction and wear scenes
 //!    ([`conventions`]);
+//! - punch shapes: the scenes' polynomial and circular profiles against the closed-form
+//!   frictionless load of THEORY.md section 9 ([`shapes`]; no text when no scene has one);
 //! 7. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
 //!    deterministic and snapshot-tested).
 //!
@@ -21,6 +23,7 @@ pub mod conventions;
 pub mod orders;
 pub mod runner;
 pub mod section;
+pub mod shapes;
 pub mod speed;
 pub mod stability;
 pub mod sweeps;
@@ -134,7 +137,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     std::fs::create_dir_all(&opts.out).map_err(io(&opts.out))?;
     let scenes = load_scenes(&opts.scenes)?;
     let progress = if opts.progress {
-        let pb = ProgressBar::new(7);
+        let pb = ProgressBar::new(8);
         pb.set_style(
             ProgressStyle::with_template("{spinner} [{elapsed_precise}] section {pos}/{len} {wide_msg}")
                 .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -171,6 +174,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     sections.push(timed("4. stability maps", &mut ctx, &mut |c| Ok(stability::section(c)))?);
     sections.push(timed("5. load-size curves", &mut ctx, &mut |c| Ok(sweeps::section(c, &scenes)))?);
     sections.push(timed("6. paper vs periodic", &mut ctx, &mut |c| Ok(conventions::section(c, &scenes)))?);
+    sections.push(timed("punch shapes", &mut ctx, &mut |c| Ok(shapes::section(c, &scenes)))?);
     ctx.progress.finish_and_clear();
 
     let mut md = String::new();

@@ -41,6 +41,9 @@ fn q(n: i64, d: i64) -> Exact {
 fn sliding_at(shape: PunchShape, theta: f64, p2: f64, convention: Convention) -> Option<SlidingProblem> {
     let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).ok()?;
     let beta = crate::numerics::exact::to_f64(&material.beta())?;
+    if p2.is_nan() || p2 <= 0.0 {
+        return None;
+    }
     let t = (std::f64::consts::PI * theta.abs()).tan();
     let (mu, cw) = if theta < 0.0 { (rational(t / beta), q(0, 1)) } else { (q(0, 1), rational(2.0 * t)) };
     SlidingProblem::builder()
@@ -194,8 +197,11 @@ struct ConventionMap {
 /// Problem 1 maps of one shape on one grid in both conventions, side by side: one table (each
 /// convention's computed lambda and digits per method), the failures of each convention, and per
 /// method the `paper` and `periodic` maps beside each other.
-fn map_section_conventions(s: &mut Section, stem: &str, title: &str, maps: &[ConventionMap]) {
+fn map_section_conventions(s: &mut Section, stem: &str, title: &str, note: &str, maps: &[ConventionMap]) {
     let _ = writeln!(s.markdown, "### {title}\n");
+    if !note.is_empty() {
+        let _ = writeln!(s.markdown, "{note}\n");
+    }
     let mut head = "| theta |".to_string();
     let mut rule = "|---:|".to_string();
     for m in maps {
@@ -259,6 +265,27 @@ fn series_order(shape: &PunchShape, convention: Convention) -> usize {
     }
 }
 
+/// The quartic punch of `scenes/quartic.toml`, g = x^2 + x^4/10 (THEORY.md section 9): its
+/// centred frictionless contact reaches the solvers' slope limit |g'| = 1/2
+/// ([`crate::params::sliding::MAX_CONTACT_SLOPE`]) at a = 0.2470 L (lambda = 0.776, L = 1), so its
+/// map shows that refusal region, moved by friction and wear (the contact off centre reaches the
+/// limit on one side first).
+fn quartic() -> PunchShape {
+    PunchShape::Polynomial { coefficients: vec![q(0, 1), q(0, 1), q(1, 1), q(0, 1), q(1, 10)] }
+}
+
+/// The quartic's frictionless load at lambda (E* = L = 1): the closed form of THEORY.md section 9
+/// ([`crate::verification::closed_form_load`], 64 bits; NaN if it fails, and the cell is skipped).
+fn quartic_load(lam: f64) -> f64 {
+    use crate::verification::closed_form_load::{frictionless_load_mpfr, EvenSlope};
+    let prec = 64;
+    let one = rug::Float::with_val(prec, 1);
+    let a = rug::Float::with_val(prec, lam / std::f64::consts::PI);
+    EvenSlope::new(&quartic(), None, prec)
+        .and_then(|s| frictionless_load_mpfr(&s, &one, &a, Some(&one), prec))
+        .map_or(f64::NAN, |v| v.value.to_f64())
+}
+
 /// One Problem 1 map: the grid (`thetas` x `lambdas`, load of each lambda from `load`) of
 /// `shape` in `convention`, with its own expansion cache; returns the map, the cache and the wall
 /// time.
@@ -272,7 +299,11 @@ fn p1_map(
     load: &(dyn Fn(f64) -> f64 + Sync),
 ) -> (ConventionMap, ExpansionCache, f64) {
     let t0 = std::time::Instant::now();
-    let knobs = vec![Knob::Series(series_order(shape, convention)), Knob::F64(None), Knob::MpfrVerified(30)];
+    let knobs = match shape {
+        // The report's series are the parabola's and the sinusoid's.
+        PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => vec![Knob::F64(None), Knob::MpfrVerified(30)],
+        _ => vec![Knob::Series(series_order(shape, convention)), Knob::F64(None), Knob::MpfrVerified(30)],
+    };
     let mut cells = Vec::new();
     for &lam in grid.1 {
         for &th in grid.0 {
@@ -361,9 +392,30 @@ pub fn section(ctx: &mut Ctx) -> Section {
     let background_cache = ctx.cache.clone();
     let p_grid = (p_thetas.as_slice(), p_lambdas.as_slice());
     let s_grid = (s_thetas.as_slice(), s_lambdas.as_slice());
+    let (q_thetas, q_lambdas) = (vec![-0.4, -0.2, 0.0, 0.2, 0.4], vec![0.2, 0.4, 0.6, 0.7, 0.8]);
+    let q_grid = (q_thetas.as_slice(), q_lambdas.as_slice());
     let (par_paper, sin_paper, sin_periodic, p2, par_periodic) = std::thread::scope(|sc| {
         let background = sc.spawn(|| {
-            p1_map(&progress, background_cache, &parabola, "parabola", Convention::PeriodicSurface, p_grid, &kuznetsov)
+            let (par, cache, secs) = p1_map(
+                &progress,
+                background_cache,
+                &parabola,
+                "parabola",
+                Convention::PeriodicSurface,
+                p_grid,
+                &kuznetsov,
+            );
+            // The quartic's maps (full report only) also run on this thread, the shorter of the two.
+            let mut quartic_maps = Vec::new();
+            let mut cache = cache;
+            if full {
+                for conv in [Convention::Paper, Convention::PeriodicSurface] {
+                    let (m, c, t) = p1_map(&progress, cache, &quartic(), "quartic", conv, q_grid, &quartic_load);
+                    cache = c;
+                    quartic_maps.push((m, t));
+                }
+            }
+            ((par, cache, secs), quartic_maps)
         });
         let mut run = |shape: &PunchShape, name: &str, conv: Convention, grid, load: &(dyn Fn(f64) -> f64 + Sync)| {
             let (map, cache, secs) = p1_map(&progress, std::mem::take(&mut ctx.cache), shape, name, conv, grid, load);
@@ -379,7 +431,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
         let par_periodic = background.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
         (par_paper, sin_paper, sin_periodic, p2, par_periodic)
     });
-    let (par_periodic_map, background_cache, par_periodic_secs) = par_periodic;
+    let ((par_periodic_map, background_cache, par_periodic_secs), quartic_maps) = par_periodic;
     ctx.cache.merge(background_cache);
     timing_line(&mut s, "parabola", &par_paper.0, par_paper.1, "");
     timing_line(
@@ -391,11 +443,34 @@ pub fn section(ctx: &mut Ctx) -> Section {
     );
     timing_line(&mut s, "sinusoid", &sin_paper.0, sin_paper.1, "");
     timing_line(&mut s, "sinusoid", &sin_periodic.0, sin_periodic.1, "");
+    for (m, secs) in &quartic_maps {
+        timing_line(&mut s, "quartic", m, *secs, "; second thread, after the periodic parabola");
+    }
     let _ = writeln!(s.timings, "| stability map, Problem 2 ({} cells) | {:.2} |", p2.0.len(), p2.1);
     let maps = [par_paper.0, par_periodic_map];
-    map_section_conventions(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", &maps);
+    map_section_conventions(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", "", &maps);
     let maps = [sin_paper.0, sin_periodic.0];
-    map_section_conventions(&mut s, "stability_p1_sinusoid", "Problem 1, sinusoid (D = 1/100), up to high load", &maps);
+    map_section_conventions(
+        &mut s,
+        "stability_p1_sinusoid",
+        "Problem 1, sinusoid (D = 1/100), up to high load",
+        "",
+        &maps,
+    );
+    if !quartic_maps.is_empty() {
+        let maps: Vec<ConventionMap> = quartic_maps.into_iter().map(|m| m.0).collect();
+        let title = "Problem 1, quartic g = x^2 + x^4/10 (L = 1): the slope limit";
+        let note = format!(
+            "The quartic of scene `quartic` (THEORY.md section 9; issue 11), loaded by its frictionless \
+             closed-form load at the grid lambda: the solvers refuse a contact where |g'| > {} (the theory \
+             assumes |g'| << 1 [1.9]), which for the centred frictionless contact is lambda > 0.776; friction and \
+             wear move the contact off centre, so one end reaches the limit first. \"fail\" cells at large lambda \
+             are that refusal (listed below the table). No series column: the report's series are the \
+             parabola's and the sinusoid's.",
+            crate::params::sliding::MAX_CONTACT_SLOPE
+        );
+        map_section_conventions(&mut s, "stability_p1_quartic", title, &note, &maps);
+    }
     let _ = writeln!(s.markdown, "Problem 2 exact series: {}\n", super::sweeps::adhesion_series_note());
     map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &p2.0);
     s

@@ -73,7 +73,8 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
                         ));
                     }
                 }
-                // Closed forms of the new profiles are not charted here (issue 11's report step).
+                // The new profiles' closed form (THEORY.md section 9, P2 as a function of a) is in
+                // the section "Punch shapes" ([`super::shapes`]), on its own grid of sizes.
                 PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => {}
             }
         }

@@ -1,3 +1,5 @@
-//! Verification: the exact series against the full solutions, term by term.
+//! Verification: the exact series against the full solutions, term by term; closed forms computed
+//! independently of the solvers.
 
+pub mod closed_form_load;
 pub mod convergence;
