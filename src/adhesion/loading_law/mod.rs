@@ -19,3 +19,4 @@
 pub mod collocation;
 pub mod fields;
 pub mod kernel;
+pub mod verified;

@@ -1,0 +1,282 @@
+//! The loading-law problem in dimensional form with verified digits (THEORY.md section 10): a
+//! periodic row of parabolic punches g = k x^2 indented with complete adhesion under P1 = n P2,
+//! given the final half-length l = (a + b)/2. Two collocation runs ([`super::collocation`]), the
+//! second with 8 more nodes, 24 more bits and a finer rule; digits = -log10 of their difference
+//! over the quantity's scale (l for a, b, c; P2 for the loads; k l for psi; k l^2 for phi;
+//! E* k l for the stresses), as everywhere ([`crate::numerics::accuracy`]).
+//! Scalings (chi = pi x/L, fields of [`super::fields`]):
+//!   P2 = E* k (L/pi)^2 P(Lambda), P1 = n P2, l = L Lambda/pi, c = (L/pi) gamma(Lambda),
+//!   psi = -(2 k L/pi^2) psi_hat, q2 + i q1 = E* k (L/pi^2) sigma_hat,
+//!   phi(x) = int_0^x psi = -(2 k L^2/pi^3) int_0^chi psi_hat (tanh-sinh; the point x = 0 entered
+//!   first, where the fields are not smooth, is an end of the interval).
+
+use super::collocation::{solve, LawCollocation, LawSetting};
+use crate::adhesion::error::AdhesionError;
+use crate::model::{Convention, Exact, Material};
+use crate::numerics::accuracy::verified_digits_mpfr;
+use crate::numerics::exact::to_float;
+use crate::numerics::precision::bits_for_digits;
+use crate::numerics::tanh_sinh::TanhSinh;
+use num_traits::Signed;
+use rug::float::Constant;
+use rug::{Complex, Float};
+
+/// The problem: material, period L, parabola curvature k, law P1 = n P2, final half-length l.
+#[derive(Debug, Clone)]
+pub struct LawProblem {
+    /// Material (E*, nu).
+    pub material: Material,
+    /// Period L.
+    pub period: Exact,
+    /// Curvature k of g = k x^2.
+    pub k: Exact,
+    /// n = P1/P2.
+    pub ratio: Exact,
+    /// l = (a + b)/2 at the end of the loading (2 l < L).
+    pub half_length: Exact,
+    /// Surface convention.
+    pub convention: Convention,
+}
+
+/// Values at one point x = c + l xh of the final contact.
+#[derive(Debug, Clone)]
+pub struct LawPoint {
+    /// xh in (-1, 1).
+    pub xh: Exact,
+    /// x.
+    pub x: Float,
+    /// psi = u' frozen at entry.
+    pub psi: Float,
+    /// phi = int_0^x psi.
+    pub phi: Float,
+    /// Shear traction q1.
+    pub q1: Float,
+    /// Pressure q2.
+    pub q2: Float,
+}
+
+/// One run's dimensional values.
+#[derive(Debug, Clone)]
+pub struct LawValues {
+    /// lambda = pi l/L.
+    pub lambda: Float,
+    /// a, b, c, l.
+    pub a: Float,
+    /// Leading end.
+    pub b: Float,
+    /// Centre (b - a)/2.
+    pub c: Float,
+    /// Half-length.
+    pub l: Float,
+    /// Normal load per punch.
+    pub p2: Float,
+    /// Tangential load per punch.
+    pub p1: Float,
+    /// Points.
+    pub points: Vec<LawPoint>,
+    /// Collocation nodes.
+    pub nodes: usize,
+}
+
+/// The verified solution: the first run's values and the digits confirmed by the second.
+#[derive(Debug, Clone)]
+pub struct LawSolution {
+    /// Values (first run).
+    pub values: LawValues,
+    /// Digits of a, b, c (scale l), of P1, P2 (scale P2), and the minimum over the points of
+    /// psi (k l), phi (k l^2), q1, q2 (E* k l).
+    pub digits: LawDigits,
+}
+
+/// Verified digits per group of outputs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LawDigits {
+    /// a, b, c.
+    pub ends: f64,
+    /// P1, P2.
+    pub loads: f64,
+    /// psi, phi, q1, q2 at the points.
+    pub fields: f64,
+    /// Minimum of the above.
+    pub headline: f64,
+}
+
+/// Collocation nodes for 2^-bits at Lambda: Phi(t) = f(Lambda^2 t^2) is singular at
+/// t = (pi/2)/Lambda (full contact), so the Chebyshev coefficients on t in [0, 1] decay like
+/// rho^-j, rho = z + sqrt(z^2 - 1), z = 2 t_s - 1 (measured: 16, 24, 32 nodes give 1e-18, 1e-26,
+/// 1e-34 at Lambda = 0.5, rho = 10.5; [`super::collocation`] tests).
+fn nodes_for(bits: u32, lambda: f64) -> usize {
+    let z = 2.0 * std::f64::consts::FRAC_PI_2 / lambda - 1.0;
+    let rho = z + (z * z - 1.0).max(0.0).sqrt();
+    ((bits as f64 * std::f64::consts::LN_2 / rho.ln()).ceil() as usize + 4).max(8)
+}
+
+fn run(
+    problem: &LawProblem,
+    xh: &[Exact],
+    nodes: usize,
+    target_bits: u32,
+    prec: u32,
+) -> Result<LawValues, AdhesionError> {
+    let setting = LawSetting {
+        material: problem.material.clone(),
+        ratio: problem.ratio.clone(),
+        size_over_period: &problem.half_length / &problem.period,
+        convention: problem.convention,
+    };
+    let sol = solve(&setting, nodes, target_bits, prec)?;
+    values(problem, &sol, xh, target_bits)
+}
+
+fn values(
+    problem: &LawProblem,
+    sol: &LawCollocation,
+    xh: &[Exact],
+    target_bits: u32,
+) -> Result<LawValues, AdhesionError> {
+    let prec = sol.prec;
+    let pi = Float::with_val(prec, Constant::Pi);
+    let big_l = to_float(&problem.period, prec);
+    let k = to_float(&problem.k, prec);
+    let e_star = to_float(problem.material.contact_modulus(), prec);
+    let l_over_pi = Float::with_val(prec, &big_l / &pi);
+    let lambda = sol.lambda_max.clone();
+    let gamma = sol.centre_at(&lambda);
+    let l = Float::with_val(prec, &l_over_pi * &lambda);
+    let c = Float::with_val(prec, &l_over_pi * &gamma);
+    let p2 = Float::with_val(prec, &e_star * &k) * Float::with_val(prec, l_over_pi.square_ref()) * sol.load();
+    let p1 = Float::with_val(prec, &p2 * &sol.inc.ratio);
+    let rule = TanhSinh::new(target_bits + 8, 1.0, prec);
+    let outer = TanhSinh::new(target_bits + 8, 1.0, prec);
+    let psi_scale = Float::with_val(prec, &k * &big_l) * 2u32 / Float::with_val(prec, pi.square_ref());
+    let q_scale = Float::with_val(prec, &e_star * &k) * &big_l / Float::with_val(prec, pi.square_ref());
+    let phi_scale = Float::with_val(prec, &psi_scale * &l_over_pi);
+    let mut points = Vec::with_capacity(xh.len());
+    for h in xh {
+        let x = Float::with_val(prec, &c + Float::with_val(prec, &l * to_float(h, prec)));
+        let chi = Float::with_val(prec, &x / &l_over_pi);
+        let psi = -sol.psi_hat(&chi, &rule) * &psi_scale;
+        let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
+        // int_0^chi psi_hat by tanh-sinh on (0, chi).
+        let mut acc = Float::with_val(prec, 0);
+        for q in 0..outer.len() {
+            let y = Float::with_val(prec, &chi * &outer.s[q]);
+            acc += sol.psi_hat(&y, &rule) * &outer.w[q];
+        }
+        let phi = -(acc * &chi) * &phi_scale;
+        points.push(LawPoint { xh: h.clone(), x, psi, phi, q1: sigma.imag().clone(), q2: sigma.real().clone() });
+    }
+    Ok(LawValues {
+        lambda,
+        a: Float::with_val(prec, &l - &c),
+        b: Float::with_val(prec, &l + &c),
+        c,
+        l,
+        p2,
+        p1,
+        points,
+        nodes: sol.phi.len(),
+    })
+}
+
+/// Solves `problem` for `digits` digits, verified by a second, finer run (module doc). `xh` are
+/// points of the final contact in (-1, 1).
+pub fn solve_law(problem: &LawProblem, xh: &[Exact], digits: u32) -> Result<LawSolution, AdhesionError> {
+    for h in xh {
+        if !(h.abs() < Exact::from_integer(1.into())) {
+            return Err(AdhesionError::InvalidArgument {
+                parameter: "points",
+                value: crate::model::readable(h),
+                expected: "xh = (x - c)/l in (-1, 1)".into(),
+            });
+        }
+    }
+    let bits = bits_for_digits(digits) + 8;
+    let lambda = crate::numerics::exact::to_f64(&(&problem.half_length / &problem.period)).unwrap_or(f64::NAN)
+        * std::f64::consts::PI;
+    if !(lambda > 0.0 && lambda < std::f64::consts::FRAC_PI_2) {
+        return Err(AdhesionError::InvalidArgument {
+            parameter: "half_length",
+            value: crate::model::readable(&problem.half_length),
+            expected: "0 < 2 l < L".into(),
+        });
+    }
+    let nodes = nodes_for(bits, lambda);
+    let first = run(problem, xh, nodes, bits, bits + 32)?;
+    let second = run(problem, xh, nodes + 8, bits + 16, bits + 56)?;
+    let cap = digits as f64 + 8.0;
+    let dig = |u: &Float, v: &Float, scale: &Float| {
+        let d = Float::with_val(u.prec().max(v.prec()), u - v);
+        verified_digits_mpfr(&d, scale, cap)
+    };
+    let (u, v) = (&first, &second);
+    let ends = dig(&u.a, &v.a, &u.l).min(dig(&u.b, &v.b, &u.l)).min(dig(&u.c, &v.c, &u.l));
+    let loads = dig(&u.p2, &v.p2, &u.p2).min(dig(&u.p1, &v.p1, &u.p2));
+    let k = to_float(&problem.k, u.l.prec());
+    let e_star = to_float(problem.material.contact_modulus(), u.l.prec());
+    let kl = Float::with_val(u.l.prec(), &k * &u.l);
+    let kl2 = Float::with_val(u.l.prec(), &kl * &u.l);
+    let ekl = Float::with_val(u.l.prec(), &kl * &e_star);
+    let mut fields = cap;
+    for (p, q) in u.points.iter().zip(&v.points) {
+        fields = fields
+            .min(dig(&p.psi, &q.psi, &kl))
+            .min(dig(&p.phi, &q.phi, &kl2))
+            .min(dig(&p.q1, &q.q1, &ekl))
+            .min(dig(&p.q2, &q.q2, &ekl));
+    }
+    let headline = ends.min(loads).min(fields);
+    Ok(LawSolution { values: first, digits: LawDigits { ends, loads, fields, headline } })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> Exact {
+        Exact::new(n.into(), d.into())
+    }
+
+    /// Verified digits at 20 requested, and the limit n = 0 against the symmetric solver
+    /// (`adhesion::solve_verified`): b = a, P2 and the fields at the same points agree to the
+    /// verified digits.
+    #[test]
+    fn verified_solution_and_the_symmetric_limit() {
+        let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).unwrap();
+        let problem = LawProblem {
+            material: material.clone(),
+            period: q(1, 1),
+            k: q(1, 1),
+            ratio: q(0, 1),
+            half_length: q(1, 6),
+            convention: Convention::Paper,
+        };
+        let xh = [q(-1, 2), q(1, 5), q(9, 10)];
+        let t = std::time::Instant::now();
+        let sol = solve_law(&problem, &xh, 20).unwrap();
+        eprintln!("{:.1}s, digits {:?}, nodes {}", t.elapsed().as_secs_f64(), sol.digits, sol.values.nodes);
+        assert!(sol.digits.headline >= 20.0, "{:?}", sol.digits);
+        let sym = crate::model::AdhesionProblem::new(
+            material,
+            crate::model::Period::Finite(q(1, 1)),
+            crate::model::PunchShape::Parabolic { k: q(1, 1) },
+            crate::model::AdhesionSize::HalfWidth(q(1, 6)),
+        )
+        .unwrap();
+        let pts: Vec<Exact> = xh.iter().map(|h| h.abs()).collect();
+        let s = crate::adhesion::solve_verified(&sym, &pts, 25).unwrap().solution;
+        let v = &sol.values;
+        let rel = |a: &Float, b: &Float, scale: f64| Float::with_val(200, a - b).to_f64().abs() / scale;
+        assert!(rel(&v.p2, &s.normal_load, s.normal_load.to_f64()) < 1e-20);
+        assert!(rel(&v.a, &v.b, 1.0) < 1e-20);
+        for (p, (h, r)) in v.points.iter().zip(xh.iter().zip(&s.points)) {
+            // psi and q are even, phi odd in x.
+            let sign = if h.is_negative() { -1.0 } else { 1.0 };
+            let scale = s.half_width.to_f64();
+            assert!(rel(&p.psi, &r.psi, scale) < 1e-20, "psi at {h}: {} vs {}", p.psi, r.psi);
+            assert!((p.phi.to_f64() - sign * r.phi.to_f64()).abs() < 1e-18 * scale * scale, "phi at {h}");
+            assert!(rel(&p.q1, &Float::with_val(200, &r.q1 * sign), scale) < 1e-20, "q1 at {h}: {} vs {}", p.q1, r.q1);
+            assert!(rel(&p.q2, &r.q2, scale) < 1e-20, "q2 at {h}");
+        }
+    }
+}
