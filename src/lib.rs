@@ -18,7 +18,8 @@
 //! - [`sliding`] (Problem 1: `reduction_mpfr`, `collocation_f64`, `series`) and [`adhesion`]
 //!   (Problem 2: `volterra_mpfr`, `series_f64`): two independent methods per problem side by side,
 //!   with parallel verbs (`solve`, `verify`, `physical`, `solution`).
-//! - [`verification`]: term-by-term convergence orders of the series against the full solutions.
+//! - [`verification`]: term-by-term convergence orders of the series against the full solutions;
+//!   the closed-form frictionless load of a general even profile (THEORY.md section 9).
 //! - [`solve`]: a scene -> one method -> one answer struct -> the one JSON renderer per problem.
 //! - [`report`]: the main job (tables, charts, stability maps); [`cli`]: raw arguments ->
 //!   validated configuration; `main.rs` parses, runs and maps error kinds to exit codes.
