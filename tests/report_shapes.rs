@@ -79,6 +79,8 @@ fn even_profiles_agree_with_the_closed_form() {
             assert!(f >= 12.0, "{name}: f64 agrees to {f} digits");
             let p = r.adhesion_agreement().unwrap_or_else(|| panic!("{name}: Problem 2 {:?}", r.adhesion));
             assert!(p >= 25.0, "{name}: Problem 2 at nu = 1/2 agrees to {p} digits");
+            let pf = r.adhesion_f64_agreement().unwrap_or_else(|| panic!("{name}: Problem 2 f64 {:?}", r.adhesion_f64));
+            assert!(pf >= 12.0, "{name}: Problem 2 f64 at nu = 1/2 agrees to {pf} digits");
         }
     }
 }

@@ -194,6 +194,8 @@ pub struct Row {
     pub f64: Option<Result<Outcome, String>>,
     /// Problem 2 at nu = 1/2, verified MPFR (even profiles; not run beyond the slope limit).
     pub adhesion: Option<Result<Outcome, String>>,
+    /// Problem 2 at nu = 1/2 by the f64 method (even profiles, below the slope limit).
+    pub adhesion_f64: Option<Result<Outcome, String>>,
 }
 
 fn agreement(x: &Float, closed: &LoadEstimate, cap: f64) -> f64 {
@@ -218,6 +220,11 @@ impl Row {
     /// Digits to which the f64 load agrees with the closed form (capped at 15).
     pub fn f64_agreement(&self) -> Option<f64> {
         let (o, c) = (self.f64.as_ref()?.as_ref().ok()?, self.closed_ok()?);
+        Some(agreement(&o.load, c, F64_DIGITS_CAP))
+    }
+    /// Digits to which Problem 2's f64 method at nu = 1/2 agrees with the closed form (capped at 15).
+    pub fn adhesion_f64_agreement(&self) -> Option<f64> {
+        let (o, c) = (self.adhesion_f64.as_ref()?.as_ref().ok()?, self.closed_ok()?);
         Some(agreement(&o.load, c, F64_DIGITS_CAP))
     }
     /// Digits to which Problem 2 at nu = 1/2 agrees with the closed form.
@@ -273,7 +280,9 @@ pub fn row(cache: &mut ExpansionCache, case: &ShapeCase, a: &Exact, beyond: bool
     let adhesion = (case.even() && !beyond).then(|| {
         case.adhesion(a).and_then(|p| runner::run(&SceneProblem::Adhesion(p), Knob::MpfrVerified(DIGITS), cache))
     });
-    Row { a: a.clone(), lambda, max_slope: case.max_slope(af.to_f64()), closed, mpfr, f64, adhesion }
+    let adhesion_f64 = (case.even() && !beyond)
+        .then(|| case.adhesion(a).and_then(|p| runner::run(&SceneProblem::Adhesion(p), Knob::F64(None), cache)));
+    Row { a: a.clone(), lambda, max_slope: case.max_slope(af.to_f64()), closed, mpfr, f64, adhesion, adhesion_f64 }
 }
 
 /// The single punch (period "inf") at half-width `a`: the closed form (power law for a
@@ -413,8 +422,9 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
         let _ = writeln!(
             s.markdown,
             "| a/L | lambda | max g' | closed-form P2 (digits) | MPFR P2 | MPFR verified | MPFR rel. diff | \
-             MPFR agrees | f64 rel. diff | f64 agrees | Problem 2 (nu = 1/2) rel. diff | agrees |\n\
-             |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+             MPFR agrees | f64 rel. diff | f64 agrees | Problem 2 (nu = 1/2) rel. diff | agrees | \
+             Problem 2 f64 rel. diff | agrees |\n\
+             |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
         );
     } else {
         let _ = writeln!(
@@ -440,7 +450,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
             };
             let _ = writeln!(
                 s.markdown,
-                "| {a_over_l} | {:.4} | {:.4} | {closed_text} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                "| {a_over_l} | {:.4} | {:.4} | {closed_text} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
                 r.lambda,
                 r.max_slope,
                 p2_text(&r.mpfr, d),
@@ -451,6 +461,8 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
                 r.f64_agreement().map_or("-".into(), |x| fmt_digits(Some(x))),
                 rel_text(r.adhesion.as_ref(), closed),
                 r.adhesion_agreement().map_or("-".into(), |x| fmt_digits(Some(x))),
+                rel_text(r.adhesion_f64.as_ref(), closed),
+                r.adhesion_f64_agreement().map_or("-".into(), |x| fmt_digits(Some(x))),
             );
         } else {
             let col = r.mpfr.as_ref().ok().map(|o| {
@@ -472,7 +484,12 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
                 r.f64_vs_mpfr().map_or("-".into(), |x| fmt_digits(Some(x))),
             );
         }
-        for (what, res) in [("MPFR", Some(&r.mpfr)), ("f64", r.f64.as_ref()), ("Problem 2 MPFR", r.adhesion.as_ref())] {
+        for (what, res) in [
+            ("MPFR", Some(&r.mpfr)),
+            ("f64", r.f64.as_ref()),
+            ("Problem 2 MPFR", r.adhesion.as_ref()),
+            ("Problem 2 f64", r.adhesion_f64.as_ref()),
+        ] {
             if let Some(Err(e)) = res {
                 refusals.push(format!("{what} at a/L = {a_over_l}: {e}"));
             }
@@ -491,7 +508,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
             let closed = sp.closed.as_ref().ok();
             let _ = writeln!(
                 s.markdown,
-                "| single punch, a = {} | 0 | {:.4} | {} | {} | {} | {} | {} | {} | {} | - | - |",
+                "| single punch, a = {} | 0 | {:.4} | {} | {} | {} | {} | {} | {} | {} | - | - | - | - |",
                 readable_f64(to_f64(&a).unwrap_or(f64::NAN)),
                 case.max_slope(to_f64(&a).unwrap_or(f64::NAN)),
                 closed.map_or("-".into(), |c| {
