@@ -11,7 +11,8 @@
 //!   digits and by the f64 method, each against the closed form (relative difference and the
 //!   digits they agree to), beside the MPFR run's own verified digits;
 //! - Problem 2 at nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem; THEORY.md
-//!   section 9) by the verified MPFR method, against the same closed form (even profiles);
+//!   section 9) by the verified MPFR method and by the f64 method, against the same closed form
+//!   (even profiles);
 //! - the first grid size beyond the slope limit, run to show the solvers' refusal;
 //! - one single punch (period "inf") against the power law P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!!
 //!   summed over the even terms (polynomials) or the closed form's single-punch quadrature
@@ -381,8 +382,8 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
          (friction, wear and nu dropped), on lambda = pi a/L in {lambdas:?} up to the solvers' slope limit \
          |g'| <= {MAX_CONTACT_SLOPE} ([1.9]: the theory assumes |g'| << 1): Problem 1 without friction at the \
          given half-length by the verified MPFR method ({DIGITS} digits asked) and by f64, and Problem 2 at \
-         nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem) by the verified MPFR method, \
-         each against the closed form: relative difference and the digits they agree to (capped at the closed \
+         nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem) by the verified MPFR method \
+         and by f64, each against the closed form: relative difference and the digits they agree to (capped at the closed \
          form's digits and the run's verified digits + 2). The first grid size beyond the slope limit is run to \
          show the refusal. One line per even profile: a single punch (period \"inf\") against the power law \
          P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! of g = A x^(2n), summed over the even terms (polynomial), or the \
