@@ -7,12 +7,14 @@
 
 pub mod adhesion;
 pub mod error;
+pub mod loading_law;
 pub mod material;
 pub mod punch;
 pub mod sliding;
 
 pub use adhesion::{AdhesionProblem, AdhesionSize};
 pub use error::{readable, ModelError};
+pub use loading_law::{LawSize, LoadingLaw, LoadingLawProblem};
 pub use material::Material;
 pub use punch::{Period, PunchShape};
 pub use sliding::{Convention, SlidingLoad, SlidingProblem, SlidingProblemBuilder};
