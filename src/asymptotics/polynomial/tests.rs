@@ -56,7 +56,7 @@ fn quartic_with_rho_zero_is_the_parabola() {
     let g = PolynomialProfile::new(vec![c(0), c(0), c(1), c(0), None]).unwrap();
     let par = PolynomialProfile::new(vec![c(0), c(0), c(1)]).unwrap();
     // Fixed exact theta, rbar_s, T (fully symbolic, order 6 takes minutes: FixedValues doc).
-    let fixed = FixedValues { theta: Some(q(1, 10)), rbar_s: Some(q(1, 5)), t: Some(q(1, 7)) };
+    let fixed = FixedValues { theta: Some(q(1, 10)), rbar_s: Some(q(1, 5)) };
     for conv in [Convention::Paper, Convention::PeriodicSurface] {
         let e = polynomial_sliding_expansion_at(&g, 6, conv, &fixed).unwrap();
         let p = polynomial_sliding_expansion_at(&par, 6, conv, &fixed).unwrap();
@@ -122,7 +122,7 @@ fn chebyshev_mean(p: &Poly, sv: Symbol) -> Poly {
 /// condition, no fixed point: an independent route to l/l_s.
 fn closed_form_residual(g: &PolynomialProfile, order: usize) -> Series<Frac> {
     let zero = q(0, 1);
-    let fixed = FixedValues { theta: Some(zero.clone()), rbar_s: Some(zero.clone()), t: None };
+    let fixed = FixedValues { theta: Some(zero.clone()), rbar_s: Some(zero.clone()) };
     let e = polynomial_sliding_expansion_at(g, order, Convention::Paper, &fixed).unwrap();
     let at0 = |f: &Frac| frac_subs(&frac_subs(f, s("theta"), &zero), s("rbar_s"), &zero);
     let rho = e.l_over_ls.map(at0);
