@@ -10,6 +10,9 @@
 //! come from the MPFR solver at period "inf"; that single punch is itself checked against the
 //! series' own single-punch relations (T + rho_1/2 = Tb_s = 0 without friction, and
 //! P2 = pi E* c_2 l_s^2 (1/4 - theta^2) m0s) to 30 digits.
+//!
+//! Problem 2 (nu = 3/10): the quartic's load series against the MPFR Volterra solution, relative
+//! remainder after lambda^n ~ lambda^n, n = 4..10, slopes within 0.1 (measured: within 0.01).
 
 use exact_series::{Frac, Q};
 use periodic_contact::asymptotics::polynomial::{
@@ -157,4 +160,58 @@ fn quartic_series_remainders_have_the_predicted_orders() {
 fn asymmetric_cubic_series_remainders_have_the_predicted_orders() {
     let rows = study("x^2 + x^3/10", &["0", "0", "1", "1/10"], 3, "1/100");
     check("cubic", &rows);
+}
+
+/// Problem 2 (complete adhesion, nu = 3/10) for g = x^2 + x^4/10, L = 1: the load series
+/// P2 = E* c_2 (L/pi)^2 P(lambda), P/pi = sum_k p_k lambda^k (exact in eps, B, S, sigma_4 =
+/// (c_4/c_2)(L/pi)^2, evaluated here in MPFR) truncated after lambda^n leaves a remainder
+/// ~ lambda^(n+2) against the MPFR Volterra solution, n = 4, 6, 8, 10; slopes within 0.1.
+#[test]
+fn adhesion_quartic_load_series_remainders_have_the_predicted_orders() {
+    use periodic_contact::adhesion::solve_mpfr;
+    use periodic_contact::adhesion::volterra_mpfr::VolterraParams;
+    use periodic_contact::asymptotics::adhesion::{series_constants, symbol_values};
+    use periodic_contact::asymptotics::polynomial::polynomial_adhesion_expansion;
+    use periodic_contact::model::{AdhesionProblem, AdhesionSize};
+    let nu = q("3/10");
+    let profile = PolynomialProfile::new(vec![Some(q("0")), Some(q("0")), Some(q("1")), Some(q("0")), None]).unwrap();
+    let e = polynomial_adhesion_expansion(&profile, 12).unwrap();
+    let pi = Float::with_val(PREC, Constant::Pi);
+    let mut b = symbol_values(&series_constants(&nu, PREC).unwrap());
+    let sigma_4 = Float::with_val(PREC, to_float(&q("1/10"), PREC) / Float::with_val(PREC, pi.square_ref()));
+    b.push((exact_series::Symbol::new("sigma_4").unwrap(), sigma_4));
+    let shape = PunchShape::polynomial(["0", "0", "1", "0", "1/10"].iter().map(|s| q(s)).collect()).unwrap();
+    let material = Material::from_contact_modulus(nu.clone(), q("1")).unwrap();
+    let ns = [4usize, 6, 8, 10];
+    let mut logx = Vec::new();
+    let mut rem: Vec<Vec<f64>> = vec![Vec::new(); ns.len()];
+    for a in ["1/40", "1/28", "1/20", "1/14"] {
+        let p = AdhesionProblem::new(
+            material.clone(),
+            Period::finite(q("1")).unwrap(),
+            shape.clone(),
+            AdhesionSize::HalfWidth(q(a)),
+        )
+        .unwrap();
+        let s = solve_mpfr(&p, &[], VolterraParams::for_digits(30)).unwrap();
+        let lam = Float::with_val(PREC, &pi * to_float(&q(a), PREC));
+        logx.push(lam.to_f64().ln());
+        // P2 = (1/pi)^2 pi (P/pi) = (P/pi)/pi for E* = c_2 = L = 1.
+        let scale = Float::with_val(PREC, pi.recip_ref());
+        for (i, &n) in ns.iter().enumerate() {
+            let series = Float::with_val(PREC, truncated(&e.load, n, &lam, &b) * &scale);
+            let r = Float::with_val(PREC, &s.normal_load - &series).abs() / &s.normal_load;
+            rem[i].push(r.to_f64());
+        }
+    }
+    for (i, &n) in ns.iter().enumerate() {
+        let sl = slope(&logx, &rem[i].iter().map(|x| x.ln()).collect::<Vec<_>>());
+        eprintln!(
+            "Problem 2 quartic: n = {n}: slope {sl:.4}; relative remainders {:.2e}..{:.2e}",
+            rem[i][0], rem[i][3]
+        );
+        // Relative to P2 ~ lambda^2: the remainder lambda^(n+2) is lambda^n relative.
+        let want = n as f64;
+        assert!((sl - want).abs() < 0.1, "Problem 2: P2 after lambda^{n}: slope {sl}, want {want}");
+    }
 }
