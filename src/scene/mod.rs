@@ -62,7 +62,7 @@
 
 pub mod parse;
 
-use crate::model::{AdhesionProblem, Exact, SlidingProblem};
+use crate::model::{AdhesionProblem, Exact, LoadingLawProblem, SlidingProblem};
 
 /// The solution method a scene or the command line asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -117,6 +117,8 @@ pub enum SceneProblem {
     Sliding(SlidingProblem),
     /// Problem 2.
     Adhesion(AdhesionProblem),
+    /// Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; asymmetric contact).
+    LoadingLaw(LoadingLawProblem),
 }
 
 /// The quantity a `[sweep]` varies.
@@ -124,7 +126,8 @@ pub enum SceneProblem {
 pub enum SweepParameter {
     /// Load per punch P2 (either problem).
     NormalLoad,
-    /// Half-length l of the sliding contact (Problem 1, direct problem).
+    /// Half-length l of the sliding contact (Problem 1, direct problem) or of the loading-law
+    /// contact, l = (a + b)/2.
     HalfLength,
     /// Half-width a of the adhesive contact (Problem 2).
     HalfWidth,
@@ -172,7 +175,7 @@ impl Scene {
 /// The problem with its load or size replaced by `v` (None if the parameter does not apply or the
 /// value is invalid; the parser rejects both).
 pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
-    use crate::model::{AdhesionSize, SlidingLoad};
+    use crate::model::{AdhesionSize, LawSize, SlidingLoad};
     match (problem, parameter) {
         (SceneProblem::Sliding(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
             let load = if parameter == SweepParameter::NormalLoad {
@@ -192,6 +195,31 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
                 .ok()
                 .map(SceneProblem::Adhesion)
         }
+        (SceneProblem::LoadingLaw(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
+            let size = if parameter == SweepParameter::NormalLoad {
+                LawSize::NormalLoad(v.clone())
+            } else {
+                LawSize::HalfLength(v.clone())
+            };
+            rebuild_law(p, size, p.convention()).ok().map(SceneProblem::LoadingLaw)
+        }
         _ => None,
     }
+}
+
+/// `p` with another size and convention (the model keeps its fields private and validates in
+/// [`LoadingLawProblem::new`]; the rest of the statement is kept).
+pub fn rebuild_law(
+    p: &LoadingLawProblem,
+    size: crate::model::LawSize,
+    convention: crate::model::Convention,
+) -> Result<LoadingLawProblem, crate::model::ModelError> {
+    LoadingLawProblem::new(
+        p.material().clone(),
+        crate::model::Period::Finite(p.period().clone()),
+        crate::model::PunchShape::Parabolic { k: p.k().clone() },
+        p.law().clone(),
+        size,
+        convention,
+    )
 }
