@@ -46,14 +46,27 @@
 //! points = ["0", "0.5", "0.9"]   # x/a in [0, 1]
 //! ```
 //!
+//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; an asymmetric contact
+//! [-a, b]) is an adhesion scene whose `[adhesion]` states the law; it parses to
+//! [`SceneProblem::LoadingLaw`], and `[problem] convention` matters there (P1 != 0 brings in the
+//! rotation term):
+//!
+//! ```toml
+//! [adhesion]
+//! tangential_ratio = "1/5"       # P1 = n P2; or loading_law = ["0", "1/5", "1/100"] (numpy order)
+//! half_length = "1/6"            # l = (a + b)/2; or normal_load = "..."; half_width is refused
+//! [output]
+//! points = ["-0.9", "0", "0.9"]  # xh = (x - c)/l in (-1, 1)
+//! ```
+//!
 //! Either problem may add a sweep for load-size curves (`periodic-contact report`): one key, an
 //! array of exact values, each replacing the scene's own load or size in turn (the scene's own
 //! value is kept for `solve`).
 //!
 //! ```toml
 //! [sweep]
-//! normal_load = ["0.001", "0.01", "0.1"]   # sliding or adhesion; or half_length (sliding),
-//!                                          # or half_width (adhesion)
+//! normal_load = ["0.001", "0.01", "0.1"]   # sliding or adhesion; or half_length (sliding,
+//!                                          # loading law), or half_width (adhesion)
 //! ```
 //!
 //! `[output] target_digits = 12` asks for the cheapest method meeting 12 digits (chosen by the
