@@ -4,7 +4,7 @@
 //! symbols by name) is 1. Reduction uses [`Poly::gcd`] and [`Poly::div_exact`].
 
 use crate::ring::Q;
-use crate::{Poly, Ring, Symbol};
+use crate::{Monomial, Poly, Ring, Symbol};
 use num_traits::Zero;
 
 /// A rational function `num/den` over Q in named symbols (canonical: reduced, `den` monic).
@@ -39,10 +39,13 @@ impl Frac {
         let inv = lc.recip();
         Some(Frac { num: n.scale(&inv), den: d.scale(&inv) })
     }
-    /// `num / base^e`, reduced, without forming the gcd of `num` and `base^e`: factors `base`
-    /// are first removed by exact division; if what is left of `num` is coprime to `base` (one
-    /// gcd with `base`, not with its power), the pair is already reduced; otherwise this falls
-    /// back to [`Frac::new`]. The same canonical form as [`Frac::new`]; `None` if `base = 0`.
+    /// `num / base^e`, reduced, without forming the gcd of `num` and `base^e`. `base` is first
+    /// split into squarefree pieces f_i with product `base` (f = gcd(p, dp/dx_1, ..., dp/dx_n)
+    /// times p/f, recursively: p/f is squarefree over Q); then every piece is divided out of
+    /// `num` while it divides exactly, and a piece that does not divide `num` but shares a factor
+    /// with it (a non-constant gcd with that small piece: never with the power) is split into
+    /// that gcd and its cofactor, which are coprime. At the end `num` is coprime to every
+    /// piece, so to `base^e`. The same canonical form as [`Frac::new`]; `None` if `base = 0`.
     ///
     /// ```
     /// use exact_series::{Frac, Poly, Ring};
@@ -51,26 +54,45 @@ impl Frac {
     /// let f = Frac::over_power(x.mul(&d), &d, 3).unwrap();
     /// assert_eq!(f, Frac::new(x.mul(&d), d.mul(&d).mul(&d)).unwrap());
     /// assert_eq!(f.text(), "(x)/(x^2 + 2*x + 1)");
+    /// // A base with a repeated factor, a numerator sharing only part of it.
+    /// let y = Poly::var("y").unwrap();
+    /// let b = d.mul(&d).mul(&y.sub(&x)); // (x + 1)^2 (y - x)
+    /// let n = y.sub(&x).mul(&d).mul(&y);
+    /// assert_eq!(Frac::over_power(n.clone(), &b, 2), Frac::new(n, b.mul(&b)));
     /// ```
     pub fn over_power(num: Poly, base: &Poly, e: u32) -> Option<Frac> {
         if base.is_zero() {
             return None;
         }
+        if num.is_zero() {
+            return Some(Frac::zero());
+        }
+        if e == 0 || base.as_q().is_some() {
+            return Frac::new(num, (0..e).fold(Poly::one(), |acc, _| acc.mul(base)));
+        }
+        let mut pieces: Vec<(Poly, u32)> = squarefree_pieces(base).into_iter().map(|f| (f, e)).collect();
         let mut num = num;
-        let mut e = e;
-        while e > 0 && !num.is_zero() {
-            match num.div_exact(base) {
-                Some(q) => {
-                    num = q;
-                    e -= 1;
-                }
-                None => break,
+        let mut i = 0;
+        while i < pieces.len() {
+            let (f, m) = pieces[i].clone();
+            if m == 0 || f.as_q().is_some() {
+                i += 1;
+                continue;
             }
+            if let Some(q) = num.div_exact(&f) {
+                num = q;
+                pieces[i].1 -= 1;
+                continue;
+            }
+            let g = num.gcd(&f);
+            if g.as_q().is_none() {
+                // gcd(num, f/g) = 1 (f is squarefree), and g is divided out when its turn comes.
+                pieces[i].0 = f.div_exact(&g).expect("the gcd divides");
+                pieces.push((g, m));
+            }
+            i += 1;
         }
-        let den = (0..e).fold(Poly::one(), |acc, _| acc.mul(base));
-        if num.is_zero() || e == 0 || base.as_q().is_some() || num.gcd(base).as_q().is_none() {
-            return Frac::new(num, den);
-        }
+        let den = pieces.iter().fold(Poly::one(), |acc, (f, m)| (0..*m).fold(acc, |a, _| a.mul(f)));
         let inv = den.leading_coefficient_lex().recip();
         Some(Frac { num: num.scale(&inv), den: den.scale(&inv) })
     }
@@ -89,8 +111,33 @@ impl Frac {
     }
     /// Substitutes a rational for a symbol; `None` if the denominator vanishes there.
     pub fn subs(&self, s: Symbol, v: &Q) -> Option<Frac> {
+        if self.num.degree_in(s) == 0 && self.den.degree_in(s) == 0 {
+            return Some(self.clone()); // s does not occur: already canonical
+        }
         Frac::new(self.num.subs(s, v), self.den.subs(s, v))
     }
+}
+
+/// d p / d x.
+fn derivative(p: &Poly, x: Symbol) -> Poly {
+    Poly::from_rational_terms(p.terms().filter_map(|(m, q)| {
+        let (rest, e) = m.remove(x);
+        (e > 0).then(|| (rest.mul(&Monomial::power(x, e - 1)), q * Q::from_integer(e.into())))
+    }))
+}
+
+/// Squarefree polynomials whose product is `p` (non-constant `p`; module doc of
+/// [`Frac::over_power`]): with f = gcd(p, dp/dx over every symbol x), p/f is squarefree and f
+/// holds every repeated factor once less.
+fn squarefree_pieces(p: &Poly) -> Vec<Poly> {
+    let f =
+        p.symbols().into_iter().fold(p.clone(), |g, x| if g.as_q().is_some() { g } else { g.gcd(&derivative(p, x)) });
+    if f.as_q().is_some() {
+        return vec![p.clone()];
+    }
+    let mut out = squarefree_pieces(&f);
+    out.push(p.div_exact(&f).expect("the gcd divides"));
+    out
 }
 
 impl Ring for Frac {

@@ -224,17 +224,17 @@ pub fn derive_polynomial_sliding(
     subs: &Substitutions,
 ) -> Result<Vec<Derived>, SeriesError> {
     // theta, rbar_s, T fixed before the derivation: the same objects, much faster.
-    let fixed = FixedValues { theta: subs.theta.clone(), rbar_s: subs.rbar_s.clone(), t: subs.t.clone() };
+    let fixed = FixedValues { theta: subs.theta.clone(), rbar_s: subs.rbar_s.clone() };
     let e = polynomial_sliding_expansion_at(profile, order, convention, &fixed)?;
     let mut notes = profile_notes(profile);
     notes.push(
-        "l_s: single-punch half-length at the same load P2; Lambda = pi l_s/L; rbar_s = c_s/l_s, the single punch's centre; T = beta tau0/(E* c_r l_s^(r-1))"
+        "l_s: single-punch half-length at the same load P2; Lambda = pi l_s/L; rbar_s = c_s/l_s, the single punch's centre; T = beta tau0/(E* c_r l_s^(r-1)) = Tb_s - rho_1/2"
             .into(),
     );
     notes.push(match convention {
         Convention::Paper => "convention: paper (THEORY.md section 3; even in Lambda)".into(),
         Convention::PeriodicSurface => {
-            "convention: periodic (K of THEORY.md section 8 added; kappa = tan(pi theta), invpi = 1/pi)".into()
+            "convention: periodic (K of THEORY.md section 8 added, T = Tb_s - rho_1/2 in it; kappa = tan(pi theta), invpi = 1/pi)".into()
         }
     });
     let src = "THEORY.md sections 5, 8, 9; paper [2.13]-[2.14], [3.7]-[3.11]";

@@ -8,8 +8,11 @@
 use super::{Monomial, Poly};
 use crate::ring::Q;
 use crate::{Ring, Symbol};
-use num_traits::Zero;
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
 use std::cmp::Ordering;
+use std::collections::btree_map::Entry;
+use std::collections::BTreeMap;
 
 /// Pure lex comparison of monomials: the alphabetically first symbol is the most significant.
 fn lex_cmp(a: &Monomial, b: &Monomial) -> Ordering {
@@ -60,22 +63,93 @@ fn mono_div(m: &Monomial, d: &Monomial) -> Option<Monomial> {
     d.factors().iter().all(|&(s, _)| m.exponent(s) > 0).then_some(out)
 }
 
+/// A monomial ordered by [`lex_cmp`] (a monomial order: compatible with multiplication).
+#[derive(PartialEq, Eq)]
+struct Lex(Monomial);
+
+impl PartialOrd for Lex {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Lex {
+    fn cmp(&self, other: &Self) -> Ordering {
+        lex_cmp(&self.0, &other.0)
+    }
+}
+
+/// `lc^k`, from a cache of the powers computed so far.
+fn power_of<'c>(cache: &'c mut Vec<BigInt>, k: u32) -> &'c BigInt {
+    while cache.len() <= k as usize {
+        let next = cache.last().expect("cache starts with lc^0") * &cache[1];
+        cache.push(next);
+    }
+    &cache[k as usize]
+}
+
 /// Exact division `a / b` in Q[symbols], `None` if `b` does not divide `a`.
+///
+/// Multivariate long division in lex order, in integers: with a = A/d_a and b = B/d_b (A, B
+/// the integer numerators of the canonical form), a/b = (A/B) d_b/d_a, and every coefficient
+/// met while dividing A by B is an integer over a power of lc = lc(B), kept as the pair
+/// (numerator, exponent): no gcd until the quotient is built. The remainder lives in a map
+/// ordered by monomial, so each quotient term costs one pass over the terms of `b`:
+/// O(|q| |b| log |a|) integer operations. A quick degree test refuses first (a divisor of `a`
+/// has at most `a`'s degree in every symbol).
 pub(super) fn div_exact(a: &Poly, b: &Poly) -> Option<Poly> {
     if b.is_zero() {
         return None;
     }
-    let (lm_b, lc_b) = leading(b);
-    let mut r = a.clone();
-    let mut q = Poly::zero();
-    while !r.is_zero() {
-        let (lm_r, lc_r) = leading(&r);
-        let m = mono_div(&lm_r, &lm_b)?;
-        let t = Poly::term(&(lc_r / &lc_b), m);
-        q = q.add(&t);
-        r = r.sub(&t.mul(b));
+    if a.is_zero() {
+        return Some(Poly::zero());
     }
-    Some(q)
+    if let Some(q) = b.as_q() {
+        return Some(a.scale(&q.recip()));
+    }
+    if b.symbols().into_iter().any(|s| b.degree_in(s) > a.degree_in(s)) {
+        return None;
+    }
+    let mut bt: Vec<(Monomial, BigInt)> = b.terms.clone();
+    bt.sort_by(|x, y| lex_cmp(&y.0, &x.0));
+    let (lm_b, lc) = bt[0].clone();
+    let mut pow = vec![BigInt::one(), lc];
+    let mut r: BTreeMap<Lex, (BigInt, u32)> = a.terms.iter().map(|(m, n)| (Lex(m.clone()), (n.clone(), 0))).collect();
+    let mut quotient: Vec<(Monomial, BigInt, u32)> = Vec::new();
+    while let Some((Lex(lm_r), (n, e))) = r.pop_last() {
+        let m = mono_div(&lm_r, &lm_b)?;
+        // The quotient term is (n / lc^(e+1)) m; subtract it times the other terms of b.
+        let e1 = e + 1;
+        for (mb, nb) in &bt[1..] {
+            let d = &n * nb;
+            match r.entry(Lex(m.mul(mb))) {
+                Entry::Vacant(v) => {
+                    v.insert((-d, e1));
+                }
+                Entry::Occupied(mut o) => {
+                    let (n2, e2) = o.get_mut();
+                    match (*e2).cmp(&e1) {
+                        Ordering::Equal => *n2 -= d,
+                        Ordering::Less => {
+                            *n2 = &*n2 * power_of(&mut pow, e1 - *e2) - d;
+                            *e2 = e1;
+                        }
+                        Ordering::Greater => *n2 -= d * power_of(&mut pow, *e2 - e1),
+                    }
+                    if n2.is_zero() {
+                        o.remove();
+                    }
+                }
+            }
+        }
+        quotient.push((m, n, e1));
+    }
+    let emax = quotient.iter().map(|t| t.2).max().unwrap_or(0);
+    let mut terms: Vec<(Monomial, BigInt)> =
+        quotient.into_iter().map(|(m, n, e)| (m, n * power_of(&mut pow, emax - e) * &b.den)).collect();
+    terms.sort_by(|x, y| x.0.cmp(&y.0));
+    let den = power_of(&mut pow, emax) * &a.den;
+    Some(Poly::normalized(terms, den))
 }
 
 /// Coefficients of `p` as a polynomial in `x`: `p = sum_k c_k x^k`, `c_k` free of `x`.
@@ -239,6 +313,26 @@ mod tests {
 
     fn p(s: &str) -> Poly {
         Poly::var(s).unwrap()
+    }
+
+    /// Exact division undoes multiplication (canonical quotient, content 1 included) and
+    /// refuses a non-divisor, by the degree test or by a failing leading term.
+    #[test]
+    fn exact_division_inverts_multiplication() {
+        let (x, y, z) = (p("x"), p("y"), p("z"));
+        let q = |n: i64, d: i64| Poly::from_q(&Q::new(n.into(), d.into()));
+        let a = x.mul(&x).mul(&x).mul(&y).sub(&z.mul(&x).mul(&q(2, 3))).add(&q(5, 7));
+        let b = y.mul(&z).sub(&x.mul(&x).mul_int(3)).add(&q(1, 2));
+        let prod = a.mul(&b);
+        let got = div_exact(&prod, &b).unwrap();
+        assert_eq!(got, a);
+        assert!(got.is_canonical() && prod.is_canonical());
+        assert_eq!(div_exact(&prod, &a).unwrap(), b);
+        assert!(div_exact(&prod.add(&Poly::one()), &b).is_none());
+        assert!(div_exact(&a, &x.mul(&x).mul(&x).mul(&x)).is_none());
+        assert!(div_exact(&prod, &b.add(&x)).is_none());
+        assert_eq!(div_exact(&Poly::zero(), &b).unwrap(), Poly::zero());
+        assert_eq!(div_exact(&a, &q(2, 5)).unwrap(), a.scale(&Q::new(5.into(), 2.into())));
     }
 
     /// The coprimality certificate never claims coprime for a common factor, and the gcd is

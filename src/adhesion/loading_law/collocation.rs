@@ -24,7 +24,7 @@
 
 use super::kernel::{outside_kernel, Side, TiltedPunch};
 use crate::adhesion::error::AdhesionError;
-use crate::model::{Convention, Exact, Material};
+use crate::model::{Convention, Exact, LoadingLaw, Material};
 use crate::numerics::chebyshev;
 use crate::numerics::exact::to_float;
 use crate::numerics::tanh_sinh::TanhSinh;
@@ -37,13 +37,28 @@ use rug::{Complex, Float};
 pub struct LawSetting {
     /// The half-plane's material (eps and C_P are derived at each precision).
     pub material: Material,
-    /// n = P1/P2 (linear law), exact.
-    pub ratio: Exact,
+    /// The law P1 = N(P2).
+    pub law: LoadingLaw,
+    /// E* k L^2: P2 = (E* k L^2/pi^2) P.
+    pub load_scale: Exact,
     /// l/L at the final size, exact (Lambda = pi l/L).
     pub size_over_period: Exact,
     /// The surface convention (THEORY.md section 8): `periodic` adds the tilted punch's increment
     /// ([`super::kernel::TiltedPunch`]).
     pub convention: Convention,
+}
+
+impl LawSetting {
+    /// The linear law n with E* k L^2 = 1 (tests and the dimensionless problem).
+    pub fn linear(material: Material, n: Exact, size_over_period: Exact, convention: Convention) -> Self {
+        LawSetting {
+            material,
+            law: LoadingLaw::Linear(n),
+            load_scale: Exact::from_integer(1.into()),
+            size_over_period,
+            convention,
+        }
+    }
 }
 
 /// The material and law constants every increment needs, at one precision.
@@ -55,8 +70,12 @@ pub struct Increment {
     pub cosh_pi_eps: Float,
     /// beta.
     pub beta: Float,
-    /// n = P1/P2.
-    pub ratio: Float,
+    /// N'(P2) coefficients (numpy order, in powers of P2).
+    pub slope: Vec<Float>,
+    /// N(P2) coefficients.
+    pub law: Vec<Float>,
+    /// E* k L^2/pi^2 (P2 per unit P).
+    pub p2_per_p: Float,
     /// Whether the `periodic` convention's rotation increment is added.
     pub periodic: bool,
 }
@@ -65,14 +84,57 @@ impl Increment {
     /// From the setting at `prec` bits.
     pub fn new(setting: &LawSetting, prec: u32) -> Self {
         let constants = AdhesionParamsMpfr::new(&setting.material, prec);
+        let pi2 = Float::with_val(prec, Constant::Pi).square();
+        let law = match &setting.law {
+            LoadingLaw::Linear(n) => vec![Exact::from_integer(0.into()), n.clone()],
+            LoadingLaw::Polynomial(c) => c.clone(),
+        };
         Increment {
             eps: constants.eps,
             cosh_pi_eps: constants.cosh_pi_eps,
             beta: constants.beta,
-            ratio: to_float(&setting.ratio, prec),
+            slope: setting.law.derivative().iter().map(|c| to_float(c, prec)).collect(),
+            law: law.iter().map(|c| to_float(c, prec)).collect(),
+            p2_per_p: to_float(&setting.load_scale, prec) / pi2,
             periodic: setting.convention == Convention::PeriodicSurface,
         }
     }
+    /// Whether n = N' is constant along the loading (linear law).
+    pub fn constant_ratio(&self) -> bool {
+        self.slope.len() <= 1
+    }
+    /// n = N'(P2) at P2 = p2_per_p `p`.
+    pub fn ratio_at(&self, p: &Float) -> Float {
+        let prec = p.prec();
+        let p2 = Float::with_val(prec, p * &self.p2_per_p);
+        self.slope.iter().rev().fold(Float::with_val(prec, 0), |acc, c| acc * &p2 + c)
+    }
+    /// N(P2) at P2 = p2_per_p `p`, in units of p2_per_p (i.e. P1/p2_per_p).
+    pub fn law_at(&self, p: &Float) -> Float {
+        let prec = p.prec();
+        let p2 = Float::with_val(prec, p * &self.p2_per_p);
+        self.law.iter().rev().fold(Float::with_val(prec, 0), |acc, c| acc * &p2 + c) / &self.p2_per_p
+    }
+}
+
+/// Chebyshev coefficients of t Phi(t) (t = (x + 1)/2, x T_j = (T_(j+1) + T_|j-1|)/2) from those
+/// of Phi: P(Lambda t) = Lambda^2 int_0^t t' Phi(t') dt'.
+pub(super) fn times_t(phi: &[Float], prec: u32) -> Vec<Float> {
+    let n = phi.len();
+    let mut x_phi = vec![Float::with_val(prec, 0); n + 1];
+    for (j, c) in phi.iter().enumerate() {
+        if j == 0 {
+            x_phi[1] += c;
+        } else {
+            let h = Float::with_val(prec, c / 2u32);
+            x_phi[j + 1] += &h;
+            x_phi[j - 1] += &h;
+        }
+    }
+    for (j, c) in phi.iter().enumerate() {
+        x_phi[j] += c;
+    }
+    x_phi.into_iter().map(|v| v / 2u32).collect()
 }
 
 /// Working data of one precision.
@@ -134,8 +196,9 @@ pub(super) fn edge_integrals(
     let gam_t = at(gam_c, t);
     let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
     let xt = Float::with_val(prec, t * 2u32) - 1u32;
-    let one_in = Complex::with_val(prec, (1, &inc.ratio));
-    let beta_n = Float::with_val(prec, &inc.beta * &inc.ratio);
+    let tphi = (!inc.constant_ratio()).then(|| times_t(phi_c, prec));
+    let l2max = Float::with_val(prec, lambda_max.square_ref());
+    let n_const = inc.ratio_at(&Float::with_val(prec, 0));
     for q in 0..rule.len() {
         let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
         let ts = Float::with_val(prec, t * s);
@@ -147,6 +210,13 @@ pub(super) fn edge_integrals(
         let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd));
         let base = Float::with_val(prec, &lambda * c);
         let weight = Float::with_val(prec, w * s) * &phi;
+        // n = N'(P2(eta)) (constant for the linear law).
+        let n = match &tphi {
+            Some(tp) => inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max)),
+            None => n_const.clone(),
+        };
+        let one_in = Complex::with_val(prec, (1, &n));
+        let beta_n = Float::with_val(prec, &inc.beta * &n);
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
             let factor = Float::with_val(prec, &e * sign) + 1u32;
             if !(factor > 0) {
@@ -328,7 +398,7 @@ fn solve_f64(jac: &[Vec<f64>], r: &[f64]) -> Result<Vec<f64>, AdhesionError> {
 mod tests {
     use super::*;
     use crate::adhesion::volterra_mpfr::{solve as volterra_solve, VolterraParams};
-    use crate::model::{Convention, Exact, Material};
+    use crate::model::{Convention, Exact, LoadingLaw, Material};
     use crate::params::adhesion::AdhesionParamsMpfr;
 
     fn material(nu: (i64, i64)) -> Material {
@@ -345,7 +415,8 @@ mod tests {
         let setting = LawSetting {
             convention: Convention::Paper,
             material: m.clone(),
-            ratio: Exact::from_integer(0.into()),
+            law: LoadingLaw::Linear(Exact::from_integer(0.into())),
+            load_scale: Exact::from_integer(1.into()),
             size_over_period: Exact::new(1.into(), (2 * 314159).into()) * Exact::from_integer(100000.into()),
         };
         let t = std::time::Instant::now();
@@ -372,7 +443,8 @@ mod tests {
         let setting = LawSetting {
             convention: Convention::Paper,
             material: material((1, 2)),
-            ratio: Exact::new(1.into(), 2.into()),
+            law: LoadingLaw::Linear(Exact::new(1.into(), 2.into())),
+            load_scale: Exact::from_integer(1.into()),
             size_over_period: Exact::new(1.into(), 5.into()),
         };
         let sol = solve(&setting, 16, 100, 140).unwrap();
@@ -392,7 +464,8 @@ mod tests {
         let setting = LawSetting {
             convention: Convention::Paper,
             material: m,
-            ratio: Exact::new(1.into(), 5.into()),
+            law: LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
+            load_scale: Exact::from_integer(1.into()),
             size_over_period: Exact::new(1.into(), 6.into()),
         };
         let t = std::time::Instant::now();

@@ -30,8 +30,13 @@
 //!
 //! ([`PolynomialSlidingExpansion::tbar_single`]); the parabola's relation is Tb_s = 2 theta - rbar_s.
 //! Given T and the tilt, rbar_s is the root of Tb_s = T + rho_1/2 that continues the physical
-//! single punch (rbar_s = 0 for an even profile at theta = T = 0). `periodic` keeps T as a symbol
-//! too (it enters K apart from the tilt), beside kappa = tan(pi theta) and invpi = 1/pi.
+//! single punch (rbar_s = 0 for an even profile at theta = T = 0). T itself is then no parameter
+//! of its own: T = Tb_s - rho_1/2. `periodic`, where T enters K apart from the tilt, uses exactly
+//! that polynomial (a symbol T beside rbar_s would be a second, redundant parameter that could
+//! contradict the first), beside the symbols kappa = tan(pi theta) and invpi = 1/pi. With theta
+//! fixed to a rational, kappa is rational only at theta = 0, +-1/4 (Niven: tan of a rational
+//! multiple of pi is rational only when it is 0 or +-1), where it is replaced by 0, +-1;
+//! otherwise it stays a symbol.
 //!
 //! # Why the coefficients are rational, and how they are kept exact
 //! Around the single punch, (rbar, rho) solve two equations Phi = (S(F), rho^r m_0(F) - m0s) = 0
@@ -60,7 +65,7 @@ use crate::model::Convention;
 use exact_series::{Frac, Monomial, Poly, Ring, Series, SeriesError, Symbol, Q};
 
 /// The exact expansions in Lambda = pi l_s/L at fixed load for a polynomial punch
-/// (coefficients in Q(theta, rbar_s, rho_j, l_s) [+ T, kappa, invpi in `periodic`]).
+/// (coefficients in Q(theta, rbar_s, rho_j, l_s) [+ kappa, invpi in `periodic`]).
 #[derive(Debug, Clone)]
 pub struct PolynomialSlidingExpansion {
     /// The profile.
@@ -89,6 +94,11 @@ fn sym(name: &str) -> Result<Poly, SeriesError> {
 
 fn q(n: i64, d: i64) -> Q {
     Q::new(n.into(), d.into())
+}
+
+/// tan(pi theta) when it is rational (theta = 0, +-1/4 for |theta| < 1/2, by Niven's theorem).
+fn rational_tan_pi(theta: &Q) -> Option<Q> {
+    [(q(0, 1), q(0, 1)), (q(1, 4), q(1, 1)), (q(-1, 4), q(-1, 1))].into_iter().find(|(t, _)| t == theta).map(|(_, k)| k)
 }
 
 /// S(F) = sum_i F_i j_i: the solvability functional [2.14].
@@ -170,7 +180,7 @@ struct Setup {
     k_max: usize,
     tbar_s: Poly,
     m0s: Poly,
-    /// (kappa (1/4 - theta^2) m0s, -2 T invpi) in `periodic`.
+    /// (kappa (1/4 - theta^2) m0s, -2 T invpi) in `periodic`, T = Tb_s - rho_1/2.
     k_coeffs: Option<(Poly, Poly)>,
     /// Delta^a: Lambda = scale * mu.
     scale: Poly,
@@ -220,16 +230,18 @@ impl Setup {
 }
 
 /// Exact values fixed before the derivation (each `None` stays a symbol): the same result as
-/// substituting afterwards, much faster (the coefficients are rational functions of every
-/// symbol kept: order 6 with theta, rbar_s and rho_4 all symbolic takes minutes).
+/// substituting afterwards (kappa aside: module doc), much faster. The coefficients are rational
+/// functions of every symbol kept and their size grows with each: for g = x^2 + rho_4 x^4 in
+/// `paper`, order 12 at fixed theta, rbar_s takes under a second, while order 8 with theta,
+/// rbar_s and rho_4 all symbolic prints 1.8 MB in about a minute (debug build,
+/// `series sliding --shape polynomial --coefficients 0,0,1,0,? --order 8`).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct FixedValues {
     /// theta, |theta| < 1/2.
     pub theta: Option<Q>,
-    /// rbar_s, the single punch's centre over l_s.
+    /// rbar_s, the single punch's centre over l_s. It fixes T = beta tau0/(E* c_r l_s^(r-1)):
+    /// T = Tb_s(theta, rbar_s, rho_j) - rho_1/2 (module doc), so T is not a parameter here.
     pub rbar_s: Option<Q>,
-    /// T = beta tau0/(E* c_r l_s^(r-1)) (enters `periodic` only; in `paper` only T + rho_1/2 does).
-    pub t: Option<Q>,
 }
 
 /// Derives the expansions of the polynomial punch through Lambda^order (module doc), every
@@ -308,7 +320,13 @@ pub fn polynomial_sliding_expansion_at(
         1
     };
     let k_coeffs = if periodic {
-        let (kappa, invpi, t) = (sym("kappa")?, sym("invpi")?, value(&fixed.t, "T")?);
+        // kappa = tan(pi theta) (rational at theta = 0, +-1/4 only); T = Tb_s - rho_1/2.
+        let kappa = match fixed.theta.as_ref().and_then(rational_tan_pi) {
+            Some(k) => Poly::from_q(&k),
+            None => sym("kappa")?,
+        };
+        let invpi = sym("invpi")?;
+        let t = tbar_s.sub(&ratios[1].scale(&q(1, 2)));
         Some((kappa.mul(&quarter).mul(&m0s), t.mul(&invpi).mul_int(-2)))
     } else {
         None
