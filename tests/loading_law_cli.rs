@@ -1,8 +1,9 @@
 //! Issue 12 on the command line: the loading-law scene keys (`[adhesion] tangential_ratio` or
 //! `loading_law`, with `half_length` or `normal_load`), their refusals, and
 //! `periodic-contact solve` on the shipped scene `scenes/adhesion_loading_law.toml` (MPFR only).
-//! Three solves in all (each ~20-40 s): the shipped scene at its target (20 digits), the same
-//! law written as a polynomial at 15 digits in text, and the `periodic` convention at 15 digits.
+//! Three solves in all (each ~20-70 s): the shipped scene at its target (20 digits), the same
+//! law written as a polynomial at the shipped load at 15 digits in text, and the `periodic`
+//! convention at 15 digits.
 
 mod common;
 use common::{json, run, scene_file};
@@ -192,16 +193,18 @@ fn shipped_scene_solves_with_its_verified_digits() {
     assert_eq!(v["warnings"], serde_json::json!([]));
 }
 
-/// The same law as the polynomial ["0", "1/5"], in text at 15 digits: the same contact as the
-/// shipped scene's to 15 digits (here against the 20-digit values quoted from the JSON run above).
+/// The same law as the polynomial ["0", "1/5"], given the load the shipped scene's 20-digit run
+/// found, in text at 15 digits: the same contact (l = 1/6, a, b) to 14 digits. Covers the
+/// polynomial form, the given-load path and the text output in one solve.
 #[test]
-fn polynomial_form_of_the_linear_law_in_text() {
+fn polynomial_form_at_the_shipped_load_in_text() {
     // One point keeps the run short (each point's phi is a nested quadrature).
     let text = std::fs::read_to_string(shipped())
         .unwrap()
         .replace("tangential_ratio = \"1/5\"", "loading_law = [\"0\", \"1/5\"]")
+        .replace("half_length = \"1/6\"", "normal_load = \"0.049230787264268367507\"")
         .replace(SHIPPED_POINTS, "points = [\"0.5\"]");
-    assert!(text.contains("points = [\"0.5\"]"));
+    assert!(text.contains("points = [\"0.5\"]") && text.contains("normal_load ="), "{text}");
     let path = scene_file("law_poly.toml", &text);
     let (code, out, err) = run(&["solve", &path, "--digits", "15"]);
     assert_eq!(code, 0, "{err}");
@@ -213,11 +216,13 @@ fn polynomial_form_of_the_linear_law_in_text() {
         let line = out.lines().find(|l| l.starts_with(&format!("{key}: "))).unwrap_or_else(|| panic!("{key}: {out}"));
         Float::with_val(256, Float::parse(&line[key.len() + 2..]).unwrap())
     };
-    // Values of the 20-digit run (`solve scenes/adhesion_loading_law.toml --json`).
+    // Values of the 20-digit run (`solve scenes/adhesion_loading_law.toml`).
+    let l = Float::with_val(256, Float::with_val(256, 1) / 6u32);
     let a20 = Float::with_val(256, Float::parse("1.7363491028950174538e-1").unwrap());
-    let p2_20 = Float::with_val(256, Float::parse("4.9230787264268367507e-2").unwrap());
-    assert!(agree(&get("a"), &a20, &a20, 14.0), "{out}");
-    assert!(agree(&get("P2"), &p2_20, &p2_20, 14.0), "{out}");
+    let b20 = Float::with_val(256, Float::parse("1.5969842304383158796e-1").unwrap());
+    assert!(agree(&get("l"), &l, &l, 14.0), "{out}");
+    assert!(agree(&get("a"), &a20, &l, 14.0), "{out}");
+    assert!(agree(&get("b"), &b20, &l, 14.0), "{out}");
 }
 
 /// `--convention periodic` brings in the rotation term (THEORY.md section 8): another centre, the

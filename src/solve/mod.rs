@@ -192,34 +192,6 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 }
 
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let sol = law_solve(p, &scene.output.points, req.digits)?;
+    let sol = adhesion::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
     Ok(Value::Object(answer_law::law_answer_json(p, &sol, req.digits)))
-}
-
-/// The library's verified loading-law solver on the scene's problem.
-fn law_solve(
-    p: &LoadingLawProblem,
-    xh: &[crate::model::Exact],
-    digits: u32,
-) -> Result<adhesion::loading_law::verified::LawSolution, Error> {
-    use crate::model::LawSize;
-    let ratio = p.law().ratio().ok_or_else(|| {
-        Error::input(
-            "adhesion.loading_law",
-            "(polynomial)",
-            "the solver takes the linear law (tangential_ratio) so far",
-        )
-    })?;
-    let LawSize::HalfLength(l) = p.size() else {
-        return Err(Error::input("adhesion.normal_load", "(given)", "the solver takes half_length so far"));
-    };
-    let problem = adhesion::loading_law::verified::LawProblem {
-        material: p.material().clone(),
-        period: p.period().clone(),
-        k: p.k().clone(),
-        ratio,
-        half_length: l.clone(),
-        convention: p.convention(),
-    };
-    Ok(adhesion::loading_law::verified::solve_law(&problem, xh, digits)?)
 }
