@@ -60,10 +60,13 @@ fn sliding_quartic_wear_order12() {
     snap_parts("sliding_polynomial_quartic_theta_1_4_order12", parts.unwrap());
 }
 
+/// The `periodic` convention at order 8: its order-12 output is 3.2 MB (denominators of degree
+/// 2n - 1 in rho_4), too large to review as a snapshot; `series sliding --shape polynomial
+/// --coefficients 0,0,1,0,? --theta 1/4 --rbar-s 1/6 --convention periodic --order 12` prints it.
 #[test]
-fn sliding_periodic_quartic_wear_order12() {
-    let parts = derive_polynomial_sliding(&quartic(), Convention::PeriodicSurface, 12, &at(q(1, 4), Some(q(1, 6))));
-    snap_parts("sliding_periodic_polynomial_quartic_theta_1_4_order12", parts.unwrap());
+fn sliding_periodic_quartic_wear_order8() {
+    let parts = derive_polynomial_sliding(&quartic(), Convention::PeriodicSurface, 8, &at(q(1, 4), Some(q(1, 6))));
+    snap_parts("sliding_periodic_polynomial_quartic_theta_1_4_order8", parts.unwrap());
 }
 
 #[test]
