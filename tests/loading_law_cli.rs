@@ -242,3 +242,33 @@ fn periodic_convention_moves_the_centre() {
     let c_paper = -6.968_243_622_835_079e-3; // the 20-digit run: -6.9682436228350787116e-3
     assert!((f(&v["c"]).to_f64() - c_paper).abs() > 1e-6, "{v}");
 }
+
+/// The report's scene sections meet the loading-law scene without solving it: method choice and
+/// load-size curves say it is not in the report yet; shapes, orders and conventions skip it.
+#[test]
+fn report_sections_skip_the_loading_law_scene() {
+    use periodic_contact::report::section::{Ctx, Profile};
+    use periodic_contact::report::{calibration, choice, conventions, orders, shapes, sweeps};
+    let s = parse_scene(&std::fs::read_to_string(shipped()).unwrap()).unwrap();
+    let scenes = vec![("adhesion_loading_law".to_string(), s)];
+    let mut ctx = Ctx {
+        profile: Profile::Fast,
+        cache: Default::default(),
+        progress: indicatif::ProgressBar::hidden(),
+        table: calibration::Table::committed().unwrap(),
+    };
+    let t = std::time::Instant::now();
+    let md = choice::section(&mut ctx, &scenes).markdown;
+    assert!(md.contains("| `adhesion_loading_law` | - | - | the loading-law problem is solved by"), "{md}");
+    let sw = sweeps::section(&mut ctx, &scenes);
+    assert!(
+        sw.markdown.contains("### Scene `adhesion_loading_law`\n\nNot computed: the loading-law"),
+        "{}",
+        sw.markdown
+    );
+    assert!(sw.charts.is_empty());
+    assert!(shapes::cases(&scenes).is_empty());
+    let _ = orders::section(&mut ctx, &scenes);
+    let _ = conventions::section(&mut ctx, &scenes);
+    assert!(t.elapsed().as_secs_f64() < 10.0, "no solve: {:?}", t.elapsed());
+}
