@@ -162,14 +162,30 @@ fn convention_of(name: ConventionName) -> Convention {
     }
 }
 
-/// `--convention` replaces the scene's `[problem] convention` (Problem 1; Problem 2 is the same
-/// problem in both conventions, so there it changes nothing).
+/// `--convention` replaces the scene's `[problem] convention` (Problem 1 and the loading-law
+/// problem; the symmetric Problem 2 is the same problem in both conventions, so there it changes
+/// nothing).
 fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), ModelError> {
     let c = convention_of(name);
-    if let SceneProblem::Sliding(p) = &scene.problem {
-        scene.problem = SceneProblem::Sliding(p.to_builder().convention(c).build()?);
+    match &scene.problem {
+        SceneProblem::Sliding(p) => scene.problem = SceneProblem::Sliding(p.to_builder().convention(c).build()?),
+        SceneProblem::LoadingLaw(p) => {
+            scene.problem = SceneProblem::LoadingLaw(crate::scene::rebuild_law(p, p.size().clone(), c)?)
+        }
+        SceneProblem::Adhesion(_) => {}
     }
     Ok(())
+}
+
+/// Digits when `--digits` is not given: the scene's `digits`; for the loading-law problem, whose
+/// one method is MPFR (the cheapest meeting any target), its `target_digits` next; else
+/// [`DEFAULT_DIGITS`].
+fn default_digits(scene: &Scene) -> u32 {
+    let target = match scene.problem {
+        SceneProblem::LoadingLaw(_) => scene.output.target_digits,
+        _ => None,
+    };
+    scene.output.digits.or(target).unwrap_or(DEFAULT_DIGITS)
 }
 
 impl RunConfig {
@@ -285,7 +301,7 @@ impl RunConfig {
                                 format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
                             )
                         })?,
-                    None => parsed.output.digits.unwrap_or(DEFAULT_DIGITS),
+                    None => default_digits(&parsed),
                 };
                 let method = match method {
                     Some(MethodName::Mpfr) => Method::Mpfr,

@@ -19,7 +19,7 @@
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 
 use super::runner::{self, ExpansionCache, Knob, Outcome};
-use crate::model::{AdhesionProblem, AdhesionSize};
+use crate::model::{AdhesionProblem, AdhesionSize, LawSize};
 use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::params::sliding::{single_punch_half_length_f64, SlidingParamsF64};
 use crate::scene::SceneProblem;
@@ -71,6 +71,8 @@ impl Case {
                 PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => vec![Case::SlidingParabolic],
             },
             SceneProblem::Adhesion(_) => vec![Case::AdhesionNu0, Case::AdhesionNu03],
+            // One method (MPFR), not calibrated: the report does not choose for it.
+            SceneProblem::LoadingLaw(_) => vec![],
         }
     }
 }
@@ -307,6 +309,19 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
                 }
             }
         }
+        // Loading law: pi l/L at a given l; at a given load the symmetric (n = 0) estimate.
+        SceneProblem::LoadingLaw(p) => {
+            let big_l = to_f64(p.period()).unwrap_or(f64::NAN);
+            match p.size() {
+                LawSize::HalfLength(l) => pi * to_f64(l).unwrap_or(f64::NAN) / big_l,
+                LawSize::NormalLoad(p2) => {
+                    let cp = crate::params::adhesion::AdhesionParamsF64::new(p.material()).load_constant;
+                    let ek =
+                        to_f64(p.material().contact_modulus()).unwrap_or(f64::NAN) * to_f64(p.k()).unwrap_or(f64::NAN);
+                    pi * (to_f64(p2).unwrap_or(f64::NAN) / (cp * ek)).sqrt() / big_l
+                }
+            }
+        }
     }
 }
 
@@ -325,7 +340,7 @@ pub fn choose(table: &Table, problem: &SceneProblem, target: u32) -> Choice {
                 // The series method knows the parabola and the sinusoid only (issue 11).
                 && matches!(p.shape(), PunchShape::Parabolic { .. } | PunchShape::Sinusoidal { .. })
         }
-        SceneProblem::Adhesion(_) => false,
+        SceneProblem::Adhesion(_) | SceneProblem::LoadingLaw(_) => false,
     };
     let keys = keys_for(table, problem);
     let mut knobs: Vec<Knob> = Vec::new();

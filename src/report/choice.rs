@@ -84,6 +84,11 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut whys = Vec::new();
     for (name, scene) in scenes {
         ctx.step(format!("method choice: {name}"));
+        if matches!(scene.problem, SceneProblem::LoadingLaw(_)) {
+            let _ =
+                writeln!(s.markdown, "| `{name}` | - | - | {} | - | - | - | - |", runner::LOADING_LAW_NOT_IN_REPORT);
+            continue;
+        }
         match target_of(scene) {
             Err(d) => {
                 let _ = writeln!(

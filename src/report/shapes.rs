@@ -157,6 +157,8 @@ pub fn cases(scenes: &[(String, Scene)]) -> Vec<ShapeCase> {
         let (shape, period, material) = match &scene.problem {
             SceneProblem::Sliding(p) => (p.shape(), p.period(), p.material()),
             SceneProblem::Adhesion(p) => (p.shape(), p.period(), p.material()),
+            // The parabola only: not a new profile.
+            SceneProblem::LoadingLaw(_) => continue,
         };
         if !matches!(shape, PunchShape::Polynomial { .. } | PunchShape::Circular { .. })
             || !matches!(period, Period::Finite(_))

@@ -78,6 +78,7 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
                 PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => {}
             }
         }
+        SceneProblem::LoadingLaw(_) => {}
         SceneProblem::Adhesion(p) => {
             let e = f(p.material().contact_modulus());
             let k = f(p.curvature());
@@ -104,6 +105,7 @@ fn period_of(problem: &SceneProblem) -> Option<f64> {
     let p = match problem {
         SceneProblem::Sliding(p) => p.period(),
         SceneProblem::Adhesion(p) => p.period(),
+        SceneProblem::LoadingLaw(p) => return Some(f(p.period())),
     };
     match p {
         Period::Finite(l) => Some(f(l)),
@@ -130,6 +132,11 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     );
     for (name, scene) in scenes {
         let Some(sw) = &scene.sweep else { continue };
+        if matches!(scene.problem, SceneProblem::LoadingLaw(_)) {
+            let _ =
+                writeln!(s.markdown, "### Scene `{name}`\n\nNot computed: {}.\n", runner::LOADING_LAW_NOT_IN_REPORT);
+            continue;
+        }
         let problems = scene.sweep_problems();
         let big_l = period_of(&scene.problem);
         let scale = big_l.unwrap_or(1.0);

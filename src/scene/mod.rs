@@ -46,14 +46,27 @@
 //! points = ["0", "0.5", "0.9"]   # x/a in [0, 1]
 //! ```
 //!
+//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; an asymmetric contact
+//! [-a, b]) is an adhesion scene whose `[adhesion]` states the law; it parses to
+//! [`SceneProblem::LoadingLaw`], and `[problem] convention` matters there (P1 != 0 brings in the
+//! rotation term):
+//!
+//! ```toml
+//! [adhesion]
+//! tangential_ratio = "1/5"       # P1 = n P2; or loading_law = ["0", "1/5", "1/100"] (numpy order)
+//! half_length = "1/6"            # l = (a + b)/2; or normal_load = "..."; half_width is refused
+//! [output]
+//! points = ["-0.9", "0", "0.9"]  # xh = (x - c)/l in (-1, 1)
+//! ```
+//!
 //! Either problem may add a sweep for load-size curves (`periodic-contact report`): one key, an
 //! array of exact values, each replacing the scene's own load or size in turn (the scene's own
 //! value is kept for `solve`).
 //!
 //! ```toml
 //! [sweep]
-//! normal_load = ["0.001", "0.01", "0.1"]   # sliding or adhesion; or half_length (sliding),
-//!                                          # or half_width (adhesion)
+//! normal_load = ["0.001", "0.01", "0.1"]   # sliding or adhesion; or half_length (sliding,
+//!                                          # loading law), or half_width (adhesion)
 //! ```
 //!
 //! `[output] target_digits = 12` asks for the cheapest method meeting 12 digits (chosen by the
@@ -62,7 +75,7 @@
 
 pub mod parse;
 
-use crate::model::{AdhesionProblem, Exact, SlidingProblem};
+use crate::model::{AdhesionProblem, Exact, LoadingLawProblem, SlidingProblem};
 
 /// The solution method a scene or the command line asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -117,6 +130,8 @@ pub enum SceneProblem {
     Sliding(SlidingProblem),
     /// Problem 2.
     Adhesion(AdhesionProblem),
+    /// Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; asymmetric contact).
+    LoadingLaw(LoadingLawProblem),
 }
 
 /// The quantity a `[sweep]` varies.
@@ -124,7 +139,8 @@ pub enum SceneProblem {
 pub enum SweepParameter {
     /// Load per punch P2 (either problem).
     NormalLoad,
-    /// Half-length l of the sliding contact (Problem 1, direct problem).
+    /// Half-length l of the sliding contact (Problem 1, direct problem) or of the loading-law
+    /// contact, l = (a + b)/2.
     HalfLength,
     /// Half-width a of the adhesive contact (Problem 2).
     HalfWidth,
@@ -172,7 +188,7 @@ impl Scene {
 /// The problem with its load or size replaced by `v` (None if the parameter does not apply or the
 /// value is invalid; the parser rejects both).
 pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
-    use crate::model::{AdhesionSize, SlidingLoad};
+    use crate::model::{AdhesionSize, LawSize, SlidingLoad};
     match (problem, parameter) {
         (SceneProblem::Sliding(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
             let load = if parameter == SweepParameter::NormalLoad {
@@ -192,6 +208,31 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
                 .ok()
                 .map(SceneProblem::Adhesion)
         }
+        (SceneProblem::LoadingLaw(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
+            let size = if parameter == SweepParameter::NormalLoad {
+                LawSize::NormalLoad(v.clone())
+            } else {
+                LawSize::HalfLength(v.clone())
+            };
+            rebuild_law(p, size, p.convention()).ok().map(SceneProblem::LoadingLaw)
+        }
         _ => None,
     }
+}
+
+/// `p` with another size and convention (the model keeps its fields private and validates in
+/// [`LoadingLawProblem::new`]; the rest of the statement is kept).
+pub fn rebuild_law(
+    p: &LoadingLawProblem,
+    size: crate::model::LawSize,
+    convention: crate::model::Convention,
+) -> Result<LoadingLawProblem, crate::model::ModelError> {
+    LoadingLawProblem::new(
+        p.material().clone(),
+        crate::model::Period::Finite(p.period().clone()),
+        crate::model::PunchShape::Parabolic { k: p.k().clone() },
+        p.law().clone(),
+        size,
+        convention,
+    )
 }

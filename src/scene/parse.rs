@@ -2,8 +2,8 @@
 
 use super::{with_value, Method, OutputSpec, Scene, SceneProblem, Sweep, SweepParameter};
 use crate::model::{
-    AdhesionProblem, AdhesionSize, Convention, Exact, Material, ModelError, Period, PunchShape, SlidingLoad,
-    SlidingProblem,
+    AdhesionProblem, AdhesionSize, Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, ModelError,
+    Period, PunchShape, SlidingLoad, SlidingProblem,
 };
 use exact_series::parse_rational;
 use num_traits::{One, Signed};
@@ -37,8 +37,13 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
             if root.contains_key("sliding") {
                 return Err(ModelError::new("sliding", "(table)", "not allowed in an adhesion scene"));
             }
-            let output = parse_output(root, PointRange::ClosedHalf)?;
-            let problem = SceneProblem::Adhesion(parse_adhesion(root)?);
+            let problem = if has_law(root) {
+                let output = parse_output(root, PointRange::OpenUnit)?;
+                (output, SceneProblem::LoadingLaw(parse_loading_law(root, convention)?))
+            } else {
+                (parse_output(root, PointRange::ClosedHalf)?, SceneProblem::Adhesion(parse_adhesion(root)?))
+            };
+            let (output, problem) = problem;
             let sweep = parse_sweep(root, &problem)?;
             Ok(Scene { problem, output, sweep })
         }
@@ -48,7 +53,7 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
 
 /// `[problem] convention`: "paper" (the default) or "periodic" (THEORY.md section 8). Problem 2
 /// (symmetric: P1 = 0, no wear) is the same problem in both, so an adhesion scene accepts either
-/// value and it has no effect there.
+/// value and it has no effect there; under a loading law (P1 != 0) it brings in the rotation term.
 fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
     match value(problem, "problem", "convention")? {
         None => Ok(Convention::Paper),
@@ -259,6 +264,75 @@ fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
     AdhesionProblem::new(material, period, shape, size).map_err(|e| prefixed(e, "adhesion"))
 }
 
+/// The keys of `[adhesion]` that make it the loading-law problem (THEORY.md section 10).
+const LAW_KEYS: [&str; 2] = ["tangential_ratio", "loading_law"];
+
+/// Whether `[adhesion]` states a loading law (either key of [`LAW_KEYS`]).
+fn has_law(root: &Table) -> bool {
+    matches!(root.get("adhesion"), Some(Item::Table(t)) if LAW_KEYS.iter().any(|k| t.contains_key(k)))
+}
+
+/// `[adhesion]` with a loading law: `tangential_ratio = "1/5"` (P1 = n P2) or
+/// `loading_law = ["0", "1/5", "1/100"]` (P1 = sum_j c_j P2^j, numpy order), and the size
+/// `half_length` (l = (a + b)/2) or `normal_load`. `half_width` is refused: the contact is
+/// asymmetric.
+fn parse_loading_law(root: &Table, convention: Convention) -> Result<LoadingLawProblem, ModelError> {
+    let material = parse_material(root)?;
+    let (shape, period) = parse_punch(root)?;
+    let s = table(root, "adhesion")?;
+    if let Some(v) = value(s, "adhesion", "half_width")? {
+        return Err(ModelError::new(
+            "adhesion.half_width",
+            literal(v).unwrap_or_else(|| v.to_string()).trim(),
+            "not used under a loading law: the contact [-a, b] is asymmetric, give half_length l = (a + b)/2 \
+             (or normal_load)",
+        ));
+    }
+    allow_keys(s, "adhesion", &["tangential_ratio", "loading_law", "half_length", "normal_load"])?;
+    let law = match (value(s, "adhesion", "tangential_ratio")?, value(s, "adhesion", "loading_law")?) {
+        (Some(_), Some(_)) => {
+            return Err(ModelError::new(
+                "adhesion",
+                "tangential_ratio and loading_law",
+                "give one of them, not both (tangential_ratio = n is loading_law = [\"0\", n])",
+            ))
+        }
+        (Some(v), None) => LoadingLaw::Linear(exact_value(v, "adhesion.tangential_ratio")?),
+        (None, Some(Value::Array(a))) => LoadingLaw::Polynomial(
+            a.iter()
+                .enumerate()
+                .map(|(j, v)| exact_value(v, &format!("adhesion.loading_law[{j}]")))
+                .collect::<Result<_, _>>()?,
+        ),
+        (None, Some(v)) => {
+            return Err(ModelError::new(
+                "adhesion.loading_law",
+                v.to_string().trim(),
+                "must be a list of exact coefficients c_0, c_1, ... of P1 = sum_j c_j P2^j, e.g. [\"0\", \"1/5\"]",
+            ))
+        }
+        (None, None) => return Err(ModelError::new("adhesion", "(missing)", "give tangential_ratio or loading_law")),
+    };
+    let size = match (exact_opt(s, "adhesion", "half_length")?, exact_opt(s, "adhesion", "normal_load")?) {
+        (Some(_), Some(_)) => {
+            return Err(ModelError::new("adhesion", "half_length and normal_load", "give one of them, not both"))
+        }
+        (Some(l), None) => LawSize::HalfLength(l),
+        (None, Some(p)) => LawSize::NormalLoad(p),
+        (None, None) => {
+            return Err(ModelError::new(
+                "adhesion",
+                "(missing)",
+                "give half_length (l = (a + b)/2) or normal_load under a loading law",
+            ))
+        }
+    };
+    LoadingLawProblem::new(material, period, shape, law, size, convention).map_err(|e| {
+        let prefix = if matches!(e.parameter.as_str(), "period" | "shape") { "punch" } else { "adhesion" };
+        prefixed(e, prefix)
+    })
+}
+
 /// Where the output points of a problem live.
 #[derive(Clone, Copy)]
 enum PointRange {
@@ -340,7 +414,7 @@ fn parse_sweep(root: &Table, problem: &SceneProblem) -> Result<Option<Sweep>, Mo
         return Err(ModelError::new("sweep", "(not a table)", "must be a [sweep] table"));
     };
     let allowed: &[&str] = match problem {
-        SceneProblem::Sliding(_) => &["normal_load", "half_length"],
+        SceneProblem::Sliding(_) | SceneProblem::LoadingLaw(_) => &["normal_load", "half_length"],
         SceneProblem::Adhesion(_) => &["normal_load", "half_width"],
     };
     allow_keys(t, "sweep", allowed)?;

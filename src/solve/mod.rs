@@ -7,6 +7,7 @@
 
 pub mod answer_adhesion;
 pub mod answer_f64;
+pub mod answer_law;
 pub mod answer_mpfr;
 pub mod answer_series;
 pub mod format;
@@ -14,7 +15,7 @@ pub mod render;
 
 use crate::adhesion;
 use crate::error::Error;
-use crate::model::{AdhesionProblem, Convention, Period, SlidingProblem};
+use crate::model::{AdhesionProblem, Convention, LoadingLawProblem, Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64};
 use serde_json::{json, Map, Value};
@@ -50,6 +51,14 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
                 "--method",
                 "series",
                 "the adhesion problem is solved by \"mpfr\" or \"f64\" (its series: `periodic-contact series adhesion`)",
+            )),
+        },
+        SceneProblem::LoadingLaw(p) => match req.method {
+            Method::Mpfr => law_mpfr(p, scene, req),
+            other => Err(Error::input(
+                "--method",
+                other.name(),
+                "the loading-law problem is solved by \"mpfr\" only (its independent f64 method is not written yet)",
             )),
         },
     }?;
@@ -180,4 +189,9 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     let mut m = render::adhesion_json(&answer_adhesion::f64_answer(p, &s, &scene.output.points), shown);
     m.insert("digits_requested".into(), json!(req.digits.to_string()));
     Ok(Value::Object(m))
+}
+
+fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+    let sol = adhesion::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
+    Ok(Value::Object(answer_law::law_answer_json(p, &sol, req.digits)))
 }

@@ -93,7 +93,8 @@ pub struct Provenance {
 }
 
 impl Provenance {
-    fn json(&self) -> Value {
+    /// `{"version", "method", "bits", "nodes", ["order"], ["convention"]}` (string values).
+    pub fn json(&self) -> Value {
         let mut v = json!({
             "version": env!("CARGO_PKG_VERSION"),
             "method": self.method,
@@ -176,7 +177,8 @@ impl SlidingAnswer {
     }
 }
 
-fn digits_text(d: f64) -> String {
+/// Digits as printed in every answer: one decimal.
+pub fn digits_text(d: f64) -> String {
     format!("{d:.1}")
 }
 

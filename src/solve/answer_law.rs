@@ -1,0 +1,170 @@
+//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; issue 12) as JSON: the
+//! verified MPFR solution ([`crate::adhesion::loading_law::verified`]) printed under the accuracy
+//! rule of [`crate::numerics::accuracy`], each number with the digits its group verified:
+//! - `ends` for lambda, a, b, c, l and the points' x (scale l);
+//! - `loads` for P1, P2 (scale P2);
+//! - `fields` for psi (scale k l), phi (k l^2), q1 and q2 (E* k l), the minimum over the points.
+//!
+//! Derived here: `friction_needed`, the friction coefficient complete adhesion needs at the
+//! printed points, max |q1|/q2 over the points where q2 > 0 (sampled at the points only, not a
+//! maximum over the contact). Its digits are the fields' on the scale of its first-order error
+//! bound: |d(q1/q2)| <= 10^-fields E* k l (q2 + |q1|)/q2^2. A point where q2 < 0 beyond the
+//! fields' accuracy is a tension warning (complete adhesion then needs the interface to carry
+//! tension there).
+
+use super::render::{digits_text, Measured, Provenance};
+use crate::adhesion::loading_law::verified::{LawPoint, LawSolution};
+use crate::model::{LoadingLaw, LoadingLawProblem};
+use crate::numerics::exact::to_float;
+use rug::Float;
+use serde_json::{json, Map, Value};
+
+/// The law as the scene gives it: `{"tangential_ratio": "1/5"}` or
+/// `{"loading_law": ["0", "1/5", "1/100"]}` (exact text).
+pub fn law_json(law: &LoadingLaw) -> Value {
+    match law {
+        LoadingLaw::Linear(n) => json!({"tangential_ratio": exact_series::q_text(n)}),
+        LoadingLaw::Polynomial(c) => {
+            json!({"loading_law": c.iter().map(exact_series::q_text).collect::<Vec<_>>()})
+        }
+    }
+}
+
+/// The output scales of the loading-law problem at the solution (module doc).
+struct LawScales {
+    length: Float,
+    load: Float,
+    psi: Float,
+    phi: Float,
+    stress: Float,
+}
+
+impl LawScales {
+    fn new(p: &LoadingLawProblem, sol: &LawSolution) -> Self {
+        let v = &sol.values;
+        let prec = v.l.prec();
+        let kl = Float::with_val(prec, to_float(p.k(), prec) * &v.l);
+        LawScales {
+            length: v.l.clone(),
+            load: v.p2.clone(),
+            phi: Float::with_val(prec, &kl * &v.l),
+            stress: Float::with_val(prec, to_float(p.material().contact_modulus(), prec) * &kl),
+            psi: kl,
+        }
+    }
+}
+
+/// The friction the solution needs at the points: (max |q1|/q2 over the points with q2 > 0 beyond
+/// the accuracy, the error scale of that ratio, the point's xh text), or None when no point has
+/// q2 > 0.
+pub fn friction_needed(points: &[LawPoint], stress: &Float, fields: f64) -> Option<(Float, Float, String)> {
+    let noise = Float::with_val(stress.prec(), stress * Float::with_val(64, 10f64.powf(-fields)));
+    let mut best: Option<(Float, Float, String)> = None;
+    for pt in points.iter().filter(|pt| pt.q2 > noise) {
+        let q1 = Float::with_val(pt.q1.prec(), pt.q1.abs_ref());
+        let ratio = Float::with_val(pt.q2.prec(), &q1 / &pt.q2);
+        if best.as_ref().is_none_or(|b| ratio > b.0) {
+            let q2sq = Float::with_val(pt.q2.prec(), pt.q2.square_ref());
+            let scale = Float::with_val(pt.q2.prec(), stress * Float::with_val(pt.q2.prec(), &pt.q2 + &q1)) / q2sq;
+            best = Some((ratio, scale, exact_series::q_text(&pt.xh)));
+        }
+    }
+    best
+}
+
+/// The JSON object of a verified loading-law solution at `requested` digits.
+pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32) -> Map<String, Value> {
+    let v = &sol.values;
+    let d = &sol.digits;
+    let sc = LawScales::new(p, sol);
+    let print = |x: &Float, scale: &Float, digits: f64| Measured::mpfr(x.clone(), scale, digits).print(requested);
+    let mut m = Map::new();
+    m.insert("problem".into(), json!("adhesion"));
+    m.insert("law".into(), law_json(p.law()));
+    m.insert("lambda".into(), json!(print(&v.lambda, &v.lambda, d.ends)));
+    for (key, x) in [("a", &v.a), ("b", &v.b), ("c", &v.c), ("l", &v.l)] {
+        m.insert(key.into(), json!(print(x, &sc.length, d.ends)));
+    }
+    m.insert("P1".into(), json!(print(&v.p1, &sc.load, d.loads)));
+    m.insert("P2".into(), json!(print(&v.p2, &sc.load, d.loads)));
+    let friction = friction_needed(&v.points, &sc.stress, d.fields);
+    m.insert(
+        "friction_needed".into(),
+        friction.as_ref().map_or(Value::Null, |(r, scale, _)| json!(print(r, scale, d.fields))),
+    );
+    m.insert("friction_needed_at_xh".into(), friction.as_ref().map_or(Value::Null, |(_, _, xh)| json!(xh)));
+    m.insert("digits_requested".into(), json!(requested.to_string()));
+    m.insert("digits_verified".into(), json!(digits_text(d.headline)));
+    m.insert(
+        "accuracy".into(),
+        json!({"ends": digits_text(d.ends), "loads": digits_text(d.loads), "fields": digits_text(d.fields)}),
+    );
+    let points: Vec<Value> = v
+        .points
+        .iter()
+        .map(|pt| {
+            json!({
+                "xh": exact_series::q_text(&pt.xh),
+                "x": print(&pt.x, &sc.length, d.ends),
+                "psi": print(&pt.psi, &sc.psi, d.fields),
+                "phi": print(&pt.phi, &sc.phi, d.fields),
+                "q1": print(&pt.q1, &sc.stress, d.fields),
+                "q2": print(&pt.q2, &sc.stress, d.fields),
+            })
+        })
+        .collect();
+    m.insert("points".into(), Value::Array(points));
+    m.insert("warnings".into(), Value::Array(tension_warnings(&v.points, &sc.stress, d.fields, requested)));
+    let prov = Provenance {
+        method: "mpfr",
+        bits: Some(v.l.prec()),
+        nodes: Some(v.nodes),
+        order: None,
+        convention: Some(p.convention().name()),
+    };
+    m.insert("provenance".into(), prov.json());
+    m
+}
+
+/// One warning per point where q2 < 0 beyond the fields' accuracy.
+fn tension_warnings(points: &[LawPoint], stress: &Float, fields: f64, requested: u32) -> Vec<Value> {
+    let noise = Float::with_val(stress.prec(), stress * Float::with_val(64, 10f64.powf(-fields)));
+    points
+        .iter()
+        .filter(|pt| Float::with_val(pt.q2.prec(), -&pt.q2) > noise)
+        .map(|pt| {
+            json!(format!(
+                "tension: q2 = {} < 0 at xh = {}; complete adhesion needs the interface to carry tension there",
+                Measured::mpfr(pt.q2.clone(), stress, fields).print(requested),
+                exact_series::q_text(&pt.xh)
+            ))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Exact;
+
+    fn point(xh: i64, q1: f64, q2: f64) -> LawPoint {
+        let f = |x: f64| Float::with_val(128, x);
+        LawPoint { xh: Exact::from_integer(xh.into()), x: f(0.0), psi: f(0.0), phi: f(0.0), q1: f(q1), q2: f(q2) }
+    }
+
+    /// max |q1|/q2 over q2 > 0 (a point in tension and a point at the noise level are skipped);
+    /// the error scale is E* k l (q2 + |q1|)/q2^2 at the maximising point.
+    #[test]
+    fn friction_needed_is_the_largest_ratio_where_q2_is_positive() {
+        let stress = Float::with_val(128, 2.0);
+        let pts = [point(0, 0.1, 1.0), point(1, -0.3, 0.5), point(2, 5.0, -1.0), point(3, 1.0, 1e-30)];
+        let (r, scale, xh) = friction_needed(&pts, &stress, 20.0).unwrap();
+        assert!((r.to_f64() - 0.6).abs() < 1e-15, "{r}");
+        assert!((scale.to_f64() - 2.0 * 0.8 / 0.25).abs() < 1e-13, "{scale}");
+        assert_eq!(xh, "1");
+        assert!(friction_needed(&pts[2..], &stress, 20.0).is_none());
+        let w = tension_warnings(&pts, &stress, 20.0, 10);
+        assert_eq!(w.len(), 1);
+        assert!(w[0].as_str().unwrap().contains("xh = 2"), "{w:?}");
+    }
+}
