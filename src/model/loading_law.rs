@@ -28,6 +28,20 @@ impl LoadingLaw {
             }
         }
     }
+    /// The scene key that gives this law (for messages): `tangential_ratio` or `loading_law`.
+    pub fn key(&self) -> &'static str {
+        match self {
+            LoadingLaw::Linear(_) => "tangential_ratio",
+            LoadingLaw::Polynomial(_) => "loading_law",
+        }
+    }
+    /// The law as the scene writes it, readable: "1/5" or "[0, 1/5, 1/100]".
+    pub fn text(&self) -> String {
+        match self {
+            LoadingLaw::Linear(n) => readable(n),
+            LoadingLaw::Polynomial(c) => format!("[{}]", c.iter().map(readable).collect::<Vec<_>>().join(", ")),
+        }
+    }
     /// Whether N is linear (n constant along the loading).
     pub fn ratio(&self) -> Option<Exact> {
         match self {
@@ -97,7 +111,7 @@ impl LoadingLawProblem {
             if !c[0].is_zero() {
                 return Err(ModelError::new(
                     "loading_law",
-                    format!("[{}]", c.iter().map(readable).collect::<Vec<_>>().join(", ")),
+                    law.text(),
                     format!("N(0) = 0, i.e. coefficients[0] = 0 (got {})", readable(&c[0])),
                 ));
             }

@@ -278,6 +278,8 @@ pub struct LawCollocation {
     pub phi: Vec<Float>,
     /// Chebyshev coefficients of Gam(t), gamma(eta) = eta Gam(eta/Lambda).
     pub gam: Vec<Float>,
+    /// Chebyshev coefficients of t Phi(t) ([`times_t`]), for the load along the loading.
+    t_phi: Vec<Float>,
     /// The material and law constants at `prec`.
     pub inc: Increment,
     /// Largest |residual| at the last step.
@@ -287,18 +289,15 @@ pub struct LawCollocation {
 }
 
 impl LawCollocation {
-    /// P(Lambda) = int_0^Lambda eta Phi d eta = Lambda^2 int_0^1 t Phi(t) dt (P2 = E* k (L/pi)^2 P).
-    pub fn load(&self) -> Float {
+    /// P(Lambda t) = int_0^(Lambda t) eta Phi(eta/Lambda) d eta = Lambda^2 int_0^t t' Phi(t') dt'
+    /// (P2 = E* k (L/pi)^2 P), by the Chebyshev integral of t Phi ([`times_t`]).
+    pub fn load_at(&self, t: &Float) -> Float {
         let prec = self.prec;
-        // t Phi(t) by values at fresh nodes, then the Chebyshev integral.
-        let n = self.phi.len() + 1;
-        let nodes = chebyshev::nodes(n, prec);
-        let vals: Vec<Float> = nodes
-            .iter()
-            .map(|t| chebyshev::evaluate(&self.phi, &(Float::with_val(prec, t * 2u32) - 1u32), prec) * t)
-            .collect();
-        let c = chebyshev::coefficients(&vals, prec);
-        chebyshev::integral(&c, &Float::with_val(prec, 1), prec) * Float::with_val(prec, self.lambda_max.square_ref())
+        chebyshev::integral(&self.t_phi, t, prec) * Float::with_val(prec, self.lambda_max.square_ref())
+    }
+    /// P(Lambda), the final load in units of E* k (L/pi)^2.
+    pub fn load(&self) -> Float {
+        self.load_at(&Float::with_val(self.prec, 1))
     }
     /// gamma(Lambda)/Lambda = c/l.
     pub fn centre_ratio(&self) -> Float {
@@ -348,11 +347,13 @@ pub fn solve(setting: &LawSetting, nodes: usize, target_bits: u32, prec: u32) ->
         }
         if size < goal {
             let lambda_max = Float::with_val(prec, &ctx.lambda_max);
+            let phi = chebyshev::coefficients(&state[..nodes], prec);
             return Ok(LawCollocation {
                 prec,
                 lambda_max,
                 inc: ctx.inc.clone(),
-                phi: chebyshev::coefficients(&state[..nodes], prec),
+                t_phi: times_t(&phi, prec),
+                phi,
                 gam: chebyshev::coefficients(&state[nodes..], prec),
                 residual: last,
                 steps,
@@ -398,7 +399,7 @@ fn solve_f64(jac: &[Vec<f64>], r: &[f64]) -> Result<Vec<f64>, AdhesionError> {
 mod tests {
     use super::*;
     use crate::adhesion::volterra_mpfr::{solve as volterra_solve, VolterraParams};
-    use crate::model::{Convention, Exact, LoadingLaw, Material};
+    use crate::model::{Convention, Exact, Material};
     use crate::params::adhesion::AdhesionParamsMpfr;
 
     fn material(nu: (i64, i64)) -> Material {
@@ -412,13 +413,9 @@ mod tests {
     #[test]
     fn zero_ratio_is_the_symmetric_solution() {
         let m = material((3, 10));
-        let setting = LawSetting {
-            convention: Convention::Paper,
-            material: m.clone(),
-            law: LoadingLaw::Linear(Exact::from_integer(0.into())),
-            load_scale: Exact::from_integer(1.into()),
-            size_over_period: Exact::new(1.into(), (2 * 314159).into()) * Exact::from_integer(100000.into()),
-        };
+        // l/L = 100000/628318, Lambda = pi l/L = 0.49999...
+        let size = Exact::new(100000.into(), 628318.into());
+        let setting = LawSetting::linear(m.clone(), Exact::from_integer(0.into()), size, Convention::Paper);
         let t = std::time::Instant::now();
         let nodes: usize = std::env::var("LAW_NODES").ok().and_then(|v| v.parse().ok()).unwrap_or(16);
         let sol = solve(&setting, nodes, 100, 140).unwrap();
@@ -440,13 +437,12 @@ mod tests {
     /// contact stays centred and P is Kuznetsov's 2 C_P ln sec(Lambda) = pi ln sec(Lambda).
     #[test]
     fn nu_half_decouples() {
-        let setting = LawSetting {
-            convention: Convention::Paper,
-            material: material((1, 2)),
-            law: LoadingLaw::Linear(Exact::new(1.into(), 2.into())),
-            load_scale: Exact::from_integer(1.into()),
-            size_over_period: Exact::new(1.into(), 5.into()),
-        };
+        let setting = LawSetting::linear(
+            material((1, 2)),
+            Exact::new(1.into(), 2.into()),
+            Exact::new(1.into(), 5.into()),
+            Convention::Paper,
+        );
         let sol = solve(&setting, 16, 100, 140).unwrap();
         let lam = Float::with_val(140, &sol.lambda_max);
         let want = Float::with_val(140, lam.cos_ref()).recip().ln() * Float::with_val(140, Constant::Pi);
@@ -461,13 +457,8 @@ mod tests {
     #[test]
     fn tangential_ratio_shifts_the_contact() {
         let m = material((3, 10));
-        let setting = LawSetting {
-            convention: Convention::Paper,
-            material: m,
-            law: LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
-            load_scale: Exact::from_integer(1.into()),
-            size_over_period: Exact::new(1.into(), 6.into()),
-        };
+        let setting =
+            LawSetting::linear(m, Exact::new(1.into(), 5.into()), Exact::new(1.into(), 6.into()), Convention::Paper);
         let t = std::time::Instant::now();
         let sol = solve(&setting, 16, 100, 140).unwrap();
         eprintln!(

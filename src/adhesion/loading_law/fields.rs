@@ -5,12 +5,15 @@
 //! - psi_hat(chi) = Im int_0^eta_x (1 + i n) P'(eta) L K(chi - gamma(eta), eta) d eta, frozen at
 //!   entry: psi = u' = -(2 k L/pi^2) psi_hat (the real part is G(chi) there, the edge condition);
 //! - sigma_hat(chi) = int_eta_x^Lambda (1 + i n) P'(eta) L sigma_flat(chi; gamma(eta), eta) d eta,
-//!   the increments received since entry: q2 + i q1 = E* k (L/pi^2) sigma_hat.
+//!   the increments received since entry: q2 + i q1 = E* k (L/pi^2) sigma_hat;
+//!
+//! with n = N'(P2(eta)) along the loading and, in the `periodic` convention, each increment's
+//! tilted punch (- beta n times [`super::kernel::TiltedPunch`]) added, as in the edge conditions.
 //! Near eta = eta_x the end passing x makes both integrands singular like
 //! (eta - eta_x)^(-1/2); the distance to that end is formed from a divided difference of gamma
 //! (accurate as eta -> eta_x) and the integrals taken by tanh-sinh.
 
-use super::collocation::LawCollocation;
+use super::collocation::{divided_difference, LawCollocation};
 use super::kernel::{flat_punch_stress, Side, TiltedPunch};
 use crate::numerics::chebyshev;
 use crate::numerics::tanh_sinh::TanhSinh;
@@ -87,8 +90,6 @@ impl LawCollocation {
         let (side, eta_x) = self.entry(chi);
         let span = Float::with_val(p, &self.lambda_max - &eta_x);
         let inc = &self.inc;
-        let tphi = super::collocation::times_t(&self.phi, p);
-        let l2max = Float::with_val(p, self.lambda_max.square_ref());
         let mut acc = Complex::new(p);
         for q in 0..rule.len() {
             let (s, w) = (&rule.s[q], &rule.w[q]);
@@ -106,7 +107,7 @@ impl LawCollocation {
                 Side::Left => (near, far),
             };
             let t = Float::with_val(p, &eta / &self.lambda_max);
-            let n = inc.ratio_at(&(chebyshev::integral(&tphi, &t, p) * &l2max));
+            let n = inc.ratio_at(&self.load_at(&t));
             let one_in = Complex::with_val(p, (1, &n));
             let beta_n = Float::with_val(p, &inc.beta * &n);
             let mut sigma = flat_punch_stress(&d_left, &d_right, &eta, &inc.eps, &inc.cosh_pi_eps, p) * &one_in;
@@ -121,16 +122,11 @@ impl LawCollocation {
     }
 }
 
-/// sum_j c_j [T_j(x) - T_j(y)]/(x - y) (see [`super::collocation`]).
-fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -> Float {
-    super::collocation::divided_difference(c, x, y, prec)
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::collocation::{solve, LawSetting};
     use super::*;
-    use crate::model::{Convention, Exact, LoadingLaw, Material};
+    use crate::model::{Convention, Exact, Material};
     use rug::float::Constant;
 
     /// The independent residual check of issue 12: the returned stresses put into the original
@@ -148,13 +144,12 @@ mod tests {
         let material =
             Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
         for convention in [Convention::Paper, Convention::PeriodicSurface] {
-            check_surface_relations(LawSetting {
-                material: material.clone(),
-                law: LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
-                load_scale: Exact::from_integer(1.into()),
-                size_over_period: Exact::new(1.into(), 6.into()),
+            check_surface_relations(LawSetting::linear(
+                material.clone(),
+                Exact::new(1.into(), 5.into()),
+                Exact::new(1.into(), 6.into()),
                 convention,
-            });
+            ));
         }
     }
 

@@ -12,9 +12,8 @@
 
 use super::collocation::{solve, LawCollocation, LawSetting};
 use crate::adhesion::error::AdhesionError;
-use crate::model::{readable, Exact, LawSize, LoadingLaw, LoadingLawProblem, ModelError};
+use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError};
 use crate::numerics::accuracy::{readable_mpfr, verified_digits_mpfr};
-use crate::numerics::chebyshev;
 use crate::numerics::exact::{to_f64, to_float};
 use crate::numerics::precision::bits_for_digits;
 use crate::numerics::tanh_sinh::TanhSinh;
@@ -107,22 +106,6 @@ fn setting(problem: &LoadingLawProblem, size_over_period: Exact) -> LawSetting {
     }
 }
 
-/// The law's name in the scene (for messages).
-fn law_name(law: &LoadingLaw) -> &'static str {
-    match law {
-        LoadingLaw::Linear(_) => "tangential_ratio",
-        LoadingLaw::Polynomial(_) => "loading_law",
-    }
-}
-
-/// The law as the scene writes it.
-fn law_text(law: &LoadingLaw) -> String {
-    match law {
-        LoadingLaw::Linear(n) => readable(n),
-        LoadingLaw::Polynomial(c) => format!("[{}]", c.iter().map(readable).collect::<Vec<_>>().join(", ")),
-    }
-}
-
 /// An exact rational within 2^-bits of `v` (its binary expansion cut).
 fn exact_of(v: &Float, bits: u32) -> Exact {
     let scale = rug::Integer::from(1) << bits;
@@ -150,17 +133,14 @@ fn size_for_load(problem: &LoadingLawProblem, p2: &Exact, bits: u32, prec: u32) 
         let over = exact_of(&Float::with_val(prec, Float::with_val(prec, big) / &pi), 40);
         let s = setting(problem, over);
         let sol = solve(&s, nodes_for(bits, big), bits, prec)?;
-        let tphi = super::collocation::times_t(&sol.phi, prec);
-        let l2 = Float::with_val(prec, sol.lambda_max.square_ref());
-        let p_at = |t: &Float| chebyshev::integral(&tphi, t, prec) * &l2;
-        if p_at(&Float::with_val(prec, 1)) < target {
+        if sol.load() < target {
             big = 0.5 * (big + half_pi);
             continue;
         }
         let (mut lo, mut hi) = (Float::with_val(prec, 0), Float::with_val(prec, 1));
         for _ in 0..(prec + 8) {
             let mid = Float::with_val(prec, &lo + &hi) / 2u32;
-            if p_at(&mid) < target {
+            if sol.load_at(&mid) < target {
                 lo = mid;
             } else {
                 hi = mid;
@@ -193,17 +173,14 @@ fn run(
     let s = setting(problem, over);
     let sol = solve(&s, nodes_for(target_bits, lambda) + extra_nodes, target_bits, prec)?;
     // N' >= 0 along the loading (the requirement: P1 must not decrease as P2 grows).
-    let tphi = super::collocation::times_t(&sol.phi, prec);
-    let l2 = Float::with_val(prec, sol.lambda_max.square_ref());
     for i in 0..=32u32 {
-        let t = Float::with_val(prec, i) / 32u32;
-        let p = chebyshev::integral(&tphi, &t, prec) * &l2;
+        let p = sol.load_at(&(Float::with_val(prec, i) / 32u32));
         let n = sol.inc.ratio_at(&p);
         if n < 0 {
             let p2 = Float::with_val(prec, &p * &sol.inc.p2_per_p);
             return Err(ModelError::new(
-                law_name(problem.law()),
-                law_text(problem.law()),
+                problem.law().key(),
+                problem.law().text(),
                 format!(
                     "N'(P2) >= 0 along the loading (P1 must not decrease as P2 grows), but N'({}) = {}",
                     readable_mpfr(&p2),
@@ -312,7 +289,7 @@ pub fn solve_law(problem: &LoadingLawProblem, xh: &[Exact], digits: u32) -> Resu
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::{Convention, Material, Period, PunchShape};
+    use crate::model::{Convention, LoadingLaw, Material, Period, PunchShape};
 
     fn q(n: i64, d: i64) -> Exact {
         Exact::new(n.into(), d.into())

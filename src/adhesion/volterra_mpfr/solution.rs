@@ -110,7 +110,8 @@ pub fn solve_mpfr_with(
             Some(a_max) => {
                 let ek = Float::with_val(prec, &e_star * &k);
                 let rhs_at = |a: &Float| RightSide::new(problem, Float::with_val(prec, a * a), prec);
-                let guess = (p2_f64(p2) / (first_guess_load_constant(problem) * ek.to_f64())).sqrt();
+                let p2_f64 = crate::numerics::exact::to_f64(p2).unwrap_or(f64::NAN);
+                let guess = (p2_f64 / (first_guess_load_constant(problem) * ek.to_f64())).sqrt();
                 let (a, sol) =
                     single_punch_half_width(&constants, &rhs_at, &ek, p2, Float::with_val(prec, a_max), guess, params)?;
                 check_profile_on_contact(problem, a.to_f64())?;
@@ -178,10 +179,6 @@ pub fn solve_mpfr_with(
     })
 }
 
-/// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
-/// Newton on one Chebyshev solution over [0, Lambda] (f does not depend on lambda:
-/// P(lambda) = (1/2) int_0^{lambda^2} f, P'(lambda) = lambda f(lambda^2)). `normal_load` (the
-/// given P2) names the input in the error; `cp` = C_P in `f64` sets the first guess.
 /// What the search for the half-width of a given load needs beside the material: `cp` = C_P in
 /// `f64` (first guess), the largest admissible lambda (the slope limit of a polynomial or
 /// circular profile, [`largest_admissible_half_width`]; None for the parabola) and the right side
@@ -192,6 +189,10 @@ struct LoadSearch<'a> {
     rhs_at: &'a dyn Fn(&Float) -> RightSide,
 }
 
+/// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
+/// Newton on one Chebyshev solution over [0, Lambda] (f does not depend on lambda:
+/// P(lambda) = (1/2) int_0^{lambda^2} f, P'(lambda) = lambda f(lambda^2)). `normal_load` (the
+/// given P2) names the input in the error; `search.cp` = C_P in `f64` sets the first guess.
 fn lambda_for_load(
     constants: &AdhesionParamsMpfr,
     search: &LoadSearch,
@@ -273,10 +274,6 @@ fn lambda_for_load(
 /// MPFR constants of a run below 64 bits would move the guess, and with it the Chebyshev interval).
 fn first_guess_load_constant(problem: &AdhesionProblem) -> f64 {
     AdhesionParamsF64::new(problem.material()).load_constant
-}
-
-fn p2_f64(p2: &Exact) -> f64 {
-    crate::numerics::exact::to_f64(p2).unwrap_or(f64::NAN)
 }
 
 /// The half-width of a single punch (period "inf") of a profile other than the parabola under

@@ -149,14 +149,7 @@ fn closed_form_residual_at(g: &PolynomialProfile, order: usize, at: Option<(&str
         })
         .collect();
     let prec = order + 1;
-    let sv = Symbol::new("s_cheb").unwrap();
-    let sp = Poly::symbol(sv);
-    let sinc = Series::<Poly>::sinc_series(prec);
-    let half = Poly::from_q(&q(-1, 2));
-    let w = sinc
-        .rescale_var(&sp)
-        .mul(&sinc.rescale_var(&Poly::one().add(&sp)).pow(&half).unwrap())
-        .mul(&sinc.rescale_var(&Poly::one().sub(&sp)).pow(&half).unwrap());
+    let (sv, sp, w) = closed_form_weight(prec);
     let lam = Series::<Frac>::var(prec).mul(&rho);
     let mut lhs = Series::<Frac>::zero(prec);
     let mut s_pow = Poly::one();
@@ -209,14 +202,7 @@ fn adhesion_at_half_is_the_frictionless_closed_form() {
     let zero = q(0, 1);
     let got = e.load.map(|f| frac_subs(&frac_subs(f, s("eps"), &zero), s("S"), &zero));
     let prec = got.prec();
-    let sv = Symbol::new("s_cheb").unwrap();
-    let sp = Poly::symbol(sv);
-    let sinc = Series::<Poly>::sinc_series(prec);
-    let half = Poly::from_q(&q(-1, 2));
-    let w = sinc
-        .rescale_var(&sp)
-        .mul(&sinc.rescale_var(&Poly::one().add(&sp)).pow(&half).unwrap())
-        .mul(&sinc.rescale_var(&Poly::one().sub(&sp)).pow(&half).unwrap());
+    let (sv, sp, w) = closed_form_weight(prec);
     let mut want = Series::<Frac>::zero(prec);
     let mut s_pow = Poly::one();
     for (j, sj) in g.period_ratios().unwrap().iter().enumerate() {
@@ -261,4 +247,18 @@ fn periodic_quartic_at_rho_zero_is_the_periodic_parabola_with_exact_kappa() {
     assert_eq!(z(&e.l_over_ls), at(&p.l_over_ls));
     assert_eq!(z(&e.rbar_minus_rbar_s), at(&p.rbar_minus_rbar_s));
     assert_eq!(z(&e.f_def_scaled), at(&p.f_def_scaled));
+}
+
+/// The symbol s, its polynomial and the weight series w = sinc(s .) (sinc((1 + s) .)
+/// sinc((1 - s) .))^(-1/2) through `prec`, shared by the closed-form checks of both problems.
+fn closed_form_weight(prec: usize) -> (Symbol, Poly, Series<Poly>) {
+    let sv = Symbol::new("s_cheb").unwrap();
+    let sp = Poly::symbol(sv);
+    let sinc = Series::<Poly>::sinc_series(prec);
+    let half = Poly::from_q(&q(-1, 2));
+    let w = sinc
+        .rescale_var(&sp)
+        .mul(&sinc.rescale_var(&Poly::one().add(&sp)).pow(&half).unwrap())
+        .mul(&sinc.rescale_var(&Poly::one().sub(&sp)).pow(&half).unwrap());
+    (sv, sp, w)
 }
