@@ -295,8 +295,9 @@ mod tests {
         Exact::new(n.into(), d.into())
     }
 
-    /// Verified digits at 12 requested (20 requested: 23.6 verified, 27 nodes, 22 s release on an
-    /// idle machine), and the limit n = 0 against the symmetric solver
+    /// Verified digits at 12 requested (20 requested, measured in session 4 with
+    /// `cargo test --release --lib loading_law::verified -- --nocapture`: 23.6 verified, 27 nodes,
+    /// 21.6 s), and the limit n = 0 against the symmetric solver
     /// (`adhesion::solve_verified`): b = a, P2 and the fields at the same points agree to the
     /// verified digits.
     #[test]
