@@ -67,7 +67,7 @@ pub enum LawSize {
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadingLawProblem {
     material: Material,
-    period: Exact,
+    period: Period,
     k: Exact,
     law: LoadingLaw,
     size: LawSize,
@@ -75,9 +75,9 @@ pub struct LoadingLawProblem {
 }
 
 impl LoadingLawProblem {
-    /// Validates: a finite period (the single punch under a loading law is not solved yet: refused
-    /// naming `period`), a parabolic punch (others refused naming `shape`), N(0) = 0 (c_0 = 0),
-    /// at least one coefficient, sizes > 0 and 2 l < L.
+    /// Validates: a parabolic punch (others refused naming `shape`), N(0) = 0 (c_0 = 0), at least
+    /// one coefficient, sizes > 0 and 2 l < L for a periodic row (the single punch, period
+    /// `inf`, has no upper bound).
     pub fn new(
         material: Material,
         period: Period,
@@ -86,14 +86,6 @@ impl LoadingLawProblem {
         size: LawSize,
         convention: Convention,
     ) -> Result<Self, ModelError> {
-        let period = match period {
-            Period::Finite(l) => l,
-            Period::Infinite => return Err(ModelError::new(
-                "period",
-                "inf",
-                "a finite period: the loading-law problem is solved for a periodic row (the single punch is not yet)",
-            )),
-        };
         let k = match shape {
             PunchShape::Parabolic { k } => k,
             other => {
@@ -118,12 +110,16 @@ impl LoadingLawProblem {
         }
         match &size {
             LawSize::HalfLength(l) => {
-                if !l.is_positive() || (l + l) >= period {
-                    return Err(ModelError::new(
-                        "half_length",
-                        readable(l),
-                        format!("0 < 2 l < L = {}", readable(&period)),
-                    ));
+                let too_big = match &period {
+                    Period::Finite(big_l) => (l + l) >= *big_l,
+                    Period::Infinite => false,
+                };
+                if !l.is_positive() || too_big {
+                    let range = match &period {
+                        Period::Finite(big_l) => format!("0 < 2 l < L = {}", readable(big_l)),
+                        Period::Infinite => "l > 0".into(),
+                    };
+                    return Err(ModelError::new("half_length", readable(l), range));
                 }
             }
             LawSize::NormalLoad(p) => {
@@ -139,8 +135,8 @@ impl LoadingLawProblem {
     pub fn material(&self) -> &Material {
         &self.material
     }
-    /// Period L.
-    pub fn period(&self) -> &Exact {
+    /// Period L (or the single punch).
+    pub fn period(&self) -> &Period {
         &self.period
     }
     /// Curvature k of g = k x^2.
@@ -184,16 +180,25 @@ mod tests {
             Convention::Paper,
         );
         assert!(ok.is_ok());
+        let single = LoadingLawProblem::new(
+            m.clone(),
+            Period::Infinite,
+            k.clone(),
+            lin.clone(),
+            LawSize::HalfLength(q(7, 3)),
+            Convention::Paper,
+        );
+        assert!(single.is_ok(), "{single:?}");
         let e = LoadingLawProblem::new(
             m.clone(),
             Period::Infinite,
             k.clone(),
             lin.clone(),
-            LawSize::HalfLength(q(1, 6)),
+            LawSize::HalfLength(q(0, 1)),
             Convention::Paper,
         )
         .unwrap_err();
-        assert_eq!(e.parameter, "period");
+        assert_eq!((e.parameter.as_str(), e.expected.as_str()), ("half_length", "l > 0"));
         let e = LoadingLawProblem::new(
             m.clone(),
             l.clone(),

@@ -311,7 +311,8 @@ pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
         }
         // Loading law: pi l/L at a given l; at a given load the symmetric (n = 0) estimate.
         SceneProblem::LoadingLaw(p) => {
-            let big_l = to_f64(p.period()).unwrap_or(f64::NAN);
+            let Period::Finite(big_l) = p.period() else { return 0.0 };
+            let big_l = to_f64(big_l).unwrap_or(f64::NAN);
             match p.size() {
                 LawSize::HalfLength(l) => pi * to_f64(l).unwrap_or(f64::NAN) / big_l,
                 LawSize::NormalLoad(p2) => {

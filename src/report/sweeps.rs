@@ -105,7 +105,7 @@ fn period_of(problem: &SceneProblem) -> Option<f64> {
     let p = match problem {
         SceneProblem::Sliding(p) => p.period(),
         SceneProblem::Adhesion(p) => p.period(),
-        SceneProblem::LoadingLaw(p) => return Some(f(p.period())),
+        SceneProblem::LoadingLaw(p) => p.period(),
     };
     match p {
         Period::Finite(l) => Some(f(l)),

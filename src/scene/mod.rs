@@ -229,7 +229,7 @@ pub fn rebuild_law(
 ) -> Result<LoadingLawProblem, crate::model::ModelError> {
     LoadingLawProblem::new(
         p.material().clone(),
-        crate::model::Period::Finite(p.period().clone()),
+        p.period().clone(),
         crate::model::PunchShape::Parabolic { k: p.k().clone() },
         p.law().clone(),
         size,

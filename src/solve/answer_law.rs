@@ -81,7 +81,12 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
     let mut m = Map::new();
     m.insert("problem".into(), json!("adhesion"));
     m.insert("law".into(), law_json(p.law()));
-    m.insert("lambda".into(), json!(print(&v.lambda, &v.lambda, d.ends)));
+    // lambda = pi l/L: none for the single punch.
+    let lambda = match p.period() {
+        crate::model::Period::Finite(_) => json!(print(&v.lambda, &v.lambda, d.ends)),
+        crate::model::Period::Infinite => Value::Null,
+    };
+    m.insert("lambda".into(), lambda);
     for (key, x) in [("a", &v.a), ("b", &v.b), ("c", &v.c), ("l", &v.l)] {
         m.insert(key.into(), json!(print(x, &sc.length, d.ends)));
     }

@@ -110,7 +110,8 @@ impl LawCollocation {
             let n = inc.ratio_at(&self.load_at(&t));
             let one_in = Complex::with_val(p, (1, &n));
             let beta_n = Float::with_val(p, &inc.beta * &n);
-            let mut sigma = flat_punch_stress(&d_left, &d_right, &eta, &inc.eps, &inc.cosh_pi_eps, p) * &one_in;
+            let mut sigma =
+                flat_punch_stress(inc.row, &d_left, &d_right, &eta, &inc.eps, &inc.cosh_pi_eps, p) * &one_in;
             if inc.periodic {
                 let tilt = TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, p);
                 sigma -= tilt.stress(&d_left, &d_right, &eta, &inc.eps, p) * &beta_n;

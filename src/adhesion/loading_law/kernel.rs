@@ -18,6 +18,38 @@
 
 use rug::{Complex, Float};
 
+/// The row: a periodic row (the kernels of the module doc, in chi = pi x/L), or the single punch
+/// (L -> infinity): with the length unit U and chi = x/U the same formulas hold with L = pi U and
+/// sin z -> z, cos(chi' - 2 i eps eta) -> 1 (the leading terms as pi U/L -> 0; THEORY.md 10's
+/// single-punch limit), so every caller keeps its scalings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Row {
+    /// Period L.
+    Periodic,
+    /// L = infinity.
+    Single,
+}
+
+impl Row {
+    /// sin z, or z for the single punch.
+    fn sin(self, z: &Float, prec: u32) -> Float {
+        match self {
+            Row::Periodic => Float::with_val(prec, z.sin_ref()),
+            Row::Single => Float::with_val(prec, z),
+        }
+    }
+    /// cos(chi' - 2 i eps eta), or 1 for the single punch.
+    fn cos_shift(self, chi: Float, eps: &Float, eta: &Float, prec: u32) -> Complex {
+        match self {
+            Row::Periodic => {
+                let arg = Complex::with_val(prec, (chi, Float::with_val(prec, eps * eta) * -2i32));
+                Complex::with_val(prec, arg.cos_ref())
+            }
+            Row::Single => Complex::with_val(prec, 1),
+        }
+    }
+}
+
 /// Which side of the earlier contact the point lies on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Side {
@@ -28,17 +60,15 @@ pub enum Side {
 }
 
 /// L K as a complex number (module doc) at distance `d_near` > 0 from the nearer end of a
-/// contact of half-length `eta`, on `side`; `eps` of the material.
-pub fn outside_kernel(side: Side, d_near: &Float, eta: &Float, eps: &Float, prec: u32) -> Complex {
+/// contact of half-length `eta`, on `side`; `eps` of the material; `row` periodic or single.
+pub fn outside_kernel(row: Row, side: Side, d_near: &Float, eta: &Float, eps: &Float, prec: u32) -> Complex {
     let d_far = Float::with_val(prec, d_near + eta) + eta;
     let chi = match side {
         Side::Right => Float::with_val(prec, d_near + eta),
         Side::Left => -Float::with_val(prec, d_near + eta),
     };
-    let (s_near, s_far) = (Float::with_val(prec, d_near.sin_ref()), Float::with_val(prec, d_far.sin_ref()));
-    // cos(chi' - 2 i eps eta).
-    let arg = Complex::with_val(prec, (chi, Float::with_val(prec, eps * eta) * -2i32));
-    let cos = Complex::with_val(prec, arg.cos_ref());
+    let (s_near, s_far) = (row.sin(d_near, prec), row.sin(&d_far, prec));
+    let cos = row.cos_shift(chi, eps, eta, prec);
     // (sin d_far/sin d_near)^(+- i eps) = exp(+- i eps ln(ratio)).
     let mut theta = Float::with_val(prec, Float::with_val(prec, &s_far / &s_near).ln_ref()) * eps;
     let mut mag = Float::with_val(prec, &s_near * &s_far).sqrt().recip();
@@ -51,10 +81,42 @@ pub fn outside_kernel(side: Side, d_near: &Float, eta: &Float, eps: &Float, prec
     cos * phase * mag
 }
 
+/// d ln K/d d_near of [`outside_kernel`] (the Jacobian of [`super::jacobian`]): with
+/// chi = +-(d + eta), d_far = d + 2 eta,
+///   right: -tan(chi - 2 i eps eta) + i eps (cot d_far - cot d) - (cot d + cot d_far)/2,
+///   left:  +tan(chi - 2 i eps eta) - i eps (cot d_far - cot d) - (cot d + cot d_far)/2,
+/// and for the single punch tan -> 0, cot z -> 1/z.
+pub fn outside_kernel_log_derivative(
+    row: Row,
+    side: Side,
+    d_near: &Float,
+    eta: &Float,
+    eps: &Float,
+    prec: u32,
+) -> Complex {
+    let d_far = Float::with_val(prec, d_near + eta) + eta;
+    let cot = |z: &Float| match row {
+        Row::Periodic => Float::with_val(prec, z.cot_ref()),
+        Row::Single => Float::with_val(prec, z.recip_ref()),
+    };
+    let (c_near, c_far) = (cot(d_near), cot(&d_far));
+    let real = -(Float::with_val(prec, &c_near + &c_far) / 2u32);
+    let imag = Float::with_val(prec, &c_far - &c_near) * eps;
+    let sign = if side == Side::Right { 1i32 } else { -1 };
+    let mut out = Complex::with_val(prec, (real, imag * sign));
+    if row == Row::Periodic {
+        let chi = Float::with_val(prec, d_near + eta) * sign;
+        let arg = Complex::with_val(prec, (chi, Float::with_val(prec, eps * eta) * -2i32));
+        out -= Complex::with_val(prec, arg.tan_ref()) * sign;
+    }
+    out
+}
+
 /// L sigma_flat (module doc) for the unit complex load at the point whose distances to the
 /// trailing and leading ends are `d_left` = eta + chi' and `d_right` = eta - chi' (both > 0, given
-/// separately so the end singularities keep their accuracy).
+/// separately so the end singularities keep their accuracy); `row` periodic or single.
 pub fn flat_punch_stress(
+    row: Row,
     d_left: &Float,
     d_right: &Float,
     eta: &Float,
@@ -63,12 +125,11 @@ pub fn flat_punch_stress(
     prec: u32,
 ) -> Complex {
     let chi = Float::with_val(prec, d_left - d_right) / 2u32;
-    let (sp, sm) = (Float::with_val(prec, d_left.sin_ref()), Float::with_val(prec, d_right.sin_ref()));
+    let (sp, sm) = (row.sin(d_left, prec), row.sin(d_right, prec));
     // sin^2 eta - sin^2 chi' = sin(eta + chi') sin(eta - chi').
     let mag = Float::with_val(prec, &sp * &sm).sqrt().recip() * cosh_pi_eps;
     let theta = Float::with_val(prec, Float::with_val(prec, &sp / &sm).ln_ref()) * eps;
-    let arg = Complex::with_val(prec, (chi, Float::with_val(prec, eps * eta) * -2i32));
-    let cos = Complex::with_val(prec, arg.cos_ref());
+    let cos = row.cos_shift(chi, eps, eta, prec);
     let phase =
         Complex::with_val(prec, (Float::with_val(prec, theta.cos_ref()), Float::with_val(prec, theta.sin_ref())));
     cos * phase * mag
@@ -174,6 +235,32 @@ impl TiltedPunch {
         let t = Float::with_val(prec, chi.tan_ref());
         z * Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &t)) / cosh_pi_eps
     }
+
+    /// d ln/d d_near of [`Self::outside`] (the Jacobian of [`super::jacobian`]): with
+    /// chi = +-(d + eta), the factor 1/(cos eta cos chi) of t +- m contributes +tan chi on the
+    /// right and -tan chi on the left:
+    ///   right: (-1/2 + i eps)(cot d_far + tan chi) + (-1/2 - i eps)(cot d + tan chi)
+    ///          + B sec^2 chi/(A + B tan chi),
+    ///   left:  (-1/2 + i eps)(cot d - tan chi) + (-1/2 - i eps)(cot d_far - tan chi)
+    ///          - B sec^2 chi/(A + B tan chi).
+    pub fn outside_log_derivative(&self, side: Side, d_near: &Float, eta: &Float, eps: &Float, prec: u32) -> Complex {
+        let d_far = Float::with_val(prec, d_near + eta) + eta;
+        let sign = if side == Side::Right { 1i32 } else { -1 };
+        let chi = Float::with_val(prec, d_near + eta) * sign;
+        let tan = Float::with_val(prec, chi.tan_ref());
+        let sec2 = Float::with_val(prec, tan.square_ref()) + 1u32;
+        let (c_near, c_far) = (Float::with_val(prec, d_near.cot_ref()), Float::with_val(prec, d_far.cot_ref()));
+        let shift = Float::with_val(prec, &tan * sign);
+        let (first, second) = match side {
+            Side::Right => (c_far + &shift, c_near + &shift),
+            Side::Left => (c_near + &shift, c_far + &shift),
+        };
+        let e_plus = Complex::with_val(prec, (-0.5, eps));
+        let e_minus = Complex::with_val(prec, (-0.5, Float::with_val(prec, -eps)));
+        let linear = Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &tan));
+        let tail = Complex::with_val(prec, &self.b * &sec2) / linear * sign;
+        e_plus * first + e_minus * second + tail
+    }
 }
 
 /// r^(-1/2 + sign i eps) for r > 0.
@@ -216,7 +303,7 @@ mod tests {
             let far = Float::with_val(PREC, Float::with_val(PREC, &rule.c[q] + 1u32) * eta);
             for (d_left, d_right, sign) in [(&far, &near, 1i32), (&near, &far, -1)] {
                 let chi = Float::with_val(PREC, eta * &rule.c[q]) * sign;
-                let sigma = flat_punch_stress(d_left, d_right, eta, &e, &ch, PREC);
+                let sigma = flat_punch_stress(Row::Periodic, d_left, d_right, eta, &e, &ch, PREC);
                 acc += sigma * w(&chi) * Float::with_val(PREC, &rule.w[q] * eta);
             }
         }
@@ -248,7 +335,7 @@ mod tests {
                 let z = Float::with_val(PREC, &chi - xi);
                 Complex::with_val(PREC, Float::with_val(PREC, z.tan_ref()).recip())
             }) / Float::with_val(PREC, &pi * &pi);
-            let k = outside_kernel(side, &d, &eta, &e, PREC) / &pi;
+            let k = outside_kernel(Row::Periodic, side, &d, &eta, &e, PREC) / &pi;
             let diff = Float::with_val(PREC, Complex::with_val(PREC, &h - &k).abs_ref());
             assert!(diff < 1e-40, "{side:?} d {d}: {h} vs {k}");
         }
@@ -270,14 +357,14 @@ mod tests {
         for (dl, dr) in [(0.3, 0.9), (1.1, 0.1), (0.6, 0.6)] {
             let (dl, dr) = (f(dl), f(dr));
             let a = flat.stress(&dl, &dr, &eta, &e, PREC) * &pi;
-            let b = flat_punch_stress(&dl, &dr, &eta, &e, &ch, PREC);
+            let b = flat_punch_stress(Row::Periodic, &dl, &dr, &eta, &e, &ch, PREC);
             let d = Float::with_val(PREC, Complex::with_val(PREC, &a - &b).abs_ref()).to_f64();
             assert!(d < 1e-40, "flat: {a} vs {b}");
         }
         for (side, d) in [(Side::Right, 0.3), (Side::Left, 0.2)] {
             let d = f(d);
             let a = flat.outside(side, &d, &eta, &e, &ch, PREC) * &pi;
-            let b = outside_kernel(side, &d, &eta, &e, PREC);
+            let b = outside_kernel(Row::Periodic, side, &d, &eta, &e, PREC);
             let diff = Float::with_val(PREC, Complex::with_val(PREC, &a - &b).abs_ref()).to_f64();
             assert!(diff < 1e-40, "K {side:?}: {a} vs {b}");
         }

@@ -1,22 +1,23 @@
 //! Problem 2 with a loading law P1 = N(P2) (THEORY.md section 10; issue 12): the contact
-//! [-a, b] grows at both ends. Built so far (not yet reachable from scenes or the CLI):
+//! [-a, b] grows at both ends, in a periodic row or on a single punch ([`kernel::Row`]):
 //! - [`kernel`]: the increments on an off-centre contact (the unit flat punch and its surface
 //!   slopes on both sides; the left side checked against the direct cot-kernel quadrature) and
 //!   the `periodic` convention's tilted punch (closed form in the tangent variable, checked the
 //!   same way);
-//! - [`collocation`]: the MPFR method for the linear law in both conventions, the two
-//!   moving-edge conditions as a nonlinear Volterra system (Chebyshev collocation, chord Newton);
+//! - [`collocation`]: the MPFR method for linear and polynomial laws in both conventions, the two
+//!   moving-edge conditions as a nonlinear Volterra system (Chebyshev collocation, Newton with
+//!   the closed-form Jacobian of `jacobian`, then chord steps);
 //!   checked: n = 0 gives section 4's symmetric load (1.3e-34 with 32 nodes), nu = 1/2 decouples
 //!   (centred contact, Kuznetsov's load);
 //! - [`fields`]: psi (frozen at entry) and q2 + i q1 from the increments, checked by the
 //!   independent residual test: the stresses put into the surface relations [1.8] (direct
 //!   principal-value quadrature of the cot kernel) reproduce v' = g' and u' = psi on the
 //!   asymmetric contact (n = 1/5, nu = 0.3) to 1e-16 in both conventions, and carry the load.
-//!
-//! Still to come (issue 12): phi; polynomial laws and profiles; the independent f64 method; verified digits (two runs); the
-//! given-load search; scenes, CLI, report; the asymptotic expansion.
+//! - [`verified`]: dimensional values (a, b, c, P1, P2, psi, phi, q1, q2) with digits from two
+//!   runs, a given half-length or normal load, periodic row or single punch.
 
 pub mod collocation;
 pub mod fields;
+mod jacobian;
 pub mod kernel;
 pub mod verified;

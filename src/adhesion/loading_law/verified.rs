@@ -11,8 +11,9 @@
 //!   first, where the fields are not smooth, is an end of the interval).
 
 use super::collocation::{solve, LawCollocation, LawSetting};
+use super::kernel::Row;
 use crate::adhesion::error::AdhesionError;
-use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError};
+use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError, Period};
 use crate::numerics::accuracy::{readable_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::{to_f64, to_float};
 use crate::numerics::precision::bits_for_digits;
@@ -41,7 +42,7 @@ pub struct LawPoint {
 /// One run's dimensional values.
 #[derive(Debug, Clone)]
 pub struct LawValues {
-    /// lambda = pi l/L.
+    /// lambda = pi l/L (periodic row); l/U for the single punch (U the collocation's unit).
     pub lambda: Float,
     /// a, b, c, l.
     pub a: Float,
@@ -94,15 +95,49 @@ fn nodes_for(bits: u32, lambda: f64) -> usize {
     ((bits as f64 * std::f64::consts::LN_2 / rho.ln()).ceil() as usize + 4).max(8)
 }
 
-/// The setting of `problem` at the final size l/L = `size_over_period`.
-fn setting(problem: &LoadingLawProblem, size_over_period: Exact) -> LawSetting {
-    let l = problem.period();
+/// The length unit of the collocation's variables: L/pi for a periodic row (chi = pi x/L), U
+/// for the single punch (chi = x/U, [`Row::Single`]).
+#[derive(Debug, Clone)]
+enum Unit {
+    /// Period L.
+    Period(Exact),
+    /// The single punch's unit U.
+    Single(Exact),
+}
+
+impl Unit {
+    /// L/pi or U at `prec` bits.
+    fn length(&self, prec: u32) -> Float {
+        match self {
+            Unit::Period(l) => to_float(l, prec) / Float::with_val(prec, Constant::Pi),
+            Unit::Single(u) => to_float(u, prec),
+        }
+    }
+}
+
+/// The setting of `problem` at the final size `size` = l/L (periodic) or l/U (single punch).
+fn setting(problem: &LoadingLawProblem, unit: &Unit, size: Exact) -> LawSetting {
+    let (l, row) = match unit {
+        Unit::Period(l) => (l, Row::Periodic),
+        Unit::Single(u) => (u, Row::Single),
+    };
     LawSetting {
         material: problem.material().clone(),
         law: problem.law().clone(),
         load_scale: problem.material().contact_modulus() * problem.k() * l * l,
-        size_over_period,
+        size_over_period: size,
+        row,
         convention: problem.convention(),
+    }
+}
+
+/// Nodes at the final size: the periodic row's Phi(t) is singular at full contact
+/// ([`nodes_for`]); the single punch's is entire (constant for the linear law: the problem is
+/// self-similar), counted as a small periodic contact.
+fn nodes_at(unit: &Unit, bits: u32, lambda: f64) -> usize {
+    match unit {
+        Unit::Period(_) => nodes_for(bits, lambda),
+        Unit::Single(_) => nodes_for(bits, 0.3),
     }
 }
 
@@ -115,24 +150,55 @@ fn exact_of(v: &Float, bits: u32) -> Exact {
     Exact::new(num, den)
 }
 
-/// The final l/L of the given load: the collocation on [0, Lambda_1] gives P(lambda) for every
+/// The final size of the given load: the collocation on [0, Lambda_1] gives P(lambda) for every
 /// lambda <= Lambda_1 (the Volterra structure: a smaller contact is a restriction), so one solve
-/// at a Lambda_1 beyond the answer and a root of P(lambda) = pi^2 P2/(E* k L^2) on its Chebyshev
-/// interpolant (bisection) find it; Lambda_1 from the symmetric Kuznetsov-like guess
-/// P ~ 2 C_P ln sec(lambda), enlarged while P(Lambda_1) is short of the target.
-fn size_for_load(problem: &LoadingLawProblem, p2: &Exact, bits: u32, prec: u32) -> Result<Exact, AdhesionError> {
-    let l = problem.period();
-    let scale = problem.material().contact_modulus() * problem.k() * l * l;
+/// at a Lambda_1 beyond the answer and a root of P(lambda) = P2/(E* k unit^2) on its Chebyshev
+/// interpolant (bisection) find it. Periodic: Lambda_1 from the symmetric Kuznetsov-like guess
+/// P ~ 2 C_P ln sec(lambda), enlarged while P(Lambda_1) is short of the target; returns l/L.
+/// Single punch: Lambda_1 = 1 in the unit U = 1.3 sqrt(P2/(C_P E* k)) (the symmetric single
+/// punch's half-length, P2 = C_P E* k l^2, enlarged), U doubled while short; returns (l/U, U).
+fn size_for_load(
+    problem: &LoadingLawProblem,
+    p2: &Exact,
+    bits: u32,
+    prec: u32,
+) -> Result<(Unit, Exact), AdhesionError> {
     let pi = Float::with_val(prec, Constant::Pi);
-    let target = to_float(&(p2 / &scale), prec) * Float::with_val(prec, pi.square_ref());
     let cp = crate::params::adhesion::AdhesionParamsF64::new(problem.material()).load_constant;
-    let guess = (-target.to_f64() / (2.0 * cp)).exp().acos();
     let half_pi = std::f64::consts::FRAC_PI_2;
-    let mut big = (guess * 1.15 + 0.05).min(0.5 * (guess + half_pi));
-    for _ in 0..6 {
-        let over = exact_of(&Float::with_val(prec, Float::with_val(prec, big) / &pi), 40);
-        let s = setting(problem, over);
-        let sol = solve(&s, nodes_for(bits, big), bits, prec)?;
+    let stiffness = problem.material().contact_modulus() * problem.k();
+    // (unit, Lambda_1) of attempt j.
+    let attempt = |j: i32, big: f64| -> (Unit, f64) {
+        match problem.period() {
+            Period::Finite(l) => (Unit::Period(l.clone()), big),
+            Period::Infinite => {
+                let hertz = (to_f64(&(p2 / &stiffness)).unwrap_or(f64::NAN) / cp).sqrt();
+                let u = exact_of(&Float::with_val(prec, 1.3 * hertz * 2f64.powi(j)), 40);
+                (Unit::Single(u), 1.0)
+            }
+        }
+    };
+    let mut big = 0.0;
+    if let Period::Finite(l) = problem.period() {
+        let target = to_f64(&(p2 / &(&stiffness * l * l))).unwrap_or(f64::NAN) * std::f64::consts::PI.powi(2);
+        let guess = (-target / (2.0 * cp)).exp().acos();
+        big = (guess * 1.15 + 0.05).min(0.5 * (guess + half_pi));
+    }
+    for j in 0..6 {
+        let (unit, lambda_1) = attempt(j, big);
+        let scale = match &unit {
+            Unit::Period(l) => &stiffness * l * l / Exact::from_integer(1.into()),
+            Unit::Single(u) => &stiffness * u * u,
+        };
+        let mut target = to_float(&(p2 / &scale), prec);
+        if let Unit::Period(_) = unit {
+            target *= Float::with_val(prec, pi.square_ref());
+        }
+        let over = match &unit {
+            Unit::Period(_) => exact_of(&Float::with_val(prec, Float::with_val(prec, lambda_1) / &pi), 40),
+            Unit::Single(_) => Exact::from_integer(1.into()),
+        };
+        let sol = solve(&setting(problem, &unit, over), nodes_at(&unit, bits, lambda_1), bits, prec)?;
         if sol.load() < target {
             big = 0.5 * (big + half_pi);
             continue;
@@ -147,7 +213,11 @@ fn size_for_load(problem: &LoadingLawProblem, p2: &Exact, bits: u32, prec: u32) 
             }
         }
         let lambda = Float::with_val(prec, &lo * &sol.lambda_max);
-        return Ok(exact_of(&(lambda / &pi), prec));
+        let size = match &unit {
+            Unit::Period(_) => exact_of(&(lambda / &pi), prec),
+            Unit::Single(_) => exact_of(&lambda, prec),
+        };
+        return Ok((unit, size));
     }
     Err(AdhesionError::IllConditioned {
         method: "mpfr-loading-law",
@@ -165,13 +235,14 @@ fn run(
     target_bits: u32,
     prec: u32,
 ) -> Result<LawValues, AdhesionError> {
-    let over = match problem.size() {
-        LawSize::HalfLength(l) => l / problem.period(),
-        LawSize::NormalLoad(p2) => size_for_load(problem, p2, target_bits, prec)?,
+    let (unit, over) = match (problem.size(), problem.period()) {
+        (LawSize::HalfLength(l), Period::Finite(big_l)) => (Unit::Period(big_l.clone()), l / big_l),
+        (LawSize::HalfLength(l), Period::Infinite) => (Unit::Single(l.clone()), Exact::from_integer(1.into())),
+        (LawSize::NormalLoad(p2), _) => size_for_load(problem, p2, target_bits, prec)?,
     };
     let lambda = to_f64(&over).unwrap_or(f64::NAN) * std::f64::consts::PI;
-    let s = setting(problem, over);
-    let sol = solve(&s, nodes_for(target_bits, lambda) + extra_nodes, target_bits, prec)?;
+    let s = setting(problem, &unit, over);
+    let sol = solve(&s, nodes_at(&unit, target_bits, lambda) + extra_nodes, target_bits, prec)?;
     // N' >= 0 along the loading (the requirement: P1 must not decrease as P2 grows).
     for i in 0..=32u32 {
         let p = sol.load_at(&(Float::with_val(prec, i) / 32u32));
@@ -190,21 +261,21 @@ fn run(
             .into());
         }
     }
-    values(problem, &sol, xh, target_bits)
+    values(problem, &unit, &sol, xh, target_bits)
 }
 
 fn values(
     problem: &LoadingLawProblem,
+    unit: &Unit,
     sol: &LawCollocation,
     xh: &[Exact],
     target_bits: u32,
 ) -> Result<LawValues, AdhesionError> {
     let prec = sol.prec;
     let pi = Float::with_val(prec, Constant::Pi);
-    let big_l = to_float(problem.period(), prec);
     let k = to_float(problem.k(), prec);
     let e_star = to_float(problem.material().contact_modulus(), prec);
-    let l_over_pi = Float::with_val(prec, &big_l / &pi);
+    let l_over_pi = unit.length(prec);
     let lambda = sol.lambda_max.clone();
     let gamma = sol.centre_at(&lambda);
     let l = Float::with_val(prec, &l_over_pi * &lambda);
@@ -214,8 +285,9 @@ fn values(
     let p1 = sol.inc.law_at(&p) * &sol.inc.p2_per_p;
     let rule = TanhSinh::new(target_bits + 8, 1.0, prec);
     let outer = TanhSinh::new(target_bits + 8, 1.0, prec);
-    let psi_scale = Float::with_val(prec, &k * &big_l) * 2u32 / Float::with_val(prec, pi.square_ref());
-    let q_scale = Float::with_val(prec, &e_star * &k) * &big_l / Float::with_val(prec, pi.square_ref());
+    // 2 k L/pi^2 and E* k L/pi^2 with L = pi unit.
+    let psi_scale = Float::with_val(prec, &k * &l_over_pi) * 2u32 / &pi;
+    let q_scale = Float::with_val(prec, &e_star * &k) * &l_over_pi / &pi;
     let phi_scale = Float::with_val(prec, &psi_scale * &l_over_pi);
     let mut points = Vec::with_capacity(xh.len());
     for h in xh {
@@ -404,5 +476,85 @@ mod tests {
         .unwrap_err();
         let AdhesionError::Model(m) = &e else { panic!("{e}") };
         assert_eq!((m.parameter.as_str(), m.value.as_str()), ("tangential_ratio", "-1/5"), "{e}");
+    }
+
+    fn single(nu: Exact, n: Exact, size: LawSize) -> LoadingLawProblem {
+        let material = Material::from_contact_modulus(nu, q(3, 2)).unwrap();
+        let shape = PunchShape::Parabolic { k: q(1, 2) };
+        LoadingLawProblem::new(material, Period::Infinite, shape, LoadingLaw::Linear(n), size, Convention::Paper)
+            .unwrap()
+    }
+
+    /// The single punch (period `inf`, [`Row::Single`]): n = 0 is the symmetric single punch
+    /// (c = 0, P2 = C_P E* k l^2, C_P = pi/(2 (1 - 2 eps S)), THEORY.md 5); at nu = 1/2 Hertz
+    /// (P2 = pi E* k l^2/2, c = 0) with q1 = n q2; n = 1/5 at nu = 0.3 is self-similar (c/l,
+    /// P2/l^2, psi/(k l), q/(E* k l) the same at l = 1/2 and l = 3), its given load is found back,
+    /// and the periodic row tends to it like Lambda^2 (c/l at L = 40 and 80, l = 1: the
+    /// differences' ratio is 4 within 1%).
+    #[test]
+    fn single_punch_limits_and_self_similarity() {
+        let xh = [q(-3, 5), q(1, 4)];
+        let digits = 16;
+        let rel = |a: &Float, b: &Float, scale: f64| Float::with_val(200, a - b).to_f64().abs() / scale;
+        // n = 0.
+        let sym = solve_law(&single(q(3, 10), q(0, 1), LawSize::HalfLength(q(2, 3))), &xh, digits).unwrap();
+        let material = Material::from_contact_modulus(q(3, 10), q(3, 2)).unwrap();
+        let cp = crate::params::adhesion::AdhesionParamsMpfr::new(&material, 200).load_constant;
+        let hertz_like = Float::with_val(200, &cp * 3u32) / 4u32 * 4u32 / 9u32; // C_P (3/2)(1/2)(2/3)^2
+        assert!(sym.digits.headline >= digits as f64, "{:?}", sym.digits);
+        assert!(rel(&sym.values.p2, &hertz_like, hertz_like.to_f64()) < 1e-16, "{} vs {}", sym.values.p2, hertz_like);
+        assert!(sym.values.c.to_f64().abs() < 1e-16);
+        // nu = 1/2.
+        let half = solve_law(&single(q(1, 2), q(1, 5), LawSize::HalfLength(q(2, 3))), &xh, digits).unwrap();
+        let hertz = Float::with_val(200, Constant::Pi) * 3u32 / 4u32 * 4u32 / 9u32 / 2u32;
+        assert!(rel(&half.values.p2, &hertz, hertz.to_f64()) < 1e-16, "{} vs {}", half.values.p2, hertz);
+        assert!(half.values.c.to_f64().abs() < 1e-16);
+        for p in &half.values.points {
+            assert!(rel(&p.q1, &Float::with_val(200, &p.q2 / 5u32), 1.0) < 1e-16);
+        }
+        // Self-similar at n = 1/5.
+        let small = solve_law(&single(q(3, 10), q(1, 5), LawSize::HalfLength(q(1, 2))), &xh, digits).unwrap();
+        let big = solve_law(&single(q(3, 10), q(1, 5), LawSize::HalfLength(q(3, 1))), &xh, digits).unwrap();
+        let ratio = |v: &LawValues| Float::with_val(200, &v.c / &v.l);
+        let (us, ub) = (&small.values, &big.values);
+        eprintln!(
+            "single punch n = 1/5: c/l = {}, P2/l^2 = {}, digits {:?}",
+            ratio(us),
+            Float::with_val(200, &us.p2 / Float::with_val(200, us.l.square_ref())),
+            small.digits
+        );
+        assert!(small.digits.headline >= digits as f64 && big.digits.headline >= digits as f64);
+        assert!(rel(&ratio(us), &ratio(ub), 1.0) < 1e-16);
+        let load = |v: &LawValues| Float::with_val(200, &v.p2 / Float::with_val(200, v.l.square_ref()));
+        assert!(rel(&load(us), &load(ub), load(ub).to_f64()) < 1e-16);
+        for (p, r) in us.points.iter().zip(&ub.points) {
+            // psi ~ k l, q ~ E* k l: the big punch's values are 6 times the small one's.
+            assert!(rel(&Float::with_val(200, &p.psi * 6u32), &r.psi, r.psi.to_f64().abs()) < 1e-15);
+            assert!(rel(&Float::with_val(200, &p.q2 * 6u32), &r.q2, r.q2.to_f64().abs()) < 1e-15);
+            assert!(rel(&Float::with_val(200, &p.q1 * 6u32), &r.q1, r.q1.to_f64().abs()) < 1e-15);
+        }
+        // Given load.
+        let p2 = exact_of(&ub.p2, 120);
+        let back = solve_law(&single(q(3, 10), q(1, 5), LawSize::NormalLoad(p2)), &xh, digits).unwrap();
+        assert!(rel(&back.values.l, &ub.l, 3.0) < 1e-16, "{}", back.values.l);
+        // The periodic row tends to the single punch like Lambda^2.
+        let row = |big_l: i64| {
+            let material = Material::from_contact_modulus(q(3, 10), q(3, 2)).unwrap();
+            let p = LoadingLawProblem::new(
+                material,
+                Period::Finite(q(big_l, 1)),
+                PunchShape::Parabolic { k: q(1, 2) },
+                LoadingLaw::Linear(q(1, 5)),
+                LawSize::HalfLength(q(1, 1)),
+                Convention::Paper,
+            )
+            .unwrap();
+            let v = solve_law(&p, &[], digits).unwrap().values;
+            Float::with_val(200, &v.c / &v.l)
+        };
+        let (d40, d80) = (Float::with_val(200, row(40) - ratio(us)), Float::with_val(200, row(80) - ratio(us)));
+        let r = d40.to_f64() / d80.to_f64();
+        eprintln!("c/l - single: L = 40 {d40:.3e}, L = 80 {d80:.3e}, ratio {r}");
+        assert!((r - 4.0).abs() < 0.04, "{r}");
     }
 }
