@@ -194,7 +194,20 @@ fn shipped_scene_solves_with_its_verified_digits() {
         .max_by(|x, y| x.partial_cmp(y).unwrap())
         .unwrap();
     assert!(agree(&f(&v["friction_needed"]), &best, &best, 10.0), "{v}");
-    assert_eq!(v["warnings"], serde_json::json!([]));
+    // The ends: the leading phase equals the closed form of `ends` (paper convention,
+    // Lambda = pi/6, eps = ln(1.8)/(2 pi)), the needed friction grows toward the end, and the two
+    // oscillation zones are the only warnings.
+    let (lam, eps) = (std::f64::consts::PI / 6.0, 1.8f64.ln() / (2.0 * std::f64::consts::PI));
+    let (ch, sh) = (lam.cos() * (2.0 * eps * lam).cosh(), lam.sin() * (2.0 * eps * lam).sinh());
+    let phi_b = 0.2f64.atan() + sh.atan2(ch) + eps * ((2.0 * lam).sin() / lam).ln() + (2.0 * eps).atan();
+    let lead = &v["end_stress"]["leading"];
+    assert!((f(&lead["phase"]).to_f64() - phi_b).abs() < 1e-9, "{phi_b}: {v}");
+    let mu: Vec<f64> =
+        ["1e-1", "1e-2", "1e-3", "1e-4"].iter().map(|k| f(&lead["friction_needed_at_distance"][k]).to_f64()).collect();
+    assert!(mu.windows(2).all(|w| w[0] < w[1]) && mu[0] > 0.5, "{mu:?}");
+    let warnings = v["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), 2, "{v}");
+    assert!(warnings.iter().all(|w| w.as_str().unwrap().contains("oscillating singularity")), "{v}");
 }
 
 /// The same law as the polynomial ["0", "1/5"], given the load the shipped scene's 20-digit run

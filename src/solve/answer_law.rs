@@ -11,6 +11,12 @@
 //! bound: |d(q1/q2)| <= 10^-fields E* k l (q2 + |q1|)/q2^2. A point where q2 < 0 beyond the
 //! fields' accuracy is a tension warning (complete adhesion then needs the interface to carry
 //! tension there).
+//!
+//! `end_stress` ([`crate::adhesion::loading_law::ends`]): at each end the phase phi of
+//! sigma = q2 + i q1 ~ C (d/l)^(1/2 -+ i eps), the zone d/l < tension_within where q2 < 0 (the
+//! oscillating singularity; a warning when it is not empty) and |q1|/q2 at d/l = 0.1 ... 1e-4
+//! (null inside the tension zone): the friction complete adhesion needs grows without bound
+//! toward the ends, so it is given against the distance.
 
 use super::render::{digits_text, Measured, Provenance};
 use crate::adhesion::loading_law::verified::{LawPoint, LawSolution};
@@ -98,6 +104,7 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         friction.as_ref().map_or(Value::Null, |(r, scale, _)| json!(print(r, scale, d.fields))),
     );
     m.insert("friction_needed_at_xh".into(), friction.as_ref().map_or(Value::Null, |(_, _, xh)| json!(xh)));
+    m.insert("end_stress".into(), end_stress_json(sol, requested));
     m.insert("digits_requested".into(), json!(requested.to_string()));
     m.insert("digits_verified".into(), json!(digits_text(d.headline)));
     m.insert(
@@ -119,7 +126,18 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         })
         .collect();
     m.insert("points".into(), Value::Array(points));
-    m.insert("warnings".into(), Value::Array(tension_warnings(&v.points, &sc.stress, d.fields, requested)));
+    let mut warnings = tension_warnings(&v.points, &sc.stress, d.fields, requested);
+    for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
+        if end.tension_within > 0 {
+            let zone =
+                Measured::mpfr(end.tension_within.clone(), &end.tension_within, zone_digits(sol)).print(requested);
+            warnings.push(json!(format!(
+                "tension: q2 < 0 within d/l < {zone} of the {name} end (the oscillating singularity, eps = {:.4}): complete adhesion there needs tension and unbounded friction",
+                v.eps.to_f64()
+            )));
+        }
+    }
+    m.insert("warnings".into(), Value::Array(warnings));
     let prov = Provenance {
         method: "mpfr",
         bits: Some(v.l.prec()),
@@ -129,6 +147,43 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
     };
     m.insert("provenance".into(), prov.json());
     m
+}
+
+/// Digits of the tension zones' d/l = exp(-gap/eps): the phases' less log10(1/eps).
+fn zone_digits(sol: &LawSolution) -> f64 {
+    let eps = sol.values.eps.to_f64();
+    if eps > 0.0 {
+        sol.digits.end_phases + eps.log10()
+    } else {
+        sol.digits.end_phases
+    }
+}
+
+/// The ends' phases, tension zones and needed friction against the distance (module doc).
+fn end_stress_json(sol: &LawSolution, requested: u32) -> Value {
+    let v = &sol.values;
+    let d = &sol.digits;
+    let mut m = Map::new();
+    for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
+        let one = Float::with_val(end.phase.prec(), 1);
+        let mut friction = Map::new();
+        for (k, mu) in crate::adhesion::loading_law::ends::DISTANCES.iter().zip(&end.friction_needed) {
+            let value = mu
+                .as_ref()
+                .map_or(Value::Null, |mu| json!(Measured::mpfr(mu.clone(), mu, d.friction).print(requested)));
+            friction.insert(format!("1e{k}"), value);
+        }
+        m.insert(
+            name.into(),
+            json!({
+                "phase": Measured::mpfr(end.phase.clone(), &one, d.end_phases).print(requested),
+                "tension_within": Measured::mpfr(end.tension_within.clone(), &end.tension_within, zone_digits(sol)).print(requested),
+                "friction_needed_at_distance": Value::Object(friction),
+            }),
+        );
+    }
+    m.insert("digits".into(), json!({"friction": digits_text(d.friction), "phases": digits_text(d.end_phases)}));
+    Value::Object(m)
 }
 
 /// One warning per point where q2 < 0 beyond the fields' accuracy.

@@ -17,6 +17,7 @@
 //!   runs, a given half-length or normal load, periodic row or single punch.
 
 pub mod collocation;
+pub mod ends;
 pub mod fields;
 mod jacobian;
 pub mod kernel;

@@ -11,7 +11,8 @@
 //!   first, where the fields are not smooth, is an end of the interval).
 
 use super::collocation::{solve, LawCollocation, LawSetting};
-use super::kernel::Row;
+use super::ends::EndStress;
+use super::kernel::{Row, Side};
 use crate::adhesion::error::AdhesionError;
 use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError, Period};
 use crate::numerics::accuracy::{readable_mpfr, verified_digits_mpfr};
@@ -60,6 +61,10 @@ pub struct LawValues {
     pub points: Vec<LawPoint>,
     /// Collocation nodes.
     pub nodes: usize,
+    /// The leading end b, then the trailing end -a ([`super::ends`]).
+    pub ends: Vec<EndStress>,
+    /// eps of the material.
+    pub eps: Float,
 }
 
 /// The verified solution: the first run's values and the digits confirmed by the second.
@@ -83,6 +88,11 @@ pub struct LawDigits {
     pub fields: f64,
     /// Minimum of the above.
     pub headline: f64,
+    /// The friction needed near the ends ([`super::ends`]) by the two runs.
+    pub friction: f64,
+    /// The end phases: the two runs and the asymptote's error ([`EndStress::phase_error`]); the
+    /// tension zones' d/l carry these digits less log10(1/eps).
+    pub end_phases: f64,
 }
 
 /// Collocation nodes for 2^-bits at Lambda: Phi(t) = f(Lambda^2 t^2) is singular at
@@ -314,6 +324,8 @@ fn values(
         p1,
         points,
         nodes: sol.phi.len(),
+        ends: vec![sol.end_stress(Side::Right, &rule), sol.end_stress(Side::Left, &rule)],
+        eps: sol.inc.eps.clone(),
     })
 }
 
@@ -355,7 +367,18 @@ pub fn solve_law(problem: &LoadingLawProblem, xh: &[Exact], digits: u32) -> Resu
             .min(dig(&p.q2, &q.q2, &ekl));
     }
     let headline = ends.min(loads).min(fields);
-    Ok(LawSolution { values: first, digits: LawDigits { ends, loads, fields, headline } })
+    let (mut friction, mut end_phases) = (cap, cap);
+    for (p, q) in u.ends.iter().zip(&v.ends) {
+        let model = -p.phase_error.to_f64().max(1e-300).log10();
+        end_phases = end_phases.min(dig(&p.phase, &q.phase, &Float::with_val(prec, 1))).min(model);
+        for (f, g) in p.friction_needed.iter().zip(&q.friction_needed) {
+            if let (Some(f), Some(g)) = (f, g) {
+                friction = friction.min(dig(f, g, f));
+            }
+        }
+    }
+    let digits = LawDigits { ends, loads, fields, headline, friction, end_phases };
+    Ok(LawSolution { values: first, digits })
 }
 
 #[cfg(test)]
