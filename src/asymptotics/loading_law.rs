@@ -484,6 +484,80 @@ pub fn loading_law_series(nu: &Q, ratio: &Q, order: usize, digits: u32) -> Resul
     Ok(LawSeries { nu: nu.clone(), ratio: ratio.clone(), order: 2 * (terms - 1), digits, parts, first, residual })
 }
 
+impl LawSeries {
+    /// Least verified digits over the printed coefficients.
+    pub fn min_digits(&self) -> f64 {
+        self.parts.iter().flat_map(|p| p.coefficients.iter().map(|c| c.2)).fold(f64::INFINITY, f64::min)
+    }
+
+    fn header(&self) -> [String; 5] {
+        [
+            "object: loading_law".into(),
+            "formula: Problem 2 under P1 = n P2 (paper convention), parabola g = k x^2; lambda = pi l/L, l = (a + b)/2, c = (b - a)/2, chi = pi x/L".into(),
+            "source: THEORY.md sections 4, 5, 10; issue 12 (asymptotics::loading_law; not in Q(n, eps, B, S): MPFR at given nu, n)".into(),
+            format!(
+                "nu = {}, n = {}, order {} (every term through lambda^{}; psi through chi^{})",
+                exact_series::q_text(&self.nu),
+                exact_series::q_text(&self.ratio),
+                self.order,
+                self.order,
+                self.order + 1
+            ),
+            format!(
+                "values to {} digits, verified by a second run ({VERIFY_EXTRA_BITS} more bits, finer tanh-sinh rule): every coefficient to >= {:.1} digits of its own magnitude; edge-condition residual {:.1e}",
+                self.digits,
+                self.min_digits(),
+                self.residual
+            ),
+        ]
+    }
+
+    fn value_text(&self, v: &Float, digits: f64) -> String {
+        let scale = Float::with_val(v.prec(), v.abs_ref());
+        crate::numerics::accuracy::print_mpfr(v, &scale, digits, self.digits)
+    }
+
+    /// Plain text: the header, then per part its name, formula and one line per coefficient.
+    pub fn text(&self) -> String {
+        let mut s = self.header().join("\n");
+        s.push('\n');
+        for p in &self.parts {
+            s.push_str(&format!("\npart: {}\nformula: {}\nvariable {}\n", p.object, p.formula, p.variable));
+            for (k, v, d) in &p.coefficients {
+                s.push_str(&format!("[{}^{k}] {}\n", p.variable, self.value_text(v, *d)));
+            }
+        }
+        s
+    }
+
+    /// JSON: {"object", "nu", "ratio", "order", "convention", "digits", "verified_digits",
+    /// "residual", "parts": [{"object", "formula", "variable", "coefficients": [{"power", "value",
+    /// "digits"}]}]} (values as strings, digits to 0.1).
+    pub fn json(&self) -> serde_json::Value {
+        let round = |d: f64| (d * 10.0).round() / 10.0;
+        serde_json::json!({
+            "object": "loading_law",
+            "nu": exact_series::q_text(&self.nu),
+            "ratio": exact_series::q_text(&self.ratio),
+            "order": self.order,
+            "convention": "paper",
+            "digits": self.digits,
+            "verified_digits": round(self.min_digits()),
+            "residual": format!("{:.1e}", self.residual),
+            "parts": self.parts.iter().map(|p| serde_json::json!({
+                "object": p.object,
+                "formula": p.formula,
+                "variable": p.variable,
+                "coefficients": p.coefficients.iter().map(|(k, v, d)| serde_json::json!({
+                    "power": k,
+                    "value": self.value_text(v, *d),
+                    "digits": round(*d),
+                })).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
