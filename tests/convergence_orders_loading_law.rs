@@ -24,9 +24,9 @@ fn q(n: i64, d: i64) -> Exact {
 
 /// Collocation nodes, bits and precision of the full solution: 30 digits at Lambda <= pi/32
 /// (the smallest remainder, J = 4 at pi/96, is ~1e-20 of the value: 30 digits leave it 10).
-const NODES: usize = 18;
-const BITS: u32 = 110;
-const PREC: u32 = 150;
+const NODES: usize = 14;
+const BITS: u32 = 90;
+const PREC: u32 = 128;
 
 /// J = 0..=4 (terms through lambda^8).
 const TERMS: usize = 5;
@@ -91,9 +91,9 @@ fn check(nu: Exact, n: Exact) {
     let params = AdhesionParamsMpfr::new(&material, PREC);
     let rule = TanhSinh::new(BITS + 16, 1.0, PREC);
     let e = law_coefficients(&params, &to_float(&n, PREC), TERMS, &rule, PREC).unwrap();
-    // Lambda = pi l/L, l/L = 1/96, 1/64, 1/32.
+    // Lambda = pi l/L, l/L = 1/64, 1/48, 1/32.
     let t = std::time::Instant::now();
-    let fulls: Vec<Full> = [96, 64, 32].iter().map(|d| full(&material, &n, q(1, *d))).collect();
+    let fulls: Vec<Full> = [64, 48, 32].iter().map(|d| full(&material, &n, q(1, *d))).collect();
     eprintln!("nu = {nu}, n = {n}: 3 full solutions in {:.1}s", t.elapsed().as_secs_f64());
     let names = ["P", "c/l", "psi(+L/2)", "psi(-L/2)"];
     let lambdas: Vec<f64> = fulls.iter().map(|f| f.lambda.to_f64()).collect();
