@@ -494,8 +494,9 @@ fn parts_of(e: &LawExpansion, order: usize) -> Vec<(&'static str, &'static str, 
     ]
 }
 
-/// Largest order accepted by [`loading_law_series`] (the cost grows like order^4: 24 takes ~ a
-/// minute at 30 digits).
+/// Largest order accepted by [`loading_law_series`] (the cost grows like order^4; order 24 at 30
+/// digits, both runs: 14 s, debug build, `time periodic-contact series loading-law --nu 3/10
+/// --ratio 1/5 --order 24`).
 pub const MAX_ORDER: usize = 24;
 
 /// The loading-law expansion at Poisson's ratio `nu` and n = `ratio` (both exact), every term
