@@ -56,9 +56,9 @@ fn partial(e: &LawExpansion, lambda: &Float, big_j: usize) -> [Float; 4] {
     let pi = Float::with_val(p, Constant::Pi);
     let (mut load, mut centre, mut pw) = (Float::with_val(p, 0), Float::with_val(p, 0), Float::with_val(p, 1));
     let c = e.load();
-    for j in 0..=big_j {
-        load += Float::with_val(p, &c[j] * &pw);
-        centre += Float::with_val(p, &e.g[j] * &pw);
+    for (cj, gj) in c.iter().zip(&e.g).take(big_j + 1) {
+        load += Float::with_val(p, cj * &pw);
+        centre += Float::with_val(p, gj * &pw);
         pw *= &t;
     }
     load *= &t;

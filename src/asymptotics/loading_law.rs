@@ -68,7 +68,7 @@
 //!   so each Taylor coefficient of (f_0, g_0) in n is in Q(eps, B, S). The first ones, derived by
 //!   hand (dI_+/dg(0) = 1 - 2 i eps + (4 eps^2 - 1 + 2 i eps) M_0, from the contiguity
 //!   int_0^1 (1-s)^(1/2-i eps) (1+s)^(-3/2+i eps) ds = 1/(1/2 - i eps) - M_0):
-//!     g_0 = -2 eps n/(1 - 4 eps^2) + O(n^3),   f_0 = 2 C_P + O(n^2) = pi/(1 - 2 eps S) + O(n^2),
+//!   `g_0 = -2 eps n/(1 - 4 eps^2) + O(n^3)`, `f_0 = 2 C_P + O(n^2) = pi/(1 - 2 eps S) + O(n^2)`;
 //!   B and S cancel from the first coefficient of g_0. Checked against this module's Newton in
 //!   the tests (`g0_first_order_in_n`), which also assert the table: nu = 3/10
 //!   (eps = 0.0935491532), g_0/n = -0.193885423 at n = 1/1000 (first order: -0.193885416),
@@ -480,8 +480,11 @@ pub struct LawSeries {
     pub residual: f64,
 }
 
+/// One part before verification: (object, formula, variable, (power, value)).
+type RawPart = (&'static str, &'static str, &'static str, Vec<(usize, Float)>);
+
 /// The parts of one run, in print order (values only).
-fn parts_of(e: &LawExpansion, order: usize) -> Vec<(&'static str, &'static str, &'static str, Vec<(usize, Float)>)> {
+fn parts_of(e: &LawExpansion, order: usize) -> Vec<RawPart> {
     let even = |v: Vec<Float>| v.into_iter().enumerate().map(|(j, x)| (2 * j, x)).collect::<Vec<_>>();
     let odd =
         |v: Vec<Float>| v.into_iter().enumerate().filter(|(m, _)| m % 2 == 1 && *m <= order + 1).collect::<Vec<_>>();

@@ -147,8 +147,8 @@ impl ComplexSeries {
         b.push(Complex::with_val(prec, a0.ln_ref()));
         for k in 1..self.len() {
             let mut acc = Complex::with_val(prec, &self.coeffs[k] * k as u32);
-            for j in 1..k {
-                acc -= Complex::with_val(prec, &b[j] * &self.coeffs[k - j]) * j as u32;
+            for (j, bj) in b.iter().enumerate().skip(1) {
+                acc -= Complex::with_val(prec, bj * &self.coeffs[k - j]) * j as u32;
             }
             b.push(acc / a0 / k as u32);
         }
