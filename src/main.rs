@@ -36,6 +36,19 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }
+        RunConfig::LoadingLawSeries { nu, ratio, order, format } => {
+            let s = periodic_contact::asymptotics::loading_law::loading_law_series(
+                &nu,
+                &ratio,
+                order,
+                periodic_contact::asymptotics::catalog::VALUE_DIGITS as u32,
+            )?;
+            let text = match format {
+                Format::Json => format!("{}\n", serde_json::to_string_pretty(&s.json())?),
+                _ => s.text(),
+            };
+            std::io::stdout().write_all(text.as_bytes())?;
+        }
         RunConfig::Solve { scene, request, format } => {
             let v = periodic_contact::solve::solve_scene(&scene, request)?;
             let text = match format {

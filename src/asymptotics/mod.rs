@@ -6,6 +6,7 @@ pub mod adhesion;
 pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;
+pub mod loading_law;
 pub mod polynomial;
 pub mod sliding;
 pub mod weight;

@@ -38,6 +38,9 @@ pub enum ObjectName {
     Sliding,
     /// Problem 2 expansions [3.16]-[3.18]: A_n and c_n, exact in eps, B, S.
     Adhesion,
+    /// Problem 2 under the linear loading law P1 = n P2 (issue 12): c/l, b/a, P2 and psi on both
+    /// sides in lambda, in MPFR at given --nu and --ratio (30 digits, verified by a second run).
+    LoadingLaw,
 }
 
 /// Solution methods.
@@ -90,9 +93,13 @@ pub enum RawCommand {
         /// Substitute an exact rational for T = beta tau0/(E* k l_s) (sliding), T >= 0.
         #[arg(long = "T", value_name = "R", allow_hyphen_values = true)]
         t: Option<String>,
-        /// Poisson's ratio in [0, 1/2] (adhesion): also print the coefficients' values to 30 digits.
+        /// Poisson's ratio in [0, 1/2] (adhesion: also print the coefficients' values to 30 digits;
+        /// loading-law: required).
         #[arg(long, value_name = "R", allow_hyphen_values = true)]
         nu: Option<String>,
+        /// n = P1/P2 >= 0 of the linear loading law (loading-law, required).
+        #[arg(long, value_name = "R", allow_hyphen_values = true)]
+        ratio: Option<String>,
         /// Punch shape (sliding).
         #[arg(long, value_enum, default_value_t = ShapeName::Parabolic)]
         shape: ShapeName,

@@ -27,6 +27,18 @@ pub enum RunConfig {
         /// Output format.
         format: Format,
     },
+    /// `series loading-law --nu R --ratio R --order N` (numerical coefficients,
+    /// [`crate::asymptotics::loading_law::loading_law_series`]).
+    LoadingLawSeries {
+        /// Poisson's ratio.
+        nu: Q,
+        /// n = P1/P2.
+        ratio: Q,
+        /// Terms through lambda^order.
+        order: usize,
+        /// Output format (text or json).
+        format: Format,
+    },
     /// `solve SCENE`
     Solve {
         /// The parsed scene.
@@ -188,6 +200,76 @@ fn default_digits(scene: &Scene) -> u32 {
     scene.output.digits.or(target).unwrap_or(DEFAULT_DIGITS)
 }
 
+/// The flags of `series loading-law`.
+struct LawFlags<'a> {
+    order: &'a str,
+    nu: Option<&'a str>,
+    ratio: Option<&'a str>,
+    /// Flags the loading-law series does not take, with their values.
+    refused: Vec<(&'static str, String)>,
+    shape: ShapeName,
+    convention: Option<ConventionName>,
+    format: Format,
+}
+
+/// Validates `series loading-law`: --nu in [0, 1/2] and --ratio >= 0 required (exact), the
+/// order, text or json, the paper convention and parabola only.
+fn loading_law_series(f: LawFlags) -> Result<RunConfig, ModelError> {
+    use crate::asymptotics::loading_law::MAX_ORDER;
+    if let Some((flag, value)) = f.refused.first() {
+        return Err(ModelError::new(
+            *flag,
+            value,
+            "the loading-law series takes only --nu, --ratio, --order, --format",
+        ));
+    }
+    if f.shape != ShapeName::Parabolic {
+        return Err(ModelError::new(
+            "--shape",
+            format!("{:?}", f.shape).to_lowercase(),
+            "the loading-law series is for the parabola",
+        ));
+    }
+    if let Some(ConventionName::Periodic) = f.convention {
+        return Err(ModelError::new(
+            "--convention",
+            "periodic",
+            "the loading-law series is derived in the paper convention only",
+        ));
+    }
+    if f.format == Format::Latex {
+        return Err(ModelError::new(
+            "--format",
+            "latex",
+            "the loading-law series prints text or json (its coefficients are numbers)",
+        ));
+    }
+    let nu = parse_exact(
+        "--nu",
+        f.nu.ok_or_else(|| {
+            ModelError::new("--nu", "(missing)", "the loading-law series needs Poisson's ratio --nu R in [0, 1/2]")
+        })?,
+    )?;
+    if nu.is_negative() || nu > Q::new(1.into(), 2.into()) {
+        return Err(ModelError::new("--nu", &nu, "must lie in [0, 1/2]"));
+    }
+    let ratio = parse_exact(
+        "--ratio",
+        f.ratio.ok_or_else(|| {
+            ModelError::new("--ratio", "(missing)", "the loading-law series needs n = P1/P2 >= 0: --ratio R")
+        })?,
+    )?;
+    if ratio.is_negative() {
+        return Err(ModelError::new(
+            "--ratio",
+            &ratio,
+            "must be >= 0 (n = P1/P2 with N' >= 0; the mirror image x -> -x gives n < 0)",
+        ));
+    }
+    let order = parse_order(f.order, MAX_ORDER)?;
+    Ok(RunConfig::LoadingLawSeries { nu, ratio, order, format: f.format })
+}
+
 impl RunConfig {
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, ModelError> {
@@ -199,6 +281,7 @@ impl RunConfig {
                 xh,
                 t,
                 nu,
+                ratio,
                 shape,
                 coefficients,
                 degree,
@@ -206,6 +289,26 @@ impl RunConfig {
                 convention,
                 format,
             } => {
+                if object == ObjectName::LoadingLaw {
+                    let given = [("--theta", &theta), ("--xh", &xh), ("--T", &t), ("--coefficients", &coefficients)];
+                    let more = [("--degree", &degree), ("--rbar-s", &rbar_s)];
+                    return loading_law_series(LawFlags {
+                        order: &order,
+                        nu: nu.as_deref(),
+                        ratio: ratio.as_deref(),
+                        refused: given
+                            .into_iter()
+                            .chain(more)
+                            .filter_map(|(k, v)| v.as_ref().map(|v| (k, v.clone())))
+                            .collect(),
+                        shape,
+                        convention,
+                        format,
+                    });
+                }
+                if let Some(r) = &ratio {
+                    return Err(ModelError::new("--ratio", r, "only the loading-law series takes a ratio"));
+                }
                 if let (Some(c), false) = (convention, object == ObjectName::Sliding) {
                     return Err(ModelError::new(
                         "--convention",
@@ -222,6 +325,7 @@ impl RunConfig {
                         SeriesObject::PolynomialAdhesion
                     }
                     ObjectName::Adhesion => SeriesObject::Adhesion,
+                    ObjectName::LoadingLaw => unreachable!("series loading-law returned above"),
                     ObjectName::Sliding => match shape {
                         ShapeName::Parabolic => SeriesObject::Sliding(SlidingShape::Parabolic),
                         ShapeName::Sinusoidal => SeriesObject::Sliding(SlidingShape::Sinusoidal),

@@ -3,6 +3,7 @@
 
 pub mod accuracy;
 pub mod chebyshev;
+pub mod complex_series;
 pub mod evaluate;
 pub mod exact;
 pub mod gauss_jacobi_f64;
