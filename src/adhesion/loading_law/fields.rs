@@ -89,6 +89,10 @@ impl LawCollocation {
         let p = self.prec;
         let (side, eta_x) = self.entry(chi);
         let span = Float::with_val(p, &self.lambda_max - &eta_x);
+        if !(span > 0) {
+            // A point at an end (entered last, rounded onto it): sigma vanishes there.
+            return Complex::new(p);
+        }
         let inc = &self.inc;
         let mut acc = Complex::new(p);
         for q in 0..rule.len() {
@@ -125,9 +129,10 @@ impl LawCollocation {
 
 #[cfg(test)]
 mod tests {
-    use super::super::collocation::{solve, LawSetting};
+    use super::super::verified::solve_law_collocation;
     use super::*;
-    use crate::model::{Convention, Exact, Material};
+    use crate::model::{Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape};
+    use crate::numerics::precision::bits_for_digits;
     use rug::float::Constant;
 
     /// The independent residual check of issue 12: the returned stresses put into the original
@@ -138,32 +143,50 @@ mod tests {
     ///   (1/pi) PV int sigma_hat(chi') cot(chi - chi') d chi' + i beta sigma_hat(chi) = pi chi + i psi_hat(chi).
     /// In `periodic` the punch does not turn with the half-plane: the right side carries
     /// - beta P1/L (THEORY.md section 8). Also: the stresses' integral is the load (1 + i n) P2.
-    /// Measured (n = 1/5, nu = 0.3, Lambda = pi/6, 16 nodes; c/l = -0.0418 paper, -0.0247
-    /// periodic): load to 2.9e-20, [1.8] to 3e-18 .. 1.1e-16 at three points, both conventions.
+    /// The solution is `verified::solve_law`'s at 20 digits requested with the checked points
+    /// among its points, and the check must confirm its claim: residuals below 10 x 10^-claimed
+    /// on the scale pi Lambda of sigma_hat. Measured (n = 1/5, nu = 0.3, Lambda = pi/6; c/l =
+    /// -0.0418 paper, -0.0247 periodic; `cargo test --release --lib loading_law::fields --
+    /// --nocapture`): claimed 26.2 / 26.8 digits, load to 2.6e-32 / 1.5e-32, [1.8] to
+    /// 3.7e-28 .. 3.3e-27 at the three points (26.7 digits or more on that scale).
     #[test]
     fn stresses_satisfy_the_surface_relations() {
         let material =
             Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
         for convention in [Convention::Paper, Convention::PeriodicSurface] {
-            check_surface_relations(LawSetting::linear(
+            let problem = LoadingLawProblem::new(
                 material.clone(),
-                Exact::new(1.into(), 5.into()),
-                Exact::new(1.into(), 6.into()),
+                Period::Finite(Exact::from_integer(1.into())),
+                PunchShape::Parabolic { k: Exact::from_integer(1.into()) },
+                LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
+                LawSize::HalfLength(Exact::new(1.into(), 6.into())),
                 convention,
-            ));
+            )
+            .unwrap();
+            // The points of the check, so that the claim covers the stresses there.
+            let xh: Vec<Exact> =
+                [(-3, 5), (1, 10), (11, 20)].iter().map(|&(n, d)| Exact::new(n.into(), d.into())).collect();
+            let (solution, sol) = solve_law_collocation(&problem, &xh, 20).unwrap();
+            let claimed = solution.digits.headline;
+            assert!(claimed >= 20.0, "{:?}", solution.digits);
+            check_surface_relations(&sol, convention, claimed);
         }
     }
 
-    fn check_surface_relations(setting: LawSetting) {
-        let prec = 140;
-        let sol = solve(&setting, 16, 100, prec).unwrap();
-        let rule = TanhSinh::new(90, 1.0, prec);
+    fn check_surface_relations(sol: &LawCollocation, convention: Convention, claimed: f64) {
+        let prec = sol.prec;
+        let rule = TanhSinh::new(bits_for_digits(claimed.ceil() as u32 + 4), 1.0, prec);
         let lam = sol.lambda_max.clone();
         let gam = sol.centre_at(&lam);
         let (chi_a, chi_b) = (Float::with_val(prec, &gam - &lam), Float::with_val(prec, &gam + &lam));
         let pi = Float::with_val(prec, Constant::Pi);
         // Quadrature over the contact of f(chi'), split at chi0, tanh-sinh on each part.
-        let outer = TanhSinh::new(70, 1.0, prec);
+        // The outer rule well beyond the claim: sigma_hat is not smooth at chi = 0 (measured: at
+        // claim + 12 digits the load's quadrature is still off by 2e-23, at claim + 24 by 1.5e-32).
+        let outer = TanhSinh::new(bits_for_digits(claimed.ceil() as u32 + 24), 1.0, prec);
+        // The claim on the scale of these units: q ~ E* k l is sigma_hat ~ pi Lambda; 10x slack
+        // for the operator's amplification.
+        let tolerance = 10.0 * 10f64.powf(-claimed) * std::f64::consts::PI * lam.to_f64();
         let integrate = |lo: &Float, hi: &Float, f: &dyn Fn(&Float) -> Complex| {
             let span = Float::with_val(prec, hi - lo);
             let mut acc = Complex::new(prec);
@@ -184,13 +207,13 @@ mod tests {
         let want = Complex::with_val(prec, (&p, sol.inc.law_at(&p))) * &pi;
         let e = Float::with_val(prec, Complex::with_val(prec, &total - &want).abs_ref()).to_f64();
         eprintln!(
-            "{:?} c/l = {}: load {} vs {}: {e:.1e}",
-            setting.convention,
+            "{:?} c/l = {}: load {} vs {}: {e:.1e} (claimed {claimed:.1} digits)",
+            convention,
             sol.centre_ratio().to_f64(),
             total,
             want
         );
-        assert!(e < 1e-15 * want.real().to_f64(), "{e:e}");
+        assert!(e < 10.0 * 10f64.powf(-claimed) * want.real().to_f64(), "{e:e}");
         for frac in [-0.6, 0.1, 0.55] {
             let chi0 = Float::with_val(prec, &gam + Float::with_val(prec, &lam * frac));
             let s0 = sol.sigma_hat(&chi0, &rule);
@@ -221,12 +244,12 @@ mod tests {
             // `periodic`: the punch does not rotate with the half-plane, (E*/2) v' = (E*/2) g' - beta P1/L
             // in the paper's frame, i.e. - beta n P in these units.
             let mut rhs = Complex::with_val(prec, (Float::with_val(prec, &pi * &chi0), sol.psi_hat(&chi0, &rule)));
-            if setting.convention == Convention::PeriodicSurface {
+            if convention == Convention::PeriodicSurface {
                 rhs -= Float::with_val(prec, &sol.inc.beta * sol.inc.law_at(&sol.load()));
             }
             let e = Float::with_val(prec, Complex::with_val(prec, &lhs - &rhs).abs_ref()).to_f64();
-            eprintln!("{:?} chi0 = gamma + {frac} lambda: [1.8] {lhs} vs {rhs}: {e:.1e}", setting.convention);
-            assert!(e < 1e-12, "{e:e}");
+            eprintln!("{convention:?} chi0 = gamma + {frac} lambda: [1.8] {lhs} vs {rhs}: {e:.1e}");
+            assert!(e < tolerance, "{e:e} against {tolerance:e}");
         }
     }
 }

@@ -244,7 +244,7 @@ fn run(
     extra_nodes: usize,
     target_bits: u32,
     prec: u32,
-) -> Result<LawValues, AdhesionError> {
+) -> Result<(LawValues, LawCollocation), AdhesionError> {
     let (unit, over) = match (problem.size(), problem.period()) {
         (LawSize::HalfLength(l), Period::Finite(big_l)) => (Unit::Period(big_l.clone()), l / big_l),
         (LawSize::HalfLength(l), Period::Infinite) => (Unit::Single(l.clone()), Exact::from_integer(1.into())),
@@ -271,7 +271,7 @@ fn run(
             .into());
         }
     }
-    values(problem, &unit, &sol, xh, target_bits)
+    Ok((values(problem, &unit, &sol, xh, target_bits)?, sol))
 }
 
 fn values(
@@ -332,6 +332,16 @@ fn values(
 /// Solves `problem` for `digits` digits, verified by a second, finer run (module doc). `xh` are
 /// points of the final contact in (-1, 1).
 pub fn solve_law(problem: &LoadingLawProblem, xh: &[Exact], digits: u32) -> Result<LawSolution, AdhesionError> {
+    solve_law_collocation(problem, xh, digits).map(|(solution, _)| solution)
+}
+
+/// [`solve_law`] and the first run's collocation (whose values it returns): for checks that need
+/// the solution as a function, such as the residual of [1.8] in [`super::fields`]' tests.
+pub fn solve_law_collocation(
+    problem: &LoadingLawProblem,
+    xh: &[Exact],
+    digits: u32,
+) -> Result<(LawSolution, LawCollocation), AdhesionError> {
     for h in xh {
         if !(h.abs() < Exact::from_integer(1.into())) {
             return Err(AdhesionError::InvalidArgument {
@@ -342,8 +352,8 @@ pub fn solve_law(problem: &LoadingLawProblem, xh: &[Exact], digits: u32) -> Resu
         }
     }
     let bits = bits_for_digits(digits) + 8;
-    let first = run(problem, xh, 0, bits, bits + 32)?;
-    let second = run(problem, xh, 8, bits + 16, bits + 56)?;
+    let (first, collocation) = run(problem, xh, 0, bits, bits + 32)?;
+    let (second, _) = run(problem, xh, 8, bits + 16, bits + 56)?;
     let cap = digits as f64 + 8.0;
     let dig = |u: &Float, v: &Float, scale: &Float| {
         let d = Float::with_val(u.prec().max(v.prec()), u - v);
@@ -378,7 +388,7 @@ pub fn solve_law(problem: &LoadingLawProblem, xh: &[Exact], digits: u32) -> Resu
         }
     }
     let digits = LawDigits { ends, loads, fields, headline, friction, end_phases };
-    Ok(LawSolution { values: first, digits })
+    Ok((LawSolution { values: first, digits }, collocation))
 }
 
 #[cfg(test)]
