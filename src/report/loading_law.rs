@@ -276,6 +276,21 @@ pub fn table(s: &mut Section, rows: &[Row], requested: u32) {
         s.markdown.push('\n');
     }
     s.markdown.push('\n');
+    for r in rows {
+        let Ok(sol) = &r.solution else { continue };
+        let Some((_, _, at)) = friction(&r.problem, sol) else { continue };
+        let st = &sol.values.stresses;
+        if [st.first(), st.last()].iter().flatten().any(|p| exact_series::q_text(&p.xh) == at) {
+            let _ = writeln!(
+                s.markdown,
+                "`{}` ({}): the largest sampled |q1|/q2 is at the outermost profile point xh = {at}, rising toward \
+                 that end: complete adhesion would slip first near it, and the sampled value is a lower bound of the \
+                 friction needed there.\n",
+                r.scene,
+                r.problem.convention().name()
+            );
+        }
+    }
     if !refusals.is_empty() {
         let _ = writeln!(s.markdown, "Refusals, as stated:\n");
         for r in &refusals {
