@@ -31,9 +31,10 @@ use std::time::Instant;
 
 /// Digits asked of the full report's solves. Measured on the shipped scene (lambda = pi/6; two
 /// runs of 19 and 32 collocation nodes; 20.0 / 20.0 / 19.1 / 13.9 digits verified for ends, loads,
-/// path, stresses): 52 s of a 454 s report run on 2 cores at load average 6.3 (the same report
-/// takes ~141 s on a quiet machine, so ~17 s quiet); its `periodic` twin took 133 s in that run
-/// (`cargo run --release --locked -q -- report --out /tmp/rep`, `timings.md`).
+/// path, stresses): 28.5 s of a 218.6 s report run, 52 s of a 454 s one (2 cores shared, load
+/// average 3-7; the report took ~141 s before this section on a quieter machine); its `periodic`
+/// twin took 133 s in the second run (`cargo run --release --locked -q -- report --out /tmp/rep`,
+/// `timings.md`).
 pub const DIGITS: u32 = 12;
 
 /// Digits asked in the fast profile (snapshot test).
