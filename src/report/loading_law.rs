@@ -33,7 +33,7 @@ use std::time::Instant;
 /// runs of 19 and 32 collocation nodes; 20.0 / 20.0 / 19.1 / 13.9 digits verified for ends, loads,
 /// path, stresses): 28.5 s of a 218.6 s report run, 52 s of a 454 s one (2 cores shared, load
 /// average 3-7; the report took ~141 s before this section on a quieter machine); its `periodic`
-/// twin took 133 s in the second run (`cargo run --release --locked -q -- report --out /tmp/rep`,
+/// twin took 133 s in the 454 s run (`cargo run --release --locked -q -- report --out /tmp/rep`,
 /// `timings.md`).
 pub const DIGITS: u32 = 12;
 
