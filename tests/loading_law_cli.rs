@@ -208,6 +208,27 @@ fn shipped_scene_solves_with_its_verified_digits() {
     let warnings = v["warnings"].as_array().unwrap();
     assert_eq!(warnings.len(), 2, "{v}");
     assert!(warnings.iter().all(|w| w.as_str().unwrap().contains("oscillating singularity")), "{v}");
+    // The loading path (from the same runs): l_j = j l/16, a_j + b_j = 2 l_j, b_j - a_j = 2 c_j,
+    // P1_j = P2_j/5, P2 growing, the last contact the final one, to the path's digits.
+    let dp = digits(&v["accuracy"]["path"]);
+    assert!(dp >= d, "{v}");
+    let path = v["path"].as_array().unwrap();
+    assert_eq!(path.len(), 16);
+    let mut last = Float::with_val(256, 0);
+    for (j, p) in path.iter().enumerate() {
+        let (lj, aj, bj, cj) = (f(&p["l"]), f(&p["a"]), f(&p["b"]), f(&p["c"]));
+        let want = Float::with_val(256, &l * (j as u32 + 1)) / 16u32;
+        assert!(agree(&lj, &want, &lj, 12.0), "{j}: {p}");
+        assert!(agree(&Float::with_val(256, &aj + &bj), &Float::with_val(256, &lj * 2u32), &lj, 12.0), "{j}: {p}");
+        assert!(agree(&Float::with_val(256, &bj - &aj), &Float::with_val(256, &cj * 2u32), &lj, 12.0), "{j}: {p}");
+        let (p1j, p2j) = (f(&p["P1"]), f(&p["P2"]));
+        assert!(agree(&Float::with_val(256, &p1j * 5u32), &p2j, &p2j, 12.0), "{j}: {p}");
+        assert!(p2j > last, "{j}: {p}");
+        last = p2j;
+    }
+    for k in ["a", "b", "c", "P1", "P2"] {
+        assert_eq!(path[15][k], v[k], "{k}");
+    }
 }
 
 /// The same law as the polynomial ["0", "1/5"], given the load the shipped scene's 20-digit run
@@ -265,7 +286,8 @@ fn periodic_convention_moves_the_centre() {
 }
 
 /// The report's scene sections meet the loading-law scene without solving it: method choice and
-/// load-size curves say it is not in the report yet; shapes, orders and conventions skip it.
+/// load-size curves point to the section "Loading law" (`report::loading_law`, checked in
+/// tests/report_snapshot.rs); shapes, orders and conventions skip it.
 #[test]
 fn report_sections_skip_the_loading_law_scene() {
     use periodic_contact::report::section::{Ctx, Profile};

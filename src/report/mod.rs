@@ -10,6 +10,8 @@
 //!    ([`conventions`]);
 //! - punch shapes: the scenes' polynomial and circular profiles against the closed-form
 //!   frictionless load of THEORY.md section 9 ([`shapes`]; no text when no scene has one);
+//! - loading law: Problem 2 under P1 = N(P2), the scenes' loading-law problems with their loading
+//!   path, stresses and the friction they need ([`loading_law`]; no text when no scene has one);
 //! 7. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
 //!    deterministic and snapshot-tested).
 //!
@@ -20,6 +22,7 @@ pub mod chart;
 pub mod choice;
 pub mod coefficients;
 pub mod conventions;
+pub mod loading_law;
 pub mod orders;
 pub mod runner;
 pub mod section;
@@ -137,7 +140,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     std::fs::create_dir_all(&opts.out).map_err(io(&opts.out))?;
     let scenes = load_scenes(&opts.scenes)?;
     let progress = if opts.progress {
-        let pb = ProgressBar::new(8);
+        let pb = ProgressBar::new(9);
         pb.set_style(
             ProgressStyle::with_template("{spinner} [{elapsed_precise}] section {pos}/{len} {wide_msg}")
                 .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -175,6 +178,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     sections.push(timed("5. load-size curves", &mut ctx, &mut |c| Ok(sweeps::section(c, &scenes)))?);
     sections.push(timed("6. paper vs periodic", &mut ctx, &mut |c| Ok(conventions::section(c, &scenes)))?);
     sections.push(timed("punch shapes", &mut ctx, &mut |c| Ok(shapes::section(c, &scenes)))?);
+    sections.push(timed("loading law", &mut ctx, &mut |c| Ok(loading_law::section(c, &scenes)))?);
     ctx.progress.finish_and_clear();
 
     let mut md = String::new();

@@ -168,9 +168,9 @@ fn why(e: impl Into<crate::error::Error>) -> String {
 /// contacts), so that rounding never shows in their measured errors.
 pub const SERIES_BITS: u32 = 128;
 
-/// Why a loading-law scene (THEORY.md section 10) has no row in the report's method sections yet.
+/// Why a loading-law scene (THEORY.md section 10) has no row in the report's method sections.
 pub const LOADING_LAW_NOT_IN_REPORT: &str =
-    "the loading-law problem is solved by `periodic-contact solve` (MPFR only); the report has no section for it yet";
+    "the loading-law problem is solved by `periodic-contact solve` (MPFR only) and in the section \"Loading law\", not by this section's methods";
 
 /// Runs `knob` on `problem`. Errors are the method's own (no solution, no convergence, not
 /// applicable), as text for the report.

@@ -3,7 +3,10 @@
 //! rule of [`crate::numerics::accuracy`], each number with the digits its group verified:
 //! - `ends` for lambda, a, b, c, l and the points' x (scale l);
 //! - `loads` for P1, P2 (scale P2);
-//! - `fields` for psi (scale k l), phi (k l^2), q1 and q2 (E* k l), the minimum over the points.
+//! - `fields` for psi (scale k l), phi (k l^2), q1 and q2 (E* k l), the minimum over the points;
+//! - `path` for the loading path (`"path"`: l_j = j l/16, j = 1..=16, with lambda_j, a_j, b_j, c_j
+//!   on the scale l_j and P1_j, P2_j on P2_j;
+//!   [`crate::adhesion::loading_law::verified::PATH_STEPS`]), the minimum over the path.
 //!
 //! Derived here: `friction_needed`, the friction coefficient complete adhesion needs at the
 //! printed points, max |q1|/q2 over the points where q2 > 0 (sampled at the points only, not a
@@ -19,8 +22,8 @@
 //! toward the ends, so it is given against the distance.
 
 use super::render::{digits_text, Measured, Provenance};
-use crate::adhesion::loading_law::verified::{LawPoint, LawSolution};
-use crate::model::{LoadingLaw, LoadingLawProblem};
+use crate::adhesion::loading_law::verified::{LawPathPoint, LawPoint, LawSolution};
+use crate::model::{Exact, LoadingLaw, LoadingLawProblem};
 use crate::numerics::exact::to_float;
 use rug::Float;
 use serde_json::{json, Map, Value};
@@ -64,18 +67,59 @@ impl LawScales {
 /// the accuracy, the error scale of that ratio, the point's xh text), or None when no point has
 /// q2 > 0.
 pub fn friction_needed(points: &[LawPoint], stress: &Float, fields: f64) -> Option<(Float, Float, String)> {
+    friction_needed_of(points.iter().map(|p| (&p.xh, &p.q1, &p.q2)), stress, fields)
+}
+
+/// [`friction_needed`] over (xh, q1, q2) triples (the report's profiles,
+/// [`crate::adhesion::loading_law::verified::LawStress`]).
+pub fn friction_needed_of<'a>(
+    points: impl IntoIterator<Item = (&'a Exact, &'a Float, &'a Float)>,
+    stress: &Float,
+    fields: f64,
+) -> Option<(Float, Float, String)> {
     let noise = Float::with_val(stress.prec(), stress * Float::with_val(64, 10f64.powf(-fields)));
     let mut best: Option<(Float, Float, String)> = None;
-    for pt in points.iter().filter(|pt| pt.q2 > noise) {
-        let q1 = Float::with_val(pt.q1.prec(), pt.q1.abs_ref());
-        let ratio = Float::with_val(pt.q2.prec(), &q1 / &pt.q2);
+    for (xh, q1, q2) in points.into_iter().filter(|(_, _, q2)| **q2 > noise) {
+        let q1 = Float::with_val(q1.prec(), q1.abs_ref());
+        let ratio = Float::with_val(q2.prec(), &q1 / q2);
         if best.as_ref().is_none_or(|b| ratio > b.0) {
-            let q2sq = Float::with_val(pt.q2.prec(), pt.q2.square_ref());
-            let scale = Float::with_val(pt.q2.prec(), stress * Float::with_val(pt.q2.prec(), &pt.q2 + &q1)) / q2sq;
-            best = Some((ratio, scale, exact_series::q_text(&pt.xh)));
+            let q2sq = Float::with_val(q2.prec(), q2.square_ref());
+            let scale = Float::with_val(q2.prec(), stress * Float::with_val(q2.prec(), q2 + &q1)) / q2sq;
+            best = Some((ratio, scale, exact_series::q_text(xh)));
         }
     }
     best
+}
+
+/// The xh of the points (xh, q2) where q2 < 0 beyond the accuracy (a tension warning each).
+pub fn tension_points_of<'a>(
+    points: impl IntoIterator<Item = (&'a Exact, &'a Float)>,
+    stress: &Float,
+    fields: f64,
+) -> Vec<&'a Exact> {
+    let noise = Float::with_val(stress.prec(), stress * Float::with_val(64, 10f64.powf(-fields)));
+    points.into_iter().filter(|(_, q2)| Float::with_val(q2.prec(), -*q2) > noise).map(|(xh, _)| xh).collect()
+}
+
+/// The loading path as JSON: one object per contact l_j (values on the scales l_j and P2_j of
+/// that contact, `path` digits).
+pub fn path_json(path: &[LawPathPoint], digits: f64, requested: u32) -> Value {
+    let print = |x: &Float, scale: &Float| Measured::mpfr(x.clone(), scale, digits).print(requested);
+    Value::Array(
+        path.iter()
+            .map(|p| {
+                json!({
+                    "lambda": print(&p.lambda, &p.lambda),
+                    "l": print(&p.l, &p.l),
+                    "a": print(&p.a, &p.l),
+                    "b": print(&p.b, &p.l),
+                    "c": print(&p.c, &p.l),
+                    "P1": print(&p.p1, &p.p2),
+                    "P2": print(&p.p2, &p.p2),
+                })
+            })
+            .collect(),
+    )
 }
 
 /// The JSON object of a verified loading-law solution at `requested` digits.
@@ -109,7 +153,12 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
     m.insert("digits_verified".into(), json!(digits_text(d.headline)));
     m.insert(
         "accuracy".into(),
-        json!({"ends": digits_text(d.ends), "loads": digits_text(d.loads), "fields": digits_text(d.fields)}),
+        json!({
+            "ends": digits_text(d.ends),
+            "loads": digits_text(d.loads),
+            "fields": digits_text(d.fields),
+            "path": digits_text(d.path),
+        }),
     );
     let points: Vec<Value> = v
         .points
@@ -126,6 +175,7 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         })
         .collect();
     m.insert("points".into(), Value::Array(points));
+    m.insert("path".into(), path_json(&v.path, d.path, requested));
     let mut warnings = tension_warnings(&v.points, &sc.stress, d.fields, requested);
     for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
         if end.tension_within > 0 {
@@ -188,10 +238,10 @@ fn end_stress_json(sol: &LawSolution, requested: u32) -> Value {
 
 /// One warning per point where q2 < 0 beyond the fields' accuracy.
 fn tension_warnings(points: &[LawPoint], stress: &Float, fields: f64, requested: u32) -> Vec<Value> {
-    let noise = Float::with_val(stress.prec(), stress * Float::with_val(64, 10f64.powf(-fields)));
+    let tension = tension_points_of(points.iter().map(|p| (&p.xh, &p.q2)), stress, fields);
     points
         .iter()
-        .filter(|pt| Float::with_val(pt.q2.prec(), -&pt.q2) > noise)
+        .filter(|pt| tension.contains(&&pt.xh))
         .map(|pt| {
             json!(format!(
                 "tension: q2 = {} < 0 at xh = {}; complete adhesion needs the interface to carry tension there",

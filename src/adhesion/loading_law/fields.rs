@@ -166,7 +166,7 @@ mod tests {
             // The points of the check, so that the claim covers the stresses there.
             let xh: Vec<Exact> =
                 [(-3, 5), (1, 10), (11, 20)].iter().map(|&(n, d)| Exact::new(n.into(), d.into())).collect();
-            let (solution, sol) = solve_law_collocation(&problem, &xh, 20).unwrap();
+            let (solution, sol) = solve_law_collocation(&problem, &xh, &[], 20).unwrap();
             let claimed = solution.digits.headline;
             assert!(claimed >= 20.0, "{:?}", solution.digits);
             check_surface_relations(&sol, convention, claimed);

@@ -4,6 +4,11 @@
 //! second with 8 more nodes, 24 more bits and a finer rule; digits = -log10 of their difference
 //! over the quantity's scale (l for a, b, c; P2 for the loads; k l for psi; k l^2 for phi;
 //! E* k l for the stresses), as everywhere ([`crate::numerics::accuracy`]).
+//! The loading path comes from the same runs: one collocation on [0, Lambda] holds every smaller
+//! contact (the Volterra structure), so at l_j = j l/[`PATH_STEPS`] the ends and loads are
+//!   c_j = (L/pi) gamma(lambda_j) = (L/pi) lambda_j Gam(j/PATH_STEPS), a_j = l_j - c_j,
+//!   b_j = l_j + c_j, P2_j = E* k (L/pi)^2 P(lambda_j) ([`LawCollocation::load_at`]), P1_j = N(P2_j),
+//! their digits on the scales l_j and P2_j of each point.
 //! Scalings (chi = pi x/L, fields of [`super::fields`]):
 //!   P2 = E* k (L/pi)^2 P(Lambda), P1 = n P2, l = L Lambda/pi, c = (L/pi) gamma(Lambda),
 //!   psi = -(2 k L/pi^2) psi_hat, q2 + i q1 = E* k (L/pi^2) sigma_hat,
@@ -40,6 +45,42 @@ pub struct LawPoint {
     pub q2: Float,
 }
 
+/// The number of steps of the loading path: l_j = j l/PATH_STEPS, j = 1..=PATH_STEPS.
+pub const PATH_STEPS: u32 = 16;
+
+/// One contact of the loading path (module doc): the state when the half-length was l_j.
+#[derive(Debug, Clone)]
+pub struct LawPathPoint {
+    /// lambda_j = pi l_j/L.
+    pub lambda: Float,
+    /// l_j = (a_j + b_j)/2.
+    pub l: Float,
+    /// Trailing end a_j.
+    pub a: Float,
+    /// Leading end b_j.
+    pub b: Float,
+    /// Centre c_j = (b_j - a_j)/2.
+    pub c: Float,
+    /// Normal load P2_j.
+    pub p2: Float,
+    /// Tangential load P1_j = N(P2_j).
+    pub p1: Float,
+}
+
+/// The stresses alone at one point x = c + l xh of the final contact (a profile: no psi, no phi,
+/// whose nested quadrature costs ~100 times more).
+#[derive(Debug, Clone)]
+pub struct LawStress {
+    /// xh in (-1, 1).
+    pub xh: Exact,
+    /// x.
+    pub x: Float,
+    /// Shear traction q1.
+    pub q1: Float,
+    /// Pressure q2.
+    pub q2: Float,
+}
+
 /// One run's dimensional values.
 #[derive(Debug, Clone)]
 pub struct LawValues {
@@ -59,6 +100,10 @@ pub struct LawValues {
     pub p1: Float,
     /// Points.
     pub points: Vec<LawPoint>,
+    /// The loading path, j = 1..=[`PATH_STEPS`] (the last is the final contact).
+    pub path: Vec<LawPathPoint>,
+    /// q1, q2 at the profile points ([`solve_law_sampled`]; empty from [`solve_law`]).
+    pub stresses: Vec<LawStress>,
     /// Collocation nodes.
     pub nodes: usize,
     /// The leading end b, then the trailing end -a ([`super::ends`]).
@@ -86,6 +131,10 @@ pub struct LawDigits {
     pub loads: f64,
     /// psi, phi, q1, q2 at the points.
     pub fields: f64,
+    /// The loading path: a_j, b_j, c_j on the scale l_j, P1_j, P2_j on P2_j, the minimum over j.
+    pub path: f64,
+    /// q1, q2 at the profile points (scale E* k l); the cap when there are none.
+    pub stresses: f64,
     /// Minimum of the above.
     pub headline: f64,
     /// The friction needed near the ends ([`super::ends`]) by the two runs.
@@ -241,6 +290,7 @@ fn size_for_load(
 fn run(
     problem: &LoadingLawProblem,
     xh: &[Exact],
+    stress_xh: &[Exact],
     extra_nodes: usize,
     target_bits: u32,
     prec: u32,
@@ -271,7 +321,7 @@ fn run(
             .into());
         }
     }
-    Ok((values(problem, &unit, &sol, xh, target_bits)?, sol))
+    Ok((values(problem, &unit, &sol, xh, stress_xh, target_bits)?, sol))
 }
 
 fn values(
@@ -279,6 +329,7 @@ fn values(
     unit: &Unit,
     sol: &LawCollocation,
     xh: &[Exact],
+    stress_xh: &[Exact],
     target_bits: u32,
 ) -> Result<LawValues, AdhesionError> {
     let prec = sol.prec;
@@ -314,6 +365,33 @@ fn values(
         let phi = -(acc * &chi) * &phi_scale;
         points.push(LawPoint { xh: h.clone(), x, psi, phi, q1: sigma.imag().clone(), q2: sigma.real().clone() });
     }
+    let stresses = stress_xh
+        .iter()
+        .map(|h| {
+            let x = Float::with_val(prec, &c + Float::with_val(prec, &l * to_float(h, prec)));
+            let chi = Float::with_val(prec, &x / &l_over_pi);
+            let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
+            LawStress { xh: h.clone(), x, q1: sigma.imag().clone(), q2: sigma.real().clone() }
+        })
+        .collect();
+    let path = (1..=PATH_STEPS)
+        .map(|j| {
+            let t = Float::with_val(prec, j) / PATH_STEPS;
+            let lambda_j = Float::with_val(prec, &lambda * &t);
+            let l_j = Float::with_val(prec, &l_over_pi * &lambda_j);
+            let c_j = Float::with_val(prec, &l_over_pi * sol.centre_at(&lambda_j));
+            let p_j = sol.load_at(&t);
+            LawPathPoint {
+                a: Float::with_val(prec, &l_j - &c_j),
+                b: Float::with_val(prec, &l_j + &c_j),
+                c: c_j,
+                l: l_j,
+                lambda: lambda_j,
+                p2: Float::with_val(prec, &p_j * &sol.inc.p2_per_p),
+                p1: sol.inc.law_at(&p_j) * &sol.inc.p2_per_p,
+            }
+        })
+        .collect();
     Ok(LawValues {
         lambda,
         a: Float::with_val(prec, &l - &c),
@@ -323,6 +401,8 @@ fn values(
         p2,
         p1,
         points,
+        path,
+        stresses,
         nodes: sol.phi.len(),
         ends: vec![sol.end_stress(Side::Right, &rule), sol.end_stress(Side::Left, &rule)],
         eps: sol.inc.eps.clone(),
@@ -332,17 +412,31 @@ fn values(
 /// Solves `problem` for `digits` digits, verified by a second, finer run (module doc). `xh` are
 /// points of the final contact in (-1, 1).
 pub fn solve_law(problem: &LoadingLawProblem, xh: &[Exact], digits: u32) -> Result<LawSolution, AdhesionError> {
-    solve_law_collocation(problem, xh, digits).map(|(solution, _)| solution)
+    solve_law_sampled(problem, xh, &[], digits)
 }
 
-/// [`solve_law`] and the first run's collocation (whose values it returns): for checks that need
-/// the solution as a function, such as the residual of [1.8] in [`super::fields`]' tests.
+/// [`solve_law`] with, besides the points `xh` (all fields), the stresses q1, q2 alone at the
+/// profile points `stress_xh` in (-1, 1) ([`LawValues::stresses`], digits
+/// [`LawDigits::stresses`]), from the same two runs.
+pub fn solve_law_sampled(
+    problem: &LoadingLawProblem,
+    xh: &[Exact],
+    stress_xh: &[Exact],
+    digits: u32,
+) -> Result<LawSolution, AdhesionError> {
+    solve_law_collocation(problem, xh, stress_xh, digits).map(|(solution, _)| solution)
+}
+
+/// [`solve_law_sampled`] and the first run's collocation (whose values it returns): for checks
+/// that need the solution as a function, such as the residual of [1.8] in [`super::fields`]'
+/// tests.
 pub fn solve_law_collocation(
     problem: &LoadingLawProblem,
     xh: &[Exact],
+    stress_xh: &[Exact],
     digits: u32,
 ) -> Result<(LawSolution, LawCollocation), AdhesionError> {
-    for h in xh {
+    for h in xh.iter().chain(stress_xh) {
         if !(h.abs() < Exact::from_integer(1.into())) {
             return Err(AdhesionError::InvalidArgument {
                 parameter: "points",
@@ -352,8 +446,8 @@ pub fn solve_law_collocation(
         }
     }
     let bits = bits_for_digits(digits) + 8;
-    let (first, collocation) = run(problem, xh, 0, bits, bits + 32)?;
-    let (second, _) = run(problem, xh, 8, bits + 16, bits + 56)?;
+    let (first, collocation) = run(problem, xh, stress_xh, 0, bits, bits + 32)?;
+    let (second, _) = run(problem, xh, stress_xh, 8, bits + 16, bits + 56)?;
     let cap = digits as f64 + 8.0;
     let dig = |u: &Float, v: &Float, scale: &Float| {
         let d = Float::with_val(u.prec().max(v.prec()), u - v);
@@ -376,7 +470,20 @@ pub fn solve_law_collocation(
             .min(dig(&p.q1, &q.q1, &ekl))
             .min(dig(&p.q2, &q.q2, &ekl));
     }
-    let headline = ends.min(loads).min(fields);
+    let mut stresses = cap;
+    for (p, q) in u.stresses.iter().zip(&v.stresses) {
+        stresses = stresses.min(dig(&p.q1, &q.q1, &ekl)).min(dig(&p.q2, &q.q2, &ekl));
+    }
+    let mut path = cap;
+    for (p, q) in u.path.iter().zip(&v.path) {
+        path = path
+            .min(dig(&p.a, &q.a, &p.l))
+            .min(dig(&p.b, &q.b, &p.l))
+            .min(dig(&p.c, &q.c, &p.l))
+            .min(dig(&p.p2, &q.p2, &p.p2))
+            .min(dig(&p.p1, &q.p1, &p.p2));
+    }
+    let headline = ends.min(loads).min(fields).min(path).min(stresses);
     let (mut friction, mut end_phases) = (cap, cap);
     for (p, q) in u.ends.iter().zip(&v.ends) {
         let model = -p.phase_error.to_f64().max(1e-300).log10();
@@ -387,7 +494,7 @@ pub fn solve_law_collocation(
             }
         }
     }
-    let digits = LawDigits { ends, loads, fields, headline, friction, end_phases };
+    let digits = LawDigits { ends, loads, fields, path, stresses, headline, friction, end_phases };
     Ok((LawSolution { values: first, digits }, collocation))
 }
 
@@ -435,6 +542,13 @@ mod tests {
         let rel = |a: &Float, b: &Float, scale: f64| Float::with_val(200, a - b).to_f64().abs() / scale;
         assert!(rel(&v.p2, &s.normal_load, s.normal_load.to_f64()) < 1e-12);
         assert!(rel(&v.a, &v.b, 1.0) < 1e-12);
+        // The loading path stays centred (n = 0), ends at the final contact, and its digits hold.
+        assert_eq!(v.path.len(), PATH_STEPS as usize);
+        for p in &v.path {
+            assert!(rel(&p.a, &p.b, p.l.to_f64()) < 1e-12, "path at l = {}", p.l);
+        }
+        assert!(rel(&v.path[PATH_STEPS as usize - 1].p2, &v.p2, v.p2.to_f64()) < 1e-30);
+        assert!(sol.digits.path >= 12.0, "{:?}", sol.digits);
         for (p, (h, r)) in v.points.iter().zip(xh.iter().zip(&s.points)) {
             // psi and q are even, phi odd in x.
             let sign = if h.is_negative() { -1.0 } else { 1.0 };
@@ -589,5 +703,38 @@ mod tests {
         let r = d40.to_f64() / d80.to_f64();
         eprintln!("c/l - single: L = 40 {d40:.3e}, L = 80 {d80:.3e}, ratio {r}");
         assert!((r - 4.0).abs() < 0.04, "{r}");
+    }
+
+    /// The loading path is the restriction of the solution to smaller contacts (the Volterra
+    /// structure): the path point l_8 = l/2 of the solve at l = 1/6 (paper, n = 1/5, nu = 0.3)
+    /// equals an independent solve at l = 1/12 (its own collocation on [0, Lambda/2]) to the
+    /// digits both claim; the profile stresses equal the points' q1, q2 at the same xh.
+    #[test]
+    fn loading_path_is_the_solution_at_smaller_contacts() {
+        let problem = |l: Exact| law_problem(LoadingLaw::Linear(q(1, 5)), LawSize::HalfLength(l), Convention::Paper);
+        let t = std::time::Instant::now();
+        let full = solve_law_sampled(&problem(q(1, 6)), &[q(1, 2)], &[q(-9, 10), q(1, 2)], 8).unwrap();
+        let half = solve_law(&problem(q(1, 12)), &[], 8).unwrap();
+        eprintln!("{:.1}s, digits {:?} and {:?}", t.elapsed().as_secs_f64(), full.digits, half.digits);
+        assert!(full.digits.path >= 8.0 && full.digits.stresses >= 8.0, "{:?}", full.digits);
+        let p = &full.values.path[7];
+        let h = &half.values;
+        let d = full.digits.path.min(half.digits.ends).min(half.digits.loads) - 0.5;
+        let close = |x: &Float, y: &Float, scale: &Float, what: &str| {
+            let e = Float::with_val(200, x - y).to_f64().abs() / scale.to_f64().abs();
+            eprintln!("{what}: {x} vs {y}: {e:.1e}");
+            assert!(e < 10f64.powf(-d), "{what}: {x} vs {y}: {e:e}");
+        };
+        close(&p.l, &h.l, &h.l, "l");
+        close(&p.a, &h.a, &h.l, "a");
+        close(&p.b, &h.b, &h.l, "b");
+        close(&p.c, &h.c, &h.l, "c");
+        close(&p.p2, &h.p2, &h.p2, "P2");
+        close(&p.p1, &h.p1, &h.p2, "P1");
+        // The path is not trivially proportional: c_j/l_j varies along the loading.
+        let ratio = |p: &LawPathPoint| Float::with_val(200, &p.c / &p.l).to_f64();
+        assert!((ratio(&full.values.path[0]) - ratio(p)).abs() > 1e-4);
+        let (s, pt) = (&full.values.stresses[1], &full.values.points[0]);
+        assert_eq!((&s.xh, &s.q1, &s.q2, &s.x), (&pt.xh, &pt.q1, &pt.q2, &pt.x));
     }
 }
