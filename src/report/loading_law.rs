@@ -207,9 +207,55 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
         rows.push(Row { scene: name, problem: p, solution, second: None });
     }
     table(&mut s, &rows, digits);
+    ends_table(&mut s, &rows, digits);
     path_table(&mut s, &rows, digits);
     charts(&mut s, &rows);
     s
+}
+
+/// The ends of the final contact ([`crate::adhesion::loading_law::ends`]): the phase phi of
+/// sigma ~ C (d/l)^(1/2 -+ i eps), the zone where q2 < 0, and |q1|/q2 at d/l = 0.1 .. 1e-4.
+fn ends_table(s: &mut Section, rows: &[Row], requested: u32) {
+    let distances = crate::adhesion::loading_law::ends::DISTANCES;
+    let _ = write!(
+        s.markdown,
+        "Near the ends sigma = q2 + i q1 ~ C (d/l)^(1/2 -+ i eps) (d the distance to the end): its phase rotates \
+         without bound, so the friction complete adhesion needs grows toward each end and q2 changes sign within \
+         d/l = exp(-(pi/2 -+ phi)/eps) (the oscillating singularity). The friction needed is therefore given \
+         against the distance (the full solution, both runs; the phase from d/l = 1e-11 with the change from \
+         1e-9 as its error; `solve --json` key `end_stress`).\n\n| scene | end | phase phi | q2 < 0 within d/l |"
+    );
+    for k in distances {
+        let _ = write!(s.markdown, " \\|q1\\|/q2 at d/l = 1e{k} |");
+    }
+    let _ = write!(s.markdown, " verified (friction / phase) |\n|---|---|---:|---:|");
+    for _ in distances {
+        s.markdown.push_str("---:|");
+    }
+    s.markdown.push_str("---|\n");
+    for r in rows {
+        let Ok(sol) = &r.solution else { continue };
+        let (v, d) = (&sol.values, &sol.digits);
+        let eps = v.eps.to_f64();
+        let zone_digits = if eps > 0.0 { d.end_phases + eps.log10() } else { d.end_phases };
+        for (end, name) in v.ends.iter().zip(["leading (b)", "trailing (-a)"]) {
+            let one = Float::with_val(end.phase.prec(), 1);
+            let _ = write!(
+                s.markdown,
+                "| `{}` ({}) | {name} | {} | {} |",
+                r.scene,
+                r.problem.convention().name(),
+                print_mpfr(&end.phase, &one, d.end_phases, requested),
+                print_mpfr(&end.tension_within, &end.tension_within, zone_digits, requested)
+            );
+            for mu in &end.friction_needed {
+                let text = mu.as_ref().map_or("q2 < 0".to_string(), |mu| print_mpfr(mu, mu, d.friction, requested));
+                let _ = write!(s.markdown, " {text} |");
+            }
+            let _ = writeln!(s.markdown, " {} / {} |", fmt_digits(Some(d.friction)), fmt_digits(Some(d.end_phases)));
+        }
+    }
+    s.markdown.push('\n');
 }
 
 /// The main table (module doc).
