@@ -19,4 +19,6 @@
 pub mod collocation;
 pub mod fields;
 pub mod kernel;
+pub mod kernel_f64;
+pub mod marching;
 pub mod verified;
