@@ -22,3 +22,4 @@ pub mod kernel;
 pub mod kernel_f64;
 pub mod marching;
 pub mod verified;
+pub mod verified_f64;
