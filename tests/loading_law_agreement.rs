@@ -6,7 +6,9 @@
 
 use periodic_contact::adhesion::loading_law::verified::{solve_law, LawSolution};
 use periodic_contact::adhesion::loading_law::verified_f64::{solve_law_f64, LawSolutionF64};
-use periodic_contact::model::{Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape};
+use periodic_contact::model::{
+    Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape,
+};
 
 fn q(n: i64, d: i64) -> Exact {
     Exact::new(n.into(), d.into())
@@ -14,8 +16,15 @@ fn q(n: i64, d: i64) -> Exact {
 
 fn problem(nu: Exact, law: LoadingLaw, size: LawSize, convention: Convention) -> LoadingLawProblem {
     let material = Material::from_contact_modulus(nu, q(1, 1)).unwrap();
-    LoadingLawProblem::new(material, Period::Finite(q(1, 1)), PunchShape::Parabolic { k: q(1, 1) }, law, size, convention)
-        .unwrap()
+    LoadingLawProblem::new(
+        material,
+        Period::Finite(q(1, 1)),
+        PunchShape::Parabolic { k: q(1, 1) },
+        law,
+        size,
+        convention,
+    )
+    .unwrap()
 }
 
 /// Digits of agreement per group (ends, loads, fields) on the scales of `verified`.
@@ -61,4 +70,56 @@ fn check(nu: Exact, n: Exact, size: Exact, convention: Convention) {
 #[test]
 fn f64_marching_agrees_with_mpfr_collocation() {
     check(q(3, 10), q(1, 5), q(1, 6), Convention::Paper);
+}
+
+#[test]
+#[ignore]
+fn f64_matrix_only() {
+    let xh = [q(-9, 10), q(-1, 2), q(0, 1), q(1, 2), q(9, 10)];
+    for nu in [q(3, 10), q(0, 1)] {
+        for n in [q(1, 5), q(1, 2)] {
+            for size in [q(1, 8), q(1, 4)] {
+                for convention in [Convention::Paper, Convention::PeriodicSurface] {
+                    let p = problem(
+                        nu.clone(),
+                        LoadingLaw::Linear(n.clone()),
+                        LawSize::HalfLength(size.clone()),
+                        convention,
+                    );
+                    let t = std::time::Instant::now();
+                    let f = solve_law_f64(&p, &xh);
+                    match f {
+                        Ok(f) => eprintln!(
+                            "nu {nu} n {n} l/L {size} {convention:?}: {:.2}s {:?} c/l {:.6} P2 {:.6}",
+                            t.elapsed().as_secs_f64(),
+                            f.digits,
+                            f.values.c / f.values.l,
+                            f.values.p2
+                        ),
+                        Err(e) => eprintln!("nu {nu} n {n} l/L {size} {convention:?}: {e}"),
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn mpfr_at_nu_zero() {
+    use periodic_contact::adhesion::loading_law::collocation::{solve, LawSetting};
+    let m = Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap();
+    for nodes in [12usize, 16, 24] {
+        let s = LawSetting::linear(m.clone(), q(1, 2), q(1, 8), Convention::Paper);
+        let t = std::time::Instant::now();
+        match solve(&s, nodes, 80, 120) {
+            Ok(sol) => eprintln!(
+                "nodes {nodes}: {:.1}s P {} c/l {}",
+                t.elapsed().as_secs_f64(),
+                sol.load().to_f64(),
+                sol.centre_ratio().to_f64()
+            ),
+            Err(e) => eprintln!("nodes {nodes}: {e}"),
+        }
+    }
 }

@@ -261,10 +261,12 @@ impl Rules {
         radau.push(1.0);
         let m = radau.len();
         let v = nalgebra::DMatrix::from_fn(m, m, |i, j| (j as f64 * radau[i].acos()).cos());
-        let to_cheb = v.try_inverse().ok_or(AdhesionError::NotConverged {
+        let singular = || AdhesionError::NotConverged {
             what: "loading-law march rules",
             reason: "singular Chebyshev matrix".into(),
-        })?;
+        };
+        let to_cheb = v.try_inverse().ok_or_else(singular)?;
+
         let g = gauss_jacobi(o.gauss, 0.0, 0.0).map_err(quad)?;
         let gauss = g.nodes.into_iter().zip(g.weights).collect();
         Ok(Rules { radau, to_cheb, gauss, ts: tanh_sinh_f64(o.bits, 1.0) })
@@ -563,10 +565,18 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         let mut jac: Option<nalgebra::DMatrix<f64>> = None;
         let mut previous = f64::INFINITY;
         let mut done = false;
+        // Near round-off the corrections stall at the noise of the residual times the
+        // conditioning (small nu: ~1e-12); then the iterate of least residual is kept.
+        let mut best = (f64::INFINITY, x.clone());
+        let mut stalls = 0;
         for _ in 0..40 {
             mar.steps += 1;
             let gammas: Vec<f64> = lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect();
             let (r, hist) = mar.residual(&lambdas, &gammas, None)?;
+            let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
+            if rmax < best.0 {
+                best = (rmax, x.clone());
+            }
             if jac.is_none() {
                 jac = Some(jacobian(&mut mar, &x, &lambdas, &gammas, &r, &hist, &install)?);
                 install(&mut mar, &x);
@@ -585,11 +595,22 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
             if !size.is_finite() {
                 break;
             }
-            if size < 4e-15 * x.iter().fold(1f64, |a, v| a.max(v.abs())) {
+            let scale = x.iter().fold(1f64, |a, v| a.max(v.abs()));
+            if size < 4e-15 * scale {
                 done = true;
                 break;
             }
-            if size > 0.1 * previous {
+            if size < 1e-9 * scale {
+                if size > 0.3 * previous {
+                    stalls += 1;
+                }
+                if stalls >= 3 {
+                    x = best.1.clone();
+                    install(&mut mar, &x);
+                    done = true;
+                    break;
+                }
+            } else if size > 0.1 * previous {
                 jac = None;
             }
             previous = size;
