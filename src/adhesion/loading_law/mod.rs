@@ -13,7 +13,12 @@
 //!   principal-value quadrature of the cot kernel) reproduce v' = g' and u' = psi on the
 //!   asymmetric contact (n = 1/5, nu = 0.3) to 1e-16 in both conventions, and carry the load.
 //!
-//! Still to come (issue 12): phi; polynomial laws and profiles; the independent f64 method; verified digits (two runs); the
+//! - [`kernel_f64`], [`marching`], [`verified_f64`]: the second, independent method in `f64`
+//!   (block-by-block marching in lambda, its own kernels; two runs for the digits), reachable by
+//!   `solve --method f64`; agrees with the MPFR method to 15-16 digits at nu = 0.3
+//!   (tests/loading_law_agreement.rs); at nu <= 0.1 both methods fail (marching.rs, Stability).
+//!
+//! Still to come (issue 12): phi; polynomial laws and profiles; verified digits (two runs); the
 //! given-load search; scenes, CLI, report; the asymptotic expansion.
 
 pub mod collocation;
