@@ -21,6 +21,7 @@
 //! Still to come (issue 12): phi; polynomial laws and profiles; verified digits (two runs); the
 //! given-load search; scenes, CLI, report; the asymptotic expansion.
 
+pub mod chebyshev_f64;
 pub mod collocation;
 pub mod fields;
 pub mod kernel;

@@ -210,7 +210,7 @@ pub fn solve_law_f64_with(
     options: &MarchOptions,
 ) -> Result<LawSolutionF64, AdhesionError> {
     for h in xh {
-        if !(h.abs() < Exact::from_integer(1.into())) {
+        if h.abs() >= Exact::from_integer(1.into()) {
             return Err(AdhesionError::InvalidArgument {
                 parameter: "points",
                 value: readable(h),
