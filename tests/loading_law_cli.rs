@@ -1,6 +1,7 @@
 //! Issue 12 on the command line: the loading-law scene keys (`[adhesion] tangential_ratio` or
 //! `loading_law`, with `half_length` or `normal_load`), their refusals, and
-//! `periodic-contact solve` on the shipped scene `scenes/adhesion_loading_law.toml` (MPFR only).
+//! `periodic-contact solve` on the shipped scene `scenes/adhesion_loading_law.toml` (MPFR, and the f64
+//! marching method by `--method f64`).
 //! Three solves in all (each ~20-70 s): the shipped scene at its target (20 digits), the same
 //! law written as a polynomial at the shipped load at 15 digits in text, and the `periodic`
 //! convention at 15 digits.
@@ -142,20 +143,38 @@ fn loading_law_refusals_name_their_parameter() {
 }
 
 #[test]
-fn other_methods_are_refused_naming_method() {
-    for m in ["f64", "series"] {
-        let (code, out, err) = run(&["solve", &shipped(), "--method", m]);
-        assert_eq!(code, 2, "{m}: {err}");
-        assert!(out.is_empty(), "{m}: {out}");
-        assert!(err.contains("--method") && err.contains("\"mpfr\" only"), "{m}: {err}");
+fn series_method_is_refused_naming_method() {
+    let (code, out, err) = run(&["solve", &shipped(), "--method", "series"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(err.contains("--method") && err.contains("\"f64\""), "{err}");
+}
+
+/// `solve --method f64` (the marching method, `verified_f64`): the MPFR answer's keys, the method
+/// named, its own digits (>= 13; 15 measured), and the shipped scene's 20-digit MPFR values of a
+/// and b to 13 digits of l; the scene's `method = "f64"` is honoured.
+#[test]
+fn f64_method_solves_the_shipped_scene() {
+    let v = json(&["solve", &shipped(), "--json", "--method", "f64"]);
+    assert_eq!(v["provenance"]["method"], "f64");
+    assert_eq!(v["provenance"]["convention"], "paper");
+    assert_eq!(v["digits_requested"], "20");
+    let d = digits(&v["digits_verified"]);
+    assert!((13.0..=15.0).contains(&d), "{v}");
+    for k in ["lambda", "a", "b", "c", "l", "P1", "P2", "friction_needed", "friction_needed_at_xh", "warnings"] {
+        assert!(v.get(k).is_some(), "{k}: {v}");
     }
+    let l = f(&v["l"]);
+    let a20 = Float::with_val(256, Float::parse("1.7363491028950174538e-1").unwrap());
+    let b20 = Float::with_val(256, Float::parse("1.5969842304383158796e-1").unwrap());
+    assert!(agree(&f(&v["a"]), &a20, &l, 13.0) && agree(&f(&v["b"]), &b20, &l, 13.0), "{v}");
+    assert_eq!(v["points"].as_array().unwrap().len(), 5);
     let path = scene_file(
         "law_f64.toml",
         &scene("tangential_ratio = \"1/5\"\nhalf_length = \"0.1\"", "[output]\nmethod = \"f64\"\n"),
     );
-    let (code, _, err) = run(&["solve", &path]);
-    assert_eq!(code, 2, "{err}");
-    assert!(err.contains("method"), "{err}");
+    let v = json(&["solve", &path, "--json"]);
+    assert_eq!(v["provenance"]["method"], "f64", "{v}");
 }
 
 /// The shipped scene at 12 digits (its target is 20: `solve scenes/adhesion_loading_law.toml`

@@ -1,5 +1,7 @@
 //! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; issue 12) as JSON: the
-//! verified MPFR solution ([`crate::adhesion::loading_law::verified`]) printed under the accuracy
+//! verified MPFR solution ([`crate::adhesion::loading_law::verified`]), or the f64 marching
+//! method's ([`crate::adhesion::loading_law::verified_f64`], the same keys, its digits from its own
+//! two runs, `provenance.method` = `f64`), printed under the accuracy
 //! rule of [`crate::numerics::accuracy`], each number with the digits its group verified:
 //! - `ends` for lambda, a, b, c, l and the points' x (scale l);
 //! - `loads` for P1, P2 (scale P2);
@@ -22,7 +24,8 @@
 //! toward the ends, so it is given against the distance.
 
 use super::render::{digits_text, Measured, Provenance};
-use crate::adhesion::loading_law::verified::{LawPathPoint, LawPoint, LawSolution};
+use crate::adhesion::loading_law::verified::{LawPathPoint, LawPoint, LawSolution, LawValues};
+use crate::adhesion::loading_law::verified_f64::LawSolutionF64;
 use crate::model::{Exact, LoadingLaw, LoadingLawProblem};
 use crate::numerics::exact::to_float;
 use rug::Float;
@@ -124,6 +127,52 @@ pub fn path_json(path: &[LawPathPoint], digits: f64, requested: u32) -> Value {
 
 /// The JSON object of a verified loading-law solution at `requested` digits.
 pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32) -> Map<String, Value> {
+    let prov = Provenance {
+        method: "mpfr",
+        bits: Some(sol.values.l.prec()),
+        nodes: Some(sol.values.nodes),
+        order: None,
+        convention: Some(p.convention().name()),
+    };
+    answer_json(p, sol, requested, prov)
+}
+
+/// The JSON object of the f64 marching solution: the same keys as [`law_answer_json`], the values
+/// carried exactly into 53-bit numbers and printed under the same rule with the f64 method's
+/// digits; `provenance.nodes` is blocks x points per block.
+pub fn law_answer_json_f64(p: &LoadingLawProblem, sol: &LawSolutionF64, requested: u32) -> Map<String, Value> {
+    let v = &sol.values;
+    let f = |x: f64| Float::with_val(53, x);
+    let values = LawValues {
+        lambda: f(v.lambda),
+        a: f(v.a),
+        b: f(v.b),
+        c: f(v.c),
+        l: f(v.l),
+        p2: f(v.p2),
+        p1: f(v.p1),
+        points: v
+            .points
+            .iter()
+            .map(|q| LawPoint { xh: q.xh.clone(), x: f(q.x), psi: f(q.psi), phi: f(q.phi), q1: f(q.q1), q2: f(q.q2) })
+            .collect(),
+        path: Vec::new(),
+        stresses: Vec::new(),
+        nodes: v.nodes,
+        ends: Vec::new(),
+        eps: f(crate::params::adhesion::AdhesionParamsF64::new(p.material()).eps),
+    };
+    let prov = Provenance {
+        method: "f64",
+        bits: Some(53),
+        nodes: Some(v.blocks * v.nodes),
+        order: None,
+        convention: Some(p.convention().name()),
+    };
+    answer_json(p, &LawSolution { values, digits: sol.digits }, requested, prov)
+}
+
+fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: Provenance) -> Map<String, Value> {
     let v = &sol.values;
     let d = &sol.digits;
     let sc = LawScales::new(p, sol);
@@ -148,7 +197,8 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         friction.as_ref().map_or(Value::Null, |(r, scale, _)| json!(print(r, scale, d.fields))),
     );
     m.insert("friction_needed_at_xh".into(), friction.as_ref().map_or(Value::Null, |(_, _, xh)| json!(xh)));
-    m.insert("end_stress".into(), end_stress_json(sol, requested));
+    let ends = if v.ends.is_empty() { Value::Null } else { end_stress_json(sol, requested) };
+    m.insert("end_stress".into(), ends);
     m.insert("digits_requested".into(), json!(requested.to_string()));
     m.insert("digits_verified".into(), json!(digits_text(d.headline)));
     m.insert(
@@ -157,7 +207,7 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
             "ends": digits_text(d.ends),
             "loads": digits_text(d.loads),
             "fields": digits_text(d.fields),
-            "path": digits_text(d.path),
+            "path": if v.path.is_empty() { Value::Null } else { json!(digits_text(d.path)) },
         }),
     );
     let points: Vec<Value> = v
@@ -175,7 +225,9 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         })
         .collect();
     m.insert("points".into(), Value::Array(points));
-    m.insert("path".into(), path_json(&v.path, d.path, requested));
+    // The f64 method gives neither the path at l_j = j l/16 nor the end stresses: null.
+    let path = if v.path.is_empty() { Value::Null } else { path_json(&v.path, d.path, requested) };
+    m.insert("path".into(), path);
     let mut warnings = tension_warnings(&v.points, &sc.stress, d.fields, requested);
     for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
         if end.tension_within > 0 {
@@ -188,13 +240,6 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         }
     }
     m.insert("warnings".into(), Value::Array(warnings));
-    let prov = Provenance {
-        method: "mpfr",
-        bits: Some(v.l.prec()),
-        nodes: Some(v.nodes),
-        order: None,
-        convention: Some(p.convention().name()),
-    };
     m.insert("provenance".into(), prov.json());
     m
 }

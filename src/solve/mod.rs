@@ -55,10 +55,11 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
         },
         SceneProblem::LoadingLaw(p) => match req.method {
             Method::Mpfr => law_mpfr(p, scene, req),
-            other => Err(Error::input(
+            Method::F64 => law_f64(p, scene, req),
+            Method::Series => Err(Error::input(
                 "--method",
-                other.name(),
-                "the loading-law problem is solved by \"mpfr\" only (its independent f64 method is not written yet)",
+                "series",
+                "the loading-law problem is solved by \"mpfr\" or \"f64\" (no series method yet)",
             )),
         },
     }?;
@@ -194,4 +195,13 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let sol = adhesion::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
     Ok(Value::Object(answer_law::law_answer_json(p, &sol, req.digits)))
+}
+
+fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+    let sol = adhesion::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
+    let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
+    let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
+    // digits_requested states what the user asked, not the f64 cap.
+    m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    Ok(Value::Object(m))
 }

@@ -15,10 +15,20 @@
 //!   asymmetric contact (n = 1/5, nu = 0.3) to 1e-16 in both conventions, and carry the load.
 //! - [`verified`]: dimensional values (a, b, c, P1, P2, psi, phi, q1, q2) with digits from two
 //!   runs, a given half-length or normal load, periodic row or single punch.
+//! - [`ends`]: the stresses at the ends (sigma ~ C (d/l)^(1/2 -+ i eps)), the tension zones of
+//!   the oscillating singularity and the friction complete adhesion needs against the distance;
+//! - [`kernel_f64`], [`marching`], [`verified_f64`]: the second, independent method in `f64`
+//!   (block-by-block marching in lambda, its own kernels; two runs for the digits), reachable by
+//!   `solve --method f64`; agrees with the MPFR method to 15-16 digits at nu = 0.3
+//!   (tests/loading_law_agreement.rs); at nu <= 0.1 it refuses (marching.rs, Stability).
 
+pub mod chebyshev_f64;
 pub mod collocation;
 pub mod ends;
 pub mod fields;
 mod jacobian;
 pub mod kernel;
+pub mod kernel_f64;
+pub mod marching;
 pub mod verified;
+pub mod verified_f64;
