@@ -1,6 +1,9 @@
 //! The loading-law problem in dimensional form with verified digits (THEORY.md section 10): a
-//! periodic row of parabolic punches g = k x^2 indented with complete adhesion under P1 = n P2,
-//! given the final half-length l = (a + b)/2. Two collocation runs ([`super::collocation`]), the
+//! periodic row of parabolic punches g = k x^2, or a single one, indented with complete adhesion
+//! under P1 = N(P2), given the final half-length l = (a + b)/2 or the load. The single punch runs
+//! the same collocation with L = pi U in a length unit U ([`super::kernel::Row::Single`]: U = l
+//! for a given l; for a given load U = 1.3 times the symmetric single punch's half-length, so the
+//! final size is a root inside [0, U]). Two collocation runs ([`super::collocation`]), the
 //! second with 8 more nodes, 24 more bits and a finer rule; digits = -log10 of their difference
 //! over the quantity's scale (l for a, b, c; P2 for the loads; k l for psi; k l^2 for phi;
 //! E* k l for the stresses), as everywhere ([`crate::numerics::accuracy`]).
