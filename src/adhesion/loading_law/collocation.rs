@@ -238,17 +238,7 @@ pub(super) fn edge_integrals(
         let one_in = Complex::with_val(prec, (1, &n));
         let beta_n = Float::with_val(prec, &inc.beta * &n);
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
-            let factor = Float::with_val(prec, &e * sign) + 1u32;
-            if !(factor > 0) {
-                return Err(AdhesionError::NotConverged {
-                    what: "loading-law collocation",
-                    reason: format!(
-                        "the {} end recedes at lambda = {:.4} (the contact must grow at both ends)",
-                        if sign > 0 { "leading" } else { "trailing" },
-                        lambda.to_f64()
-                    ),
-                });
-            }
+            let factor = advance_factor(&e, sign, &lambda)?;
             let d = Float::with_val(prec, &base * &factor);
             let mut k = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec) * &one_in;
             if inc.periodic {
@@ -261,6 +251,23 @@ pub(super) fn edge_integrals(
     // int_0^lambda P' K d eta = lambda^2 int_0^1 s Phi(t s) K ds.
     let l2 = Float::with_val(prec, lambda.square_ref());
     Ok((acc_b * &l2, acc_a * &l2))
+}
+
+/// 1 +- E, the rate at which the leading (`sign` = 1) or trailing (-1) end advances relative to
+/// the half-length; an error when it does not (the contact must grow at both ends).
+pub(super) fn advance_factor(e: &Float, sign: i32, lambda: &Float) -> Result<Float, AdhesionError> {
+    let factor = Float::with_val(e.prec(), e * sign) + 1u32;
+    if factor > 0 {
+        return Ok(factor);
+    }
+    Err(AdhesionError::NotConverged {
+        what: "loading-law collocation",
+        reason: format!(
+            "the {} end recedes at lambda = {:.4} (the contact must grow at both ends)",
+            if sign > 0 { "leading" } else { "trailing" },
+            lambda.to_f64()
+        ),
+    })
 }
 
 /// The residuals (2 per node: leading, trailing) of the state (Phi values, then Gam values),

@@ -83,16 +83,7 @@ pub(super) fn jacobian(
             let beta_n = Float::with_val(prec, &inc.beta * &n);
             let ws = Float::with_val(prec, w * s) * &lambda;
             for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
-                let factor = Float::with_val(prec, &e * sign) + 1u32;
-                if !(factor > 0) {
-                    return Err(AdhesionError::NotConverged {
-                        what: "loading-law collocation",
-                        reason: format!(
-                            "an end recedes at lambda = {:.4} (the contact must grow at both ends)",
-                            lambda.to_f64()
-                        ),
-                    });
-                }
+                let factor = super::collocation::advance_factor(&e, sign, &lambda)?;
                 let d = Float::with_val(prec, &lambda * c) * &factor;
                 let kernel = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec);
                 let log_d = outside_kernel_log_derivative(inc.row, side, &d, &eta, &inc.eps, prec);

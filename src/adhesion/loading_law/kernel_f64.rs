@@ -185,12 +185,18 @@ mod tests {
         let tilt = TiltedPunch::rotation(&f(eta), &eps_m, &ch_m, PREC);
         for (side, ms) in [(Side::Right, kernel::Side::Right), (Side::Left, kernel::Side::Left)] {
             for d in [1e-9, 0.01, 0.3, 0.7] {
-                close(k.outside(side, d, eta), kernel::outside_kernel(ms, &f(d), &f(eta), &eps_m, PREC));
+                close(
+                    k.outside(side, d, eta),
+                    kernel::outside_kernel(kernel::Row::Periodic, ms, &f(d), &f(eta), &eps_m, PREC),
+                );
                 close(k.tilt_outside(side, d, eta), tilt.outside(ms, &f(d), &f(eta), &eps_m, &ch_m, PREC));
             }
         }
         for (dl, dr) in [(1e-9, 1.2 - 1e-9), (0.3, 0.9), (1.1, 0.1), (0.6, 0.6)] {
-            close(k.flat_stress(dl, dr, eta), kernel::flat_punch_stress(&f(dl), &f(dr), &f(eta), &eps_m, &ch_m, PREC));
+            close(
+                k.flat_stress(dl, dr, eta),
+                kernel::flat_punch_stress(kernel::Row::Periodic, &f(dl), &f(dr), &f(eta), &eps_m, &ch_m, PREC),
+            );
             close(k.tilt_stress(dl, dr, eta), tilt.stress(&f(dl), &f(dr), &f(eta), &eps_m, PREC));
         }
         let single = KernelF64 { single: true, ..k };
@@ -201,5 +207,16 @@ mod tests {
         }
         let (a, b) = (single.flat_stress(0.3, 0.9, 0.6), k.flat_stress(0.3 * s, 0.9 * s, 0.6 * s) * s);
         assert!((a - b).norm() < 1e-7 * a.norm(), "{a} vs {b}");
+        // The single punch against the MPFR kernel's Row::Single.
+        for (side, ms) in [(Side::Right, kernel::Side::Right), (Side::Left, kernel::Side::Left)] {
+            close(
+                single.outside(side, 0.3, 0.6),
+                kernel::outside_kernel(kernel::Row::Single, ms, &f(0.3), &f(0.6), &eps_m, PREC),
+            );
+        }
+        close(
+            single.flat_stress(0.3, 0.9, 0.6),
+            kernel::flat_punch_stress(kernel::Row::Single, &f(0.3), &f(0.9), &f(0.6), &eps_m, &ch_m, PREC),
+        );
     }
 }
