@@ -351,3 +351,22 @@ fn single_punch_scene_solves() {
     assert!(v["lambda"].is_null(), "no lambda = pi l/L without a period: {out}");
     assert!(v["digits_verified"].as_str().unwrap().parse::<f64>().unwrap() >= 12.0, "{out}");
 }
+
+/// nu = 0, n = 1/2 (the open case): MPFR verifies only ~2 of 12 digits and says so in a
+/// warning naming the requested digits (`cargo run --release --example loading_law_small_nu`).
+#[test]
+fn small_nu_shortfall_is_a_warning() {
+    let text = scene("tangential_ratio = \"1/2\"\nhalf_length = \"1/8\"", "").replace("\"0.3\"", "\"0\"");
+    let path = scene_file("law_nu0.toml", &text);
+    let v = json(&["solve", &path, "--json", "--digits", "12"]);
+    let d = digits(&v["digits_verified"]);
+    assert!(d < 6.0, "{v}");
+    let warnings = v["warnings"].as_array().unwrap();
+    assert!(
+        warnings
+            .iter()
+            .any(|w| w.as_str().unwrap().starts_with("accuracy: only")
+                && w.as_str().unwrap().contains("of the 12 digits")),
+        "{v}"
+    );
+}

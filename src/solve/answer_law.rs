@@ -239,6 +239,19 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
             )));
         }
     }
+    // Fewer digits than asked (the f64 method's cap is 15): say so and where it is known to
+    // happen (small nu, where the collocation is ill-conditioned and the march unstable).
+    let attainable = if prov.method == "f64" { (requested as f64).min(15.0) } else { requested as f64 };
+    if d.headline + 0.5 < attainable {
+        warnings.push(json!(format!(
+            "accuracy: only {} of the {} digits requested were verified (two runs agree no further); at small \
+             nu (eps = {:.4}) the loading-law problem is ill-conditioned (issue 12: n = 1/2 at nu = 0 gives 2 \
+             digits; the f64 march refuses nu <= 0.1)",
+            digits_text(d.headline),
+            requested,
+            v.eps.to_f64()
+        )));
+    }
     m.insert("warnings".into(), Value::Array(warnings));
     m.insert("provenance".into(), prov.json());
     m
