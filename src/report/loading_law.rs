@@ -486,8 +486,8 @@ fn charts(s: &mut Section, rows: &[Row]) {
             s.charts.push(Chart {
                 stem,
                 title: format!("{title}, {law}"),
-                x_label: x_label.into(),
-                y_label: y_label.into(),
+                x_label,
+                y_label,
                 x_log: false,
                 y_log: false,
                 curves,
