@@ -236,8 +236,7 @@ fn ends_table(s: &mut Section, rows: &[Row], requested: u32) {
     for r in rows {
         let Ok(sol) = &r.solution else { continue };
         let (v, d) = (&sol.values, &sol.digits);
-        let eps = v.eps.to_f64();
-        let zone_digits = if eps > 0.0 { d.end_phases + eps.log10() } else { d.end_phases };
+        let zone_digits = sol.tension_zone_digits();
         for (end, name) in v.ends.iter().zip(["leading (b)", "trailing (-a)"]) {
             let one = Float::with_val(end.phase.prec(), 1);
             let _ = write!(

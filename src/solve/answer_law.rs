@@ -231,8 +231,8 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     let mut warnings = tension_warnings(&v.points, &sc.stress, d.fields, requested);
     for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
         if end.tension_within > 0 {
-            let zone =
-                Measured::mpfr(end.tension_within.clone(), &end.tension_within, zone_digits(sol)).print(requested);
+            let zone = Measured::mpfr(end.tension_within.clone(), &end.tension_within, sol.tension_zone_digits())
+                .print(requested);
             warnings.push(json!(format!(
                 "tension: q2 < 0 within d/l < {zone} of the {name} end (the oscillating singularity, eps = {:.4}): complete adhesion there needs tension and unbounded friction",
                 v.eps.to_f64()
@@ -257,16 +257,6 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     m
 }
 
-/// Digits of the tension zones' d/l = exp(-gap/eps): the phases' less log10(1/eps).
-fn zone_digits(sol: &LawSolution) -> f64 {
-    let eps = sol.values.eps.to_f64();
-    if eps > 0.0 {
-        sol.digits.end_phases + eps.log10()
-    } else {
-        sol.digits.end_phases
-    }
-}
-
 /// The ends' phases, tension zones and needed friction against the distance (module doc).
 fn end_stress_json(sol: &LawSolution, requested: u32) -> Value {
     let v = &sol.values;
@@ -285,7 +275,7 @@ fn end_stress_json(sol: &LawSolution, requested: u32) -> Value {
             name.into(),
             json!({
                 "phase": Measured::mpfr(end.phase.clone(), &one, d.end_phases).print(requested),
-                "tension_within": Measured::mpfr(end.tension_within.clone(), &end.tension_within, zone_digits(sol)).print(requested),
+                "tension_within": Measured::mpfr(end.tension_within.clone(), &end.tension_within, sol.tension_zone_digits()).print(requested),
                 "friction_needed_at_distance": Value::Object(friction),
             }),
         );

@@ -237,12 +237,13 @@ pub(super) fn edge_integrals(
         };
         let one_in = Complex::with_val(prec, (1, &n));
         let beta_n = Float::with_val(prec, &inc.beta * &n);
+        // The tilted punch depends on eta only: once for both ends.
+        let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
             let factor = advance_factor(&e, sign, &lambda)?;
             let d = Float::with_val(prec, &base * &factor);
             let mut k = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec) * &one_in;
-            if inc.periodic {
-                let tilt = TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec);
+            if let Some(tilt) = &tilt {
                 k -= tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &beta_n;
             }
             *acc += k * &weight;

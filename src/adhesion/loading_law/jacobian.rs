@@ -82,6 +82,7 @@ pub(super) fn jacobian(
             let one_in = Complex::with_val(prec, (1, &n));
             let beta_n = Float::with_val(prec, &inc.beta * &n);
             let ws = Float::with_val(prec, w * s) * &lambda;
+            let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
             for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
                 let factor = super::collocation::advance_factor(&e, sign, &lambda)?;
                 let d = Float::with_val(prec, &lambda * c) * &factor;
@@ -89,8 +90,7 @@ pub(super) fn jacobian(
                 let log_d = outside_kernel_log_derivative(inc.row, side, &d, &eta, &inc.eps, prec);
                 let mut k = Complex::with_val(prec, &kernel * &one_in);
                 let mut dk = Complex::with_val(prec, &k * &log_d);
-                if inc.periodic {
-                    let tilt = TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec);
+                if let Some(tilt) = &tilt {
                     let value = tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &beta_n;
                     let log_t = tilt.outside_log_derivative(side, &d, &eta, &inc.eps, prec);
                     dk -= Complex::with_val(prec, &value * &log_t);

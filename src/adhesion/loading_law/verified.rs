@@ -125,6 +125,19 @@ pub struct LawSolution {
     pub digits: LawDigits,
 }
 
+impl LawSolution {
+    /// Digits of the tension zones' d/l = exp(-gap/eps) ([`EndStress::tension_within`]): the
+    /// phases' less log10(1/eps).
+    pub fn tension_zone_digits(&self) -> f64 {
+        let eps = self.values.eps.to_f64();
+        if eps > 0.0 {
+            self.digits.end_phases + eps.log10()
+        } else {
+            self.digits.end_phases
+        }
+    }
+}
+
 /// Verified digits per group of outputs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LawDigits {
@@ -248,19 +261,13 @@ fn size_for_load(
     }
     for j in 0..6 {
         let (unit, lambda_1) = attempt(j, big);
-        let scale = match &unit {
-            Unit::Period(l) => &stiffness * l * l / Exact::from_integer(1.into()),
-            Unit::Single(u) => &stiffness * u * u,
-        };
-        let mut target = to_float(&(p2 / &scale), prec);
-        if let Unit::Period(_) = unit {
-            target *= Float::with_val(prec, pi.square_ref());
-        }
         let over = match &unit {
             Unit::Period(_) => exact_of(&Float::with_val(prec, Float::with_val(prec, lambda_1) / &pi), 40),
             Unit::Single(_) => Exact::from_integer(1.into()),
         };
-        let sol = solve(&setting(problem, &unit, over), nodes_at(&unit, bits, lambda_1), bits, prec)?;
+        let sol = solve(&setting(problem, &unit, over.clone()), nodes_at(&unit, bits, lambda_1), bits, prec)?;
+        // P = P2/(P2 per unit P) of this setting (E* k L^2/pi^2 or E* k U^2).
+        let target = to_float(p2, prec) / &sol.inc.p2_per_p;
         if sol.load() < target {
             big = 0.5 * (big + half_pi);
             continue;
@@ -274,11 +281,8 @@ fn size_for_load(
                 hi = mid;
             }
         }
-        let lambda = Float::with_val(prec, &lo * &sol.lambda_max);
-        let size = match &unit {
-            Unit::Period(_) => exact_of(&(lambda / &pi), prec),
-            Unit::Single(_) => exact_of(&lambda, prec),
-        };
+        // lambda = Lambda_1 t scales the size linearly in both rows: l/L or l/U = over t.
+        let size = exact_of(&(to_float(&over, prec) * lo), prec);
         return Ok((unit, size));
     }
     Err(AdhesionError::IllConditioned {
