@@ -43,9 +43,14 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 order,
                 periodic_contact::asymptotics::catalog::VALUE_DIGITS as u32,
             )?;
+            let mode = periodic_contact::asymptotics::loading_law_modes::mode_exponent(&nu, &ratio, 12)?;
             let text = match format {
-                Format::Json => format!("{}\n", serde_json::to_string_pretty(&s.json())?),
-                _ => s.text(),
+                Format::Json => {
+                    let mut v = s.json();
+                    v["mode"] = mode.json(s.order);
+                    format!("{}\n", serde_json::to_string_pretty(&v)?)
+                }
+                _ => s.text() + &mode.text(s.order),
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }

@@ -353,7 +353,9 @@ fn single_punch_scene_solves() {
 }
 
 /// nu = 0, n = 1/2 (the open case): MPFR verifies only ~2 of 12 digits and says so in a
-/// warning naming the requested digits (`cargo run --release --example loading_law_small_nu`).
+/// warning naming the requested digits and the cause, the homogeneous mode eta^mu* with
+/// mu* = 31.8395100566 (`asymptotics::loading_law_modes`; `cargo run --release --example
+/// loading_law_small_nu`), which the JSON carries as `mode`.
 #[test]
 fn small_nu_shortfall_is_a_warning() {
     let text = scene("tangential_ratio = \"1/2\"\nhalf_length = \"1/8\"", "").replace("\"0.3\"", "\"0\"");
@@ -363,10 +365,11 @@ fn small_nu_shortfall_is_a_warning() {
     assert!(d < 6.0, "{v}");
     let warnings = v["warnings"].as_array().unwrap();
     assert!(
-        warnings
-            .iter()
-            .any(|w| w.as_str().unwrap().starts_with("accuracy: only")
-                && w.as_str().unwrap().contains("of the 12 digits")),
+        warnings.iter().any(|w| w.as_str().unwrap().starts_with("accuracy: only")
+            && w.as_str().unwrap().contains("of the 12 digits")
+            && w.as_str().unwrap().contains("mu* = 31.8395100566")),
         "{v}"
     );
+    assert_eq!(v["mode"]["exponent"], "31.8395100566", "{v}");
+    assert_eq!(v["mode"]["searched_to"], 2000, "{v}");
 }

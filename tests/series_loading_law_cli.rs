@@ -112,3 +112,20 @@ fn loading_law_series_refuses_bad_input() {
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
 }
+
+/// At nu = 0, n = 1/2 the output ends with the homogeneous mode, mu* = 31.8395100566 (the
+/// independent mpmath value of `asymptotics::loading_law_modes`), in text and JSON.
+#[test]
+fn loading_law_series_names_the_mode() {
+    let args = ["series", "loading-law", "--nu", "0", "--ratio", "1/2", "--order", "2"];
+    let (code, text, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("homogeneous mode: mu* = 31.8395100566"), "{text}");
+    let mut json_args = args.to_vec();
+    json_args.extend(["--format", "json"]);
+    let (code, json, err) = run(&json_args);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["mode"]["exponent"], "31.8395100566", "{json}");
+    assert!(v["mode"]["digits"].as_f64().unwrap() >= 12.0, "{json}");
+}

@@ -7,6 +7,7 @@ pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;
 pub mod loading_law;
+pub mod loading_law_modes;
 pub mod polynomial;
 pub mod sliding;
 pub mod weight;

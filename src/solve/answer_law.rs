@@ -239,22 +239,43 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
             )));
         }
     }
-    // Fewer digits than asked (the f64 method's cap is 15): say so and where it is known to
-    // happen (small nu, where the collocation is ill-conditioned and the march unstable).
+    // The homogeneous mode eta^mu* of the self-similar start (n = N'(0)): where it exists the
+    // problem fixes its history only up to C eta^mu* (asymptotics::loading_law_modes).
+    let mode = law_mode(p);
+    m.insert("mode".into(), mode.as_ref().map_or(Value::Null, |m| m.json(0)));
+    let mode_text = mode.as_ref().and_then(|m| m.value_text());
+    // Fewer digits than asked (the f64 method's cap is 15): say so and why when it is known.
     let attainable = if prov.method == "f64" { (requested as f64).min(15.0) } else { requested as f64 };
     if d.headline + 0.5 < attainable {
+        let why = match &mode_text {
+            Some(mu) => format!(
+                "the law and both edge conditions fix the history only up to C eta^mu* with mu* = {mu} \
+                 (homogeneous mode of the self-similar start, n = N'(0), eps = {:.4}; asymptotics::loading_law_modes): \
+                 a discretisation sets C by its own error at small sizes, which grows like (Lambda/eta)^mu*",
+                v.eps.to_f64()
+            ),
+            None => format!(
+                "at small nu (eps = {:.4}) the loading-law problem is ill-conditioned (the f64 march refuses nu <= 0.1)",
+                v.eps.to_f64()
+            ),
+        };
         warnings.push(json!(format!(
-            "accuracy: only {} of the {} digits requested were verified (two runs agree no further); at small \
-             nu (eps = {:.4}) the loading-law problem is ill-conditioned (issue 12: n = 1/2 at nu = 0 gives 2 \
-             digits; the f64 march refuses nu <= 0.1)",
+            "accuracy: only {} of the {} digits requested were verified (two runs agree no further); {why}",
             digits_text(d.headline),
             requested,
-            v.eps.to_f64()
         )));
     }
     m.insert("warnings".into(), Value::Array(warnings));
     m.insert("provenance".into(), prov.json());
     m
+}
+
+/// The mode exponent at the problem's nu and n = N'(0), 12 digits (`None` when it cannot be
+/// computed: the self-similar start has no solution with both ends advancing, a case the solvers
+/// refuse on their own).
+fn law_mode(p: &LoadingLawProblem) -> Option<crate::asymptotics::loading_law_modes::ModeExponent> {
+    let n0 = p.law().derivative().into_iter().next().unwrap_or_else(|| Exact::from_integer(0.into()));
+    crate::asymptotics::loading_law_modes::mode_exponent(p.material().poisson_ratio(), &n0, 12).ok()
 }
 
 /// The ends' phases, tension zones and needed friction against the distance (module doc).

@@ -235,7 +235,8 @@ fn recedes(side: Side, lambda: f64) -> AdhesionError {
         what: "loading-law march",
         reason: format!(
             "the {} end recedes at lambda = {lambda:.4} (the contact must grow at both ends for complete adhesion; \
-             at small nu, nu < 0.15, this is how the march's growing error shows: marching.rs, Stability)",
+             at small nu (nu <= 0.1 in tests/loading_law_agreement.rs) this is how the march's own growing error \
+             shows; the problem's homogeneous modes eta^mu*: asymptotics::loading_law_modes)",
             if side == Side::Right { "leading" } else { "trailing" }
         ),
     }

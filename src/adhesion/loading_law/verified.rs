@@ -434,6 +434,27 @@ pub fn solve_law_sampled(
     solve_law_collocation(problem, xh, stress_xh, digits).map(|(solution, _)| solution)
 }
 
+/// A collocation that did not converge, with the problem's homogeneous mode named when it has
+/// one ([`crate::asymptotics::loading_law_modes`]: the history is fixed only up to C eta^mu*, and
+/// the discretisation's error at small sizes grows like (Lambda/eta)^mu*; nu = 0, n = 1/2, l/L =
+/// 1/8 at 20 digits ends so, `tests/loading_law_cli.rs`).
+fn with_mode(problem: &LoadingLawProblem, e: AdhesionError) -> AdhesionError {
+    let AdhesionError::NotConverged { what, reason } = e else { return e };
+    let n0 = problem.law().derivative().into_iter().next().unwrap_or_else(|| Exact::from_integer(0.into()));
+    let mode = crate::asymptotics::loading_law_modes::mode_exponent(problem.material().poisson_ratio(), &n0, 12);
+    let reason = match mode.ok().and_then(|m| m.value_text()) {
+        Some(mu) => format!(
+            "{reason}; the problem has the homogeneous mode eta^mu* with mu* = {mu} (nu = {}, n = N'(0) = {}; \
+             asymptotics::loading_law_modes): the law and both edge conditions fix the history only up to C eta^mu*, \
+             and the discretisation's error at small sizes grows like (Lambda/eta)^mu*",
+            readable(problem.material().poisson_ratio()),
+            readable(&n0)
+        ),
+        None => reason,
+    };
+    AdhesionError::NotConverged { what, reason }
+}
+
 /// [`solve_law_sampled`] and the first run's collocation (whose values it returns): for checks
 /// that need the solution as a function, such as the residual of [1.8] in [`super::fields`]'
 /// tests.
@@ -453,8 +474,8 @@ pub fn solve_law_collocation(
         }
     }
     let bits = bits_for_digits(digits) + 8;
-    let (first, collocation) = run(problem, xh, stress_xh, 0, bits, bits + 32)?;
-    let (second, _) = run(problem, xh, stress_xh, 8, bits + 16, bits + 56)?;
+    let (first, collocation) = run(problem, xh, stress_xh, 0, bits, bits + 32).map_err(|e| with_mode(problem, e))?;
+    let (second, _) = run(problem, xh, stress_xh, 8, bits + 16, bits + 56).map_err(|e| with_mode(problem, e))?;
     let cap = digits as f64 + 8.0;
     let dig = |u: &Float, v: &Float, scale: &Float| {
         let d = Float::with_val(u.prec().max(v.prec()), u - v);
@@ -565,6 +586,34 @@ mod tests {
             assert!(rel(&p.q1, &Float::with_val(200, &r.q1 * sign), scale) < 1e-12, "q1 at {h}: {} vs {}", p.q1, r.q1);
             assert!(rel(&p.q2, &r.q2, scale) < 1e-12, "q2 at {h}");
         }
+    }
+
+    /// A collocation that does not converge names the homogeneous mode when the problem has one
+    /// (nu = 0, n = 1/2: mu* = 31.8395100566) and passes the error on unchanged when it has none
+    /// (nu = 3/10, n = 1/5).
+    #[test]
+    fn refusal_names_the_mode() {
+        let stuck = || AdhesionError::NotConverged {
+            what: "loading-law collocation",
+            reason: "the trailing end recedes".into(),
+        };
+        let material = Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap();
+        let nu0 = LoadingLawProblem::new(
+            material,
+            Period::Finite(q(1, 1)),
+            PunchShape::Parabolic { k: q(1, 1) },
+            LoadingLaw::Linear(q(1, 2)),
+            LawSize::HalfLength(q(1, 8)),
+            Convention::Paper,
+        )
+        .unwrap();
+        let e = with_mode(&nu0, stuck()).to_string();
+        assert!(
+            e.contains("trailing end recedes") && e.contains("mu* = 31.8395100566") && e.contains("n = N'(0) = 1/2"),
+            "{e}"
+        );
+        let nu03 = law_problem(LoadingLaw::Linear(q(1, 5)), LawSize::HalfLength(q(1, 8)), Convention::Paper);
+        assert_eq!(with_mode(&nu03, stuck()).to_string(), stuck().to_string());
     }
 
     fn law_problem(law: LoadingLaw, size: LawSize, convention: Convention) -> LoadingLawProblem {
