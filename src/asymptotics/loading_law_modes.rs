@@ -53,8 +53,11 @@
 //! det M(0): nu = 0, n = 1: mu* = 1.0875, det M(0) = -3.21; n = 26/25: mu* = 0.19998,
 //! det M(0) = -1.00: the fold is where the mode's exponent reaches the self-similar solution's.
 //!
-//! Only real zeros are searched (a scan in mu with a sign change, then regula falsi);
-//! complex zeros (pairs mu, conj mu) are not excluded by this module.
+//! [`Symbol::first_zero`] searches real zeros (a scan in mu with a sign change, then regula
+//! falsi); complex zeros (pairs mu, conj mu) are counted by the argument principle
+//! ([`Symbol::zeros_in`]): none in [-0.9, 31] x [-40, 40] at nu = 0, n = 1/2 (the real zero
+//! 31.84 found alone in [31, 33] x [-1, 1]), none in [-0.9, 300] x [-40, 40] at nu = 3/10,
+//! n = 1/2 (test `no_complex_zero_below_the_mode`).
 
 use super::loading_law::law_coefficients;
 use crate::error::Error;
@@ -153,6 +156,69 @@ impl Symbol {
             row[1] -= &self.pi;
         }
         m
+    }
+
+    /// det M(mu) at a complex mu (the weights are real: the real part is taken before s^mu).
+    pub fn det_complex(&self, mu: &Complex) -> Complex {
+        let p = self.prec;
+        let zero = || Complex::new(p);
+        let mut m = [[zero(), zero()], [zero(), zero()]];
+        let mu1 = Complex::with_val(p, mu + 1u32);
+        let small = Float::with_val(p, Float::i_exp(1, -8));
+        for (ln_s, c, sides) in &self.nodes {
+            let x = Complex::with_val(p, &mu1 * ln_s);
+            let s_mu = Complex::with_val(p, Complex::with_val(p, mu * ln_s).exp_ref());
+            // expm1(x): its Taylor series where |x| is small (exp(x) - 1 cancels there).
+            let expm1 = if Float::with_val(p, x.abs_ref()) < small {
+                let (mut term, mut sum) = (x.clone(), x.clone());
+                for k in 2..=(p / 6 + 4) {
+                    term = Complex::with_val(p, &term * &x) / k;
+                    sum += &term;
+                }
+                sum
+            } else {
+                Complex::with_val(p, x.exp_ref()) - 1u32
+            };
+            let e = -expm1 / c;
+            for k in 0..2 {
+                m[k][0] += Complex::with_val(p, &s_mu * &sides[k][0]);
+                m[k][1] += Complex::with_val(p, &e * &sides[k][1]);
+            }
+        }
+        for row in m.iter_mut() {
+            row[1] -= &self.pi;
+        }
+        Complex::with_val(p, &m[0][0] * &m[1][1]) - Complex::with_val(p, &m[0][1] * &m[1][0])
+    }
+
+    /// The number of zeros of det M inside the rectangle [re_lo, re_hi] x [im_lo, im_hi] (none on
+    /// its edges), by the argument principle: the change of arg det along the boundary, sampled
+    /// with steps halved until each changes the argument by less than pi/4.
+    pub fn zeros_in(&self, re: (f64, f64), im: (f64, f64)) -> i64 {
+        let p = self.prec;
+        let corners = [(re.0, im.0), (re.1, im.0), (re.1, im.1), (re.0, im.1), (re.0, im.0)];
+        let at = |x: f64, y: f64| {
+            let d = self.det_complex(&Complex::with_val(p, (x, y)));
+            d.imag().to_f64().atan2(d.real().to_f64())
+        };
+        let mut total = 0.0f64;
+        for w in corners.windows(2) {
+            let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+            let mut stack = vec![(0.0f64, 1.0f64, at(x0, y0), at(x1, y1))];
+            while let Some((t0, t1, a0, a1)) = stack.pop() {
+                let mut d = a1 - a0;
+                d -= (d / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+                if d.abs() < std::f64::consts::FRAC_PI_4 || t1 - t0 < 1e-9 {
+                    total += d;
+                } else {
+                    let tm = 0.5 * (t0 + t1);
+                    let am = at(x0 + tm * (x1 - x0), y0 + tm * (y1 - y0));
+                    stack.push((tm, t1, am, a1));
+                    stack.push((t0, tm, a0, am));
+                }
+            }
+        }
+        (total / std::f64::consts::TAU).round() as i64
     }
 
     /// det M(mu).
@@ -342,7 +408,7 @@ mod tests {
         let mu = m.mu.clone().expect("a zero at nu = 0, n = 1/2").to_f64();
         assert!((mu - 31.8395100566).abs() < 2e-10, "{mu}");
         assert!(m.digits >= 15.0, "{}", m.digits);
-        assert!((m.g0.to_f64() + 0.208502536975995353).abs() < 1e-15, "{}", m.g0);
+        assert!((m.g0.to_f64() + 0.208_502_536_975_995_35).abs() < 1e-15, "{}", m.g0);
         let m = mode_exponent(&q(0, 1), &q(1, 5), 12).unwrap();
         let mu = m.mu.clone().expect("a zero at nu = 0, n = 1/5").to_f64();
         assert!((mu - 178.311153189).abs() < 1e-7 && m.digits >= 10.0, "{mu} {}", m.digits);
@@ -362,6 +428,29 @@ mod tests {
         assert!((ma - 1.08745322144).abs() < 1e-9 && (mb - 0.199975078035).abs() < 1e-9, "{ma} {mb}");
         let (da, db) = (a.det_at_zero.to_f64(), b.det_at_zero.to_f64());
         assert!((da + 3.2127).abs() < 1e-3 && (db + 1.0006).abs() < 1e-3, "{da} {db}");
+    }
+
+    /// No complex zeros below the real one: at nu = 0, n = 1/2 the argument principle counts no
+    /// zero of det M in [-0.9, 31] x [-40, 40] and exactly one (mu* = 31.84) in [31, 33] x [-1, 1];
+    /// at nu = 3/10, n = 1/2 none in [-0.9, 300] x [-40, 40].
+    #[test]
+    fn no_complex_zero_below_the_mode() {
+        // 160 bits: at 96 (rule of 80 bits) the rule misses s^(mu+1) near s = 0 at Re mu -> -1,
+        // |Im mu| ~ 40 and the count is 4 spurious zeros in [-0.9, -0.5] x [-40, 40].
+        let prec = 160;
+        let material = Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap();
+        let params = AdhesionParamsMpfr::new(&material, prec);
+        let rule = TanhSinh::new(prec - 16, 1.0, prec);
+        let sym = Symbol::new(&params, &Float::with_val(prec, 0.5), &rule, prec).unwrap();
+        let real = sym.det(&Float::with_val(prec, 20)).to_f64();
+        let complex = sym.det_complex(&Complex::with_val(prec, (20, 0))).real().to_f64();
+        assert!((real - complex).abs() < 1e-20 * real.abs(), "{real} {complex}");
+        assert_eq!(sym.zeros_in((-0.9, 31.0), (-40.0, 40.0)), 0);
+        assert_eq!(sym.zeros_in((31.0, 33.0), (-1.0, 1.0)), 1);
+        let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).unwrap();
+        let params = AdhesionParamsMpfr::new(&material, prec);
+        let sym = Symbol::new(&params, &Float::with_val(prec, 0.5), &rule, prec).unwrap();
+        assert_eq!(sym.zeros_in((-0.9, 300.0), (-40.0, 40.0)), 0);
     }
 
     /// Bad input names the parameter.
