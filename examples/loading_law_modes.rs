@@ -22,11 +22,7 @@ fn main() {
                 Ok(m) => println!(
                     "nu = {nu}, n = {n}: mu* = {} ({}), c/l = {:.6}, det M(0) = {:.4}, {:.2} s",
                     m.value_text().unwrap_or_else(|| "none below 2000".into()),
-                    if m.mu.is_some() {
-                        format!("{:.1} digits verified", m.digits)
-                    } else {
-                        "det M keeps its sign".into()
-                    },
+                    if m.mu.is_some() { format!("{:.1} digits verified", m.digits) } else { "no zero found".into() },
                     m.g0.to_f64(),
                     m.det_at_zero.to_f64(),
                     t.elapsed().as_secs_f64()

@@ -9,6 +9,9 @@
 //!   maximum over the contact), where it occurs, tension warnings (q2 < 0 beyond the accuracy),
 //!   the verified digits of each group and the digits requested;
 //! - the loading path at every fourth of its [`PATH_STEPS`] contacts;
+//! - the homogeneous mode eta^mu* of the loading's self-similar start at each scene's nu and
+//!   n = N'(0), and in the full profile over a grid of nu and n
+//!   ([`crate::asymptotics::loading_law_modes`]);
 //! - charts: the ends a, b and the half-length l against P2 along the loading; q1 and q2 across
 //!   the final contact (xh = (x - c)/l in (-1, 1), over E* k l); |q1|/q2 across the contact against
 //!   the friction needed (where complete adhesion would slip first).
@@ -209,8 +212,57 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     table(&mut s, &rows, digits);
     ends_table(&mut s, &rows, digits);
     path_table(&mut s, &rows, digits);
+    modes_table(ctx, &mut s, &rows);
     charts(&mut s, &rows);
     s
+}
+
+/// The homogeneous mode eta^mu* of the self-similar start
+/// ([`crate::asymptotics::loading_law_modes`]) at each scene's nu and n = N'(0), and in the full
+/// profile over a grid of nu and n: where mu* exists the law and both edge conditions fix the
+/// history only up to C eta^mu*, and a discretisation's error at small sizes grows like
+/// (Lambda/eta)^mu*.
+fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
+    use crate::asymptotics::loading_law_modes::{mode_exponent, MU_MAX};
+    let q = |n: i64, d: i64| Exact::new(n.into(), d.into());
+    let mut cases: Vec<(String, Exact, Exact)> = rows
+        .iter()
+        .map(|r| {
+            let n0 = r.problem.law().derivative().into_iter().next().unwrap_or_else(|| q(0, 1));
+            (format!("`{}`", r.scene), r.problem.material().poisson_ratio().clone(), n0)
+        })
+        .collect();
+    if ctx.profile == Profile::Full {
+        for nu in [q(0, 1), q(1, 10), q(1, 5), q(3, 10), q(2, 5)] {
+            for n in [q(1, 5), q(1, 2), q(1, 1)] {
+                cases.push(("grid".into(), nu.clone(), n));
+            }
+        }
+    }
+    let _ = writeln!(
+        s.markdown,
+        "### Homogeneous mode of the loading\n\n\
+         The self-similar start (the single punch, lambda -> 0) admits perturbations C eta^mu* where the 2x2 \
+         Mellin symbol of the two edge conditions is singular (`src/asymptotics/loading_law_modes.rs`): there \
+         the law and both edge conditions fix the history only up to C eta^mu*, and a discretisation's error \
+         at small sizes grows toward the final size like (Lambda/eta)^mu*. mu* is the smallest real zero on \
+         (0, {MU_MAX}] (12 digits asked, two runs); complex zeros are counted by the argument principle in the \
+         module's tests. Small mu* (small nu, large n) is where both loading-law methods lose their digits.\n\n\
+         | case | nu | n = N'(0) | mu* | digits |\n|---|---|---|---|---|"
+    );
+    ctx.step("loading law: homogeneous modes".to_string());
+    for (name, nu, n) in cases {
+        let row = match mode_exponent(&nu, &n, 12) {
+            Ok(m) => match m.value_text() {
+                Some(v) => format!("{v} | {}", fmt_digits(Some(m.digits))),
+                None => format!("none below {MU_MAX} | -"),
+            },
+            Err(e) => format!("{e} | -"),
+        };
+        let _ =
+            writeln!(s.markdown, "| {name} | {} | {} | {row} |", exact_series::q_text(&nu), exact_series::q_text(&n));
+    }
+    let _ = writeln!(s.markdown);
 }
 
 /// The ends of the final contact ([`crate::adhesion::loading_law::ends`]): the phase phi of
