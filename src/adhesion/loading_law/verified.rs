@@ -597,16 +597,7 @@ mod tests {
             what: "loading-law collocation",
             reason: "the trailing end recedes".into(),
         };
-        let material = Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap();
-        let nu0 = LoadingLawProblem::new(
-            material,
-            Period::Finite(q(1, 1)),
-            PunchShape::Parabolic { k: q(1, 1) },
-            LoadingLaw::Linear(q(1, 2)),
-            LawSize::HalfLength(q(1, 8)),
-            Convention::Paper,
-        )
-        .unwrap();
+        let nu0 = law_problem_at(q(0, 1), LoadingLaw::Linear(q(1, 2)), LawSize::HalfLength(q(1, 8)), Convention::Paper);
         let e = with_mode(&nu0, stuck()).to_string();
         assert!(
             e.contains("trailing end recedes") && e.contains("mu* = 31.8395100566") && e.contains("n = N'(0) = 1/2"),
@@ -617,7 +608,11 @@ mod tests {
     }
 
     fn law_problem(law: LoadingLaw, size: LawSize, convention: Convention) -> LoadingLawProblem {
-        let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).unwrap();
+        law_problem_at(q(3, 10), law, size, convention)
+    }
+
+    fn law_problem_at(nu: Exact, law: LoadingLaw, size: LawSize, convention: Convention) -> LoadingLawProblem {
+        let material = Material::from_contact_modulus(nu, q(1, 1)).unwrap();
         LoadingLawProblem::new(
             material,
             Period::Finite(q(1, 1)),
