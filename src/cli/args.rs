@@ -54,7 +54,7 @@ pub enum MethodName {
     Series,
 }
 
-/// Surface conventions of Problem 1 (THEORY.md section 8).
+/// Surface conventions of Problem 1 (docs/theory.md section 8).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ConventionName {
     /// The paper's equation [2.8] as it stands (its expansions are even in lambda).
@@ -114,7 +114,7 @@ pub enum RawCommand {
         /// --shape polynomial).
         #[arg(long = "rbar-s", value_name = "R", allow_hyphen_values = true)]
         rbar_s: Option<String>,
-        /// Surface convention of the sliding expansions (THEORY.md section 8; default paper:
+        /// Surface convention of the sliding expansions (docs/theory.md section 8; default paper:
         /// even powers of Lambda; periodic: odd powers too, symbols kappa = tan(pi theta), invpi = 1/pi).
         #[arg(long, value_enum)]
         convention: Option<ConventionName>,

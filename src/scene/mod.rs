@@ -24,7 +24,7 @@
 //! points = ["-0.6", "0.1", "0.7"] # xh = (x - c)/l in (-1, 1)
 //! ```
 //!
-//! `convention` is the surface convention of Problem 1 (THEORY.md section 8;
+//! `convention` is the surface convention of Problem 1 (docs/theory.md section 8;
 //! [`crate::model::Convention`]): `"paper"` solves the paper's equation [2.8] as it stands (its
 //! expansions run in even powers of lambda; the surface then does not close over a period when
 //! friction, wear or tau0 act: mismatch (2/E*) beta P1 - cW P2); `"periodic"` adds
@@ -46,7 +46,7 @@
 //! points = ["0", "0.5", "0.9"]   # x/a in [0, 1]
 //! ```
 //!
-//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; an asymmetric contact
+//! Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; an asymmetric contact
 //! [-a, b]) is an adhesion scene whose `[adhesion]` states the law; it parses to
 //! [`SceneProblem::LoadingLaw`], and `[problem] convention` matters there (P1 != 0 brings in the
 //! rotation term):
@@ -130,7 +130,7 @@ pub enum SceneProblem {
     Sliding(SlidingProblem),
     /// Problem 2.
     Adhesion(AdhesionProblem),
-    /// Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; asymmetric contact).
+    /// Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; asymmetric contact).
     LoadingLaw(LoadingLawProblem),
 }
 

@@ -51,7 +51,7 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
     }
 }
 
-/// `[problem] convention`: "paper" (the default) or "periodic" (THEORY.md section 8). Problem 2
+/// `[problem] convention`: "paper" (the default) or "periodic" (docs/theory.md section 8). Problem 2
 /// (symmetric: P1 = 0, no wear) is the same problem in both, so an adhesion scene accepts either
 /// value and it has no effect there; under a loading law (P1 != 0) it brings in the rotation term.
 fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
@@ -264,7 +264,7 @@ fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
     AdhesionProblem::new(material, period, shape, size).map_err(|e| prefixed(e, "adhesion"))
 }
 
-/// The keys of `[adhesion]` that make it the loading-law problem (THEORY.md section 10).
+/// The keys of `[adhesion]` that make it the loading-law problem (docs/theory.md section 10).
 const LAW_KEYS: [&str; 2] = ["tangential_ratio", "loading_law"];
 
 /// Whether `[adhesion]` states a loading law (either key of [`LAW_KEYS`]).
