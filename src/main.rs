@@ -57,6 +57,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }
+        RunConfig::SceneTemplate { text } => std::io::stdout().write_all(text.as_bytes())?,
         RunConfig::Report { out, scenes, order, fast } => {
             use periodic_contact::report::{section::Profile, write_report, ReportError, ReportOptions};
             let opts = ReportOptions {

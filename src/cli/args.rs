@@ -43,6 +43,40 @@ pub enum ObjectName {
     LoadingLaw,
 }
 
+/// Output format of `solve`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolveFormat {
+    /// `key: value` lines (the JSON's keys joined by dots).
+    Text,
+    /// JSON with string values (keys: docs/theory.md section 14).
+    Json,
+}
+
+/// Problems a scene template is written for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TemplateName {
+    /// Problem 1: steady sliding with friction, adhesive friction and wear.
+    Sliding,
+    /// Problem 2: indentation with complete adhesion (with --law: under a loading law).
+    Adhesion,
+}
+
+/// Punch shapes of a scene template.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TemplateShape {
+    /// g = k x^2.
+    #[value(alias = "parabola")]
+    Parabolic,
+    /// g = D (1 - cos(2 pi x/L)) (Problem 1 only).
+    #[value(alias = "sinusoid")]
+    Sinusoidal,
+    /// g = sum_j c_j x^j (Problem 2: even terms only).
+    Polynomial,
+    /// g = R - sqrt(R^2 - x^2).
+    #[value(alias = "circle")]
+    Circular,
+}
+
 /// Solution methods.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum MethodName {
@@ -123,13 +157,15 @@ pub enum RawCommand {
         format: Format,
     },
     /// Solve the problem a scene file describes and print the result with its verified accuracy.
+    #[command(long_about = SOLVE_HELP)]
     Solve {
-        /// Scene file (TOML).
+        /// Scene file (TOML; write one with `periodic-contact scene --template sliding`).
         scene: PathBuf,
-        /// Digits requested (overrides [output] digits; default 30).
+        /// Digits requested: forces verified MPFR at this precision (overrides [output] digits and
+        /// target_digits), an integer in [1, 1000].
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         digits: Option<String>,
-        /// Method (overrides [output] method; default mpfr).
+        /// Method, forced (overrides [output] method and the choice by target_digits).
         #[arg(long, value_enum)]
         method: Option<MethodName>,
         /// Series order for --method series (default 12).
@@ -139,12 +175,26 @@ pub enum RawCommand {
         /// Problem 2 is the same in both.
         #[arg(long, value_enum)]
         convention: Option<ConventionName>,
-        /// Output format.
+        /// Output format (default text).
         #[arg(long, value_enum)]
-        format: Option<Format>,
+        format: Option<SolveFormat>,
         /// Same as --format json.
         #[arg(long)]
         json: bool,
+    },
+    /// Print a commented scene file (TOML) with every key, its meaning, unit and valid range: the
+    /// table the scene parser checks against. Save it, edit the values, run `solve` on it.
+    #[command(long_about = SCENE_HELP)]
+    Scene {
+        /// The problem.
+        #[arg(long, value_enum)]
+        template: TemplateName,
+        /// The punch shape (adhesion: parabolic, polynomial or circular; --law: parabolic).
+        #[arg(long, value_enum, default_value_t = TemplateShape::Parabolic)]
+        shape: TemplateShape,
+        /// Problem 2 under a loading law P1 = N(P2) (with --template adhesion).
+        #[arg(long)]
+        law: bool,
     },
     /// Write the report into a folder: the main job. Coefficient tables, method choice per scene,
     /// convergence orders, speed against accuracy, stability maps, load-size curves, paper vs
@@ -171,3 +221,40 @@ pub enum RawCommand {
         out: PathBuf,
     },
 }
+
+/// `solve --help`.
+const SOLVE_HELP: &str = "Solve the problem a scene file describes and print the result with its accuracy.
+
+Which method runs:
+  --method M            forces M (mpfr: verified high precision; f64: fast, digits estimated by a
+                        second run; series: the truncated exact series, Problem 1 only)
+  --digits N            forces verified MPFR at N digits (also [output] digits)
+  [output] method       forces a method from the scene
+  [output] target_digits
+                        the cheapest method predicted to meet it (calibration/methods.csv),
+                        as the report chooses; the JSON's `choice` says which and why
+  none of these         verified MPFR at 30 digits
+Runs over about 2 s show progress on stderr.
+
+Output: text (`key: value` lines) or --json (string values; every key: docs/theory.md
+section 14). Exit codes: 0 answer, 2 invalid input (the message names the parameter, its value
+and the valid range), 1 no solution, not physical or no convergence.
+
+Examples:
+  periodic-contact scene --template sliding > s.toml && periodic-contact solve s.toml --json
+  periodic-contact solve s.toml --method f64
+  periodic-contact solve s.toml --digits 50 --convention periodic";
+
+/// `scene --help`.
+const SCENE_HELP: &str = "Print a commented scene file (TOML) with every key the parser accepts for the
+problem and shape: its meaning, unit and valid range, alternatives and optional keys commented out.
+The text comes from the parser's own key table, so it cannot drift from what `solve` accepts.
+
+Numbers are exact: quote decimals and ratios (\"0.25\", \"1/3\", \"1e-3\"); unknown keys are errors.
+
+Examples:
+  periodic-contact scene --template sliding > sliding.toml
+  periodic-contact scene --template sliding --shape sinusoid
+  periodic-contact scene --template adhesion --shape polynomial
+  periodic-contact scene --template adhesion --law > law.toml
+  periodic-contact solve sliding.toml --json";

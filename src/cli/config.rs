@@ -1,6 +1,9 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
-use super::args::{ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
+use super::args::{
+    ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName, SolveFormat, TemplateName,
+    TemplateShape,
+};
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
 use crate::asymptotics::polynomial::PolynomialProfile;
 use crate::asymptotics::sliding::SlidingShape;
@@ -47,6 +50,11 @@ pub enum RunConfig {
         request: SolveRequest,
         /// Output format.
         format: Format,
+    },
+    /// `scene --template KIND --shape SHAPE [--law]`: the commented scene, ready to print.
+    SceneTemplate {
+        /// The TOML text.
+        text: String,
     },
     /// `report --out DIR --scenes DIR`
     Report {
@@ -417,10 +425,7 @@ impl RunConfig {
                     Some(o) => parse_order(&o, 24)?,
                     None => parsed.output.series_order.unwrap_or(12),
                 };
-                let format = if json { Format::Json } else { format.unwrap_or(Format::Text) };
-                if format == Format::Latex {
-                    return Err(ModelError::new("--format", "latex", "solve prints text or json"));
-                }
+                let format = if json || format == Some(SolveFormat::Json) { Format::Json } else { Format::Text };
                 Ok(RunConfig::Solve {
                     scene: Box::new(parsed),
                     request: SolveRequest { method, digits, series_order },
@@ -435,6 +440,32 @@ impl RunConfig {
                 Ok(RunConfig::Report { out, scenes, order, fast })
             }
             RawCommand::Calibrate { out } => Ok(RunConfig::Calibrate { out }),
+            RawCommand::Scene { template, shape, law } => scene_template(template, shape, law),
         }
     }
+}
+
+/// `scene --template KIND --shape SHAPE [--law]` ([`crate::scene::keys::template`]).
+fn scene_template(template: TemplateName, shape: TemplateShape, law: bool) -> Result<RunConfig, ModelError> {
+    use crate::scene::keys::{template as make, Kind};
+    let kind = match (template, law) {
+        (TemplateName::Sliding, true) => {
+            return Err(ModelError::new(
+                "--law",
+                "(present)",
+                "a loading law is a Problem 2 setting: --template adhesion --law",
+            ))
+        }
+        (TemplateName::Sliding, false) => Kind::Sliding,
+        (TemplateName::Adhesion, false) => Kind::Adhesion,
+        (TemplateName::Adhesion, true) => Kind::Law,
+    };
+    let shape = match shape {
+        TemplateShape::Parabolic => "parabolic",
+        TemplateShape::Sinusoidal => "sinusoidal",
+        TemplateShape::Polynomial => "polynomial",
+        TemplateShape::Circular => "circular",
+    };
+    let text = make(kind, shape).map_err(|e| ModelError::new(e.parameter, e.value, e.expected))?;
+    Ok(RunConfig::SceneTemplate { text })
 }

@@ -1,5 +1,6 @@
 //! Scene files (TOML): a problem statement plus what to output. Parsed strictly ([`parse`]):
-//! unknown keys are rejected, numbers are read exactly from their text (a decimal or a ratio such
+//! unknown keys are rejected (the valid keys, their meaning, unit and range: the one table
+//! [`keys::KEYS`], printed by `periodic-contact scene --template`), numbers are read exactly from their text (a decimal or a ratio such
 //! as "1/3", quoted or not) and never pass through `f64`.
 //!
 //! ```toml
@@ -73,6 +74,7 @@
 //! report from the committed calibration table, `calibration/methods.csv`); `digits` forces a
 //! working precision instead.
 
+pub mod keys;
 pub mod parse;
 
 use crate::model::{AdhesionProblem, Exact, LoadingLawProblem, SlidingProblem};
