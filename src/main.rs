@@ -49,8 +49,18 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }
-        RunConfig::Solve { scene, request, format } => {
-            let v = periodic_contact::solve::solve_scene(&scene, request)?;
+        RunConfig::Solve { scene, choice, format } => {
+            let what = format!(
+                "solving with {} ({} digits requested; {})",
+                choice.request.method.name(),
+                choice.request.digits,
+                choice.reason
+            );
+            let (mut v, choice) =
+                with_progress(&what, || periodic_contact::solve::choice::solve_chosen(&scene, choice))?;
+            if let Some(m) = v.as_object_mut() {
+                m.insert("choice".into(), choice.json());
+            }
             let text = match format {
                 Format::Json => format!("{}\n", serde_json::to_string_pretty(&v)?),
                 _ => periodic_contact::solve::format::text(&v),
@@ -97,6 +107,39 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// Seconds a run may take before progress is shown.
+const PROGRESS_AFTER: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// Runs `work`; if it is still running after [`PROGRESS_AFTER`], shows `what` on stderr: a
+/// spinner with the elapsed time when stderr is a terminal, else one plain line.
+fn with_progress<T>(what: &str, work: impl FnOnce() -> T) -> T {
+    use std::io::IsTerminal;
+    let (done, wait) = std::sync::mpsc::channel::<()>();
+    let what = what.to_string();
+    let shower = std::thread::spawn(move || {
+        if wait.recv_timeout(PROGRESS_AFTER).is_ok() {
+            return;
+        }
+        if !std::io::stderr().is_terminal() {
+            eprintln!("{what} (running for more than {} s)", PROGRESS_AFTER.as_secs());
+            return;
+        }
+        let pb = indicatif::ProgressBar::new_spinner();
+        pb.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} [{elapsed_precise}] {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
+        );
+        pb.set_message(what);
+        pb.enable_steady_tick(std::time::Duration::from_millis(120));
+        let _ = wait.recv();
+        pb.finish_and_clear();
+    });
+    let out = work();
+    let _ = done.send(());
+    let _ = shower.join();
+    out
 }
 
 /// The one mapping from errors to exit codes: 2 for invalid input, 1 for everything else (no

@@ -9,7 +9,7 @@ use crate::asymptotics::polynomial::PolynomialProfile;
 use crate::asymptotics::sliding::SlidingShape;
 use crate::model::{Convention, ModelError};
 use crate::scene::{parse::parse_scene, Method, Scene, SceneProblem};
-use crate::solve::{SolveRequest, DEFAULT_DIGITS};
+use crate::solve::choice::{solve_choice, Forced, MethodChoice};
 use exact_series::{parse_rational, Q};
 use num_traits::Signed;
 use std::path::PathBuf;
@@ -46,8 +46,8 @@ pub enum RunConfig {
     Solve {
         /// The parsed scene.
         scene: Box<Scene>,
-        /// Method, digits, series order.
-        request: SolveRequest,
+        /// Method, digits, series order, and why.
+        choice: MethodChoice,
         /// Output format.
         format: Format,
     },
@@ -195,17 +195,6 @@ fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), Mo
         SceneProblem::Adhesion(_) => {}
     }
     Ok(())
-}
-
-/// Digits when `--digits` is not given: the scene's `digits`; for the loading-law problem, whose
-/// one method is MPFR (the cheapest meeting any target), its `target_digits` next; else
-/// [`DEFAULT_DIGITS`].
-fn default_digits(scene: &Scene) -> u32 {
-    let target = match scene.problem {
-        SceneProblem::LoadingLaw(_) => scene.output.target_digits,
-        _ => None,
-    };
-    scene.output.digits.or(target).unwrap_or(DEFAULT_DIGITS)
 }
 
 /// The flags of `series loading-law`.
@@ -401,36 +390,32 @@ impl RunConfig {
                     override_convention(&mut parsed, c)?;
                 }
                 let digits = match digits {
-                    Some(d) => d
-                        .trim()
-                        .parse::<u32>()
-                        .ok()
-                        .filter(|d| (1..=crate::scene::parse::MAX_DIGITS).contains(d))
-                        .ok_or_else(|| {
-                            ModelError::new(
-                                "--digits",
-                                &d,
-                                format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
-                            )
-                        })?,
-                    None => default_digits(&parsed),
+                    Some(d) => Some(
+                        d.trim()
+                            .parse::<u32>()
+                            .ok()
+                            .filter(|d| (1..=crate::scene::parse::MAX_DIGITS).contains(d))
+                            .ok_or_else(|| {
+                                ModelError::new(
+                                    "--digits",
+                                    &d,
+                                    format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
+                                )
+                            })?,
+                    ),
+                    None => None,
                 };
-                let method = match method {
-                    Some(MethodName::Mpfr) => Method::Mpfr,
-                    Some(MethodName::F64) => Method::F64,
-                    Some(MethodName::Series) => Method::Series,
-                    None => parsed.output.method.unwrap_or(Method::Mpfr),
-                };
-                let series_order = match order {
-                    Some(o) => parse_order(&o, 24)?,
-                    None => parsed.output.series_order.unwrap_or(12),
-                };
+                let method = method.map(|m| match m {
+                    MethodName::Mpfr => Method::Mpfr,
+                    MethodName::F64 => Method::F64,
+                    MethodName::Series => Method::Series,
+                });
+                let series_order = order.map(|o| parse_order(&o, 24)).transpose()?;
+                let forced = Forced { method, digits, series_order };
+                let choice = solve_choice(&parsed, forced)
+                    .map_err(|e| ModelError::new("calibration/methods.csv", "(compiled in)", e.to_string()))?;
                 let format = if json || format == Some(SolveFormat::Json) { Format::Json } else { Format::Text };
-                Ok(RunConfig::Solve {
-                    scene: Box::new(parsed),
-                    request: SolveRequest { method, digits, series_order },
-                    format,
-                })
+                Ok(RunConfig::Solve { scene: Box::new(parsed), choice, format })
             }
             RawCommand::Report { out, scenes, order, fast } => {
                 let order = parse_order(&order, 40)?;

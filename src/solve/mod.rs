@@ -10,6 +10,7 @@ pub mod answer_f64;
 pub mod answer_law;
 pub mod answer_mpfr;
 pub mod answer_series;
+pub mod choice;
 pub mod format;
 pub mod render;
 
