@@ -443,48 +443,6 @@ impl Derived {
         }
         s
     }
-
-    /// LaTeX: one `align*` line per non-zero coefficient.
-    pub fn latex(&self) -> String {
-        let mut s = format!("% {}: {} ({})\n", self.object, self.formula, self.source);
-        for n in &self.notes {
-            s.push_str(&format!("% {n}\n"));
-        }
-        s.push_str("\\begin{align*}\n");
-        let v = match self.variable {
-            "lambda" => "\\lambda",
-            other => other,
-        };
-        let lines: Vec<String> = self
-            .series
-            .coeffs()
-            .iter()
-            .enumerate()
-            .filter(|(_, c)| !c.is_zero())
-            .map(|(k, c)| match self.object {
-                "jacobi" => format!("j_{{{k}}} &= {}", c.latex()),
-                _ => format!("[{v}^{{{k}}}] &= {}", c.latex()),
-            })
-            .collect();
-        s.push_str(&lines.join(" \\\\\n"));
-        s.push_str("\n\\end{align*}\n");
-        s
-    }
-
-    /// JSON in the layout `{"object", "variable", "order", "symbols", "coefficients"}`.
-    pub fn json(&self) -> serde_json::Value {
-        let mut v = self.series.to_json(self.object, self.variable, &self.symbols);
-        if !self.notes.is_empty() {
-            v["notes"] = serde_json::json!(self.notes);
-        }
-        if let Some((nu, vals)) = &self.values {
-            v["nu"] = serde_json::json!(nu);
-            v["values"] = serde_json::Value::Array(
-                vals.iter().map(|(k, x)| serde_json::json!({"power": k, "value": x})).collect(),
-            );
-        }
-        v
-    }
 }
 
 #[cfg(test)]

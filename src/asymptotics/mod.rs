@@ -8,5 +8,6 @@ pub mod jacobi_moments;
 pub mod kernel;
 pub mod loading_law;
 pub mod polynomial;
+pub mod print;
 pub mod sliding;
 pub mod weight;
