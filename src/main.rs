@@ -20,20 +20,15 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 },
                 other => other.derive(order, &subs)?,
             };
-            let text = match format {
-                Format::Text => parts.iter().map(|d| d.text()).collect::<Vec<_>>().join("\n"),
-                Format::Latex => parts.iter().map(|d| d.latex()).collect::<Vec<_>>().join("\n"),
-                Format::Json => {
-                    let v = match parts.as_slice() {
-                        [one] => one.json(),
-                        many => serde_json::json!({
-                            "object": object.name(),
-                            "parts": many.iter().map(|d| d.json()).collect::<Vec<_>>(),
-                        }),
-                    };
-                    format!("{}\n", serde_json::to_string_pretty(&v)?)
-                }
+            use periodic_contact::asymptotics::print::{render, SeriesFormat};
+            let format = match format {
+                Format::Text => SeriesFormat::Text,
+                Format::Json => SeriesFormat::Json,
+                Format::Latex => SeriesFormat::Latex,
+                Format::Sympy => SeriesFormat::Sympy,
+                Format::Mathematica => SeriesFormat::Mathematica,
             };
+            let text = render(object.name(), &parts, format);
             std::io::stdout().write_all(text.as_bytes())?;
         }
         RunConfig::LoadingLawSeries { nu, ratio, order, format } => {
@@ -68,6 +63,14 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             std::io::stdout().write_all(text.as_bytes())?;
         }
         RunConfig::SceneTemplate { text } => std::io::stdout().write_all(text.as_bytes())?,
+        RunConfig::Completions { shell } => {
+            use clap::CommandFactory;
+            clap_complete::generate(shell, &mut RawArgs::command(), "periodic-contact", &mut std::io::stdout());
+        }
+        RunConfig::Man => {
+            use clap::CommandFactory;
+            clap_mangen::Man::new(RawArgs::command()).render(&mut std::io::stdout())?;
+        }
         RunConfig::Report { out, scenes, order, fast } => {
             use periodic_contact::report::{section::Profile, write_report, ReportError, ReportOptions};
             let opts = ReportOptions {

@@ -14,15 +14,24 @@ pub struct RawArgs {
     pub command: RawCommand,
 }
 
-/// Output format of printed objects.
+/// Output format of `series` (docs/theory.md section 16).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Format {
-    /// Plain text, one coefficient per line.
+    /// Plain text: a header per part, then one `[v^k] coefficient` line per non-zero coefficient.
     Text,
-    /// JSON: {"object", "variable", "order", "symbols", "coefficients": [{"power", "text", "latex"}]}.
+    /// JSON, one schema for every object: {"object", "parts": [{"object", "formula", "source",
+    /// "variable", "order", "symbols", "sympy", "mathematica", "coefficients": [{"power", "text",
+    /// "latex", "sympy"}]}]} (plus "notes"; "nu", "values" with adhesion --nu).
     Json,
-    /// LaTeX align* block.
+    /// LaTeX as a paper prints it: `LHS &= c_0 + c_1 v + ... + O(v^{N+1})` in align*.
     Latex,
+    /// A SymPy dict literal {"part": series + O(v**(N+1)), ...}: `sympy.sympify(text)` reads it.
+    /// Names SymPy reads otherwise get a trailing underscore: S -> S_, Lambda -> Lambda_,
+    /// lambda -> lambda_ (also E, I, N, O, Q, beta, gamma, pi, zeta).
+    Sympy,
+    /// A Mathematica association <|"part" -> series + O[v]^(N+1), ...|>; underscores dropped
+    /// from names (rho_4 -> rho4).
+    Mathematica,
 }
 
 /// Series objects the `series` command derives.
@@ -111,7 +120,8 @@ pub enum ShapeName {
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum RawCommand {
-    /// Derive an exact series and print its coefficients.
+    /// Derive an exact series and print its coefficients (text, JSON, LaTeX, SymPy, Mathematica).
+    #[command(long_about = SERIES_HELP)]
     Series {
         /// The object to derive.
         object: ObjectName,
@@ -213,6 +223,16 @@ pub enum RawCommand {
         #[arg(long)]
         fast: bool,
     },
+    /// Print a shell completion script, e.g. `periodic-contact completions bash >
+    /// ~/.local/share/bash-completion/completions/periodic-contact`.
+    Completions {
+        /// The shell.
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff), e.g. `periodic-contact man > periodic-contact.1 && man
+    /// ./periodic-contact.1`.
+    Man,
     /// Measure each method's cost and accuracy and write the calibration table that the method
     /// choice reads (review and commit it; the binary compiles the committed table in).
     Calibrate {
@@ -258,3 +278,24 @@ Examples:
   periodic-contact scene --template adhesion --shape polynomial
   periodic-contact scene --template adhesion --law > law.toml
   periodic-contact solve sliding.toml --json";
+
+/// `series --help`.
+const SERIES_HELP: &str = "Derive an exact power series of the asymptotic analysis and print its coefficients.
+Every symbol printed is defined in docs/theory.md section 12; the parts of each object in section 13.
+
+Formats (--format):
+  text         a header per part, then `[v^k] coefficient` lines (exact rationals / polynomials)
+  json         {\"object\", \"parts\": [{\"object\", \"formula\", \"source\", \"variable\", \"order\",
+               \"symbols\", \"sympy\", \"mathematica\", \"coefficients\": [{\"power\", \"text\", \"latex\",
+               \"sympy\"}]}]}: one schema for every object
+  latex        align* blocks as a paper prints them
+  sympy        a dict literal {\"part\": series + O(v**(N+1))}; sympy.sympify(text) reads it back.
+               Renamed so that sympify keeps them symbols: S -> S_, Lambda -> Lambda_,
+               lambda -> lambda_ (and E, I, N, O, Q, beta, gamma, pi, zeta if they occur)
+  mathematica  an association <|\"part\" -> series + O[v]^(N+1)|>; underscores dropped (rho_4 -> rho4)
+
+Examples:
+  periodic-contact series kernel --order 12
+  periodic-contact series sliding --order 8 --format sympy > sliding.py
+  python3 -c \"import sympy; d = sympy.sympify(open('sliding.py').read()); print(d['l_over_ls'])\"
+  periodic-contact series adhesion --order 6 --format latex";

@@ -56,6 +56,13 @@ pub enum RunConfig {
         /// The TOML text.
         text: String,
     },
+    /// `completions SHELL`: the completion script of the shell.
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// `man`: the man page.
+    Man,
     /// `report --out DIR --scenes DIR`
     Report {
         /// Output folder.
@@ -234,10 +241,10 @@ fn loading_law_series(f: LawFlags) -> Result<RunConfig, ModelError> {
             "the loading-law series is derived in the paper convention only",
         ));
     }
-    if f.format == Format::Latex {
+    if !matches!(f.format, Format::Text | Format::Json) {
         return Err(ModelError::new(
             "--format",
-            "latex",
+            format!("{:?}", f.format).to_lowercase(),
             "the loading-law series prints text or json (its coefficients are numbers)",
         ));
     }
@@ -426,6 +433,8 @@ impl RunConfig {
             }
             RawCommand::Calibrate { out } => Ok(RunConfig::Calibrate { out }),
             RawCommand::Scene { template, shape, law } => scene_template(template, shape, law),
+            RawCommand::Completions { shell } => Ok(RunConfig::Completions { shell }),
+            RawCommand::Man => Ok(RunConfig::Man),
         }
     }
 }
