@@ -20,20 +20,15 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 },
                 other => other.derive(order, &subs)?,
             };
-            let text = match format {
-                Format::Text => parts.iter().map(|d| d.text()).collect::<Vec<_>>().join("\n"),
-                Format::Latex => parts.iter().map(|d| d.latex()).collect::<Vec<_>>().join("\n"),
-                Format::Json => {
-                    let v = match parts.as_slice() {
-                        [one] => one.json(),
-                        many => serde_json::json!({
-                            "object": object.name(),
-                            "parts": many.iter().map(|d| d.json()).collect::<Vec<_>>(),
-                        }),
-                    };
-                    format!("{}\n", serde_json::to_string_pretty(&v)?)
-                }
+            use periodic_contact::asymptotics::print::{render, SeriesFormat};
+            let format = match format {
+                Format::Text => SeriesFormat::Text,
+                Format::Json => SeriesFormat::Json,
+                Format::Latex => SeriesFormat::Latex,
+                Format::Sympy => SeriesFormat::Sympy,
+                Format::Mathematica => SeriesFormat::Mathematica,
             };
+            let text = render(object.name(), &parts, format);
             std::io::stdout().write_all(text.as_bytes())?;
         }
         RunConfig::LoadingLawSeries { nu, ratio, order, format } => {
@@ -54,13 +49,32 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             };
             std::io::stdout().write_all(text.as_bytes())?;
         }
-        RunConfig::Solve { scene, request, format } => {
-            let v = periodic_contact::solve::solve_scene(&scene, request)?;
+        RunConfig::Solve { scene, choice, format } => {
+            let what = format!(
+                "solving with {} ({} digits requested; {})",
+                choice.request.method.name(),
+                choice.request.digits,
+                choice.reason
+            );
+            let (mut v, choice) =
+                with_progress(&what, || periodic_contact::solve::choice::solve_chosen(&scene, choice))?;
+            if let Some(m) = v.as_object_mut() {
+                m.insert("choice".into(), choice.json());
+            }
             let text = match format {
                 Format::Json => format!("{}\n", serde_json::to_string_pretty(&v)?),
                 _ => periodic_contact::solve::format::text(&v),
             };
             std::io::stdout().write_all(text.as_bytes())?;
+        }
+        RunConfig::SceneTemplate { text } => std::io::stdout().write_all(text.as_bytes())?,
+        RunConfig::Completions { shell } => {
+            use clap::CommandFactory;
+            clap_complete::generate(shell, &mut RawArgs::command(), "periodic-contact", &mut std::io::stdout());
+        }
+        RunConfig::Man => {
+            use clap::CommandFactory;
+            clap_mangen::Man::new(RawArgs::command()).render(&mut std::io::stdout())?;
         }
         RunConfig::Report { out, scenes, order, fast } => {
             use periodic_contact::report::{section::Profile, write_report, ReportError, ReportOptions};
@@ -101,6 +115,39 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// Seconds a run may take before progress is shown.
+const PROGRESS_AFTER: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// Runs `work`; if it is still running after [`PROGRESS_AFTER`], shows `what` on stderr: a
+/// spinner with the elapsed time when stderr is a terminal, else one plain line.
+fn with_progress<T>(what: &str, work: impl FnOnce() -> T) -> T {
+    use std::io::IsTerminal;
+    let (done, wait) = std::sync::mpsc::channel::<()>();
+    let what = what.to_string();
+    let shower = std::thread::spawn(move || {
+        if wait.recv_timeout(PROGRESS_AFTER).is_ok() {
+            return;
+        }
+        if !std::io::stderr().is_terminal() {
+            eprintln!("{what} (running for more than {} s)", PROGRESS_AFTER.as_secs());
+            return;
+        }
+        let pb = indicatif::ProgressBar::new_spinner();
+        pb.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} [{elapsed_precise}] {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
+        );
+        pb.set_message(what);
+        pb.enable_steady_tick(std::time::Duration::from_millis(120));
+        let _ = wait.recv();
+        pb.finish_and_clear();
+    });
+    let out = work();
+    let _ = done.send(());
+    let _ = shower.join();
+    out
 }
 
 /// The one mapping from errors to exit codes: 2 for invalid input, 1 for everything else (no

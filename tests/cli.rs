@@ -8,7 +8,10 @@ fn series_json_has_the_documented_layout() {
     let (code, out, _) =
         run(&["series", "weight", "--order", "4", "--theta", "1/10", "--xh", "-1/2", "--format", "json"]);
     assert_eq!(code, 0);
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let top: serde_json::Value = serde_json::from_str(&out).unwrap();
+    // One schema for every object (issue 15): {"object", "parts": [...]}.
+    assert_eq!(top["object"], "weight");
+    let v = &top["parts"][0];
     assert_eq!(v["object"], "weight");
     assert_eq!(v["variable"], "lambda");
     assert_eq!(v["order"], 4);

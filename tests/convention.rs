@@ -90,7 +90,8 @@ fn theory_check_value_in_both_conventions() {
     for (conv, m) in [(Convention::Paper, &paper), (Convention::PeriodicSurface, &periodic)] {
         let f = f64_of(&CHECK, conv);
         let l = m.l.to_f64();
-        assert!((f.lambda - m.lambda.as_ref().unwrap().to_f64()).abs() < 1e-12 * f.lambda, "{conv:?}: lambda");
+        let lambda_m = m.lambda.as_ref().unwrap().to_f64();
+        assert!(approx::relative_eq!(f.lambda, lambda_m, epsilon = 0.0, max_relative = 1e-12), "{conv:?}: lambda");
         assert!((f.c - m.c.to_f64()).abs() < 1e-12 * l, "{conv:?}: c f64 {} vs mpfr {}", f.c, m.c);
         // The closure defect, measured by the shared criterion from the two halves of the gap:
         // M = (2/E*) beta P1 - cW P2 in `paper` (here E* = 1, beta = 1/4, cW = 0: P1/2), round-off

@@ -107,12 +107,11 @@ fn check_loading_law_against_solve(md: &str, out: &std::path::Path) {
     // (E* = k = 1) are the JSON's.
     let csv = |stem: &str| std::fs::read_to_string(out.join(format!("{stem}.csv"))).unwrap();
     let values = |text: &str, curve: &str| -> Vec<(f64, f64)> {
-        text.lines()
-            .filter(|line| line.starts_with(&format!("\"{curve}\",")))
-            .map(|line| {
-                let c: Vec<&str> = line.rsplitn(3, ',').collect();
-                (c[1].parse().unwrap(), c[0].parse().unwrap())
-            })
+        csv::Reader::from_reader(text.as_bytes())
+            .records()
+            .map(|r| r.unwrap())
+            .filter(|r| &r[0] == curve)
+            .map(|r| (r[1].parse().unwrap(), r[2].parse().unwrap()))
             .collect()
     };
     let ratio = values(&csv("loading_law_0_friction"), "|q1|/q2, paper");

@@ -38,7 +38,7 @@ fn two_methods_of_problem_2_agree() {
     let f = json(&["solve", ADHESION, "--method", "f64", "--json"]);
     assert!(num(&m, "digits_verified") >= 20.0);
     let (pm, pf) = (num(&m, "P2"), num(&f, "P2"));
-    assert!((pm - pf).abs() / pm < 1e-12, "P2 {pm} vs {pf}");
+    assert!(approx::relative_eq!(pm, pf, epsilon = 0.0, max_relative = 1e-12), "P2 {pm} vs {pf}");
     for field in ["psi", "q1", "q2"] {
         for i in 0..4 {
             let a: f64 = m[field][i][field].as_str().unwrap().parse().unwrap();

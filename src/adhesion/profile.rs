@@ -77,7 +77,7 @@ pub fn check_profile_on_contact(problem: &AdhesionProblem, a: f64) -> Result<(),
                 name,
                 value,
                 format!(
-                    "the profile must be convex on the contact {contact} (g'' >= 0; THEORY.md section 9), but g''({}) = {}",
+                    "the profile must be convex on the contact {contact} (g'' >= 0; docs/theory.md section 9), but g''({}) = {}",
                     readable_f64(x),
                     readable_f64(v)
                 ),

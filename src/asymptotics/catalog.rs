@@ -16,7 +16,7 @@ pub struct Derived {
     pub object: &'static str,
     /// The formula in words.
     pub formula: &'static str,
-    /// Where it comes from (THEORY.md section, paper equation).
+    /// Where it comes from (docs/theory.md section, paper equation).
     pub source: &'static str,
     /// Expansion variable (or index, for sequences).
     pub variable: &'static str,
@@ -97,7 +97,7 @@ fn substitute(
 /// symbols).
 type Part = (&'static str, &'static str, &'static str, &'static str, Series<Frac>, Vec<Symbol>);
 
-/// The parts of the Problem 1 expansions `e` (either convention; THEORY.md sections 5 and 8).
+/// The parts of the Problem 1 expansions `e` (either convention; docs/theory.md sections 5 and 8).
 fn sliding_parts(e: &SlidingExpansion, order: usize, subs: &Substitutions) -> Result<Vec<Part>, SeriesError> {
     let theta = Symbol::new("theta")?;
     let xh = Symbol::new("xh")?;
@@ -110,7 +110,8 @@ fn sliding_parts(e: &SlidingExpansion, order: usize, subs: &Substitutions) -> Re
         for (j, pj) in e.pressure.iter().enumerate() {
             v[e.step * (j + 1)] = pj.clone();
         }
-        let src = "THEORY.md sections 5 and 8 (periodic convention: K = (kappa P2 - 2 beta l tau0)/L added to [2.8])";
+        let src =
+            "docs/theory.md sections 5 and 8 (periodic convention: K = (kappa P2 - 2 beta l tau0)/L added to [2.8])";
         let syms = vec![theta, t, kappa, invpi];
         return Ok(vec![
             ("l_over_ls", "l/l_s at fixed P2, Lambda = pi l_s/L, periodic convention; kappa = tan(pi theta), invpi = 1/pi", src, "Lambda", frac(e.l_over_ls), syms.clone()),
@@ -128,7 +129,7 @@ fn sliding_parts(e: &SlidingExpansion, order: usize, subs: &Substitutions) -> Re
         v
     };
     let pressure = Series::from_coeffs(xh_poly);
-    let src = "THEORY.md section 5, paper [3.7]-[3.12]";
+    let src = "docs/theory.md section 5, paper [3.7]-[3.12]";
     let mut parts = vec![
         ("l_over_ls", "l/l_s at fixed P2, Lambda = pi l_s/L; l_s = a0/sqrt(1 - 4 theta^2), a0 = sqrt(2 P2/(pi E* k)); Delta/l_s = l/l_s - 1 [3.11]", src, "Lambda", frac(e.l_over_ls), vec![theta, t]),
         ("rbar_minus_rbar_s", "rbar - rbar_s, rbar = c/l, rbar_s = 2 theta - T, T = beta tau0/(E* k l_s)", src, "Lambda", frac(e.rbar_minus_rbar_s), vec![theta, t]),
@@ -216,7 +217,7 @@ fn finish(parts: Vec<Part>, notes: &[String], subs: &Substitutions) -> Result<Ve
 }
 
 /// The Problem 1 expansions of a polynomial punch in either surface convention through
-/// `order` ([`polynomial_sliding_expansion`]; THEORY.md sections 5, 8, 9).
+/// `order` ([`polynomial_sliding_expansion`]; docs/theory.md sections 5, 8, 9).
 pub fn derive_polynomial_sliding(
     profile: &PolynomialProfile,
     convention: Convention,
@@ -232,12 +233,12 @@ pub fn derive_polynomial_sliding(
             .into(),
     );
     notes.push(match convention {
-        Convention::Paper => "convention: paper (THEORY.md section 3; even in Lambda)".into(),
+        Convention::Paper => "convention: paper (docs/theory.md section 3; even in Lambda)".into(),
         Convention::PeriodicSurface => {
-            "convention: periodic (K of THEORY.md section 8 added, T = Tb_s - rho_1/2 in it; kappa = tan(pi theta), invpi = 1/pi)".into()
+            "convention: periodic (K of docs/theory.md section 8 added, T = Tb_s - rho_1/2 in it; kappa = tan(pi theta), invpi = 1/pi)".into()
         }
     });
-    let src = "THEORY.md sections 5, 8, 9; paper [2.13]-[2.14], [3.7]-[3.11]";
+    let src = "docs/theory.md sections 5, 8, 9; paper [2.13]-[2.14], [3.7]-[3.11]";
     let v = Vec::new;
     let parts: Vec<Part> = vec![
         ("Tb_single", "single punch: T + rho_1/2 = Tb_s(theta, rbar_s, rho_j), the solvability condition [2.14] at Lambda = 0 (it fixes rbar_s)", src, "Lambda", one_coefficient(&e.tbar_single), v()),
@@ -252,7 +253,7 @@ pub fn derive_polynomial_sliding(
 }
 
 /// The Problem 2 expansions of an even polynomial punch through `order`
-/// ([`polynomial_adhesion_expansion`]; THEORY.md sections 4, 5, 9).
+/// ([`polynomial_adhesion_expansion`]; docs/theory.md sections 4, 5, 9).
 pub fn derive_polynomial_adhesion(
     profile: &PolynomialProfile,
     order: usize,
@@ -266,7 +267,7 @@ pub fn derive_polynomial_adhesion(
     )];
     notes.extend(profile.period_ratio_definitions());
     notes.push("lambda = pi a/L, chi = pi x/L, L_pi = L/pi; B = pi/cosh(pi eps), S = S(eps)".into());
-    let src = "THEORY.md sections 4, 5, 9; paper [3.13]-[3.18]";
+    let src = "docs/theory.md sections 4, 5, 9; paper [3.13]-[3.18]";
     let v = Vec::new;
     let parts: Vec<Part> = vec![
         (
@@ -297,7 +298,7 @@ fn missing_profile() -> SeriesError {
 }
 
 impl SeriesObject {
-    /// Derives the object through `order` (THEORY.md section 5 order convention): one part for
+    /// Derives the object through `order` (docs/theory.md section 5 order convention): one part for
     /// the foundation objects, several for the Problem 1 expansions.
     pub fn derive(self, order: usize, subs: &Substitutions) -> Result<Vec<Derived>, SeriesError> {
         match self {
@@ -318,7 +319,7 @@ impl SeriesObject {
             SeriesObject::Kernel => vec![(
                 "kernel",
                 "Z(z) = z cot z; (pi/L) cot(pi (x - xi)/L) = Z(lambda (xh - xih)) / (x - xi)",
-                "THEORY.md section 5, paper [3.2]",
+                "docs/theory.md section 5, paper [3.2]",
                 "z",
                 frac(kernel_series(order).map(Poly::from_q)),
                 vec![],
@@ -326,7 +327,7 @@ impl SeriesObject {
             SeriesObject::Weight => vec![(
                 "weight",
                 "Y(xh; lambda) = sinc(lambda (1 + xh))^(1/2 + theta) sinc(lambda (1 - xh))^(1/2 - theta)",
-                "THEORY.md section 5, paper [2.29], [3.1]",
+                "docs/theory.md section 5, paper [2.29], [3.1]",
                 "lambda",
                 frac(weight_series(order)?),
                 vec![theta, xh],
@@ -334,7 +335,7 @@ impl SeriesObject {
             SeriesObject::Jacobi => vec![(
                 "jacobi",
                 "j_n(theta): J_n = int_{-1}^{1} y^n dy / omega(y) = (pi / cos(pi theta)) j_n(theta); coefficient n is j_n",
-                "THEORY.md section 5, paper [3.5]",
+                "docs/theory.md section 5, paper [3.5]",
                 "n",
                 frac(jacobi_moments(order)?),
                 vec![theta],
@@ -342,7 +343,7 @@ impl SeriesObject {
             SeriesObject::Adhesion => {
                 let e = crate::asymptotics::adhesion::adhesion_expansion_with(order, false)?;
                 let (eps, b, sy) = (Symbol::new("eps")?, Symbol::new("B")?, Symbol::new("S")?);
-                let src = "THEORY.md section 5, paper [3.13]-[3.19]";
+                let src = "docs/theory.md section 5, paper [3.13]-[3.19]";
                 vec![
                     (
                         "C_P_over_pi",
@@ -441,48 +442,6 @@ impl Derived {
             }
         }
         s
-    }
-
-    /// LaTeX: one `align*` line per non-zero coefficient.
-    pub fn latex(&self) -> String {
-        let mut s = format!("% {}: {} ({})\n", self.object, self.formula, self.source);
-        for n in &self.notes {
-            s.push_str(&format!("% {n}\n"));
-        }
-        s.push_str("\\begin{align*}\n");
-        let v = match self.variable {
-            "lambda" => "\\lambda",
-            other => other,
-        };
-        let lines: Vec<String> = self
-            .series
-            .coeffs()
-            .iter()
-            .enumerate()
-            .filter(|(_, c)| !c.is_zero())
-            .map(|(k, c)| match self.object {
-                "jacobi" => format!("j_{{{k}}} &= {}", c.latex()),
-                _ => format!("[{v}^{{{k}}}] &= {}", c.latex()),
-            })
-            .collect();
-        s.push_str(&lines.join(" \\\\\n"));
-        s.push_str("\n\\end{align*}\n");
-        s
-    }
-
-    /// JSON in the layout `{"object", "variable", "order", "symbols", "coefficients"}`.
-    pub fn json(&self) -> serde_json::Value {
-        let mut v = self.series.to_json(self.object, self.variable, &self.symbols);
-        if !self.notes.is_empty() {
-            v["notes"] = serde_json::json!(self.notes);
-        }
-        if let Some((nu, vals)) = &self.values {
-            v["nu"] = serde_json::json!(nu);
-            v["values"] = serde_json::Value::Array(
-                vals.iter().map(|(k, x)| serde_json::json!({"power": k, "value": x})).collect(),
-            );
-        }
-        v
     }
 }
 

@@ -567,7 +567,7 @@ impl LawSeries {
         [
             "object: loading_law".into(),
             "formula: Problem 2 under P1 = n P2 (paper convention), parabola g = k x^2; lambda = pi l/L, l = (a + b)/2, c = (b - a)/2, chi = pi x/L".into(),
-            "source: THEORY.md sections 4, 5, 10; issue 12 (asymptotics::loading_law; not in Q(n, eps, B, S): MPFR at given nu, n)".into(),
+            "source: docs/theory.md sections 4, 5, 10; issue 12 (asymptotics::loading_law; not in Q(n, eps, B, S): MPFR at given nu, n)".into(),
             format!(
                 "nu = {}, n = {}, order {} (every term through lambda^{}; psi through chi^{})",
                 exact_series::q_text(&self.nu),

@@ -9,5 +9,6 @@ pub mod kernel;
 pub mod loading_law;
 pub mod loading_law_modes;
 pub mod polynomial;
+pub mod print;
 pub mod sliding;
 pub mod weight;

@@ -14,15 +14,24 @@ pub struct RawArgs {
     pub command: RawCommand,
 }
 
-/// Output format of printed objects.
+/// Output format of `series` (docs/theory.md section 16).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Format {
-    /// Plain text, one coefficient per line.
+    /// Plain text: a header per part, then one `[v^k] coefficient` line per non-zero coefficient.
     Text,
-    /// JSON: {"object", "variable", "order", "symbols", "coefficients": [{"power", "text", "latex"}]}.
+    /// JSON, one schema for every object: {"object", "parts": [{"object", "formula", "source",
+    /// "variable", "order", "symbols", "sympy", "mathematica", "coefficients": [{"power", "text",
+    /// "latex", "sympy"}]}]} (plus "notes"; "nu", "values" with adhesion --nu).
     Json,
-    /// LaTeX align* block.
+    /// LaTeX as a paper prints it: `LHS &= c_0 + c_1 v + ... + O(v^{N+1})` in align*.
     Latex,
+    /// A SymPy dict literal {"part": series + O(v**(N+1)), ...}: `sympy.sympify(text)` reads it.
+    /// Names SymPy reads otherwise get a trailing underscore: S -> S_, Lambda -> Lambda_,
+    /// lambda -> lambda_ (also E, I, N, O, Q, beta, gamma, pi, zeta).
+    Sympy,
+    /// A Mathematica association <|"part" -> series + O[v]^(N+1), ...|>; underscores dropped
+    /// from names (rho_4 -> rho4).
+    Mathematica,
 }
 
 /// Series objects the `series` command derives.
@@ -43,6 +52,40 @@ pub enum ObjectName {
     LoadingLaw,
 }
 
+/// Output format of `solve`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolveFormat {
+    /// `key: value` lines (the JSON's keys joined by dots).
+    Text,
+    /// JSON with string values (keys: docs/theory.md section 14).
+    Json,
+}
+
+/// Problems a scene template is written for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TemplateName {
+    /// Problem 1: steady sliding with friction, adhesive friction and wear.
+    Sliding,
+    /// Problem 2: indentation with complete adhesion (with --law: under a loading law).
+    Adhesion,
+}
+
+/// Punch shapes of a scene template.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TemplateShape {
+    /// g = k x^2.
+    #[value(alias = "parabola")]
+    Parabolic,
+    /// g = D (1 - cos(2 pi x/L)) (Problem 1 only).
+    #[value(alias = "sinusoid")]
+    Sinusoidal,
+    /// g = sum_j c_j x^j (Problem 2: even terms only).
+    Polynomial,
+    /// g = R - sqrt(R^2 - x^2).
+    #[value(alias = "circle")]
+    Circular,
+}
+
 /// Solution methods.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum MethodName {
@@ -54,7 +97,7 @@ pub enum MethodName {
     Series,
 }
 
-/// Surface conventions of Problem 1 (THEORY.md section 8).
+/// Surface conventions of Problem 1 (docs/theory.md section 8).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ConventionName {
     /// The paper's equation [2.8] as it stands (its expansions are even in lambda).
@@ -77,7 +120,8 @@ pub enum ShapeName {
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum RawCommand {
-    /// Derive an exact series and print its coefficients.
+    /// Derive an exact series and print its coefficients (text, JSON, LaTeX, SymPy, Mathematica).
+    #[command(long_about = SERIES_HELP)]
     Series {
         /// The object to derive.
         object: ObjectName,
@@ -114,7 +158,7 @@ pub enum RawCommand {
         /// --shape polynomial).
         #[arg(long = "rbar-s", value_name = "R", allow_hyphen_values = true)]
         rbar_s: Option<String>,
-        /// Surface convention of the sliding expansions (THEORY.md section 8; default paper:
+        /// Surface convention of the sliding expansions (docs/theory.md section 8; default paper:
         /// even powers of Lambda; periodic: odd powers too, symbols kappa = tan(pi theta), invpi = 1/pi).
         #[arg(long, value_enum)]
         convention: Option<ConventionName>,
@@ -123,13 +167,15 @@ pub enum RawCommand {
         format: Format,
     },
     /// Solve the problem a scene file describes and print the result with its verified accuracy.
+    #[command(long_about = SOLVE_HELP)]
     Solve {
-        /// Scene file (TOML).
+        /// Scene file (TOML; write one with `periodic-contact scene --template sliding`).
         scene: PathBuf,
-        /// Digits requested (overrides [output] digits; default 30).
+        /// Digits requested: forces verified MPFR at this precision (overrides [output] digits and
+        /// target_digits), an integer in [1, 1000].
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         digits: Option<String>,
-        /// Method (overrides [output] method; default mpfr).
+        /// Method, forced (overrides [output] method and the choice by target_digits).
         #[arg(long, value_enum)]
         method: Option<MethodName>,
         /// Series order for --method series (default 12).
@@ -139,12 +185,26 @@ pub enum RawCommand {
         /// Problem 2 is the same in both.
         #[arg(long, value_enum)]
         convention: Option<ConventionName>,
-        /// Output format.
+        /// Output format (default text).
         #[arg(long, value_enum)]
-        format: Option<Format>,
+        format: Option<SolveFormat>,
         /// Same as --format json.
         #[arg(long)]
         json: bool,
+    },
+    /// Print a commented scene file (TOML) with every key, its meaning, unit and valid range: the
+    /// table the scene parser checks against. Save it, edit the values, run `solve` on it.
+    #[command(long_about = SCENE_HELP)]
+    Scene {
+        /// The problem.
+        #[arg(long, value_enum)]
+        template: TemplateName,
+        /// The punch shape (adhesion: parabolic, polynomial or circular; --law: parabolic).
+        #[arg(long, value_enum, default_value_t = TemplateShape::Parabolic)]
+        shape: TemplateShape,
+        /// Problem 2 under a loading law P1 = N(P2) (with --template adhesion).
+        #[arg(long)]
+        law: bool,
     },
     /// Write the report into a folder: the main job. Coefficient tables, method choice per scene,
     /// convergence orders, speed against accuracy, stability maps, load-size curves, paper vs
@@ -163,6 +223,16 @@ pub enum RawCommand {
         #[arg(long)]
         fast: bool,
     },
+    /// Print a shell completion script, e.g. `periodic-contact completions bash >
+    /// ~/.local/share/bash-completion/completions/periodic-contact`.
+    Completions {
+        /// The shell.
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff), e.g. `periodic-contact man > periodic-contact.1 && man
+    /// ./periodic-contact.1`.
+    Man,
     /// Measure each method's cost and accuracy and write the calibration table that the method
     /// choice reads (review and commit it; the binary compiles the committed table in).
     Calibrate {
@@ -171,3 +241,61 @@ pub enum RawCommand {
         out: PathBuf,
     },
 }
+
+/// `solve --help`.
+const SOLVE_HELP: &str = "Solve the problem a scene file describes and print the result with its accuracy.
+
+Which method runs:
+  --method M            forces M (mpfr: verified high precision; f64: fast, digits estimated by a
+                        second run; series: the truncated exact series, Problem 1 only)
+  --digits N            forces verified MPFR at N digits (also [output] digits)
+  [output] method       forces a method from the scene
+  [output] target_digits
+                        the cheapest method predicted to meet it (calibration/methods.csv),
+                        as the report chooses; the JSON's `choice` says which and why
+  none of these         verified MPFR at 30 digits
+Runs over about 2 s show progress on stderr.
+
+Output: text (`key: value` lines) or --json (string values; every key: docs/theory.md
+section 14). Exit codes: 0 answer, 2 invalid input (the message names the parameter, its value
+and the valid range), 1 no solution, not physical or no convergence.
+
+Examples:
+  periodic-contact scene --template sliding > s.toml && periodic-contact solve s.toml --json
+  periodic-contact solve s.toml --method f64
+  periodic-contact solve s.toml --digits 50 --convention periodic";
+
+/// `scene --help`.
+const SCENE_HELP: &str = "Print a commented scene file (TOML) with every key the parser accepts for the
+problem and shape: its meaning, unit and valid range, alternatives and optional keys commented out.
+The text comes from the parser's own key table, so it cannot drift from what `solve` accepts.
+
+Numbers are exact: quote decimals and ratios (\"0.25\", \"1/3\", \"1e-3\"); unknown keys are errors.
+
+Examples:
+  periodic-contact scene --template sliding > sliding.toml
+  periodic-contact scene --template sliding --shape sinusoid
+  periodic-contact scene --template adhesion --shape polynomial
+  periodic-contact scene --template adhesion --law > law.toml
+  periodic-contact solve sliding.toml --json";
+
+/// `series --help`.
+const SERIES_HELP: &str = "Derive an exact power series of the asymptotic analysis and print its coefficients.
+Every symbol printed is defined in docs/theory.md section 12; the parts of each object in section 13.
+
+Formats (--format):
+  text         a header per part, then `[v^k] coefficient` lines (exact rationals / polynomials)
+  json         {\"object\", \"parts\": [{\"object\", \"formula\", \"source\", \"variable\", \"order\",
+               \"symbols\", \"sympy\", \"mathematica\", \"coefficients\": [{\"power\", \"text\", \"latex\",
+               \"sympy\"}]}]}: one schema for every object
+  latex        align* blocks as a paper prints them
+  sympy        a dict literal {\"part\": series + O(v**(N+1))}; sympy.sympify(text) reads it back.
+               Renamed so that sympify keeps them symbols: S -> S_, Lambda -> Lambda_,
+               lambda -> lambda_ (and E, I, N, O, Q, beta, gamma, pi, zeta if they occur)
+  mathematica  an association <|\"part\" -> series + O[v]^(N+1)|>; underscores dropped (rho_4 -> rho4)
+
+Examples:
+  periodic-contact series kernel --order 12
+  periodic-contact series sliding --order 8 --format sympy > sliding.py
+  python3 -c \"import sympy; d = sympy.sympify(open('sliding.py').read()); print(d['l_over_ls'])\"
+  periodic-contact series adhesion --order 6 --format latex";

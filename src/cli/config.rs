@@ -1,12 +1,15 @@
 //! Validated, typed configuration built from [`super::args::RawArgs`] before any computation.
 
-use super::args::{ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName};
+use super::args::{
+    ConventionName, Format, MethodName, ObjectName, RawArgs, RawCommand, ShapeName, SolveFormat, TemplateName,
+    TemplateShape,
+};
 use crate::asymptotics::catalog::{SeriesObject, Substitutions};
 use crate::asymptotics::polynomial::PolynomialProfile;
 use crate::asymptotics::sliding::SlidingShape;
 use crate::model::{Convention, ModelError};
 use crate::scene::{parse::parse_scene, Method, Scene, SceneProblem};
-use crate::solve::{SolveRequest, DEFAULT_DIGITS};
+use crate::solve::choice::{solve_choice, Forced, MethodChoice};
 use exact_series::{parse_rational, Q};
 use num_traits::Signed;
 use std::path::PathBuf;
@@ -43,11 +46,23 @@ pub enum RunConfig {
     Solve {
         /// The parsed scene.
         scene: Box<Scene>,
-        /// Method, digits, series order.
-        request: SolveRequest,
+        /// Method, digits, series order, and why.
+        choice: MethodChoice,
         /// Output format.
         format: Format,
     },
+    /// `scene --template KIND --shape SHAPE [--law]`: the commented scene, ready to print.
+    SceneTemplate {
+        /// The TOML text.
+        text: String,
+    },
+    /// `completions SHELL`: the completion script of the shell.
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// `man`: the man page.
+    Man,
     /// `report --out DIR --scenes DIR`
     Report {
         /// Output folder.
@@ -189,17 +204,6 @@ fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), Mo
     Ok(())
 }
 
-/// Digits when `--digits` is not given: the scene's `digits`; for the loading-law problem, whose
-/// one method is MPFR (the cheapest meeting any target), its `target_digits` next; else
-/// [`DEFAULT_DIGITS`].
-fn default_digits(scene: &Scene) -> u32 {
-    let target = match scene.problem {
-        SceneProblem::LoadingLaw(_) => scene.output.target_digits,
-        _ => None,
-    };
-    scene.output.digits.or(target).unwrap_or(DEFAULT_DIGITS)
-}
-
 /// The flags of `series loading-law`.
 struct LawFlags<'a> {
     order: &'a str,
@@ -237,10 +241,10 @@ fn loading_law_series(f: LawFlags) -> Result<RunConfig, ModelError> {
             "the loading-law series is derived in the paper convention only",
         ));
     }
-    if f.format == Format::Latex {
+    if !matches!(f.format, Format::Text | Format::Json) {
         return Err(ModelError::new(
             "--format",
-            "latex",
+            format!("{:?}", f.format).to_lowercase(),
             "the loading-law series prints text or json (its coefficients are numbers)",
         ));
     }
@@ -393,39 +397,32 @@ impl RunConfig {
                     override_convention(&mut parsed, c)?;
                 }
                 let digits = match digits {
-                    Some(d) => d
-                        .trim()
-                        .parse::<u32>()
-                        .ok()
-                        .filter(|d| (1..=crate::scene::parse::MAX_DIGITS).contains(d))
-                        .ok_or_else(|| {
-                            ModelError::new(
-                                "--digits",
-                                &d,
-                                format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
-                            )
-                        })?,
-                    None => default_digits(&parsed),
+                    Some(d) => Some(
+                        d.trim()
+                            .parse::<u32>()
+                            .ok()
+                            .filter(|d| (1..=crate::scene::parse::MAX_DIGITS).contains(d))
+                            .ok_or_else(|| {
+                                ModelError::new(
+                                    "--digits",
+                                    &d,
+                                    format!("must be an integer in [1, {}]", crate::scene::parse::MAX_DIGITS),
+                                )
+                            })?,
+                    ),
+                    None => None,
                 };
-                let method = match method {
-                    Some(MethodName::Mpfr) => Method::Mpfr,
-                    Some(MethodName::F64) => Method::F64,
-                    Some(MethodName::Series) => Method::Series,
-                    None => parsed.output.method.unwrap_or(Method::Mpfr),
-                };
-                let series_order = match order {
-                    Some(o) => parse_order(&o, 24)?,
-                    None => parsed.output.series_order.unwrap_or(12),
-                };
-                let format = if json { Format::Json } else { format.unwrap_or(Format::Text) };
-                if format == Format::Latex {
-                    return Err(ModelError::new("--format", "latex", "solve prints text or json"));
-                }
-                Ok(RunConfig::Solve {
-                    scene: Box::new(parsed),
-                    request: SolveRequest { method, digits, series_order },
-                    format,
-                })
+                let method = method.map(|m| match m {
+                    MethodName::Mpfr => Method::Mpfr,
+                    MethodName::F64 => Method::F64,
+                    MethodName::Series => Method::Series,
+                });
+                let series_order = order.map(|o| parse_order(&o, 24)).transpose()?;
+                let forced = Forced { method, digits, series_order };
+                let choice = solve_choice(&parsed, forced)
+                    .map_err(|e| ModelError::new("calibration/methods.csv", "(compiled in)", e.to_string()))?;
+                let format = if json || format == Some(SolveFormat::Json) { Format::Json } else { Format::Text };
+                Ok(RunConfig::Solve { scene: Box::new(parsed), choice, format })
             }
             RawCommand::Report { out, scenes, order, fast } => {
                 let order = parse_order(&order, 40)?;
@@ -435,6 +432,34 @@ impl RunConfig {
                 Ok(RunConfig::Report { out, scenes, order, fast })
             }
             RawCommand::Calibrate { out } => Ok(RunConfig::Calibrate { out }),
+            RawCommand::Scene { template, shape, law } => scene_template(template, shape, law),
+            RawCommand::Completions { shell } => Ok(RunConfig::Completions { shell }),
+            RawCommand::Man => Ok(RunConfig::Man),
         }
     }
+}
+
+/// `scene --template KIND --shape SHAPE [--law]` ([`crate::scene::keys::template`]).
+fn scene_template(template: TemplateName, shape: TemplateShape, law: bool) -> Result<RunConfig, ModelError> {
+    use crate::scene::keys::{template as make, Kind};
+    let kind = match (template, law) {
+        (TemplateName::Sliding, true) => {
+            return Err(ModelError::new(
+                "--law",
+                "(present)",
+                "a loading law is a Problem 2 setting: --template adhesion --law",
+            ))
+        }
+        (TemplateName::Sliding, false) => Kind::Sliding,
+        (TemplateName::Adhesion, false) => Kind::Adhesion,
+        (TemplateName::Adhesion, true) => Kind::Law,
+    };
+    let shape = match shape {
+        TemplateShape::Parabolic => "parabolic",
+        TemplateShape::Sinusoidal => "sinusoidal",
+        TemplateShape::Polynomial => "polynomial",
+        TemplateShape::Circular => "circular",
+    };
+    let text = make(kind, shape).map_err(|e| ModelError::new(e.parameter, e.value, e.expected))?;
+    Ok(RunConfig::SceneTemplate { text })
 }

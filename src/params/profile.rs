@@ -131,7 +131,7 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
             name,
             value,
             format!(
-                "the profile must be convex on the contact {contact} (g'' >= 0; THEORY.md section 9), but g''({}) = {}",
+                "the profile must be convex on the contact {contact} (g'' >= 0; docs/theory.md section 9), but g''({}) = {}",
                 crate::numerics::accuracy::readable_f64(*x),
                 crate::numerics::accuracy::readable_f64(*v)
             ),

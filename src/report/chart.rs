@@ -4,7 +4,6 @@
 //! span decades (errors, times, loads over decades) and names every curve in its legend.
 
 use plotters::prelude::*;
-use std::fmt::Write as _;
 
 /// How a curve is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -84,15 +83,18 @@ pub fn colour(i: usize) -> RGBColor {
 }
 
 impl Chart {
-    /// The CSV behind the chart: `curve,x,y`, one row per point, full f64 precision.
+    /// The CSV behind the chart: `curve,x,y`, one row per point, full f64 precision (written by
+    /// the `csv` crate: fields quoted when they hold a comma, a quote or a line break).
     pub fn csv(&self) -> String {
-        let mut s = format!("curve,{},{}\n", csv_field(&self.x_label), csv_field(&self.y_label));
+        let mut w = csv::Writer::from_writer(Vec::new());
+        // Writing to a Vec cannot fail.
+        w.write_record(["curve", &self.x_label, &self.y_label]).expect("in-memory CSV");
         for c in &self.curves {
             for (x, y) in &c.points {
-                let _ = writeln!(s, "{},{:e},{:e}", csv_field(&c.name), x, y);
+                w.write_record([c.name.as_str(), &format!("{x:e}"), &format!("{y:e}")]).expect("in-memory CSV");
             }
         }
-        s
+        String::from_utf8(w.into_inner().expect("in-memory CSV")).expect("UTF-8 fields")
     }
 
     /// Points as drawn: log axes are drawn as log10 of the data on a linear axis (ticks labelled
@@ -236,17 +238,34 @@ pub fn log_axis_number(v: f64) -> String {
     }
 }
 
-fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn csv_reads_back_names_with_commas_and_quotes() {
+        let c = Chart {
+            stem: "t".into(),
+            title: "t".into(),
+            x_label: "x, [s]".into(),
+            y_label: "y \"rel\"".into(),
+            x_log: false,
+            y_log: false,
+            curves: vec![Curve {
+                name: "|q1|/q2, paper".into(),
+                points: vec![(1.0, 2.5e-3)],
+                draw: Draw::LineMarkers,
+                colour: None,
+            }],
+            legend: Legend::UpperRight,
+        };
+        let text = c.csv();
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        assert_eq!(r.headers().unwrap().iter().collect::<Vec<_>>(), ["curve", "x, [s]", "y \"rel\""]);
+        let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+        assert_eq!(rows.len(), 1);
+        assert_eq!((&rows[0][0], &rows[0][1], &rows[0][2]), ("|q1|/q2, paper", "1e0", "2.5e-3"));
+    }
 
     #[test]
     fn svg_names_axes_and_curves_and_csv_holds_every_point() {

@@ -18,49 +18,7 @@ use std::time::Instant;
 /// Working precision of comparisons (bits): errors down to 1e-70 are resolved.
 pub const COMPARE_BITS: u32 = 256;
 
-/// A method and its knob.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Knob {
-    /// The truncated exact series through Lambda^N (Problem 1), evaluated at 128 bits.
-    Series(usize),
-    /// The f64 solver; `Some(n)`: n collocation nodes forced (Problem 1), `None`: automatic.
-    F64(Option<usize>),
-    /// MPFR, one run at the precision and node count for this many digits (not verified).
-    Mpfr(u32),
-    /// MPFR, two runs (verified digits): what `solve` uses.
-    MpfrVerified(u32),
-}
-
-impl Knob {
-    /// Method name as in the calibration table.
-    pub fn method(&self) -> &'static str {
-        match self {
-            Knob::Series(_) => "series",
-            Knob::F64(_) => "f64",
-            Knob::Mpfr(_) => "mpfr",
-            Knob::MpfrVerified(_) => "mpfr-verified",
-        }
-    }
-    /// The knob's value as text (`auto` for automatic f64 nodes).
-    pub fn value(&self) -> String {
-        match self {
-            Knob::Series(n) => n.to_string(),
-            Knob::F64(Some(n)) => n.to_string(),
-            Knob::F64(None) => "auto".into(),
-            Knob::Mpfr(d) | Knob::MpfrVerified(d) => d.to_string(),
-        }
-    }
-    /// Legend/label text, e.g. "series order 8", "f64 64 nodes", "MPFR 40 digits".
-    pub fn label(&self) -> String {
-        match self {
-            Knob::Series(n) => format!("series order {n}"),
-            Knob::F64(Some(n)) => format!("f64, {n} nodes"),
-            Knob::F64(None) => "f64, automatic nodes".into(),
-            Knob::Mpfr(d) => format!("MPFR, {d} digits"),
-            Knob::MpfrVerified(d) => format!("MPFR verified, {d} digits"),
-        }
-    }
-}
+pub use crate::solve::choice::Knob;
 
 /// What a run produced: the size/load quantities at [`COMPARE_BITS`].
 #[derive(Debug, Clone)]

@@ -1,5 +1,6 @@
 //! Scene files (TOML): a problem statement plus what to output. Parsed strictly ([`parse`]):
-//! unknown keys are rejected, numbers are read exactly from their text (a decimal or a ratio such
+//! unknown keys are rejected (the valid keys, their meaning, unit and range: the one table
+//! [`keys::KEYS`], printed by `periodic-contact scene --template`), numbers are read exactly from their text (a decimal or a ratio such
 //! as "1/3", quoted or not) and never pass through `f64`.
 //!
 //! ```toml
@@ -24,7 +25,7 @@
 //! points = ["-0.6", "0.1", "0.7"] # xh = (x - c)/l in (-1, 1)
 //! ```
 //!
-//! `convention` is the surface convention of Problem 1 (THEORY.md section 8;
+//! `convention` is the surface convention of Problem 1 (docs/theory.md section 8;
 //! [`crate::model::Convention`]): `"paper"` solves the paper's equation [2.8] as it stands (its
 //! expansions run in even powers of lambda; the surface then does not close over a period when
 //! friction, wear or tau0 act: mismatch (2/E*) beta P1 - cW P2); `"periodic"` adds
@@ -46,7 +47,7 @@
 //! points = ["0", "0.5", "0.9"]   # x/a in [0, 1]
 //! ```
 //!
-//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; an asymmetric contact
+//! Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; an asymmetric contact
 //! [-a, b]) is an adhesion scene whose `[adhesion]` states the law; it parses to
 //! [`SceneProblem::LoadingLaw`], and `[problem] convention` matters there (P1 != 0 brings in the
 //! rotation term):
@@ -73,6 +74,7 @@
 //! report from the committed calibration table, `calibration/methods.csv`); `digits` forces a
 //! working precision instead.
 
+pub mod keys;
 pub mod parse;
 
 use crate::model::{AdhesionProblem, Exact, LoadingLawProblem, SlidingProblem};
@@ -130,7 +132,7 @@ pub enum SceneProblem {
     Sliding(SlidingProblem),
     /// Problem 2.
     Adhesion(AdhesionProblem),
-    /// Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; asymmetric contact).
+    /// Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; asymmetric contact).
     LoadingLaw(LoadingLawProblem),
 }
 

@@ -1,5 +1,6 @@
 //! Strict scene parser (toml_edit keeps each literal's text, so numbers are read exactly).
 
+use super::keys::{self, Kind};
 use super::{with_value, Method, OutputSpec, Scene, SceneProblem, Sweep, SweepParameter};
 use crate::model::{
     AdhesionProblem, AdhesionSize, Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, ModelError,
@@ -18,9 +19,9 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
         ModelError::new("scene", "(file)", format!("malformed TOML: {}", e.to_string().trim()))
     })?;
     let root = doc.as_table();
-    allow_keys(root, "", &["problem", "material", "punch", "sliding", "adhesion", "output", "sweep"])?;
+    allow_keys(root, "", &keys::TABLES)?;
     let problem = table(root, "problem")?;
-    allow_keys(problem, "problem", &["kind", "convention"])?;
+    allow_keys(problem, "problem", &keys::allowed_any("problem", Kind::Sliding))?;
     let kind = string(problem, "problem", "kind")?;
     let convention = parse_convention(problem)?;
     match kind.as_str() {
@@ -47,11 +48,11 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
             let sweep = parse_sweep(root, &problem)?;
             Ok(Scene { problem, output, sweep })
         }
-        other => Err(ModelError::new("problem.kind", other, "must be \"sliding\" or \"adhesion\"")),
+        other => Err(ModelError::new("problem.kind", other, format!("must be {}", keys::KIND_RANGE))),
     }
 }
 
-/// `[problem] convention`: "paper" (the default) or "periodic" (THEORY.md section 8). Problem 2
+/// `[problem] convention`: "paper" (the default) or "periodic" (docs/theory.md section 8). Problem 2
 /// (symmetric: P1 = 0, no wear) is the same problem in both, so an adhesion scene accepts either
 /// value and it has no effect there; under a loading law (P1 != 0) it brings in the rotation term.
 fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
@@ -59,8 +60,9 @@ fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
         None => Ok(Convention::Paper),
         Some(v) => {
             let name = literal(v).unwrap_or_else(|| v.to_string().trim().to_string());
-            parse_convention_name(&name)
-                .ok_or_else(|| ModelError::new("problem.convention", name.trim(), "must be \"paper\" or \"periodic\""))
+            parse_convention_name(&name).ok_or_else(|| {
+                ModelError::new("problem.convention", name.trim(), format!("must be {}", keys::CONVENTION_RANGE))
+            })
         }
     }
 }
@@ -148,7 +150,7 @@ fn exact_req(t: &Table, prefix: &str, key: &str) -> Result<Exact, ModelError> {
 
 fn parse_material(root: &Table) -> Result<Material, ModelError> {
     let m = table(root, "material")?;
-    allow_keys(m, "material", &["poisson_ratio", "youngs_modulus", "contact_modulus"])?;
+    allow_keys(m, "material", &keys::allowed_any("material", Kind::Sliding))?;
     let nu = exact_req(m, "material", "poisson_ratio")?;
     match (exact_opt(m, "material", "youngs_modulus")?, exact_opt(m, "material", "contact_modulus")?) {
         (Some(_), Some(_)) => {
@@ -181,30 +183,17 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
         Some(Value::String(s)) if s.value().trim() == "inf" => Period::Infinite,
         Some(v) => Period::finite(exact_value(v, "punch.period")?).map_err(|e| prefixed(e, "punch"))?,
     };
+    if keys::SHAPES.contains(&shape.as_str()) {
+        allow_keys(p, "punch", &keys::allowed("punch", Kind::Sliding, &shape))?;
+    }
     let shape = match shape.as_str() {
-        "parabolic" => {
-            allow_keys(p, "punch", &["shape", "k", "period"])?;
-            PunchShape::parabolic(exact_req(p, "punch", "k")?).map_err(|e| prefixed(e, "punch"))?
-        }
+        "parabolic" => PunchShape::parabolic(exact_req(p, "punch", "k")?).map_err(|e| prefixed(e, "punch"))?,
         "sinusoidal" => {
-            allow_keys(p, "punch", &["shape", "amplitude", "period"])?;
             PunchShape::sinusoidal(exact_req(p, "punch", "amplitude")?).map_err(|e| prefixed(e, "punch"))?
         }
-        "polynomial" => {
-            allow_keys(p, "punch", &["shape", "coefficients", "period"])?;
-            PunchShape::polynomial(coefficients(p)?).map_err(|e| prefixed(e, "punch"))?
-        }
-        "circular" => {
-            allow_keys(p, "punch", &["shape", "radius", "period"])?;
-            PunchShape::circular(exact_req(p, "punch", "radius")?).map_err(|e| prefixed(e, "punch"))?
-        }
-        other => {
-            return Err(ModelError::new(
-                "punch.shape",
-                other,
-                "must be \"parabolic\", \"sinusoidal\", \"polynomial\" or \"circular\"",
-            ))
-        }
+        "polynomial" => PunchShape::polynomial(coefficients(p)?).map_err(|e| prefixed(e, "punch"))?,
+        "circular" => PunchShape::circular(exact_req(p, "punch", "radius")?).map_err(|e| prefixed(e, "punch"))?,
+        other => return Err(ModelError::new("punch.shape", other, format!("must be {}", keys::SHAPE_RANGE))),
     };
     Ok((shape, period))
 }
@@ -224,7 +213,7 @@ fn parse_sliding(root: &Table, convention: Convention) -> Result<SlidingProblem,
     let material = parse_material(root)?;
     let (shape, period) = parse_punch(root)?;
     let s = table(root, "sliding")?;
-    allow_keys(s, "sliding", &["normal_load", "half_length", "friction", "adhesive_friction", "wear", "speed"])?;
+    allow_keys(s, "sliding", &keys::allowed_any("sliding", Kind::Sliding))?;
     let zero = || Exact::from_integer(0.into());
     let load = match (exact_opt(s, "sliding", "normal_load")?, exact_opt(s, "sliding", "half_length")?) {
         (Some(_), Some(_)) => {
@@ -252,7 +241,7 @@ fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
     let material = parse_material(root)?;
     let (shape, period) = parse_punch(root)?;
     let s = table(root, "adhesion")?;
-    allow_keys(s, "adhesion", &["half_width", "normal_load"])?;
+    allow_keys(s, "adhesion", &keys::allowed_any("adhesion", Kind::Adhesion))?;
     let size = match (exact_opt(s, "adhesion", "half_width")?, exact_opt(s, "adhesion", "normal_load")?) {
         (Some(_), Some(_)) => {
             return Err(ModelError::new("adhesion", "half_width and normal_load", "give one of them, not both"))
@@ -264,7 +253,7 @@ fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
     AdhesionProblem::new(material, period, shape, size).map_err(|e| prefixed(e, "adhesion"))
 }
 
-/// The keys of `[adhesion]` that make it the loading-law problem (THEORY.md section 10).
+/// The keys of `[adhesion]` that make it the loading-law problem (docs/theory.md section 10).
 const LAW_KEYS: [&str; 2] = ["tangential_ratio", "loading_law"];
 
 /// Whether `[adhesion]` states a loading law (either key of [`LAW_KEYS`]).
@@ -288,7 +277,7 @@ fn parse_loading_law(root: &Table, convention: Convention) -> Result<LoadingLawP
              (or normal_load)",
         ));
     }
-    allow_keys(s, "adhesion", &["tangential_ratio", "loading_law", "half_length", "normal_load"])?;
+    allow_keys(s, "adhesion", &keys::allowed_any("adhesion", Kind::Law))?;
     let law = match (value(s, "adhesion", "tangential_ratio")?, value(s, "adhesion", "loading_law")?) {
         (Some(_), Some(_)) => {
             return Err(ModelError::new(
@@ -348,7 +337,7 @@ fn parse_digits(v: &Value, name: &str) -> Result<u32, ModelError> {
         .parse::<u32>()
         .ok()
         .filter(|d| (1..=MAX_DIGITS).contains(d))
-        .ok_or_else(|| ModelError::new(name, text.trim(), format!("must be an integer in [1, {MAX_DIGITS}]")))
+        .ok_or_else(|| ModelError::new(name, text.trim(), format!("must be {}", keys::DIGITS_RANGE)))
 }
 
 fn parse_output(root: &Table, range: PointRange) -> Result<OutputSpec, ModelError> {
@@ -360,7 +349,7 @@ fn parse_output(root: &Table, range: PointRange) -> Result<OutputSpec, ModelErro
     let Item::Table(o) = item else {
         return Err(ModelError::new("output", "(not a table)", "must be an [output] table"));
     };
-    allow_keys(o, "output", &["digits", "target_digits", "points", "method", "series_order"])?;
+    allow_keys(o, "output", &keys::allowed_any("output", Kind::Sliding))?;
     out.digits = value(o, "output", "digits")?.map(|v| parse_digits(v, "output.digits")).transpose()?;
     out.target_digits =
         value(o, "output", "target_digits")?.map(|v| parse_digits(v, "output.target_digits")).transpose()?;
@@ -368,17 +357,15 @@ fn parse_output(root: &Table, range: PointRange) -> Result<OutputSpec, ModelErro
         let name = literal(v).unwrap_or_default();
         out.method = Some(
             Method::parse(&name)
-                .ok_or_else(|| ModelError::new("output.method", &name, "must be \"mpfr\", \"f64\" or \"series\""))?,
+                .ok_or_else(|| ModelError::new("output.method", &name, format!("must be {}", keys::METHOD_RANGE)))?,
         );
     }
     if let Some(v) = value(o, "output", "series_order")? {
         let text = literal(v).unwrap_or_default();
-        out.series_order = Some(
-            text.parse::<usize>()
-                .ok()
-                .filter(|n| *n <= 24)
-                .ok_or_else(|| ModelError::new("output.series_order", &text, "must be an integer in [0, 24]"))?,
-        );
+        out.series_order =
+            Some(text.parse::<usize>().ok().filter(|n| *n <= keys::MAX_SERIES_ORDER).ok_or_else(|| {
+                ModelError::new("output.series_order", &text, format!("must be {}", keys::SERIES_ORDER_RANGE))
+            })?);
     }
     if let Some(v) = value(o, "output", "points")? {
         let Value::Array(a) = v else {
@@ -413,11 +400,13 @@ fn parse_sweep(root: &Table, problem: &SceneProblem) -> Result<Option<Sweep>, Mo
     let Item::Table(t) = item else {
         return Err(ModelError::new("sweep", "(not a table)", "must be a [sweep] table"));
     };
-    let allowed: &[&str] = match problem {
-        SceneProblem::Sliding(_) | SceneProblem::LoadingLaw(_) => &["normal_load", "half_length"],
-        SceneProblem::Adhesion(_) => &["normal_load", "half_width"],
+    let kind = match problem {
+        SceneProblem::Sliding(_) => Kind::Sliding,
+        SceneProblem::Adhesion(_) => Kind::Adhesion,
+        SceneProblem::LoadingLaw(_) => Kind::Law,
     };
-    allow_keys(t, "sweep", allowed)?;
+    let allowed = keys::allowed_any("sweep", kind);
+    allow_keys(t, "sweep", &allowed)?;
     let keys: Vec<&str> = t.iter().map(|(k, _)| k).collect();
     let [key] = keys.as_slice() else {
         return Err(ModelError::new(

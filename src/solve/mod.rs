@@ -10,6 +10,7 @@ pub mod answer_f64;
 pub mod answer_law;
 pub mod answer_mpfr;
 pub mod answer_series;
+pub mod choice;
 pub mod format;
 pub mod render;
 
@@ -80,7 +81,8 @@ fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
     }
     let Ok(periodic) = p.to_builder().convention(Convention::PeriodicSurface).build() else { return e };
     let solved = collocation_f64::solve_sliding_f64(&periodic, &[], &collocation_f64::SolverOptions::default()).is_ok();
-    let hint = "; in the `periodic` convention (--convention periodic, THEORY.md section 8: the surface closes over \
+    let hint =
+        "; in the `periodic` convention (--convention periodic, docs/theory.md section 8: the surface closes over \
                 the period) the f64 method finds a physical contact at this load";
     match e {
         Error::NotPhysical { why } if solved => Error::NotPhysical { why: format!("{why}{hint}") },

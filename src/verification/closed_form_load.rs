@@ -56,7 +56,7 @@ impl EvenSlope {
                         name,
                         value,
                         format!(
-                            "the closed-form load of THEORY.md section 9 needs an even profile (coefficient of x^{j} \
+                            "the closed-form load of docs/theory.md section 9 needs an even profile (coefficient of x^{j} \
                              must be 0)"
                         ),
                     )));
@@ -197,7 +197,7 @@ pub fn frictionless_load_mpfr(
     }
     Err(Error::NoConvergence {
         what: format!(
-            "the closed-form load of THEORY.md section 9 at half-width {}: trapezoid sums up to {MAX_POINTS} \
+            "the closed-form load of docs/theory.md section 9 at half-width {}: trapezoid sums up to {MAX_POINTS} \
              points do not agree to {prec} bits",
             crate::numerics::accuracy::readable_mpfr(a)
         ),
