@@ -8,7 +8,10 @@ closed form P2 = pi E* D sin^2(pi a/L) (paper [2.17]).
     python python/examples/westergaard_vs_tamaas.py [OUT.png]     # default westergaard_vs_tamaas.png
 
 Writes the figure (half-width a/L against the load, and each method's relative error of a against
-the closed form) and prints the table.
+the closed form) and prints the table. The errors are taken in float64 (the closed form too), so
+about 1e-16 is the comparison's floor: the verified MPFR values sit on it (their own 20 digits are
+not visible here). Run on 2026-11-23 (this machine, shared): f64 and MPFR within 4e-15 of the
+closed form at every load, Tamaas at N = 4096 within 7e-5 to 3.5e-3 (counting contact nodes).
 """
 
 import math
@@ -92,7 +95,7 @@ def main():
         ax2.semilogy(p, err, style, label=name)
     ax2.axhline(np.finfo(float).eps, color="grey", lw=0.8, ls=":", label="f64 epsilon")
     ax2.set_xlabel("load per period P2 [units of E* L]")
-    ax2.set_ylabel("|a - a_Westergaard| / a [-] (floor 1e-17)")
+    ax2.set_ylabel("|a - a_Westergaard| / a [-] (float64; 0 drawn at 1e-17)")
     ax2.set_title("relative error of the half-width")
     ax2.legend(fontsize=8)
     fig.tight_layout()

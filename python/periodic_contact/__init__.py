@@ -175,14 +175,17 @@ def solve(
     """Solves a scene as ``periodic-contact solve SCENE --json`` does; returns its JSON as a dict
     (string values, the same keys).
 
-    ``scene``: TOML text, a path (``pathlib.Path`` or ``os.PathLike``) to a scene file, or a dict
+    ``scene``: TOML text, a path to a scene file (``pathlib.Path``, or a one-line string ending in
+    ``.toml`` naming an existing file), or a dict
     of tables (see :func:`to_toml`). ``digits``, ``method`` (``mpfr``, ``f64``, ``series``),
     ``order`` (series order) and ``convention`` (``paper``, ``periodic``) are the flags of
     ``solve``; ``None`` keeps the scene's own (or the CLI's default).
     """
     if isinstance(scene, Mapping):
         text = to_toml(scene)
-    elif isinstance(scene, os.PathLike):
+    elif isinstance(scene, os.PathLike) or (
+        isinstance(scene, str) and "\n" not in scene and scene.endswith(".toml") and os.path.isfile(scene)
+    ):
         with open(scene, encoding="utf-8") as f:
             text = f.read()
     else:

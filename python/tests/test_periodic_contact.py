@@ -104,6 +104,7 @@ def test_solve_reproduces_the_cli_json():
     assert code == 0
     want = json.loads(out)
     assert pc.solve(SCENE) == want
+    assert pc.solve(str(SCENE)) == want
     text = SCENE.read_text()
     assert pc.solve(text) == want
     with open(SCENE, "rb") as f:
