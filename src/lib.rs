@@ -22,10 +22,43 @@
 //!   the closed-form frictionless load of a general even profile (THEORY.md section 9).
 //! - [`solve`]: a scene -> one method -> one answer struct -> the one JSON renderer per problem.
 //! - [`report`]: the main job (tables, charts, stability maps); [`cli`]: raw arguments ->
-//!   validated configuration; `main.rs` parses, runs and maps error kinds to exit codes.
+//!   validated configuration; [`api`]: the front door for users of the crate (below);
+//!   `main.rs` parses, runs and maps error kinds to exit codes.
+//!
+//! ## Using the crate
+//!
+//! Add it as a dependency (`periodic-contact = { path = "..." }`; the example crate
+//! `examples/user-crate` does, with an insta snapshot test of a derived series) and use [`api`]:
+//! derive an object ([`api::derive`]), solve a scene ([`api::solve_toml`], [`api::solve_file`]),
+//! check the series' orders ([`api::check_orders`]). Every call validates its input with the
+//! command line's messages and returns JSON-ready values. These ten lines are the README's
+//! library section, compiled and run here as a doctest:
+//!
+//! ```
+//! use periodic_contact::api::{self, SolveOptions};
+//! // 1. The exact Problem 1 expansions at theta = 1/10, through Lambda^4.
+//! let sliding = api::derive("sliding", 4, &[("theta", "1/10")])?.json();
+//! let l_over_ls = &sliding["parts"][0]; // l/l_s = 1 - 2/25 Lambda^2 + ...
+//! assert_eq!(l_over_ls["coefficients"][1]["text"], "-2/25");
+//! // 2. A scene file solved as `periodic-contact solve FILE --json --method f64` does.
+//! let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+//! let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
+//! let v = api::solve_file(scene.as_ref(), &opts)?;
+//! println!("l = {} ({} digits)", v["l"], v["digits_verified"]);
+//! # Ok::<(), api::ApiError>(())
+//! ```
+//!
+//! Formulas in these pages are TeX between `$` signs, rendered by KaTeX when the documentation is
+//! built with the header of the repository (`RUSTDOCFLAGS="--html-in-header katex-header.html"
+//! cargo doc`, as docs.rs does from `[package.metadata.docs.rs]`), e.g. the kernel
+//! $Z(z) = z \cot z = 1 - z^2/3 - z^4/45 - \dots$ of [`asymptotics::kernel`].
 
 pub mod adhesion;
+pub mod api;
 pub mod asymptotics;
+// The doc comments of `cli::args` are clap's --help text: `[output] digits` names a TOML table of
+// the scene, not an intra-doc link, and must print without escapes.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub mod cli;
 pub mod error;
 pub mod model;
@@ -36,3 +69,5 @@ pub mod scene;
 pub mod sliding;
 pub mod solve;
 pub mod verification;
+
+pub use api::{derive, solve_file, solve_toml, ApiError, Derivation, SolveOptions};

@@ -33,6 +33,7 @@ fn report_text_fast_scene_set() {
         );
     }
     check_loading_law_against_solve(&md, &out);
+    check_html_page(&out, &svgs);
     let timings = std::fs::read_to_string(out.join("timings.md")).unwrap();
     assert!(timings.contains("Machine:") && timings.contains("logical CPUs"));
     assert!(!md.contains("seconds") && !md.contains("wall time:"), "timings leaked into report.md");
@@ -41,6 +42,28 @@ fn report_text_fast_scene_set() {
     settings.set_snapshot_path("../snapshots");
     settings.set_prepend_module_to_snapshot(false);
     settings.bind(|| insta::assert_snapshot!("report_fast_scene_set", md));
+}
+
+/// `report.html` (issue 16): one self-contained page; every chart's SVG inline exactly as in its
+/// file, no `<img>`, and nothing fetched from elsewhere (no `src`/`href` to a URL, no script, no
+/// style sheet link; `http` occurs only as the SVG namespace name). The browser check is
+/// `tests/report_html_browser.rs`.
+fn check_html_page(out: &std::path::Path, svgs: &[&std::path::PathBuf]) {
+    let html = std::fs::read_to_string(out.join("report.html")).expect("report.html is written");
+    assert!(html.starts_with("<!DOCTYPE html>"), "{}", &html[..100.min(html.len())]);
+    assert_eq!(html.matches("<svg").count(), svgs.len(), "one inline svg per chart file");
+    for svg in svgs {
+        let text = std::fs::read_to_string(svg).unwrap();
+        let element = &text[text.find("<svg").unwrap()..];
+        assert!(html.contains(element.trim_end()), "{} is not inline", svg.display());
+    }
+    assert!(!html.contains("<img") && !html.contains("<script") && !html.contains("<link"), "external resources");
+    let without_namespace = html.replace("xmlns=\"http://www.w3.org/2000/svg\"", "");
+    for url in ["http://", "https://", "//cdn", "src=", "href=", "@import", "url("] {
+        assert!(!without_namespace.contains(url), "report.html contains {url:?}");
+    }
+    // The tables and the report's sections are there.
+    assert!(html.contains("<table>") && html.contains("<h2>7. Timings</h2>"), "tables and sections");
 }
 
 fn float(s: &str) -> Float {

@@ -22,7 +22,7 @@
 //! - [`solve_f64`]`(problem, points)`: the independent f64 method, with estimated digits.
 //!
 //! THEORY.md section 4 was checked numerically, not only used: the unit-load flat-punch stress
-//! satisfies (H + i beta) sigma_flat = 0 inside and H[sigma_flat] = K/L outside (to 1e-13), and the
+//! satisfies (H + i beta) sigma_flat = 0 inside and H\[sigma_flat\] = K/L outside (to 1e-13), and the
 //! full solution satisfies v' = g', u' = psi inside (to 1e-12) by an evaluation of the surface
 //! relations [1.6]-[1.8] independent of the incremental construction (`tests.rs`). No correction
 //! to THEORY.md was needed. Additions: the conditioning limits of the incremental method at small

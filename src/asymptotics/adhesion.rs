@@ -68,7 +68,7 @@
 //! # Where B enters (proved, and checked in the tests)
 //! G(chi, -s) = conj G(chi, s), so Re G_n is even and Im G_n odd in s; by the moment recurrence
 //! (multiplication by i eps swaps real and imaginary parts) Re M_odd, Im M_even lie in Q[eps, S]
-//! and Im M_odd, Re M_even in B Q[eps]. Hence Re T_{n,j} lies in Q[eps, S] and Im T_{n,j} in
+//! and Im M_odd, Re M_even in B Q\[eps\]. Hence Re T_{n,j} lies in Q[eps, S] and Im T_{n,j} in
 //! B Q[eps, S]: the p_j, the c_n and C_P are free of B, and every A_{2J+1} is B times a rational
 //! function of (eps, S). The stress kernels h_N = sum_j p_j tau^(2j+1) H_{N-j} (H over
 //! Q(i)[eps, xi, tau]) are free of B too: in the stresses B enters only through the prefactor pi/B.

@@ -217,7 +217,7 @@ fn finish(parts: Vec<Part>, notes: &[String], subs: &Substitutions) -> Result<Ve
 }
 
 /// The Problem 1 expansions of a polynomial punch in either surface convention through
-/// `order` ([`polynomial_sliding_expansion`]; docs/theory.md sections 5, 8, 9).
+/// `order` ([`polynomial_sliding_expansion`](super::polynomial::polynomial_sliding_expansion); docs/theory.md sections 5, 8, 9).
 pub fn derive_polynomial_sliding(
     profile: &PolynomialProfile,
     convention: Convention,

@@ -1,11 +1,11 @@
 //! The Jacobi moments J_n(theta) (THEORY.md section 5; the paper's [3.5]):
 //! J_n = int_{-1}^{1} y^n dy / omega(y) = (pi / cos(pi theta)) j_n(theta),
 //! omega(y) = (1+y)^(1/2+theta) (1-y)^(1/2-theta), with
-//! j_0 = 1, j_1 = -2 theta, (n+1) j_{n+1} = n j_{n-1} - 2 theta j_n, so j_n in Q[theta].
+//! j_0 = 1, j_1 = -2 theta, (n+1) j_{n+1} = n j_{n-1} - 2 theta j_n, so j_n in Q\[theta\].
 
 use exact_series::{Poly, Ring, Series, SeriesError, Symbol};
 
-/// j_0(theta), ..., j_n(theta) by the three-term recurrence, exact in Q[theta], packed as the
+/// j_0(theta), ..., j_n(theta) by the three-term recurrence, exact in Q\[theta\], packed as the
 /// coefficients of a "series" in the index (`coeff(n) = j_n`) so that it prints like the others.
 pub fn jacobi_moments(n: usize) -> Result<Series<Poly>, SeriesError> {
     let theta = Poly::symbol(Symbol::new("theta")?);

@@ -64,7 +64,7 @@
 //! values at g = 0: M_0 = B/2 + i S). What does hold:
 //! - mirror symmetry: n -> -n gives g_0 -> -g_0, f_0 -> f_0 (f_0 even, g_0 odd in n);
 //! - a double series in n at g = 0: every g-derivative of I_sigma at g = 0 is a moment of
-//!   (1-s)^(-1/2-i eps+k) (1+s)^(-1/2+i eps-k), contiguous to M_0, hence in Q(i, eps)[M_0];
+//!   (1-s)^(-1/2-i eps+k) (1+s)^(-1/2+i eps-k), contiguous to M_0, hence in Q(i, eps)\[M_0\];
 //!   so each Taylor coefficient of (f_0, g_0) in n is in Q(eps, B, S). The first ones, derived by
 //!   hand (dI_+/dg(0) = 1 - 2 i eps + (4 eps^2 - 1 + 2 i eps) M_0, from the contiguity
 //!   int_0^1 (1-s)^(1/2-i eps) (1+s)^(-3/2+i eps) ds = 1/(1/2 - i eps) - M_0):

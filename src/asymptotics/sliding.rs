@@ -1,7 +1,7 @@
 //! Problem 1 (sliding with friction, adhesive friction and wear): the small-lambda expansions
 //! of THEORY.md section 5 ([3.7]-[3.12]) to any order, exact, coefficients in Q[theta, T].
 //!
-//! Derivation [reconstructed]. In the linear variable xh = (x - c)/l the periodic kernel is
+//! Derivation \[reconstructed\]. In the linear variable xh = (x - c)/l the periodic kernel is
 //! (1/L) cot(pi (x - xi)/L) dxi = (1/pi) Z(lambda (xh - xih)) dxih / (xh - xih), Z(z) = z cot z
 //! = 1 + sum_k z_k z^(2k) [3.2], so the canonical equation [2.8] becomes the single-punch
 //! (Cauchy) equation with a polynomial right-hand side:

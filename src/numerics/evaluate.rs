@@ -33,7 +33,7 @@ pub fn poly_mpfr(p: &Poly, values: Bindings, prec: u32) -> Result<Float, Unbound
     Ok(sum)
 }
 
-/// A truncated series `sum_k c_k x^k` (its known coefficients) at `x`, coefficients in Q[symbols],
+/// A truncated series `sum_k c_k x^k` (its known coefficients) at `x`, coefficients in Q\[symbols\],
 /// at `prec` bits (Horner).
 pub fn series_mpfr(s: &Series<Poly>, x: &Float, values: Bindings, prec: u32) -> Result<Float, UnboundSymbol> {
     let mut acc = Float::with_val(prec, 0);

@@ -100,7 +100,7 @@ pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
 }
 
 /// P2/E* of a single punch (L = infinity) without friction for the EVEN part of the polynomial
-/// g with slope coefficients `slope` (g' = sum_j slope[j] x^j), at half-width a: the power law
+/// g with slope coefficients `slope` (g' = sum_j slope\[j\] x^j), at half-width a: the power law
 /// of THEORY.md section 9, P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! for g = A x^(2n), summed over
 /// the even terms (A = c_2n = slope[2n-1]/(2n)).
 pub fn even_part_single_punch_load_mpfr(slope: &[Float], a: &Float) -> Float {
@@ -209,9 +209,9 @@ pub enum ShapeF64 {
     /// g = sum_j c_j x^j (THEORY.md section 9), by the coefficients of its derivatives, each
     /// formed exactly and rounded once (trailing zeros dropped).
     Polynomial {
-        /// g' = sum_j slope[j] x^j, slope[j] = (j + 1) c_(j+1).
+        /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
         slope: Vec<f64>,
-        /// g'' = sum_j curvature[j] x^j, curvature[j] = (j + 2)(j + 1) c_(j+2).
+        /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
         curvature: Vec<f64>,
     },
     /// g = R - sqrt(R^2 - x^2) (THEORY.md section 9).
@@ -237,9 +237,9 @@ pub enum ShapeMpfr {
     /// g = sum_j c_j x^j (THEORY.md section 9), by the coefficients of its derivatives, each
     /// formed exactly and rounded once (trailing zeros dropped).
     Polynomial {
-        /// g' = sum_j slope[j] x^j, slope[j] = (j + 1) c_(j+1).
+        /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
         slope: Vec<Float>,
-        /// g'' = sum_j curvature[j] x^j, curvature[j] = (j + 2)(j + 1) c_(j+2).
+        /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
         curvature: Vec<Float>,
     },
     /// g = R - sqrt(R^2 - x^2) (THEORY.md section 9).

@@ -15,13 +15,15 @@
 //! 7. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
 //!    deterministic and snapshot-tested).
 //!
-//! Every chart is written as SVG ([`chart`], plotters) with the CSV of its data beside it.
+//! Every chart is written as SVG ([`chart`], plotters) with the CSV of its data beside it;
+//! `report.html` ([`html`]) is the whole report as one page with the charts inline.
 
 pub mod calibration;
 pub mod chart;
 pub mod choice;
 pub mod coefficients;
 pub mod conventions;
+pub mod html;
 pub mod loading_law;
 pub mod orders;
 pub mod runner;
@@ -87,6 +89,9 @@ pub enum ReportError {
     /// The calibration table is malformed.
     #[error(transparent)]
     Calibration(#[from] calibration::TableError),
+    /// The HTML page could not be made.
+    #[error(transparent)]
+    Html(#[from] html::HtmlError),
     /// A chart could not be drawn.
     #[error("chart {stem}: {why}")]
     Chart {
@@ -133,8 +138,9 @@ pub fn machine() -> String {
     format!("{} {}, {cpu}, {n} logical CPUs", std::env::consts::ARCH, std::env::consts::OS)
 }
 
-/// Writes the report into `opts.out`: `report.md`, `coefficients.tex`, `timings.md`, and for
-/// every chart `<stem>.svg` and `<stem>.csv`.
+/// Writes the report into `opts.out`: `report.md`, `coefficients.tex`, `timings.md`, for
+/// every chart `<stem>.svg` and `<stem>.csv`, and `report.html`, the whole report as one
+/// self-contained page ([`html::page`]).
 pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     let start = Instant::now();
     std::fs::create_dir_all(&opts.out).map_err(io(&opts.out))?;
@@ -203,13 +209,16 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     };
     write(&mut files, "report.md", &md)?;
     write(&mut files, "coefficients.tex", &tex)?;
+    let mut svgs = std::collections::BTreeMap::new();
     for s in &sections {
         for c in &s.charts {
             let svg = c.svg().map_err(|why| ReportError::Chart { stem: c.stem.clone(), why })?;
             write(&mut files, &format!("{}.svg", c.stem), &svg)?;
             write(&mut files, &format!("{}.csv", c.stem), &c.csv())?;
+            svgs.insert(format!("{}.svg", c.stem), svg);
         }
     }
+    write(&mut files, "report.html", &html::page("periodic-contact report", &md, &svgs, &tex)?)?;
     let mut t = format!(
         "# Timings of this report run\n\nMachine: {}. Build: {}. Profile: {:?}. Total wall time: {:.1} s.\n\n\
          | section | seconds |\n|---|---:|\n{timings}",

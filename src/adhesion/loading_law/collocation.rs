@@ -18,7 +18,7 @@
 //! (+ leading, - trailing), formed from the divided difference so that it keeps its accuracy as
 //! s -> 1 (tanh-sinh in s with the complement 1 - s). Both ends must advance: 1 +- E > 0.
 //! Each equation is divided by lambda (both sides are O(lambda)).
-//! Newton: the closed-form Jacobian ([`super::jacobian`]) at 64 bits with a coarse rule (one pass
+//! Newton: the closed-form Jacobian (`super::jacobian`) at 64 bits with a coarse rule (one pass
 //! over nodes and rule; the finite-difference Jacobian it replaced took 2N + 1 residuals and was
 //! 4x slower overall: the shipped scene's 20-digit solve 74 s -> 19 s CPU, same output), then
 //! chord steps at the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
@@ -318,7 +318,7 @@ pub struct LawCollocation {
 
 impl LawCollocation {
     /// P(Lambda t) = int_0^(Lambda t) eta Phi(eta/Lambda) d eta = Lambda^2 int_0^t t' Phi(t') dt'
-    /// (P2 = E* k (L/pi)^2 P), by the Chebyshev integral of t Phi ([`times_t`]).
+    /// (P2 = E* k (L/pi)^2 P), by the Chebyshev integral of t Phi (`times_t`).
     pub fn load_at(&self, t: &Float) -> Float {
         let prec = self.prec;
         chebyshev::integral(&self.t_phi, t, prec) * Float::with_val(prec, self.lambda_max.square_ref())

@@ -37,7 +37,7 @@ pub struct EndStress {
     pub phase_error: Float,
     /// d/l within which q2 < 0 (0 when eps = 0).
     pub tension_within: Float,
-    /// |q1|/q2 at d/l = 10^DISTANCES[k] (the full solution, not the asymptote); None where q2 <= 0.
+    /// |q1|/q2 at d/l = 10^DISTANCES\[k\] (the full solution, not the asymptote); None where q2 <= 0.
     pub friction_needed: Vec<Option<Float>>,
 }
 

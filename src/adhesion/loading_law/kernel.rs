@@ -81,7 +81,7 @@ pub fn outside_kernel(row: Row, side: Side, d_near: &Float, eta: &Float, eps: &F
     cos * phase * mag
 }
 
-/// d ln K/d d_near of [`outside_kernel`] (the Jacobian of [`super::jacobian`]): with
+/// d ln K/d d_near of [`outside_kernel`] (the Jacobian of `super::jacobian`): with
 /// chi = +-(d + eta), d_far = d + 2 eta,
 ///   right: -tan(chi - 2 i eps eta) + i eps (cot d_far - cot d) - (cot d + cot d_far)/2,
 ///   left:  +tan(chi - 2 i eps eta) - i eps (cot d_far - cot d) - (cot d + cot d_far)/2,
@@ -147,7 +147,7 @@ pub fn flat_punch_stress(
 /// (-m, m), Z ~ 1/z) the Plemelj formulas give (C + i beta) rho = -B/cosh(pi eps) on the contact
 /// (beta = tanh(pi eps)), and residues at z = +-i give C0 and the load, so that
 ///   Z(i)(A + i B) = -cosh(pi eps)(f + i P/L),  Z(-i)(A - i B) = -cosh(pi eps)(f - i P/L)
-/// for (H + i beta) rho = f with load P; outside, H[rho](t) = Z(t)(A + B t)/cosh(pi eps) + f.
+/// for (H + i beta) rho = f with load P; outside, H\[rho\](t) = Z(t)(A + B t)/cosh(pi eps) + f.
 /// The rotation is f = 1, P = 0. (The same formulas with f = 0, P = 1 reproduce sigma_flat and K:
 /// checked in the tests.)
 #[derive(Debug, Clone)]
@@ -205,7 +205,7 @@ impl TiltedPunch {
         x * Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &t))
     }
 
-    /// Z(t)(A + B t)/cosh(pi eps) outside the contact (H[rho] - f), at distance `d_near` from the
+    /// Z(t)(A + B t)/cosh(pi eps) outside the contact (H\[rho\] - f), at distance `d_near` from the
     /// nearer end on `side`.
     pub fn outside(
         &self,
@@ -236,7 +236,7 @@ impl TiltedPunch {
         z * Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &t)) / cosh_pi_eps
     }
 
-    /// d ln/d d_near of [`Self::outside`] (the Jacobian of [`super::jacobian`]): with
+    /// d ln/d d_near of [`Self::outside`] (the Jacobian of `super::jacobian`): with
     /// chi = +-(d + eta), the factor 1/(cos eta cos chi) of t +- m contributes +tan chi on the
     /// right and -tan chi on the left:
     ///   right: (-1/2 + i eps)(cot d_far + tan chi) + (-1/2 - i eps)(cot d + tan chi)

@@ -35,7 +35,7 @@
 //! # Files
 //! [`kernel`] (the integrands in `f64`), [`series`] (the universal coefficients f_n, mu_{j,m},
 //! once per material), [`right_side`] (a general even profile's right side as a series in
-//! (x/a)^2, THEORY.md section 9), [`solve`] (truncation at one lambda, dimensionless values), [`solution`]
+//! (x/a)^2, THEORY.md section 9), [`solve`](mod@solve) (truncation at one lambda, dimensionless values), [`solution`]
 //! (dimensional results from the exact problem), [`verify`] (the accuracy estimate by a second,
 //! finer run). The MPFR method has the same files in [`crate::adhesion::volterra_mpfr`].
 

@@ -2,7 +2,7 @@
 //! section 9; the MPFR method's [`crate::adhesion::volterra_mpfr::right_side`] states it):
 //!   Re I(sigma) = pi g'(x)/(2 k x),   x = a sigma, tau = sigma^2,
 //! as a power series in tau, r(tau) = sum_n r_n tau^n (the factor pi is applied by the
-//! recursion of [`super::solve`]):
+//! recursion of [`super::solve`](mod@super::solve)):
 //! - parabola g = k x^2: r = 1;
 //! - even polynomial g = sum_m c_2m x^(2m): r_(m-1) = (m c_2m/k) a^(2m-2), a polynomial;
 //! - circle g = R - sqrt(R^2 - x^2): g'(x)/(2 k x) = (1/(2 k R)) (1 - (a/R)^2 tau)^(-1/2), so

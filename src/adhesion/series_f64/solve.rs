@@ -34,8 +34,8 @@ pub fn solve(universal: &UniversalSeries, lambda: f64) -> Result<SeriesSolution,
     solve_rhs(universal, lambda, &[1.0])
 }
 
-/// Solves at lambda (0 = single punch) with the right side pi r(tau), r = sum_n `rhs`[n] tau^n
-/// ([`super::right_side`]; the parabola: [1]). The triangular recursion of the module doc of
+/// Solves at lambda (0 = single punch) with the right side pi r(tau), r = sum_n `rhs[n]` tau^n
+/// ([`super::right_side`]; the parabola: \[1\]). The triangular recursion of the module doc of
 /// [`super`] in the contact's variable:
 ///   F_n = (pi r_n - sum_{j<n} F_j lambda^(2(n-j)) Re mu_{j,n-j}) / Re M_(2n+1),
 /// truncated where |F_n| falls below the cutoff times the largest |F_j| (not before the last

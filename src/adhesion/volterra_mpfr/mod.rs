@@ -52,7 +52,7 @@
 
 //!
 //! # Files
-//! [`kernel`] (the regularised kernels), [`solve`] (discretisation and collocation solve at one
+//! [`kernel`] (the regularised kernels), [`solve`](mod@solve) (discretisation and collocation solve at one
 //! lambda), [`volterra`] (the dimensionless solution and its evaluations), [`solution`]
 //! (dimensional results from the exact problem, the half-width for a given load), [`verify`] (two
 //! runs, verified digits). The f64 method has the same files in [`crate::adhesion::series_f64`].

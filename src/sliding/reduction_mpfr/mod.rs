@@ -4,7 +4,7 @@
 //! polynomial (g = sum_j c_j x^j) or circular (g = R - sqrt(R^2 - x^2)) punch (THEORY.md section 9),
 //! periodic with period L or single (L = infinity), under the load P2 (inverse problem) or
 //! for a given half-length l (direct problem). The canonical equation [2.8]
-//!     kappa p + H[p] = (E*/2) g' + beta tau0,  theta = arctan(kappa)/pi,
+//!     kappa p + H\[p\] = (E*/2) g' + beta tau0,  theta = arctan(kappa)/pi,
 //! reduces to one complex equation for (lambda, c) [2.14] ([`equation`]) and the pressure formula
 //! [2.13] ([`pressure`]), both evaluated with Gauss–Jacobi rules at working precision
 //! ([`crate::numerics::gauss_jacobi_mpfr`]).

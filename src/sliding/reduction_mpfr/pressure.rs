@@ -5,8 +5,8 @@
 //! which is Psi+ - Psi- for the Psi of [`super::equation`], since X+ - X- = 2 i omega cos(pi theta).
 //! p does not depend on tau0 or P2 [2.13]; sign(p) = sign(D) inside the contact.
 //!
-//! Outside the contact (real t = u(x), |t| > 1; q1 = 0 there) the same Psi gives [reconstructed]
-//!     (E*/2) v'(x) = H[p](x) = F(t) + beta tau0 - X(t) cos(pi theta) D(t)/pi,
+//! Outside the contact (real t = u(x), |t| > 1; q1 = 0 there) the same Psi gives \[reconstructed\]
+//!     (E*/2) v'(x) = H\[p\](x) = F(t) + beta tau0 - X(t) cos(pi theta) D(t)/pi,
 //!     X(t) = sign(t) |t - 1|^{1/2 - theta} |t + 1|^{1/2 + theta},
 //! with F(t) the analytic continuation of F. (Check: Hertz, theta = 0: h' = 2 k sqrt(x^2 - a^2).)
 
