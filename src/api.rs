@@ -219,7 +219,14 @@ pub fn solve_file(path: &Path, options: &SolveOptions) -> Result<Value, ApiError
     let mut args = vec!["solve".to_string(), path.display().to_string(), "--json".to_string()];
     args.extend(options.flags());
     match config(&args, "solve")? {
-        RunConfig::Solve { scene, request, .. } => Ok(solve(&scene, request)?),
+        RunConfig::Solve { scene, choice, .. } => {
+            // As `periodic-contact solve --json`: the chosen method's answer with its `choice`.
+            let (mut v, choice) = crate::solve::choice::solve_chosen(&scene, choice)?;
+            if let Some(m) = v.as_object_mut() {
+                m.insert("choice".into(), choice.json());
+            }
+            Ok(v)
+        }
         _ => unreachable!("a `solve` command line validates to a solve configuration"),
     }
 }

@@ -13,13 +13,13 @@
 //!   ([`numerics::accuracy`]), precision and guard bits, root finding, quadrature rules.
 //! - [`params`]: derived parameters computed once per problem and precision (Problem 1: kappa,
 //!   theta, beta, k, a0, l_s, T, units; Problem 2: eps, cosh(pi eps), B, S).
-//! - [`asymptotics`]: the objects of THEORY.md section 5 as exact truncated series (engine: the
+//! - [`asymptotics`]: the objects of docs/theory.md section 5 as exact truncated series (engine: the
 //!   `exact_series` crate in `series/`, no physics, no floats).
 //! - [`sliding`] (Problem 1: `reduction_mpfr`, `collocation_f64`, `series`) and [`adhesion`]
 //!   (Problem 2: `volterra_mpfr`, `series_f64`): two independent methods per problem side by side,
 //!   with parallel verbs (`solve`, `verify`, `physical`, `solution`).
 //! - [`verification`]: term-by-term convergence orders of the series against the full solutions;
-//!   the closed-form frictionless load of a general even profile (THEORY.md section 9).
+//!   the closed-form frictionless load of a general even profile (docs/theory.md section 9).
 //! - [`solve`]: a scene -> one method -> one answer struct -> the one JSON renderer per problem.
 //! - [`report`]: the main job (tables, charts, stability maps); [`cli`]: raw arguments ->
 //!   validated configuration; [`api`]: the front door for users of the crate (below);

@@ -1,5 +1,5 @@
 //! Problem 2: indentation of periodic convex punches with complete adhesion
-//! (THEORY.md section 4; Soldatenkov 2013, (1.4), (2.18)-(2.26)).
+//! (docs/theory.md section 4; Soldatenkov 2013, (1.4), (2.18)-(2.26)).
 //!
 //! Two independent methods, side by side with the same file names:
 //! - [`volterra_mpfr`] (method 1): MPFR Chebyshev collocation of the Volterra equation of the
@@ -21,11 +21,11 @@
 //! - [`solve_mpfr`]`(problem, points, params)`: one MPFR run;
 //! - [`solve_f64`]`(problem, points)`: the independent f64 method, with estimated digits.
 //!
-//! THEORY.md section 4 was checked numerically, not only used: the unit-load flat-punch stress
+//! docs/theory.md section 4 was checked numerically, not only used: the unit-load flat-punch stress
 //! satisfies (H + i beta) sigma_flat = 0 inside and H\[sigma_flat\] = K/L outside (to 1e-13), and the
 //! full solution satisfies v' = g', u' = psi inside (to 1e-12) by an evaluation of the surface
 //! relations [1.6]-[1.8] independent of the incremental construction (`tests.rs`). No correction
-//! to THEORY.md was needed. Additions: the conditioning limits of the incremental method at small
+//! to docs/theory.md was needed. Additions: the conditioning limits of the incremental method at small
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
 pub mod error;

@@ -1,5 +1,5 @@
 //! Refusals of an even polynomial or circular punch on the contact [-a, a] of Problem 2
-//! (THEORY.md section 9), the same criteria as Problem 1's
+//! (docs/theory.md section 9), the same criteria as Problem 1's
 //! [`crate::params::sliding::check_profile_on_contact`]: (i) the circle's contact stays inside
 //! |x| < R; (ii) g'' >= 0 on [0, a] (g even; sampled at 257 Chebyshev points in `f64` from the
 //! exact coefficients, relative tolerance 1e-12: a heuristic, a dip narrower than the sampling

@@ -1,7 +1,7 @@
 //! The scales of the outputs of Problem 2 and the digits relative to them: the one table both
 //! methods (and the renderers) use, under the accuracy rule of [`crate::numerics::accuracy`].
 //!
-//! Scalings (THEORY.md section 4; exact inputs rounded once): P2 = E* k a^2 P2~, psi = k a psi~,
+//! Scalings (docs/theory.md section 4; exact inputs rounded once): P2 = E* k a^2 P2~, psi = k a psi~,
 //! phi = k a^2 phi~, q1, q2 = E* k a q~, where the dimensionless ~ quantities depend on nu and
 //! lambda = pi a/L only. The accuracy of each output is stated relative to its scale:
 //!

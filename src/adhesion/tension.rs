@@ -1,4 +1,4 @@
-//! Tension zones of Problem 2 (THEORY.md section 4): near the oscillating edge singularity
+//! Tension zones of Problem 2 (docs/theory.md section 4): near the oscillating edge singularity
 //! (q2 + i q1) ~ C (1 - x/a)^{1/2 - i eps} the pressure q2 changes sign infinitely often, so for
 //! eps > 0 there are zones of tension q2 < 0, each e^{2 pi/eps} times closer to the edge than the
 //! last. Located from the edge factor C of a solution, the outermost refined on the full stress.

@@ -35,7 +35,7 @@ fn relerr(a: &Float, b: &Float) -> f64 {
 
 #[test]
 fn adhesion_kuznetsov_load_nu_half() {
-    // nu = 1/2: P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], THEORY.md section 6.
+    // nu = 1/2: P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], docs/theory.md section 6.
     for (a, l) in [(q(1, 10), q(1, 1)), (q(3, 20), q(1, 1)), (q(1, 3), q(1, 1))] {
         let pr = problem(q(1, 2), Some(l.clone()), AdhesionSize::HalfWidth(a.clone()));
         let v = solve_verified(&pr, &pts(), 25).unwrap();
@@ -56,7 +56,7 @@ fn adhesion_kuznetsov_load_nu_half() {
 
 #[test]
 fn adhesion_hertz_single_punch_nu_half() {
-    // P2 = (pi/2) E* k a^2, q2 = E* k sqrt(a^2 - x^2), q1 = psi = 0 (THEORY.md section 6).
+    // P2 = (pi/2) E* k a^2, q2 = E* k sqrt(a^2 - x^2), q1 = psi = 0 (docs/theory.md section 6).
     let pr = problem(q(1, 2), None, AdhesionSize::HalfWidth(q(1, 5)));
     let s = solve_mpfr(&pr, &pts(), VolterraParams::for_digits(30)).unwrap();
     let prec = s.prec;
@@ -117,7 +117,7 @@ fn adhesion_flat_punch_sadowsky_and_unit_load() {
 }
 
 /// (H[q2~] - beta q1~, -H[q1~] - beta q2~)(sigma0) in units E* k a, from the f64 stresses
-/// (surface relations [1.6]-[1.8], THEORY.md section 2, with the periodic cot kernel).
+/// (surface relations [1.6]-[1.8], docs/theory.md section 2, with the periodic cot kernel).
 fn surface_relations(sol: &series_f64::SeriesSolution, beta: f64, sigma0: f64) -> (f64, f64) {
     let lam = sol.lambda;
     let pi = std::f64::consts::PI;
@@ -316,7 +316,7 @@ fn adhesion_edge_factor_matches_stress_near_edge() {
 
 #[test]
 fn adhesion_flat_punch_is_adhesive_and_k_is_its_outside_slope() {
-    // (H + i beta) sigma_flat = 0 inside; H[sigma_flat] = K(chi, lambda) outside (THEORY.md 4).
+    // (H + i beta) sigma_flat = 0 inside; H[sigma_flat] = K(chi, lambda) outside (docs/theory.md 4).
     let pi = std::f64::consts::PI;
     for nu in [q(0, 1), q(9, 20)] {
         let m = material(nu.clone());

@@ -1,7 +1,7 @@
 //! Problem 2 (indentation with complete adhesion, periodic parabolic punches g = k x^2, b = a):
 //! the small-lambda expansions of the paper's (3.16)-(3.19), exact, to any order.
 //!
-//! # Objects (THEORY.md section 5)
+//! # Objects (docs/theory.md section 5)
 //! With lambda = pi a/L, chi = pi x/L, xi = x/a (so chi = lambda xi):
 //! - `psi(x) = phi'(x) = sum_n A_n |x|^n` [3.16], `A_{2J} = 0`, `A_{2J+1} = k (pi/L)^{2J} psi_J`;
 //!   [`AdhesionExpansion::slope`] is `psi(x)/(k L/pi) = sum_J psi_J |chi|^{2J+1}` (a series in
@@ -16,7 +16,7 @@
 //! symbols: they are transcendental in eps), the stress kernels of Q(i)(eps, B, S)[xi, tau].
 //!
 //! # Derivation \[reconstructed\] (the paper prints only A1, A3 and c2; its formulas are lost)
-//! Start from the incremental (Mossakovskii) form of THEORY.md section 4: with
+//! Start from the incremental (Mossakovskii) form of docs/theory.md section 4: with
 //! `P2 = E* k (L/pi)^2 P(lambda)`,
 //! ```text
 //!   (V)  Re I(chi) = pi chi,   I(chi) = int_0^chi K(chi, eta) P'(eta) deta,
@@ -25,16 +25,16 @@
 //! ```
 //! 1. Scaling eta = chi s, s in (0, 1) \[reconstructed\]: since sin z = z sinc z,
 //!    `K(chi, chi s) chi = w(s) G(chi, s)` with the half-range weight
-//!    `w(s) = (1+s)^(-1/2+i eps) (1-s)^(-1/2-i eps)` (THEORY.md section 5, the weight of M_m) and
+//!    `w(s) = (1+s)^(-1/2+i eps) (1-s)^(-1/2-i eps)` (docs/theory.md section 5, the weight of M_m) and
 //!    `G(chi, s) = cos(chi (1 - 2 i eps s)) sinc(chi (1+s))^(-1/2+i eps) sinc(chi (1-s))^(-1/2-i eps)
 //!     = sum_n G_n(s) chi^(2n)`,
 //!    G_0 = 1, G_n a polynomial of degree 2n in s over Q(i)\[eps\] (even in chi: sinc and cos are
 //!    even). Computed by the engine ([`kernel_factor`]).
-//! 2. Ansatz `P'(eta) = pi sum_j p_j eta^(2j+1)` (P2 is even in lambda, THEORY.md section 2)
+//! 2. Ansatz `P'(eta) = pi sum_j p_j eta^(2j+1)` (P2 is even in lambda, docs/theory.md section 2)
 //!    \[reconstructed\]. Then
 //!    `I(chi) = pi sum_N chi^(2N+1) I_N`, `I_N = sum_{n+j=N} p_j T_{n,j}`,
 //!    `T_{n,j} = int_0^1 w(s) G_n(s) s^(2j+1) ds = sum_m [s^m]G_n M_{m+2j+1}`,
-//!    with the half-range moments M_m (THEORY.md section 4): `M_0 = B/2 + i S`,
+//!    with the half-range moments M_m (docs/theory.md section 4): `M_0 = B/2 + i S`,
 //!    `M_1 = 1 + 2 i eps M_0`, `(m+1) M_{m+1} = m M_{m-1} + 2 i eps M_m` — the only place where B
 //!    and S enter. T_{0,j} = M_{2j+1}.
 //! 3. The recurrence (equating powers of chi in (V)) \[reconstructed\]:
@@ -53,9 +53,9 @@
 //!    single-punch slope, psi = A_1 |x| (checked against the fixed-a solvability condition of the
 //!    single punch in the tests).
 //! 5. The load: `P(lambda) = pi sum_j p_j lambda^(2j+2)/(2j+2)`, so `C_P = pi p_0/2 =
-//!    pi/(2 (1 - 2 eps S))` (THEORY.md section 5 check value) and
+//!    pi/(2 (1 - 2 eps S))` (docs/theory.md section 5 check value) and
 //!    `c_{2j} = p_j/((j+1) p_0)`.
-//! 6. The stresses: `q2 + i q1 = int_{a'=|x|}^{a} sigma_flat(x; a') dP2(a')` (THEORY.md section 4),
+//! 6. The stresses: `q2 + i q1 = int_{a'=|x|}^{a} sigma_flat(x; a') dP2(a')` (docs/theory.md section 4),
 //!    sigma_flat = (ch/L) K(eta, chi) (the flat-punch stress is K with its arguments swapped),
 //!    ch = cosh(pi eps) = pi/B. Scaling chi = lambda xi, eta = lambda tau \[reconstructed\]:
 //!    `K(lambda tau, lambda xi) lambda = (tau+xi)^(-1/2+i eps) (tau-xi)^(-1/2-i eps) H(lambda; xi, tau)`,
@@ -97,7 +97,7 @@
 //! # Verification (tests, each against an independent computation)
 //! - nu = 1/2: c_n equal the coefficients of ln sec(lambda)/(lambda^2/2) (Kuznetsov [2.15],
 //!   computed from -log cos over Q) through lambda^12, psi = 0, h_0 = tau (Hertz).
-//! - C_P and A_1 equal the single-punch check values of THEORY.md section 5 exactly; A_1 also
+//! - C_P and A_1 equal the single-punch check values of docs/theory.md section 5 exactly; A_1 also
 //!   satisfies the fixed-a solvability condition of the single punch, int (2y - i A_1 |y|)
 //!   dy/omega(y) = 0, evaluated by MPFR quadrature (no moments, no recurrence), to 2^-(prec-16).
 //! - Signs stated in the paper's text: A_1 < 0, A_3 < 0 (delta_{1,3} > 0) and c_2 > 0 on [0, 1/2).
@@ -190,7 +190,7 @@ pub fn kernel_factor(prec: usize, u: &Poly, v: &Poly) -> Result<Series<GPoly>, S
     Ok(arg.cos()?.mul(&plus).mul(&minus))
 }
 
-/// The half-range moments M_0..M_{count-1} over Q(i)[eps, B, S] (THEORY.md sections 4, 5).
+/// The half-range moments M_0..M_{count-1} over Q(i)[eps, B, S] (docs/theory.md sections 4, 5).
 pub fn half_range_moments(count: usize) -> Result<Vec<GPoly>, SeriesError> {
     let eps = Poly::symbol(symbol(EPS)?);
     let b = Poly::symbol(symbol(B)?);
@@ -279,7 +279,7 @@ pub fn adhesion_expansion_with(order: usize, with_stress: bool) -> Result<Adhesi
     })
 }
 
-/// The solved recurrence of steps 2-3 (module doc) for a general right side (THEORY.md
+/// The solved recurrence of steps 2-3 (module doc) for a general right side (docs/theory.md
 /// section 9): `Re I(chi) = pi sum_N rhs_N chi^(2N+1)` (the parabola: rhs = [1]), i.e.
 /// `p_N Re M_(2N+1) = rhs_N - Re sum_{n=1}^{N} p_(N-n) T_(n,N-n)`, kept as numerators over the
 /// common denominator: `p_N = n_N/(D_0 ... D_N)`,

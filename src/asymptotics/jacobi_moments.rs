@@ -1,4 +1,4 @@
-//! The Jacobi moments J_n(theta) (THEORY.md section 5; the paper's [3.5]):
+//! The Jacobi moments J_n(theta) (docs/theory.md section 5; the paper's [3.5]):
 //! J_n = int_{-1}^{1} y^n dy / omega(y) = (pi / cos(pi theta)) j_n(theta),
 //! omega(y) = (1+y)^(1/2+theta) (1-y)^(1/2-theta), with
 //! j_0 = 1, j_1 = -2 theta, (n+1) j_{n+1} = n j_{n-1} - 2 theta j_n, so j_n in Q\[theta\].

@@ -1,4 +1,4 @@
-//! The kernel series Z(z) = z cot z (THEORY.md section 5; the paper's [3.2]).
+//! The kernel series Z(z) = z cot z (docs/theory.md section 5; the paper's [3.2]).
 //!
 //! (pi/L) cot(pi (x - xi)/L) = Z(lambda (xh - xih)) / (x - xi), so the periodic kernel is the
 //! Cauchy kernel times Z, an even series whose coefficients are

@@ -1,4 +1,4 @@
-//! Problem 2 under the linear loading law P1 = n P2 (THEORY.md section 10, `paper` convention):
+//! Problem 2 under the linear loading law P1 = n P2 (docs/theory.md section 10, `paper` convention):
 //! the small-lambda expansion of the asymmetric contact, its load and the frozen slope psi,
 //! beyond the paper (issue 12, "Asymptotics beyond the paper"). Coefficients in MPFR at a given
 //! nu and n (the exact question is answered below: they are not in Q(n, eps, B, S)).
@@ -8,7 +8,7 @@
 //! (c = (b - a)/2), P2 = E* k (L/pi)^2 P(lambda). Every earlier contact (size eta, centre
 //! gamma(eta)) carried the complex increment (1 + i n) dP2; a point enters contact with the
 //! punch's slope at the leading (sigma = +1) and trailing (sigma = -1) ends chi_e = gamma +- lambda
-//! (`crate::adhesion::loading_law::collocation`, THEORY.md section 10):
+//! (`crate::adhesion::loading_law::collocation`, docs/theory.md section 10):
 //!   Re int_0^lambda (1 + i n) P'(eta) K_sigma(chi_e - gamma(eta), eta) d eta = pi chi_e,
 //!   K_sigma = sigma cos(chi' - 2 i eps eta) sin(d_near)^(a1) sin(d_far)^(a2),
 //!   a1 = -1/2 - sigma i eps, a2 = -1/2 + sigma i eps,
@@ -44,7 +44,7 @@
 //! # What is reported ([`LawSeries`])
 //! - c/l = Gam(lambda) = sum g_j lambda^(2j); b/a = (1 + c/l)/(1 - c/l) as a series;
 //! - P2 = E* k l^2 sum_j C_(2j) lambda^(2j), C_(2j) = f_j/(2j + 2) (P = sum f_j lambda^(2j+2)/(2j+2));
-//!   at n = 0, C_0 = C_P and C_(2j) = C_P c_(2j) of [3.18] (THEORY.md section 5);
+//!   at n = 0, C_0 = C_P and C_(2j) = C_P c_(2j) of [3.18] (docs/theory.md section 5);
 //! - psi, frozen at entry: the point x entering at lambda through the end sigma has
 //!   chi = pi x/L = lambda (sigma + Gam(lambda)) and psi(x) = -(2 k L/pi^2) Im int_0^lambda (1 + i n)
 //!   P' K_sigma d eta = -(2 k L/pi^2) lambda H_sigma(t) (the edge integral's imaginary part,
@@ -682,7 +682,7 @@ mod tests {
         assert!(e.residual < 1e-40, "{}", e.residual);
     }
 
-    /// n = 0 against the exact symmetric series of [3.16]-[3.18] at nu = 3/10 (THEORY.md section 5,
+    /// n = 0 against the exact symmetric series of [3.16]-[3.18] at nu = 3/10 (docs/theory.md section 5,
     /// `series adhesion --order 8 --nu 3/10`): C_0 = C_P, C_(2j) = C_P c_(2j), A_m^+ = A_m,
     /// A_m^- = -A_m, c/l = 0, to 1e-35.
     #[test]

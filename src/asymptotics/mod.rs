@@ -1,6 +1,6 @@
-//! The objects of the asymptotic analysis (THEORY.md section 5) as exact truncated series.
+//! The objects of the asymptotic analysis (docs/theory.md section 5) as exact truncated series.
 //!
-//! Order convention (THEORY.md section 5): "order N" keeps every term through lambda^N.
+//! Order convention (docs/theory.md section 5): "order N" keeps every term through lambda^N.
 
 pub mod adhesion;
 pub mod catalog;

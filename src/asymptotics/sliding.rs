@@ -1,5 +1,5 @@
 //! Problem 1 (sliding with friction, adhesive friction and wear): the small-lambda expansions
-//! of THEORY.md section 5 ([3.7]-[3.12]) to any order, exact, coefficients in Q[theta, T].
+//! of docs/theory.md section 5 ([3.7]-[3.12]) to any order, exact, coefficients in Q[theta, T].
 //!
 //! Derivation \[reconstructed\]. In the linear variable xh = (x - c)/l the periodic kernel is
 //! (1/L) cot(pi (x - xi)/L) dxi = (1/pi) Z(lambda (xh - xih)) dxih / (xh - xih), Z(z) = z cot z
@@ -27,7 +27,7 @@
 //! pressure polynomials pi_j(xh) of p = E* k l cos(pi theta) omega(xh) (1 + sum Lambda^(2j) pi_j)
 //! [3.9], and Delta/l_s = l/l_s - 1 [3.11].
 //!
-//! The `periodic` convention (THEORY.md section 8): [2.8] gains the constant
+//! The `periodic` convention (docs/theory.md section 8): [2.8] gains the constant
 //! K = (kappa P2 - 2 beta l tau0)/L beside beta tau0, so T/rho in F gains
 //! K/(E* k l) = Lambda (kappa (1 - 4 theta^2)/(2 rho) - 2 T/pi)
 //! (P2 = pi E* k l_s^2 (1 - 4 theta^2)/2 at every L, l_s/L = Lambda/pi, l = rho l_s). The expansions
@@ -58,7 +58,7 @@ pub enum SlidingShape {
 pub struct SlidingExpansion {
     /// The shape.
     pub shape: SlidingShape,
-    /// The surface convention (THEORY.md section 8).
+    /// The surface convention (docs/theory.md section 8).
     pub convention: Convention,
     /// l / l_s.
     pub l_over_ls: Series<Poly>,
@@ -147,7 +147,7 @@ impl Tables {
     }
 }
 
-/// Derives the expansions through Lambda^order (every term through Lambda^order, THEORY.md
+/// Derives the expansions through Lambda^order (every term through Lambda^order, docs/theory.md
 /// section 5), symbolic in theta and T.
 ///
 /// ```
@@ -397,7 +397,7 @@ mod tests {
 
     #[test]
     fn periodic_parabola_keeps_l_and_shifts_the_centre_by_minus_k() {
-        // THEORY.md sections 3 and 8: for the parabola lambda does not depend on the constant of
+        // docs/theory.md sections 3 and 8: for the parabola lambda does not depend on the constant of
         // [2.8], so l/l_s is the same in both conventions and rbar moves by exactly
         // -K/(E* k l) = -Lambda (kappa (1 - 4 theta^2)/(2 rho) - 2 T/pi), i.e. c_periodic - c_paper
         // = -K/(E* k), at the series level.

@@ -1,4 +1,4 @@
-//! The weight series Y(xh; lambda) (THEORY.md section 5; the paper's [2.29], [3.1]).
+//! The weight series Y(xh; lambda) (docs/theory.md section 5; the paper's [2.29], [3.1]).
 //!
 //! R(x, a) = (L/pi) sin(pi (x+a)/L)^(1/2+theta) sin(pi (b-x)/L)^(1/2-theta) = l omega(xh) Y with
 //! Y = sinc(lambda (1 + xh))^(1/2 + theta) sinc(lambda (1 - xh))^(1/2 - theta), sinc z = sin z / z:

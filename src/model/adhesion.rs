@@ -1,5 +1,5 @@
 //! Problem 2: monotone indentation of periodic punches with complete adhesion
-//! (THEORY.md section 4; the paper's (1.4), (2.18)-(2.26)).
+//! (docs/theory.md section 4; the paper's (1.4), (2.18)-(2.26)).
 
 use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
 use num_traits::{Signed, Zero};

@@ -1,4 +1,4 @@
-//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; issue 12): the statement.
+//! Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; issue 12): the statement.
 //! The contact [-a, b] grows at both ends; P1 and P2 grow together along N.
 //!
 //! Solved so far (the solver refuses the rest by name, [`LoadingLawProblem::new`]): a periodic row

@@ -1,4 +1,4 @@
-//! Elastic half-plane in plane strain (THEORY.md section 1).
+//! Elastic half-plane in plane strain (docs/theory.md section 1).
 
 use super::{error::ModelError, Exact};
 use num_traits::{One, Signed, Zero};
@@ -41,14 +41,14 @@ impl Material {
         &self.contact_modulus
     }
 
-    /// beta = (1 - 2 nu) / (2 (1 - nu)), in [0, 1/2] (THEORY.md section 1), exact.
+    /// beta = (1 - 2 nu) / (2 (1 - nu)), in [0, 1/2] (docs/theory.md section 1), exact.
     pub fn beta(&self) -> Exact {
         let one = Exact::one();
         let two = &one + &one;
         (&one - &two * &self.poisson_ratio) / (&two * (&one - &self.poisson_ratio))
     }
 
-    /// 3 - 4 nu, the argument of eps = ln(3 - 4 nu)/(2 pi) (THEORY.md section 1), exact.
+    /// 3 - 4 nu, the argument of eps = ln(3 - 4 nu)/(2 pi) (docs/theory.md section 1), exact.
     pub fn kolosov(&self) -> Exact {
         Exact::from_integer(3.into()) - Exact::from_integer(4.into()) * &self.poisson_ratio
     }

@@ -1,4 +1,4 @@
-//! Statement of the two contact problems (THEORY.md sections 1, 3, 4): exact inputs only.
+//! Statement of the two contact problems (docs/theory.md sections 1, 3, 4): exact inputs only.
 //!
 //! Every number here is an exact rational read from its text (a decimal or a ratio), so that it
 //! reaches MPFR rounded once at the working precision and never passes through `f64`.

@@ -1,4 +1,4 @@
-//! Punch shape g(x) and the period L (THEORY.md section 1).
+//! Punch shape g(x) and the period L (docs/theory.md section 1).
 
 use super::{error::ModelError, Exact};
 use num_traits::{Signed, Zero};
@@ -43,7 +43,7 @@ pub enum PunchShape {
         /// Amplitude D > 0.
         amplitude: Exact,
     },
-    /// g = sum_j c_j x^j (THEORY.md section 9): `coefficients[j]` is c_j (numpy's order),
+    /// g = sum_j c_j x^j (docs/theory.md section 9): `coefficients[j]` is c_j (numpy's order),
     /// c_0 = 0 (g(0) = 0), at least one non-zero c_j with j >= 2. A non-zero c_1 tilts the punch;
     /// odd terms make Problem 1 asymmetric even without friction. Convexity on the contact is a
     /// property of the solution, checked by the solvers.
@@ -51,7 +51,7 @@ pub enum PunchShape {
         /// c_0, c_1, ..., c_N (exact; trailing zeros allowed).
         coefficients: Vec<Exact>,
     },
-    /// g = R - sqrt(R^2 - x^2), R > 0: the exact cylinder (THEORY.md section 9); the contact must
+    /// g = R - sqrt(R^2 - x^2), R > 0: the exact cylinder (docs/theory.md section 9); the contact must
     /// stay inside |x| < R (checked by the solvers).
     Circular {
         /// Radius R > 0.

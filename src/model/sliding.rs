@@ -1,5 +1,5 @@
 //! Problem 1: steady sliding with Coulomb friction, adhesive friction and linear wear
-//! (THEORY.md section 3; the paper's (1.3), (2.8)).
+//! (docs/theory.md section 3; the paper's (1.3), (2.8)).
 
 use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
 use num_traits::{Signed, Zero};
@@ -13,18 +13,18 @@ pub enum SlidingLoad {
     HalfLength(Exact),
 }
 
-/// The surface convention of Problem 1 (THEORY.md section 8).
+/// The surface convention of Problem 1 (docs/theory.md section 8).
 ///
 /// The paper's symmetric summation of Flamant's solutions [1.6]-[1.8] with the wear law
 /// v' = g' - cW p leaves a surface that does not close over a period: the gap gains
 /// M = (2/E*) beta P1 - cW P2 per period. Requiring a periodic surface adds the constant
-///     K = (kappa P2 - 2 beta l tau0)/L   [reconstructed, THEORY.md section 8]
+///     K = (kappa P2 - 2 beta l tau0)/L   [reconstructed, docs/theory.md section 8]
 /// to the right side of [2.8], i.e. beta tau0 -> beta tau0 + K in [2.14]. K -> 0 for a single
 /// punch and vanishes when kappa = 0 and tau0 = 0; it is odd in lambda, so the paper's expansions
 /// in even powers of lambda belong to [`Convention::Paper`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Convention {
-    /// `paper`: sections 2-3 of THEORY.md as they stand (no K). The default.
+    /// `paper`: sections 2-3 of docs/theory.md as they stand (no K). The default.
     #[default]
     Paper,
     /// `periodic`: K added; the surface closes over every period.
@@ -253,12 +253,12 @@ impl SlidingProblem {
 
     /// kappa = 0 and tau0 = 0: the right side of [2.8] is (E*/2) g' alone (theta = 0, T = 0, the
     /// frictionless equation, whose closed forms apply), and K = (kappa P2 - 2 beta l tau0)/L
-    /// vanishes, so the `paper` and `periodic` conventions coincide (THEORY.md section 8).
+    /// vanishes, so the `paper` and `periodic` conventions coincide (docs/theory.md section 8).
     pub fn kappa_and_tau0_vanish(&self) -> bool {
         self.kappa().is_zero() && self.adhesive_friction.is_zero()
     }
 
-    /// kappa = E* cW / 2 - beta mu (THEORY.md section 3, the paper's (2.8)), exact.
+    /// kappa = E* cW / 2 - beta mu (docs/theory.md section 3, the paper's (2.8)), exact.
     pub fn kappa(&self) -> Exact {
         let two = Exact::from_integer(2.into());
         self.material.contact_modulus() * &self.wear / two - self.material.beta() * &self.friction

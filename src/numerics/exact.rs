@@ -1,7 +1,7 @@
 //! Exact inputs (reduced rationals) to MPFR and `f64`, rounded once.
 //!
 //! The scene's numbers are exact rationals; they must reach MPFR without passing through `f64`
-//! (a Jacobi exponent formed in `f64` and promoted silently loses digits, THEORY.md section 7).
+//! (a Jacobi exponent formed in `f64` and promoted silently loses digits, docs/theory.md section 7).
 
 use num_rational::BigRational;
 use rug::{Float, Integer, Rational};

@@ -11,10 +11,10 @@
 //!
 //! The mass mu0 = int (1-u)^alpha (1+u)^beta du = 2^{alpha+beta+1} Gamma(alpha+1) Gamma(beta+1) /
 //! Gamma(alpha+beta+2) is evaluated in closed form by the reflection formula when alpha + beta is
-//! -1, 0 or 1 (the cases of THEORY.md section 3: omega and 1/omega), otherwise by a Lanczos Gamma
+//! -1, 0 or 1 (the cases of docs/theory.md section 3: omega and 1/omega), otherwise by a Lanczos Gamma
 //! (relative error ~ 1e-15).
 //!
-//! Companion rules for the singular integral equation of Problem 1 (THEORY.md section 3):
+//! Companion rules for the singular integral equation of Problem 1 (docs/theory.md section 3):
 //! with omega(u) = (1+u)^{1/2+theta} (1-u)^{1/2-theta} (Jacobi alpha = 1/2 - theta,
 //! beta = 1/2 + theta) the dominant operator S\[f\] = tan(pi theta) f + (1/pi) PV int f(u')/(u - u') du'
 //! maps omega P_n^{(alpha,beta)} onto a multiple of P_{n+1}^{(-alpha,-beta)} (Erdogan, Gupta & Cook
@@ -82,7 +82,7 @@ pub fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>
 /// Closed forms by the reflection formula Gamma(z) Gamma(1-z) = pi/sin(pi z) (DLMF 5.5.3):
 /// s = 1: 2 pi alpha (1 - alpha)/sin(pi alpha); s = 0: 2 pi alpha / sin(pi alpha); s = -1: pi / sin(pi (alpha + 1)).
 /// With alpha = 1/2 - theta, s = 1: mu0 = pi (1/2 - 2 theta^2)/cos(pi theta); s = -1 (1/omega):
-/// mu0 = pi/cos(pi theta) = J_0 (THEORY.md [3.5]).
+/// mu0 = pi/cos(pi theta) = J_0 (docs/theory.md [3.5]).
 pub fn jacobi_mass(alpha: f64, beta: f64) -> f64 {
     let s = alpha + beta;
     let sinc_pi = |z: f64| {
@@ -262,7 +262,7 @@ pub(crate) fn tridiagonal_eigenvalues(d: &mut [f64], e: &mut [f64]) -> Result<()
     Ok(())
 }
 
-/// The two rules of the Gauss–Jacobi collocation of Problem 1 (THEORY.md section 3), for
+/// The two rules of the Gauss–Jacobi collocation of Problem 1 (docs/theory.md section 3), for
 /// omega(u) = (1+u)^{1/2+theta} (1-u)^{1/2-theta}, |theta| < 1/2:
 /// `.0` the n-point rule of omega (alpha = 1/2 - theta, beta = 1/2 + theta; unknowns at its
 /// nodes), `.1` the (n+1)-point rule of 1/omega (alpha = theta - 1/2, beta = -theta - 1/2); its
@@ -275,7 +275,7 @@ pub fn sliding_rules(n: usize, theta: f64) -> Result<(GaussRule, GaussRule), Qua
 
 /// (1/pi) int_{-1}^{1} omega(t)/(u - t) dt for real |u| > 1, omega as in [`sliding_rules`]:
 /// (u + 2 theta - X(u)) / cos(pi theta), X(z) = (z-1)^{1/2-theta} (z+1)^{1/2+theta} (principal
-/// branches, X ~ z + 2 theta at infinity; THEORY.md section 3). For u < -1, X(u) =
+/// branches, X ~ z + 2 theta at infinity; docs/theory.md section 3). For u < -1, X(u) =
 /// -(1-u)^{1/2-theta} (-1-u)^{1/2+theta}. Derived from the Sokhotski–Plemelj formula applied to
 /// X(z) - z - 2 theta = O(1/z), whose jump across (-1, 1) is 2 i cos(pi theta) omega.
 /// On the cut the principal value is (u + 2 theta - omega(u) sin(pi theta))/cos(pi theta), so
@@ -292,7 +292,7 @@ pub fn omega_cauchy_exterior(u: f64, theta: f64) -> f64 {
     (u + 2.0 * theta - x) / (PI * theta).cos()
 }
 
-/// omega(u) = (1+u)^{1/2+theta} (1-u)^{1/2-theta} (THEORY.md section 2), 0 outside [-1, 1].
+/// omega(u) = (1+u)^{1/2+theta} (1-u)^{1/2-theta} (docs/theory.md section 2), 0 outside [-1, 1].
 pub fn omega(u: f64, theta: f64) -> f64 {
     if u <= -1.0 || u >= 1.0 {
         0.0
@@ -342,7 +342,7 @@ mod tests {
     use super::*;
 
     /// J_n(theta) = int y^n / omega = (pi/cos(pi theta)) j_n, j_0 = 1, j_1 = -2 theta,
-    /// (n+1) j_{n+1} = n j_{n-1} - 2 theta j_n (THEORY.md [3.5]).
+    /// (n+1) j_{n+1} = n j_{n-1} - 2 theta j_n (docs/theory.md [3.5]).
     fn j_moments(theta: f64, count: usize) -> Vec<f64> {
         let mut j = vec![1.0, -2.0 * theta];
         for n in 1..count {

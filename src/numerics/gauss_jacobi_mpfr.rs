@@ -10,7 +10,7 @@
 //!    $a_k = (\beta^2-\alpha^2)/((2k+\alpha+\beta)(2k+\alpha+\beta+2))$,
 //!    $b_k^2 = 4k(k+\alpha)(k+\beta)(k+\alpha+\beta)/((2k+\alpha+\beta)^2(2k+\alpha+\beta+1)(2k+\alpha+\beta-1))$,
 //!    where the factor $(1+\alpha+\beta)$ is cancelled analytically in $b_1$ and $a_0 = (\beta-\alpha)/(\alpha+\beta+2)$
-//!    (so that $\alpha + \beta = -1$ or $0$, the cases of THEORY.md sections 3 and 5, are not 0/0);
+//!    (so that $\alpha + \beta = -1$ or $0$, the cases of docs/theory.md sections 3 and 5, are not 0/0);
 //! 2. f64 eigenvalues of the Jacobi matrix (implicit QL) as initial guesses;
 //! 3. Newton on $p_n$ evaluated by the recurrence at `prec + GUARD_BITS` bits, with precision
 //!    doubling from the f64 start;
@@ -357,7 +357,7 @@ mod tests {
     }
 
     /// J_k(theta) = int y^k / omega = pi/cos(pi theta) j_k, (n+1) j_{n+1} = n j_{n-1} - 2 theta j_n
-    /// (THEORY.md section 5), evaluated at `prec` bits.
+    /// (docs/theory.md section 5), evaluated at `prec` bits.
     fn j_moments(theta: &Float, kmax: usize, prec: u32) -> Vec<Float> {
         let mut j = vec![Float::with_val(prec, 1), Float::with_val(prec, theta * -2i32)];
         for n in 1..kmax {

@@ -1,8 +1,8 @@
-//! The material constants of Problem 2 (THEORY.md sections 1, 4, 5): eps, cosh(pi eps),
+//! The material constants of Problem 2 (docs/theory.md sections 1, 4, 5): eps, cosh(pi eps),
 //! B = pi/cosh(pi eps), S(eps) and the half-range moments M_m, in MPFR and in `f64`.
 //!
 //! With kappa = 3 - 4 nu (exact): eps = ln(kappa)/(2 pi), cosh(pi eps) = (kappa+1)/(2 sqrt(kappa)),
-//! B = 2 pi sqrt(kappa)/(kappa+1) (THEORY.md section 5; cosh(ln(kappa)/2) written out, so no
+//! B = 2 pi sqrt(kappa)/(kappa+1) (docs/theory.md section 5; cosh(ln(kappa)/2) written out, so no
 //! exponential of a rounded eps is formed).
 
 use crate::model::Material;
@@ -91,7 +91,7 @@ impl AdhesionParamsF64 {
     }
 }
 
-/// eps = ln(3 - 4 nu)/(2 pi) [THEORY.md section 1], rounded once from the exact kappa.
+/// eps = ln(3 - 4 nu)/(2 pi) [docs/theory.md section 1], rounded once from the exact kappa.
 pub fn eps(material: &Material, prec: u32) -> Float {
     let w = prec + CONSTANT_GUARD_BITS;
     let kappa = to_float(&material.kolosov(), w);
@@ -107,14 +107,14 @@ pub fn cosh_pi_eps(material: &Material, prec: u32) -> Float {
     Float::with_val(prec, (kappa + 1u32) / (s * 2u32))
 }
 
-/// B = pi/cosh(pi eps) [THEORY.md section 5].
+/// B = pi/cosh(pi eps) [docs/theory.md section 5].
 pub fn b_const(material: &Material, prec: u32) -> Float {
     let w = prec + CONSTANT_GUARD_BITS;
     let pi = Float::with_val(w, Constant::Pi);
     Float::with_val(prec, pi / cosh_pi_eps(material, w))
 }
 
-/// S(eps) = int_0^inf sin(2 eps y)/cosh(y) dy [THEORY.md section 5], to `prec` bits.
+/// S(eps) = int_0^inf sin(2 eps y)/cosh(y) dy [docs/theory.md section 5], to `prec` bits.
 ///
 /// Method: 1/cosh y = 2 sum_k (-1)^k e^{-(2k+1) y} gives S = 2 sum_{k>=0} (-1)^k a_k with
 /// a_k = c/((2k+1)^2 + c^2), c = 2 eps. The alternating sum is accelerated by Algorithm 1 of
@@ -176,7 +176,7 @@ pub fn s_const_f64(eps: f64) -> f64 {
 }
 
 /// Half-range moments M_m = int_0^1 y^m (1+y)^{-1/2+i eps} (1-y)^{-1/2-i eps} dy, m = 0..count-1
-/// [THEORY.md sections 4, 5]: M_0 = B/2 + i S, M_1 = 1 + 2 i eps M_0,
+/// [docs/theory.md sections 4, 5]: M_0 = B/2 + i S, M_1 = 1 + 2 i eps M_0,
 /// (m+1) M_{m+1} = m M_{m-1} + 2 i eps M_m. The recurrence is neutrally stable (both solutions
 /// grow like m^{-1/2}); a few guard bits suffice for m up to thousands.
 pub fn half_range_moments(material: &Material, count: usize, prec: u32) -> Vec<Complex> {
@@ -199,7 +199,7 @@ pub fn half_range_moments(material: &Material, count: usize, prec: u32) -> Vec<C
     out.into_iter().map(|z| Complex::with_val(prec, z)).collect()
 }
 
-/// Single-punch load constant C_P = pi/(2 (1 - 2 eps S)) [THEORY.md section 5; the paper's
+/// Single-punch load constant C_P = pi/(2 (1 - 2 eps S)) [docs/theory.md section 5; the paper's
 /// (3.18) at lambda = 0]: P2 = C_P E* k a^2. Equals pi/(2 Re M_1).
 pub fn single_punch_load_constant(material: &Material, prec: u32) -> Float {
     let w = prec + CONSTANT_GUARD_BITS;
@@ -212,7 +212,7 @@ pub fn single_punch_load_constant(material: &Material, prec: u32) -> Float {
 
 /// Single-punch slope of the tangential displacement, psi = A1 |x| with
 /// A1 = -2 eps B k/(1 - 2 eps S) (from psi = -(2 k x/(pi chi)) Im int K P' as chi -> 0,
-/// THEORY.md section 4, with P' = eta pi/Re M_1 and Im M_1 = eps B). Returned per unit k.
+/// docs/theory.md section 4, with P' = eta pi/Re M_1 and Im M_1 = eps B). Returned per unit k.
 pub fn single_punch_slope(material: &Material, prec: u32) -> Float {
     let w = prec + CONSTANT_GUARD_BITS;
     let e = eps(material, w);

@@ -1,4 +1,4 @@
-//! The punch profile as the checks see it (THEORY.md sections 1, 9): the exact derivatives of a
+//! The punch profile as the checks see it (docs/theory.md sections 1, 9): the exact derivatives of a
 //! polynomial, the height of the punch row, and the refusals of a general profile on its contact
 //! (convexity, slope, the circle's wall). Re-exported from [`super::sliding`].
 
@@ -8,7 +8,7 @@ use crate::model::{Exact, ModelError, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use std::f64::consts::PI;
 
-/// g of the punch row at x (THEORY.md sections 1, 9): the profile on the cell (-L/2, L/2)
+/// g of the punch row at x (docs/theory.md sections 1, 9): the profile on the cell (-L/2, L/2)
 /// repeated with period L (x reduced to the cell; the sinusoid is periodic by itself), so a
 /// profile with odd terms steps at the cell edges; +infinity where a circle has no punch
 /// (|x| >= R in the cell). For the physicality criterion's gap (a check, in f64).
@@ -72,7 +72,7 @@ pub const MAX_CONTACT_SLOPE: f64 = 0.5;
 pub const CIRCLE_SIZE_CAP: f64 = 0.9;
 
 /// Refusals of a polynomial or circular profile on a found contact [-a, b] = [`left`, `right`]
-/// (THEORY.md section 9), evaluated in `f64` from the exact profile: (i) the circle's contact
+/// (docs/theory.md section 9), evaluated in `f64` from the exact profile: (i) the circle's contact
 /// must stay inside |x| < R; (ii) g'' >= 0 on [-a, b] (sampled at 257 Chebyshev points and the
 /// ends, relative tolerance 1e-12: a heuristic, a dip narrower than the sampling is missed);
 /// (iii) max |g'| on [-a, b] <= [`MAX_CONTACT_SLOPE`] (at the ends, g' being monotone once

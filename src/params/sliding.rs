@@ -1,4 +1,4 @@
-//! Derived parameters of Problem 1, computed once from the exact problem (THEORY.md sections 1, 3,
+//! Derived parameters of Problem 1, computed once from the exact problem (docs/theory.md sections 1, 3,
 //! 5, 8): kappa, theta, beta, the osculating curvature k, the Hertz half-width a0 and the
 //! single-punch half-length l_s, in `f64` ([`SlidingParamsF64`]) and in MPFR
 //! ([`SlidingParamsMpfr`]). Every solver, series evaluation, report section and renderer reads
@@ -29,26 +29,26 @@ use std::f64::consts::PI;
 
 /// Smallest allowed distance of |theta| from 1/2: the end exponents 1/2 -+ theta of the pressure
 /// reach 0 and the Gauss–Jacobi rules of 1/omega (exponents theta - 1/2, -theta - 1/2 > -1) need
-/// ever more nodes (THEORY.md section 7). |theta| <= 1/2 - 1e-6 means |kappa| <= about 3e5.
+/// ever more nodes (docs/theory.md section 7). |theta| <= 1/2 - 1e-6 means |kappa| <= about 3e5.
 pub const THETA_MARGIN: f64 = 1e-6;
 
-/// theta = arctan(kappa)/pi (THEORY.md section 3), `f64`.
+/// theta = arctan(kappa)/pi (docs/theory.md section 3), `f64`.
 pub fn theta_f64(kappa: f64) -> f64 {
     kappa.atan() / PI
 }
 
-/// theta = arctan(kappa)/pi (THEORY.md section 3), MPFR at the precision of `kappa`.
+/// theta = arctan(kappa)/pi (docs/theory.md section 3), MPFR at the precision of `kappa`.
 pub fn theta_mpfr(kappa: &Float) -> Float {
     let prec = kappa.prec();
     Float::with_val(prec, kappa.atan_ref()) / Float::with_val(prec, Constant::Pi)
 }
 
-/// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (THEORY.md section 6), `f64`.
+/// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (docs/theory.md section 6), `f64`.
 pub fn hertz_half_width_f64(p2: f64, e_star: f64, k: f64) -> f64 {
     (2.0 * p2 / (PI * e_star * k)).sqrt()
 }
 
-/// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (THEORY.md section 6), MPFR.
+/// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (docs/theory.md section 6), MPFR.
 pub fn hertz_half_width_mpfr(p2: &Float, e_star: &Float, k: &Float) -> Float {
     let prec = p2.prec();
     let pi = Float::with_val(prec, Constant::Pi);
@@ -68,7 +68,7 @@ pub fn single_punch_half_length_mpfr(a0: &Float, theta: &Float) -> Float {
     Float::with_val(prec, a0 / Float::with_val(prec, 1u32 - t2).sqrt())
 }
 
-/// Osculating curvature k = g''(0)/2 (THEORY.md section 9), `f64`: k for g = k x^2,
+/// Osculating curvature k = g''(0)/2 (docs/theory.md section 9), `f64`: k for g = k x^2,
 /// 2 pi^2 D/L^2 for the sinusoid [2.16], c_2 for a polynomial, 1/(2 R) for the circle.
 pub fn osculating_k_f64(shape: &ShapeF64, period: Option<f64>) -> f64 {
     match (shape, period) {
@@ -80,7 +80,7 @@ pub fn osculating_k_f64(shape: &ShapeF64, period: Option<f64>) -> f64 {
     }
 }
 
-/// Osculating curvature k = g''(0)/2 (THEORY.md section 9), MPFR: k for g = k x^2,
+/// Osculating curvature k = g''(0)/2 (docs/theory.md section 9), MPFR: k for g = k x^2,
 /// 2 pi^2 D/L^2 for the sinusoid [2.16], c_2 for a polynomial, 1/(2 R) for the circle.
 pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
     match (shape, period) {
@@ -101,7 +101,7 @@ pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
 
 /// P2/E* of a single punch (L = infinity) without friction for the EVEN part of the polynomial
 /// g with slope coefficients `slope` (g' = sum_j slope\[j\] x^j), at half-width a: the power law
-/// of THEORY.md section 9, P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! for g = A x^(2n), summed over
+/// of docs/theory.md section 9, P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! for g = A x^(2n), summed over
 /// the even terms (A = c_2n = slope[2n-1]/(2n)).
 pub fn even_part_single_punch_load_mpfr(slope: &[Float], a: &Float) -> Float {
     let prec = a.prec();
@@ -206,7 +206,7 @@ pub enum ShapeF64 {
         /// D.
         d: f64,
     },
-    /// g = sum_j c_j x^j (THEORY.md section 9), by the coefficients of its derivatives, each
+    /// g = sum_j c_j x^j (docs/theory.md section 9), by the coefficients of its derivatives, each
     /// formed exactly and rounded once (trailing zeros dropped).
     Polynomial {
         /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
@@ -214,7 +214,7 @@ pub enum ShapeF64 {
         /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
         curvature: Vec<f64>,
     },
-    /// g = R - sqrt(R^2 - x^2) (THEORY.md section 9).
+    /// g = R - sqrt(R^2 - x^2) (docs/theory.md section 9).
     Circular {
         /// R.
         r: f64,
@@ -234,7 +234,7 @@ pub enum ShapeMpfr {
         /// D.
         d: Float,
     },
-    /// g = sum_j c_j x^j (THEORY.md section 9), by the coefficients of its derivatives, each
+    /// g = sum_j c_j x^j (docs/theory.md section 9), by the coefficients of its derivatives, each
     /// formed exactly and rounded once (trailing zeros dropped).
     Polynomial {
         /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
@@ -242,7 +242,7 @@ pub enum ShapeMpfr {
         /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
         curvature: Vec<Float>,
     },
-    /// g = R - sqrt(R^2 - x^2) (THEORY.md section 9).
+    /// g = R - sqrt(R^2 - x^2) (docs/theory.md section 9).
     Circular {
         /// R.
         r: Float,
@@ -300,7 +300,7 @@ pub struct SlidingParamsF64 {
     pub k: f64,
     /// Load or size.
     pub target: TargetF64,
-    /// Surface convention (THEORY.md section 8).
+    /// Surface convention (docs/theory.md section 8).
     pub convention: Convention,
 }
 
@@ -440,7 +440,7 @@ pub struct SlidingParamsMpfr {
     pub k: Float,
     /// Load P2 / E* (given) or half-length l (given).
     pub target: TargetMpfr,
-    /// Surface convention (THEORY.md section 8).
+    /// Surface convention (docs/theory.md section 8).
     pub convention: Convention,
 }
 
@@ -535,7 +535,7 @@ impl SlidingParamsMpfr {
         (a, b)
     }
 
-    /// Exponents (alpha, beta) of omega = (1-u)^{1/2-theta} (1+u)^{1/2+theta} (THEORY.md section 2).
+    /// Exponents (alpha, beta) of omega = (1-u)^{1/2-theta} (1+u)^{1/2+theta} (docs/theory.md section 2).
     pub fn weight_exponents(&self) -> (Float, Float) {
         let a = Float::with_val(self.prec, 0.5f64 - Float::with_val(self.prec, &self.theta));
         let b = Float::with_val(self.prec, &self.theta + 0.5f64);

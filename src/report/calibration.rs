@@ -9,7 +9,7 @@
 //! Prediction (a heuristic, stated as such in the report):
 //! - digits are interpolated linearly in ln(lambda) between the two calibrated sizes that bracket
 //!   the scene's lambda; the remainder of the series through Lambda^N scales like Lambda^(N+2)
-//!   (THEORY.md section 5), which makes the interpolation exact in the asymptotic regime and gives
+//!   (docs/theory.md section 5), which makes the interpolation exact in the asymptotic regime and gives
 //!   the extrapolation below the smallest calibrated size (slope N + 2 per decade);
 //! - f64 and MPFR below the smallest calibrated size take its value; above the largest calibrated
 //!   size no method but verified MPFR is admissible;

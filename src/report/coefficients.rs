@@ -27,7 +27,7 @@ pub fn markdown(tables: &[Derived], order: usize) -> String {
         "## 1. Exact coefficient tables (through order {order})\n\n\
          Every coefficient is exact (rationals, polynomials over Q in the named symbols), derived by the \
          `exact_series` engine; the LaTeX forms are in `coefficients.tex`. Order N keeps every term \
-         through power N (THEORY.md section 5).\n\n"
+         through power N (docs/theory.md section 5).\n\n"
     ));
     for d in tables {
         s.push_str(&format!(

@@ -1,5 +1,5 @@
 //! Report section 6: "paper vs periodic", the two surface conventions of Problem 1 side by side
-//! (THEORY.md section 8).
+//! (docs/theory.md section 8).
 //!
 //! `paper` solves [2.8] as the paper states it; `periodic` adds the constant
 //! K = (kappa P2 - 2 beta l tau0)/L to its right side, so that the surface closes over every
@@ -8,7 +8,7 @@
 //! load of the sweep in both conventions and shows:
 //! - the contact centre c/l and F_def/P2 against P2 (charts) and a table with the verified digits;
 //!   refusals are listed as the solver stated them;
-//! - for the parabola, the check of THEORY.md section 8: lambda (so l) is the same in both
+//! - for the parabola, the check of docs/theory.md section 8: lambda (so l) is the same in both
 //!   conventions and c_periodic - c_paper = -K/(E* k) exactly (K from the periodic solution's l;
 //!   an independent route, not the solvers' own K);
 //! - from the exact series ([`crate::asymptotics::sliding::sliding_expansion_with`]) at the scene's
@@ -107,7 +107,7 @@ pub fn solve_point(p: &SlidingProblem, digits: u32) -> Result<Point, String> {
     })
 }
 
-/// K/(E* k) = (kappa P2/E* - 2 beta l tau0/E*)/(L k) (THEORY.md section 8) at load `p2` (problem
+/// K/(E* k) = (kappa P2/E* - 2 beta l tau0/E*)/(L k) (docs/theory.md section 8) at load `p2` (problem
 /// units) and half-length `l`, from the problem's derived parameters; `None` for a single punch.
 pub fn k_over_e_k(p: &SlidingProblem, p2: &Float, l: &Float, prec: u32) -> Option<Float> {
     let prm = SlidingParamsMpfr::new(p, prec).ok()?;
@@ -194,7 +194,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     let _ = writeln!(
         s.markdown,
         "## 6. Paper vs periodic: the two surface conventions of Problem 1\n\n\
-         THEORY.md section 8. In the paper's equations (`paper`, sections 2-3, the default) the surface does not \
+         docs/theory.md section 8. In the paper's equations (`paper`, sections 2-3, the default) the surface does not \
          close over a period when there is friction or wear: integrating the gap across the free arc from the \
          trailing and from the leading end differs by M = (2/E*) beta P1 - cW P2, because the Flamant sum \
          carries a rigid rotation (mean v' = -beta P1/L) and steady wear lowers the surface uniformly \
@@ -293,7 +293,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
         let _ = writeln!(
             s.markdown,
             "No series terms: the report evaluates the exact series of the parabola and the sinusoid only (the \
-             section \"Punch shapes\" checks this profile against the closed form of THEORY.md section 9).\n"
+             section \"Punch shapes\" checks this profile against the closed form of docs/theory.md section 9).\n"
         );
         return;
     }
@@ -449,7 +449,7 @@ mod tests {
         Q::new(n.into(), d.into())
     }
 
-    /// THEORY.md section 8's check case: E* = k = L = 1, beta = 1/4 (nu = 1/3), mu = 2/5,
+    /// docs/theory.md section 8's check case: E* = k = L = 1, beta = 1/4 (nu = 1/3), mu = 2/5,
     /// tau0 = cW = 0, P2 = 1/20.
     fn theory_case(convention: Convention) -> SlidingProblem {
         SlidingProblem::builder()
@@ -465,7 +465,7 @@ mod tests {
 
     #[test]
     fn theory_check_values_and_the_k_shift() {
-        // THEORY.md section 8: lambda = 0.547045990639 in both conventions, c = -0.0118478575
+        // docs/theory.md section 8: lambda = 0.547045990639 in both conventions, c = -0.0118478575
         // (paper) and -0.0068478575 (periodic), so c_periodic - c_paper = -K/(E* k) = 0.005.
         let pap = solve_point(&theory_case(Convention::Paper), 20).unwrap();
         let per = solve_point(&theory_case(Convention::PeriodicSurface), 20).unwrap();

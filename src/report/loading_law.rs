@@ -1,4 +1,4 @@
-//! Report section "Loading law (Problem 2, P1 = N(P2))" (THEORY.md section 10; issue 12): the
+//! Report section "Loading law (Problem 2, P1 = N(P2))" (docs/theory.md section 10; issue 12): the
 //! scenes' loading-law problems by the verified MPFR method
 //! ([`crate::adhesion::loading_law::verified::solve_law_sampled`]: two collocation runs, digits
 //! from their agreement). One solve per scene and convention gives the whole loading history
@@ -181,7 +181,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     let _ = writeln!(
         s.markdown,
         "## Loading law (Problem 2, P1 = N(P2))\n\n\
-         THEORY.md section 10: the punches are loaded with P1 and P2 growing together by the scene's law, with \
+         docs/theory.md section 10: the punches are loaded with P1 and P2 growing together by the scene's law, with \
          complete adhesion, and the contact [-a, b] grows at both ends (c = (b - a)/2 != 0 when P1 != 0). \
          Verified MPFR method (two Chebyshev-collocation runs of the moving-edge Volterra equations, the second \
          with 8 more nodes and 16 more bits; digits = their agreement on the scales l, P2, E* k l), {digits} \
@@ -193,7 +193,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
          numbers come from `periodic-contact solve SCENE --json --digits {digits}` (keys a, b, c, P1, P2, \
          path; friction_needed at its points).\n",
         if ctx.profile == Profile::Full {
-            "Each scene in its own surface convention (THEORY.md section 8: `periodic` adds the rotation term, \
+            "Each scene in its own surface convention (docs/theory.md section 8: `periodic` adds the rotation term, \
              -beta P1/L on the contact, and moves the centre; a scene per convention shows both)."
         } else {
             "Fast profile: fewer digits and profile points."

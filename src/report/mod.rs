@@ -9,7 +9,7 @@
 //! 6. paper vs periodic: the two surface conventions of Problem 1 on the friction and wear scenes
 //!    ([`conventions`]);
 //! - punch shapes: the scenes' polynomial and circular profiles against the closed-form
-//!   frictionless load of THEORY.md section 9 ([`shapes`]; no text when no scene has one);
+//!   frictionless load of docs/theory.md section 9 ([`shapes`]; no text when no scene has one);
 //! - loading law: Problem 2 under P1 = N(P2), the scenes' loading-law problems with their loading
 //!   path, stresses and the friction they need ([`loading_law`]; no text when no scene has one);
 //! 7. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is

@@ -1,6 +1,6 @@
 //! Report section 2: convergence orders of the exact series against the high-precision solution,
 //! per scene and number of corrections m: the remainder after m corrections must scale like
-//! Lambda^(2m+2) (THEORY.md section 5). Scenes in the `periodic` convention (THEORY.md section 8)
+//! Lambda^(2m+2) (docs/theory.md section 5). Scenes in the `periodic` convention (docs/theory.md section 8)
 //! have series in every power of Lambda: keeping every term through Lambda^m, the centre's
 //! remainder scales like Lambda^(m+1) and the parabola's l (even in Lambda) like Lambda^(m+1) for
 //! odd m, Lambda^(m+2) for even m; they are studied at smaller Lambda, where the slope settles
@@ -51,7 +51,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
          solution at {digits} digits. Observed order = least-squares slope of log(remainder) against \
          log(Lambda); predicted 2m + 2. Remainders are relative to l_s. The centre's order is shown when the \
          centre does not vanish (theta != 0 or tau0 > 0).\n\n\
-         Scenes in the `periodic` convention (THEORY.md section 8; section 6 below) have series in every power \
+         Scenes in the `periodic` convention (docs/theory.md section 8; section 6 below) have series in every power \
          of Lambda: row m keeps every term through Lambda^m (m = 1..{}), compared with the `periodic` MPFR \
          solution at {p_digits} digits at Lambda = {p_lambdas:?} (smaller: consecutive terms are of similar \
          size, and the slope needs a smaller Lambda to settle). Predicted: m + 1 for the centre; for the \

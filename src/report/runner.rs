@@ -126,7 +126,7 @@ fn why(e: impl Into<crate::error::Error>) -> String {
 /// contacts), so that rounding never shows in their measured errors.
 pub const SERIES_BITS: u32 = 128;
 
-/// Why a loading-law scene (THEORY.md section 10) has no row in the report's method sections.
+/// Why a loading-law scene (docs/theory.md section 10) has no row in the report's method sections.
 pub const LOADING_LAW_NOT_IN_REPORT: &str =
     "the loading-law problem is solved by `periodic-contact solve` (MPFR only) and in the section \"Loading law\", not by this section's methods";
 

@@ -1,4 +1,4 @@
-//! Report section "Punch shapes": the polynomial and circular punches of the scenes (THEORY.md
+//! Report section "Punch shapes": the polynomial and circular punches of the scenes (docs/theory.md
 //! section 9) against the closed-form frictionless load of an even profile,
 //!     P2 = (E*/2) int_{-a}^{a} g'(x) sin(pi x/L) dx / sqrt(sin^2(pi a/L) - sin^2(pi x/L)),
 //! computed independently of the solvers ([`crate::verification::closed_form_load`]).
@@ -10,7 +10,7 @@
 //! - Problem 1 frictionless, half-length given: P2 by the verified MPFR method at [`DIGITS`]
 //!   digits and by the f64 method, each against the closed form (relative difference and the
 //!   digits they agree to), beside the MPFR run's own verified digits;
-//! - Problem 2 at nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem; THEORY.md
+//! - Problem 2 at nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem; docs/theory.md
 //!   section 9) by the verified MPFR method and by the f64 method, against the same closed form
 //!   (even profiles);
 //! - the first grid size beyond the slope limit, run to show the solvers' refusal;
@@ -376,7 +376,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     let _ = writeln!(
         s.markdown,
         "## Punch shapes: polynomial and circular profiles against the closed form\n\n\
-         THEORY.md section 9. Without friction an even profile g carries, at half-width a, \
+         docs/theory.md section 9. Without friction an even profile g carries, at half-width a, \
          P2 = (E*/2) int_{{-a}}^{{a}} g'(x) sin(pi x/L) dx / sqrt(sin^2(pi a/L) - sin^2(pi x/L)); this closed form \
          is computed here independently of the solvers (`src/verification/closed_form_load.rs`: g' from the \
          exact profile, substitution sin(pi x/L) = sin(lambda) sin(phi), trapezoid sums doubled until two agree \
@@ -432,7 +432,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
     } else {
         let _ = writeln!(
             s.markdown,
-            "No closed form: the profile has odd terms (its contact is off centre even without friction; THEORY.md \
+            "No closed form: the profile has odd terms (its contact is off centre even without friction; docs/theory.md \
              section 9's closed form is for even g). MPFR against f64.\n\n\
              | a/L | lambda | MPFR P2 | MPFR c/l | MPFR verified | f64 P2 | f64 agrees with MPFR |\n\
              |---:|---:|---:|---:|---:|---:|---:|"
@@ -594,7 +594,7 @@ fn chart(s: &mut Section, case: &ShapeCase, index: usize, rows: &[Row], big_l: f
                 })
                 .collect();
             curves.push(Curve {
-                name: "closed form (THEORY.md section 9)".into(),
+                name: "closed form (docs/theory.md section 9)".into(),
                 points: line,
                 draw: Draw::Dashed,
                 colour: None,

@@ -1,6 +1,6 @@
 //! Report section 4: stability maps from actual runs. Problem 1: lambda vs theta for the
 //! parabola and the sinusoid (up to high load), on the same grid in both surface conventions
-//! `paper` and `periodic` (THEORY.md section 8), side by side; Problem 2: lambda vs nu (the same
+//! `paper` and `periodic` (docs/theory.md section 8), side by side; Problem 2: lambda vs nu (the same
 //! in both conventions). Each cell runs every method; its digits are judged against the verified
 //! MPFR run of the same cell (whose own digits are its verified ones). A cell is "failed" when the
 //! method returned an error (no solution, no convergence, not physical, contact outside
@@ -265,7 +265,7 @@ fn series_order(shape: &PunchShape, convention: Convention) -> usize {
     }
 }
 
-/// The quartic punch of `scenes/quartic.toml`, g = x^2 + x^4/10 (THEORY.md section 9): its
+/// The quartic punch of `scenes/quartic.toml`, g = x^2 + x^4/10 (docs/theory.md section 9): its
 /// centred frictionless contact reaches the solvers' slope limit |g'| = 1/2
 /// ([`crate::params::sliding::MAX_CONTACT_SLOPE`]) at a = 0.2470 L (lambda = 0.776, L = 1), so its
 /// map shows that refusal region, moved by friction and wear (the contact off centre reaches the
@@ -274,7 +274,7 @@ fn quartic() -> PunchShape {
     PunchShape::Polynomial { coefficients: vec![q(0, 1), q(0, 1), q(1, 1), q(0, 1), q(1, 10)] }
 }
 
-/// The quartic's frictionless load at lambda (E* = L = 1): the closed form of THEORY.md section 9
+/// The quartic's frictionless load at lambda (E* = L = 1): the closed form of docs/theory.md section 9
 /// ([`crate::verification::closed_form_load`], 64 bits; NaN if it fails, and the cell is skipped).
 fn quartic_load(lam: f64) -> f64 {
     use crate::verification::closed_form_load::{frictionless_load_mpfr, EvenSlope};
@@ -369,7 +369,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
          reference failed. Problem 1 cells: nu = 0.3, E* = 1, L = 1, theta set by wear (theta > 0) or Coulomb \
          friction (theta < 0), the load from Kuznetsov's (parabola) or Westergaard's (sinusoid) law at the grid \
          lambda; the lambda shown is the computed one. Problem 1 is mapped on the same grid in both surface \
-         conventions (THEORY.md section 8): `paper` (the paper's equations) and `periodic` (the surface closes \
+         conventions (docs/theory.md section 8): `paper` (the paper's equations) and `periodic` (the surface closes \
          over a period); the series of the `periodic` sinusoid is kept through Lambda^8 (its exact derivation \
          through Lambda^12 would take minutes).\n"
     );
@@ -461,7 +461,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
         let maps: Vec<ConventionMap> = quartic_maps.into_iter().map(|m| m.0).collect();
         let title = "Problem 1, quartic g = x^2 + x^4/10 (L = 1): the slope limit";
         let note = format!(
-            "The quartic of scene `quartic` (THEORY.md section 9; issue 11), loaded by its frictionless \
+            "The quartic of scene `quartic` (docs/theory.md section 9; issue 11), loaded by its frictionless \
              closed-form load at the grid lambda: the solvers refuse a contact where |g'| > {} (the theory \
              assumes |g'| << 1 [1.9]), which for the centred frictionless contact is lambda > 0.776; friction and \
              wear move the contact off centre, so one end reaches the limit first. \"fail\" cells at large lambda \

@@ -1,6 +1,6 @@
 //! Report section 5: load-size curves from the scenes' `[sweep]`s, each point computed by the
 //! method chosen for the scene's target, with the closed forms beside them where they exist
-//! (THEORY.md section 6): Kuznetsov [2.15] for the frictionless periodic parabola (and for
+//! (docs/theory.md section 6): Kuznetsov [2.15] for the frictionless periodic parabola (and for
 //! Problem 2 at nu = 1/2, eps = 0), Westergaard [2.17] for the frictionless sinusoid, and the
 //! single-punch laws: l_s = a0/sqrt(1 - 4 theta^2) [3.10] (Problem 1, parabola) and
 //! P2 = C_P E* k a^2 [3.18] (Problem 2).
@@ -73,7 +73,7 @@ fn closed_forms(problem: &SceneProblem) -> Vec<ClosedForm> {
                         ));
                     }
                 }
-                // The new profiles' closed form (THEORY.md section 9, P2 as a function of a) is in
+                // The new profiles' closed form (docs/theory.md section 9, P2 as a function of a) is in
                 // the section "Punch shapes" ([`super::shapes`]), on its own grid of sizes.
                 PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => {}
             }

@@ -1,4 +1,4 @@
-//! Problem 1 (steady sliding with friction, adhesive friction and wear; THEORY.md sections 1-3):
+//! Problem 1 (steady sliding with friction, adhesive friction and wear; docs/theory.md sections 1-3):
 //! two independent methods side by side, with parallel verbs (`solve`, `verify`, `physical`,
 //! `solution`).
 //!

@@ -1,4 +1,4 @@
-//! Problem 2 under a loading law P1 = N(P2) (THEORY.md section 10; issue 12) as JSON: the
+//! Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; issue 12) as JSON: the
 //! verified MPFR solution ([`crate::adhesion::loading_law::verified`]), or the f64 marching
 //! method's ([`crate::adhesion::loading_law::verified_f64`], the same keys, its digits from its own
 //! two runs, `provenance.method` = `f64`), printed under the accuracy

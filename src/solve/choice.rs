@@ -333,7 +333,7 @@ impl Choice {
 }
 
 /// Estimate of lambda for the prediction: Problem 1 at a given load: Lambda = pi l_s/L
-/// (THEORY.md [3.10]); at a given l: pi l/L. Problem 2 at a given a: pi a/L; at a given load: the
+/// (docs/theory.md [3.10]); at a given l: pi l/L. Problem 2 at a given a: pi a/L; at a given load: the
 /// single-punch a0 = sqrt(P2/(C_P E* k)) [3.18]. A single punch: 0.
 pub fn lambda_estimate(problem: &SceneProblem) -> f64 {
     use crate::numerics::exact::to_f64;

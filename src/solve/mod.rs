@@ -73,7 +73,7 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
 }
 
 /// A refusal in the `paper` convention (not physical, or no solution) that the `periodic`
-/// convention would solve says so (THEORY.md section 8): the fast f64 method is run on the same
+/// convention would solve says so (docs/theory.md section 8): the fast f64 method is run on the same
 /// problem in `periodic` and, when it finds a physical contact, the message names the way forward.
 fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
     if p.convention() != Convention::Paper || p.kappa_and_tau0_vanish() || matches!(p.period(), Period::Infinite) {

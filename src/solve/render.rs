@@ -87,7 +87,7 @@ pub struct Provenance {
     pub nodes: Option<usize>,
     /// Order of the truncated series (series method).
     pub order: Option<usize>,
-    /// Surface convention of Problem 1 (`paper` or `periodic`, THEORY.md section 8); `None` for
+    /// Surface convention of Problem 1 (`paper` or `periodic`, docs/theory.md section 8); `None` for
     /// Problem 2, which is the same in both.
     pub convention: Option<&'static str>,
 }

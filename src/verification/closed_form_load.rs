@@ -1,4 +1,4 @@
-//! The frictionless load of an even punch profile in closed form (THEORY.md section 9), computed
+//! The frictionless load of an even punch profile in closed form (docs/theory.md section 9), computed
 //! independently of the solvers: by its own evaluation of g' from the exact profile and its own
 //! quadrature, so that a solver's load-size curve can be checked against it (report section
 //! "Punch shapes", tests/profiles.rs, tests/adhesion_profiles.rs).
@@ -126,7 +126,7 @@ impl LoadEstimate {
 /// Largest trapezoid sum tried before giving up.
 pub const MAX_POINTS: u32 = 1 << 16;
 
-/// THEORY.md section 9's frictionless load P2 at half-width `a` of the even profile `slope`,
+/// docs/theory.md section 9's frictionless load P2 at half-width `a` of the even profile `slope`,
 /// period `period` (`None`: single punch), contact modulus `e_star`, by the trapezoid sums of the
 /// module doc, doubled from 16 points until two agree to 2^-(prec - 16) relative (round-off of a
 /// sum of up to [`MAX_POINTS`] terms stays below it). Errors: lambda = pi a/L >= pi/2 or a <= 0
@@ -204,7 +204,7 @@ pub fn frictionless_load_mpfr(
     })
 }
 
-/// The single-punch power law of THEORY.md section 9 summed over the even terms of a polynomial
+/// The single-punch power law of docs/theory.md section 9 summed over the even terms of a polynomial
 /// g = sum_j c_j x^j (the load is linear in g): P2 = E* sum_n n pi c_2n a^(2n) (2n-1)!!/(2n)!!
 /// (n = 1: Hertz, pi E* c_2 a^2/2). Odd terms are ignored (they carry no load of a centred
 /// contact; the caller states whether g is even).
@@ -238,7 +238,7 @@ mod tests {
         Float::with_val(a.prec(), Float::with_val(a.prec(), a - b) / b).abs().to_f64()
     }
 
-    /// Kuznetsov [2.15] (THEORY.md section 6) for the parabola g = k x^2:
+    /// Kuznetsov [2.15] (docs/theory.md section 6) for the parabola g = k x^2:
     /// P2 = (E* k L^2/pi) ln sec(pi a/L), an independent closed form; at lambda = 0.2 .. 1.4.
     #[test]
     fn parabola_gives_kuznetsov() {

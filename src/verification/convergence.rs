@@ -3,7 +3,7 @@
 //! after m corrections (every term through Lambda^(2m)) must scale like Lambda^(2m+2). The
 //! observed order is the least-squares slope of log(remainder) against log(Lambda).
 //!
-//! In the `periodic` convention (THEORY.md section 8; [`sliding_convergence`] on a problem of that
+//! In the `periodic` convention (docs/theory.md section 8; [`sliding_convergence`] on a problem of that
 //! convention) the series hold every power of Lambda: row m keeps every term through Lambda^m
 //! (m = 1..=2 max_corrections) and the remainder scales like Lambda^(m+1) (`predicted` = m + 1;
 //! for the parabola this is the centre's order, its l/l_s being even: Lambda^(m+1) for odd m and

@@ -1,4 +1,4 @@
-//! The MPFR method for Problem 2 under a linear loading law P1 = n P2 (THEORY.md section 10,
+//! The MPFR method for Problem 2 under a linear loading law P1 = n P2 (docs/theory.md section 10,
 //! `paper` convention): the two moving-edge conditions as a nonlinear system of Volterra
 //! equations in the contact size, solved by Chebyshev collocation and a chord-Newton iteration.
 //!
@@ -48,7 +48,7 @@ pub struct LawSetting {
     pub size_over_period: Exact,
     /// Periodic row or single punch ([`Row`]).
     pub row: Row,
-    /// The surface convention (THEORY.md section 8): `periodic` adds the tilted punch's increment
+    /// The surface convention (docs/theory.md section 8): `periodic` adds the tilted punch's increment
     /// ([`super::kernel::TiltedPunch`]).
     pub convention: Convention,
 }

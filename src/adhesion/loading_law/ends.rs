@@ -3,7 +3,7 @@
 //!
 //! Near the leading end (distance d to b) the increments received since x entered add up to
 //!   sigma = q2 + i q1 ~ C_b (d/l)^(1/2 - i eps),   near the trailing end C_a (d/l)^(1/2 + i eps)
-//! (THEORY.md 4's end behaviour), so arg sigma = phi_b - eps ln(d/l) (leading) and
+//! (docs/theory.md 4's end behaviour), so arg sigma = phi_b - eps ln(d/l) (leading) and
 //! phi_a + eps ln(d/l) (trailing) rotate without bound as d -> 0: the needed friction
 //! |q1|/q2 = |tan arg sigma| has no finite maximum near an end when eps != 0, and q2 changes sign
 //! (tension) within

@@ -1,5 +1,5 @@
 //! The fields of a loading-law solution ([`super::collocation::LawCollocation`]) on its final
-//! contact, in the collocation's dimensionless form (chi = pi x/L; THEORY.md section 10):
+//! contact, in the collocation's dimensionless form (chi = pi x/L; docs/theory.md section 10):
 //! - the entry size of a point: a point at chi > 0 entered through the leading end,
 //!   gamma(eta) + eta = chi; at chi < 0 through the trailing end, gamma(eta) - eta = chi;
 //! - psi_hat(chi) = Im int_0^eta_x (1 + i n) P'(eta) L K(chi - gamma(eta), eta) d eta, frozen at
@@ -142,7 +142,7 @@ mod tests {
     /// sigma = E* k (L/pi^2) sigma_hat this reads
     ///   (1/pi) PV int sigma_hat(chi') cot(chi - chi') d chi' + i beta sigma_hat(chi) = pi chi + i psi_hat(chi).
     /// In `periodic` the punch does not turn with the half-plane: the right side carries
-    /// - beta P1/L (THEORY.md section 8). Also: the stresses' integral is the load (1 + i n) P2.
+    /// - beta P1/L (docs/theory.md section 8). Also: the stresses' integral is the load (1 + i n) P2.
     /// The solution is `verified::solve_law`'s at 20 digits requested with the checked points
     /// among its points, and the check must confirm its claim: residuals below 10 x 10^-claimed
     /// on the scale pi Lambda of sigma_hat. Measured (n = 1/5, nu = 0.3, Lambda = pi/6; c/l =

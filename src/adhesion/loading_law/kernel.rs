@@ -1,4 +1,4 @@
-//! The increments of the asymmetric incremental method (THEORY.md section 10) in MPFR: the
+//! The increments of the asymmetric incremental method (docs/theory.md section 10) in MPFR: the
 //! unit-load adhesive flat punch on an off-centre contact and its surface slopes outside it.
 //!
 //! Variables: chi = pi x/L; the earlier contact has centre gamma = pi c/L and half-length
@@ -20,7 +20,7 @@ use rug::{Complex, Float};
 
 /// The row: a periodic row (the kernels of the module doc, in chi = pi x/L), or the single punch
 /// (L -> infinity): with the length unit U and chi = x/U the same formulas hold with L = pi U and
-/// sin z -> z, cos(chi' - 2 i eps eta) -> 1 (the leading terms as pi U/L -> 0; THEORY.md 10's
+/// sin z -> z, cos(chi' - 2 i eps eta) -> 1 (the leading terms as pi U/L -> 0; docs/theory.md 10's
 /// single-punch limit), so every caller keeps its scalings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Row {
@@ -135,7 +135,7 @@ pub fn flat_punch_stress(
     cos * phase * mag
 }
 
-/// The tilted flat punch of the `periodic` convention (THEORY.md section 8 applied to Problem 2):
+/// The tilted flat punch of the `periodic` convention (docs/theory.md section 8 applied to Problem 2):
 /// with P1 != 0 the Flamant sum rotates the half-plane ((E*/2) mean v' = -beta P1/L), so in the
 /// paper's frame a punch that does not rotate keeps (E*/2) v' = (E*/2) g' - beta P1/L on its
 /// contact, and an increment dP brings, besides dP sigma_flat, the solution sigma_rot of

@@ -1,4 +1,4 @@
-//! The increments of the asymmetric incremental method (THEORY.md sections 4, 10) in `f64`, for
+//! The increments of the asymmetric incremental method (docs/theory.md sections 4, 10) in `f64`, for
 //! the marching method ([`super::marching`]); written anew from the formulas (the MPFR kernel
 //! [`super::kernel`] is not called), and checked against it in the tests.
 //!

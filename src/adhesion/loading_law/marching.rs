@@ -1,4 +1,4 @@
-//! The second method for Problem 2 under a loading law (THEORY.md section 10; issue 12), in
+//! The second method for Problem 2 under a loading law (docs/theory.md section 10; issue 12), in
 //! `f64`: block-by-block marching in the loading parameter, built differently from the MPFR
 //! collocation ([`super::collocation`], one global Chebyshev interpolant in t = eta/Lambda solved
 //! all at once): here the loading [0, Lambda] is cut into blocks, each solved after the earlier

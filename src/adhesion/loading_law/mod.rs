@@ -1,4 +1,4 @@
-//! Problem 2 with a loading law P1 = N(P2) (THEORY.md section 10; issue 12): the contact
+//! Problem 2 with a loading law P1 = N(P2) (docs/theory.md section 10; issue 12): the contact
 //! [-a, b] grows at both ends, in a periodic row or on a single punch ([`kernel::Row`]):
 //! - [`kernel`]: the increments on an off-centre contact (the unit flat punch and its surface
 //!   slopes on both sides; the left side checked against the direct cot-kernel quadrature) and

@@ -1,4 +1,4 @@
-//! The loading-law problem in dimensional form with verified digits (THEORY.md section 10): a
+//! The loading-law problem in dimensional form with verified digits (docs/theory.md section 10): a
 //! periodic row of parabolic punches g = k x^2, or a single one, indented with complete adhesion
 //! under P1 = N(P2), given the final half-length l = (a + b)/2 or the load. The single punch runs
 //! the same collocation with L = pi U in a length unit U ([`super::kernel::Row::Single`]: U = l
@@ -684,7 +684,7 @@ mod tests {
     }
 
     /// The single punch (period `inf`, [`Row::Single`]): n = 0 is the symmetric single punch
-    /// (c = 0, P2 = C_P E* k l^2, C_P = pi/(2 (1 - 2 eps S)), THEORY.md 5); at nu = 1/2 Hertz
+    /// (c = 0, P2 = C_P E* k l^2, C_P = pi/(2 (1 - 2 eps S)), docs/theory.md 5); at nu = 1/2 Hertz
     /// (P2 = pi E* k l^2/2, c = 0) with q1 = n q2; n = 1/5 at nu = 0.3 is self-similar (c/l,
     /// P2/l^2, psi/(k l), q/(E* k l) the same at l = 1/2 and l = 3), its given load is found back,
     /// and the periodic row tends to it like Lambda^2 (c/l at L = 40 and 80, l = 1: the

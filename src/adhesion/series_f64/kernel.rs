@@ -1,4 +1,4 @@
-//! The integrands of THEORY.md section 4 in `f64` (method 2): the same formulas as the MPFR
+//! The integrands of docs/theory.md section 4 in `f64` (method 2): the same formulas as the MPFR
 //! kernels of [`crate::adhesion::volterra_mpfr::kernel`] (which documents them), evaluated in `f64`;
 //! and the unit-load flat-punch stress, used by the tests of the surface relations.
 
@@ -57,7 +57,7 @@ pub fn stress_integrand(sigma: f64, omss: f64, y: f64, lambda: f64, eps: f64) ->
     (re, im, r2)
 }
 
-/// L sigma_flat(x; a) for the unit-load adhesive flat punch on [-a, a] (THEORY.md section 4):
+/// L sigma_flat(x; a) for the unit-load adhesive flat punch on [-a, a] (docs/theory.md section 4):
 /// cosh(pi eps) cos(chi - 2 i eps lambda) (sin(lambda+chi)/sin(lambda-chi))^{i eps}
 /// / sqrt(sin^2 lambda - sin^2 chi), |chi| < lambda, in f64 as (re, im) = (q2, q1) part;
 /// `lp` = lambda + chi and `lm` = lambda - chi are passed separately (accurate near the ends).

@@ -1,11 +1,11 @@
-//! Method 2 (`f64`): the Volterra equation of THEORY.md section 4 solved as a power series in
+//! Method 2 (`f64`): the Volterra equation of docs/theory.md section 4 solved as a power series in
 //! lambda^2 ("collocation in lambda^2"), independent of the Chebyshev collocation of method 1.
 //!
 //! With P'(eta) = eta f(eta^2), f(t) = sum_n f_n t^n, and the Taylor expansion in chi^2 of the
 //! regular kernel factor G(chi, s) = sum_m g_m(s) chi^{2m} ([`kernel`]; g_0 = 1), the
 //! equation Re int_0^1 s w(s) G(chi, s) f(chi^2 s^2) ds = pi is triangular:
 //!   sum_{j+m=n} f_j Re mu_{j,m} = pi delta_{n0},   mu_{j,m} = int_0^1 s^{2j+1} w(s) g_m(s) ds,
-//! (mu_{j,0} = M_{2j+1}, the half-range moments of THEORY.md section 5, so f_0 = pi/Re M_1 and
+//! (mu_{j,0} = M_{2j+1}, the half-range moments of docs/theory.md section 5, so f_0 = pi/Re M_1 and
 //! C_P = f_0/2). The g_m(s) are computed at each quadrature node as Taylor coefficients of
 //! G(., s) (series log/exp/cos in f64 at that node, no expansion in powers of s, which would
 //! cancel catastrophically), the mu by tanh-sinh. Then, with c_n = sum_{j+m=n} f_j mu_{j,m},
@@ -23,7 +23,7 @@
 //! the terms fall below 1e-18 of the largest, and returns `IllConditioned` when lambda^2 is not
 //! well inside the observed ratio (lambda <= ~0.74 at nu = 0, ~1.2 at nu >= 0.3).
 //!
-//! A general even profile (THEORY.md section 9) replaces the right side pi by
+//! A general even profile (docs/theory.md section 9) replaces the right side pi by
 //! pi g'(x)/(2 k x) = pi sum_n r_n tau^n, tau = (x/a)^2 ([`right_side`]: a polynomial for an even
 //! polynomial punch, the binomial series of the circle), and the recursion is solved directly in
 //! tau for the contact at hand ([`solve::solve_rhs`]): F_n = f_n lambda^{2n},
@@ -35,7 +35,7 @@
 //! # Files
 //! [`kernel`] (the integrands in `f64`), [`series`] (the universal coefficients f_n, mu_{j,m},
 //! once per material), [`right_side`] (a general even profile's right side as a series in
-//! (x/a)^2, THEORY.md section 9), [`solve`](mod@solve) (truncation at one lambda, dimensionless values), [`solution`]
+//! (x/a)^2, docs/theory.md section 9), [`solve`](mod@solve) (truncation at one lambda, dimensionless values), [`solution`]
 //! (dimensional results from the exact problem), [`verify`] (the accuracy estimate by a second,
 //! finer run). The MPFR method has the same files in [`crate::adhesion::volterra_mpfr`].
 

@@ -1,4 +1,4 @@
-//! The right side of method 2's Volterra equation for a general even profile (THEORY.md
+//! The right side of method 2's Volterra equation for a general even profile (docs/theory.md
 //! section 9; the MPFR method's [`crate::adhesion::volterra_mpfr::right_side`] states it):
 //!   Re I(sigma) = pi g'(x)/(2 k x),   x = a sigma, tau = sigma^2,
 //! as a power series in tau, r(tau) = sum_n r_n tau^n (the factor pi is applied by the

@@ -110,7 +110,7 @@ pub(super) fn solve_run(
 
 /// The half-width of the given load P2 (`target`), by Newton's method safeguarded by bisection
 /// on a in (0, a_max): P2(a) = E* k a^2 P~(a) increases with a, and dP2/da = E* k a F(1)
-/// (f does not depend on the contact size, THEORY.md section 4: P(lambda) = (1/2) int_0^(lambda^2) f,
+/// (f does not depend on the contact size, docs/theory.md section 4: P(lambda) = (1/2) int_0^(lambda^2) f,
 /// the same for the single punch in the limit L -> infinity). a_max: the series' range
 /// lambda <= [`SERIES_LAMBDA_MAX`] and the profile's slope limit
 /// ([`largest_admissible_half_width`]). A solve that fails inside the bracket (the series too

@@ -1,12 +1,12 @@
-//! The regularised kernels of the incremental (Mossakovskii) method, THEORY.md section 4.
+//! The regularised kernels of the incremental (Mossakovskii) method, docs/theory.md section 4.
 //!
 //! With chi = pi x/L, eta = chi s (s in (0, 1)) and sinc z = sin z/z, the kernel of the Volterra
 //! equation factors as
 //!   K(chi, chi s) chi = w(s) G(chi, s),  w(s) = (1+s)^{-1/2+i eps} (1-s)^{-1/2-i eps},
 //!   G(chi, s) = cos(chi (1 - 2 i eps s)) (sinc(chi(1+s))/sinc(chi(1-s)))^{i eps}
 //!               / sqrt(sinc(chi(1+s)) sinc(chi(1-s))),
-//! where w is the half-range weight of the moments M_m (THEORY.md section 5) and G is analytic,
-//! even in chi, G(0, s) = 1. Likewise the flat-punch stress sigma_flat(x; a') of THEORY.md
+//! where w is the half-range weight of the moments M_m (docs/theory.md section 5) and G is analytic,
+//! even in chi, G(0, s) = 1. Likewise the flat-punch stress sigma_flat(x; a') of docs/theory.md
 //! section 4, integrated against dP2(a') over a' = a r, r in (sigma, 1), sigma = x/a, becomes after
 //! r = sqrt(sigma^2 + (1 - sigma^2) y^2) (which removes the inverse square root)
 //!   (q2 + i q1)/(E* k a) = (cosh(pi eps)/pi) sqrt(1 - sigma^2)

@@ -1,5 +1,5 @@
 //! Method 1 (MPFR): Chebyshev collocation of the Volterra equation of the first kind of the
-//! incremental method, THEORY.md section 4 (Mossakovskii; the paper's (2.19) with a growing
+//! incremental method, docs/theory.md section 4 (Mossakovskii; the paper's (2.19) with a growing
 //! contact).
 //!
 //! Writing P2 = E* k (L/pi)^2 P(lambda), P'(eta) = eta f(eta^2) and, at a given lambda,
@@ -12,19 +12,19 @@
 //! interpolant in tau with n nodes converges like rho^-n, rho = z + sqrt(z^2 - 1),
 //! z = 2 (pi/(2 lambda))^2 - 1. Collocation at the Chebyshev nodes tau_i = sigma_i^2, integrals by
 //! tanh-sinh ([`crate::numerics::tanh_sinh`]), real n x n system by Gaussian elimination.
-//! Then (THEORY.md section 4):
+//! Then (docs/theory.md section 4):
 //!   P2/(E* k a^2) = (1/2) int_0^1 F(tau) d tau,
 //!   psi/(k a) = -(2 sigma/pi) Im I(sigma),
 //!   phi/(k a^2) = -(1/pi) int_0^{sigma^2} Im I(sqrt tau) d tau,
 //! and the stresses by [`kernel::stress_integrand`].
 //! lambda = 0 is the single punch (G = 1, F = pi/Re M_1 constant: self-similar).
-//! A general even profile (THEORY.md section 9: even polynomial, circle) replaces the right side
+//! A general even profile (docs/theory.md section 9: even polynomial, circle) replaces the right side
 //! pi by pi g'(x)/(2 k x), x = a sigma, k the reference curvature ([`right_side`]); the load, psi,
 //! phi and the stresses follow from F by the same formulas. At nu = 1/2 its load equals THEORY 9's
 //! closed form to ~1e-40 relative at 30 requested digits (quartic x^2/4 + x^4/2 and circle R = 2,
 //! lambda = 0.2-1.1: `cargo test --test adhesion_profiles -- --nocapture`).
 //!
-//! # Conditioning (measured; THEORY.md section 7)
+//! # Conditioning (measured; docs/theory.md section 7)
 //! For nu = 1/2 (eps = 0) and nu >= 0.45 the method verifies 20+ digits up to lambda ~ 1.49.
 //! For small nu it breaks down at a moderate contact size: verified digits of P2 at 20 requested
 //! (`cargo run --release --example adhesion_charts -- conditioning`): nu = 0: 31 (lambda <= 0.47), 27 (0.63), 22 (0.79), 6 (0.94),

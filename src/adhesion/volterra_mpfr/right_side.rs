@@ -1,4 +1,4 @@
-//! The right side of the Volterra equation for a general even profile (THEORY.md section 9):
+//! The right side of the Volterra equation for a general even profile (docs/theory.md section 9):
 //!   int_0^chi Re K(chi, eta) dP2/d eta d eta = (E* L/2) g'(L chi/pi).
 //! With P2 = E* k (L/pi)^2 P (k = [`crate::model::AdhesionProblem::curvature`], the reference
 //! curvature), P'(eta) = eta f(eta^2) and chi = lambda sigma (module doc of [`super`]), this is

@@ -278,7 +278,7 @@ fn first_guess_load_constant(problem: &AdhesionProblem) -> f64 {
 
 /// The half-width of a single punch (period "inf") of a profile other than the parabola under
 /// the given load P2: P2(a) = E* k a^2 P~(a) with P~ = (1/2) int_0^1 F (the right side, and so F,
-/// depends on a), dP2/da = E* k a F(1) (THEORY.md section 4 in the limit L -> infinity: f does
+/// depends on a), dP2/da = E* k a F(1) (docs/theory.md section 4 in the limit L -> infinity: f does
 /// not depend on the contact size). Newton's method safeguarded by bisection on (0, a_max), a_max
 /// the slope limit ([`largest_admissible_half_width`]); a load beyond P2(a_max) is refused naming
 /// `normal_load`. Each step is one collocation solve at lambda = 0 (the right side's own size,

@@ -80,7 +80,7 @@ pub fn solve(
     solve_rhs(constants, lambda, params, &RightSide::Parabola)
 }
 
-/// [`solve`] with the right side of a general even profile (THEORY.md section 9,
+/// [`solve`] with the right side of a general even profile (docs/theory.md section 9,
 /// [`RightSide`]): Re I(sigma) = pi g'(x)/(2 k x). The Chebyshev size is the larger of the
 /// full-contact estimate and the right side's own ([`RightSide::min_nodes`]).
 pub fn solve_rhs(

@@ -4,7 +4,7 @@
 //! scales of [`crate::adhesion::scales`]: P2 for the load (a for the half-width when the load is
 //! given), k a for psi, k a^2 for phi, E* k a for the stresses.
 //! The headline is the minimum. The values reported are those of the finer run.
-//! Conditioning warnings say where digits are lost (THEORY.md section 7).
+//! Conditioning warnings say where digits are lost (docs/theory.md section 7).
 
 use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;

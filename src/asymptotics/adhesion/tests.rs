@@ -20,7 +20,7 @@ fn sym(name: &str) -> Symbol {
     Symbol::new(name).unwrap()
 }
 
-/// The coefficient of `lambda^n` in `ln sec(lambda)/(lambda^2/2)` (Kuznetsov [2.15], THEORY.md
+/// The coefficient of `lambda^n` in `ln sec(lambda)/(lambda^2/2)` (Kuznetsov [2.15], docs/theory.md
 /// section 6), computed by the engine over Q from -log(cos), independently of the adhesion code.
 fn kuznetsov_load(order: usize) -> Series<Q> {
     let x = Series::<Q>::var(order + 3);
@@ -35,7 +35,7 @@ fn nu_half_reduces_to_kuznetsov() {
     let order = 12;
     let e = order12();
     let kz = kuznetsov_load(order);
-    assert_eq!(kz.coeff(2).unwrap(), &q(1, 6)); // THEORY.md section 5 check value c2 = 1/6
+    assert_eq!(kz.coeff(2).unwrap(), &q(1, 6)); // docs/theory.md section 5 check value c2 = 1/6
     let zero = Q::from_integer(0.into());
     for n in 0..=order {
         let c = e.load.coeff(n).unwrap().subs(sym(EPS), &zero).unwrap();
@@ -55,7 +55,7 @@ fn nu_half_reduces_to_kuznetsov() {
     assert_eq!(h0.text(), "tau");
 }
 
-/// Single-punch check values of THEORY.md section 5: C_P = pi/(2 (1 - 2 eps S)); A_1 (the
+/// Single-punch check values of docs/theory.md section 5: C_P = pi/(2 (1 - 2 eps S)); A_1 (the
 /// single-punch slope) = -2 eps B k/(1 - 2 eps S); A_2 = 0.
 #[test]
 fn single_punch_constants_exact() {
@@ -74,7 +74,7 @@ fn single_punch_constants_exact() {
     }
 }
 
-/// Independent route for the single punch (Muskhelishvili, fixed a; THEORY.md section 4 and the
+/// Independent route for the single punch (Muskhelishvili, fixed a; docs/theory.md section 4 and the
 /// Problem 1 reduction with theta = i eps): a bounded solution of (H + i beta) sigma = f on
 /// (-a, a) exists iff int_{-1}^{1} f(a y) dy/omega(y) = 0, omega(y) = (1+y)^{1/2+i eps}
 /// (1-y)^{1/2-i eps}. With f = (E*/2)(2 k a y - i A_1 a |y|) (self-similar psi = A_1 |x|) this

@@ -1,9 +1,9 @@
-//! Problem 2 for an even polynomial punch g = sum_m c_(2m) x^(2m) (THEORY.md section 9): the
+//! Problem 2 for an even polynomial punch g = sum_m c_(2m) x^(2m) (docs/theory.md section 9): the
 //! recurrence of [`crate::asymptotics::adhesion`] with the general right side, exact in
 //! (eps, B, S) and the profile's ratios.
 //!
 //! # Equations \[reconstructed\]
-//! THEORY.md section 9: int_0^chi Re K(chi, eta) dP2/d eta d eta = (E* L/2) g'(L chi/pi). With
+//! docs/theory.md section 9: int_0^chi Re K(chi, eta) dP2/d eta d eta = (E* L/2) g'(L chi/pi). With
 //! P2 = E* c_r (L/pi)^r P(lambda) and sigma_j = (c_j/c_r) (L/pi)^(j-r)
 //! ([`PolynomialProfile::period_ratios`]) the right side over E* c_r (L/pi)^r is
 //! pi sum_m m sigma_(2m) chi^(2m-1), so with the ansatz P'(eta) = pi sum_j p_j eta^(2j+1) the

@@ -1,4 +1,4 @@
-//! Exact series for polynomial punches g = sum_j c_j x^j (THEORY.md section 9, issue 11): the
+//! Exact series for polynomial punches g = sum_j c_j x^j (docs/theory.md section 9, issue 11): the
 //! profile and its exact parameters ([`profile`]), Problem 1 in both conventions ([`sliding`]),
 //! Problem 2 for even profiles ([`adhesion`]).
 

@@ -1,4 +1,4 @@
-//! The polynomial punch profile of the exact series, g = sum_j c_j x^j (THEORY.md section 9),
+//! The polynomial punch profile of the exact series, g = sum_j c_j x^j (docs/theory.md section 9),
 //! with each c_j either an exact rational or a symbol, and its dimensionless ratios rho_j.
 //!
 //! # Parameters: why rho_j = c_j l_s^(j-r) / c_r
@@ -12,7 +12,7 @@
 //! whose coefficients are the rho_j: exact, dimensionless, rho_r = 1, and constant when the
 //! period varies at fixed load (l_s, the single-punch half-length at the same load, does not
 //! depend on L). The parabola g = k x^2 has r = 2, every rho_j = 0 (j != 2), and
-//! T = beta tau0/(E* k l_s) as in THEORY.md section 5. The tilt enters only beside tau0:
+//! T = beta tau0/(E* k l_s) as in docs/theory.md section 5. The tilt enters only beside tau0:
 //! (j/2) rho_1 rho^(1-r) = (rho_1/2) rho^(1-r) and beta tau0/(E* c_r l^(r-1)) = T rho^(1-r),
 //! T = beta tau0/(E* c_r l_s^(r-1)), so [2.8] sees the sum T + rho_1/2 only.
 //!
@@ -145,7 +145,7 @@ impl PolynomialProfile {
     }
 
     /// Problem 2's ratios sigma_j = (c_j/c_r) (L/pi)^(j-r) for j = 0..=D (`sigma[r] = 1`): the
-    /// Volterra right side (THEORY.md section 9) over E* c_r (L/pi)^(r-1) is
+    /// Volterra right side (docs/theory.md section 9) over E* c_r (L/pi)^(r-1) is
     /// (pi/2) sum_j j sigma_j chi^(j-1), chi = pi x/L. Problem 2 varies a at a fixed period, so
     /// the natural constants are period-based. A known c_j with a known c_r enters as
     /// (c_j/c_r) L_pi^(j-r) in the symbol `L_pi` = L/pi; otherwise `sigma_j` is a symbol.

@@ -1,4 +1,4 @@
-//! Problem 1 for a polynomial punch g = sum_j c_j x^j (THEORY.md section 9): the small-lambda
+//! Problem 1 for a polynomial punch g = sum_j c_j x^j (docs/theory.md section 9): the small-lambda
 //! expansions of section 5 ([3.7]-[3.12]) exact in the profile's ratios rho_j, in both surface
 //! conventions, to any order.
 //!
@@ -13,7 +13,7 @@
 //!   K-term = Lambda (kappa (1/4 - theta^2) m0s rho^(1-r) - 2 T invpi rho^(2-r))   (`periodic` only),
 //!
 //! T = beta tau0/(E* c_r l_s^(r-1)), mt_j = int xih^j p dxih/(pi E* c_r l^(r-1)); the K-term is
-//! K/(E* c_r l^(r-1)) with K = (kappa P2 - 2 beta l tau0)/L (THEORY.md section 8) and
+//! K/(E* c_r l^(r-1)) with K = (kappa P2 - 2 beta l tau0)/L (docs/theory.md section 8) and
 //! P2 = pi E* c_r l_s^r (1/4 - theta^2) m0s. For a polynomial F the bounded solution is
 //! p = E* c_r l^(r-1) cos(pi theta) omega(xh) B(xh), B = sum_i F_i sum_{s+t=i-1} xh^s j_t(theta),
 //! with the solvability condition S(F) = sum_i F_i j_i = 0 [2.14], and
@@ -70,7 +70,7 @@ use exact_series::{Frac, Monomial, Poly, Ring, Series, SeriesError, Symbol, Q};
 pub struct PolynomialSlidingExpansion {
     /// The profile.
     pub profile: PolynomialProfile,
-    /// The surface convention (THEORY.md section 8).
+    /// The surface convention (docs/theory.md section 8).
     pub convention: Convention,
     /// Delta = det J, the single-punch Jacobian (module doc): every denominator divides a power.
     pub jacobian: Poly,

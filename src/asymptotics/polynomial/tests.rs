@@ -75,7 +75,7 @@ fn double_factorial_ratio(n: i64) -> Q {
 
 #[test]
 fn single_punch_power_law() {
-    // THEORY.md section 9: g = A x^(2n) alone gives P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!!; the
+    // docs/theory.md section 9: g = A x^(2n) alone gives P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!!; the
     // series' leading term is P2 = pi E* c_r l_s^r (1/4 - theta^2) m0s with r = 2n, so
     // m0s/4 = n (2n-1)!!/(2n)!! at theta = rbar_s = 0 (symmetric, frictionless).
     for n in 1..=4usize {
@@ -114,7 +114,7 @@ fn chebyshev_mean(p: &Poly, sv: Symbol) -> Poly {
     out
 }
 
-/// THEORY.md section 9's closed-form frictionless load for an even profile, as an identity in
+/// docs/theory.md section 9's closed-form frictionless load for an even profile, as an identity in
 /// Lambda: with x = a s, P2 = (E*/2) sum_j j c_j a^j Q_j(lambda),
 /// Q_j = int s^j sinc(lambda s) [sinc(lambda (1+s)) sinc(lambda (1-s))]^(-1/2) ds/sqrt(1-s^2),
 /// and P2 = pi E* c_r l_s^r m0s/4 at theta = 0, a = rho l_s, lambda = Lambda rho:
@@ -193,7 +193,7 @@ fn adhesion_parabola_reproduces_the_parabolic_series() {
 
 #[test]
 fn adhesion_at_half_is_the_frictionless_closed_form() {
-    // nu = 1/2 (eps = S = 0): P2 = E* c_r (L/pi)^r P(lambda) must be THEORY.md section 9's
+    // nu = 1/2 (eps = S = 0): P2 = E* c_r (L/pi)^r P(lambda) must be docs/theory.md section 9's
     // closed form, P/pi = (1/2) sum_j j sigma_j lambda^j q_j(lambda), with q_j = Q_j/pi of
     // closed_form_residual (the frictionless load of the same profile, Problem 1).
     let order = 8;
@@ -219,7 +219,7 @@ fn adhesion_at_half_is_the_frictionless_closed_form() {
 #[test]
 fn symbolic_quartic_matches_the_closed_form_load_through_order_12() {
     // The snapshot sliding_polynomial_quartic_frictionless_order12: l/l_s of g = x^2 + rho_4 x^4
-    // (rho_4 symbolic) against THEORY.md section 9's closed form, an identity in Lambda; checked
+    // (rho_4 symbolic) against docs/theory.md section 9's closed form, an identity in Lambda; checked
     // at several rho_4 (each coefficient is a rational function of degree < 24 in rho_4, so
     // these values test the snapshot's objects, not a proof of the identity in rho_4).
     let g = PolynomialProfile::new(vec![c(0), c(0), c(1), c(0), None]).unwrap();

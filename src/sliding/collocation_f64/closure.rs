@@ -1,4 +1,4 @@
-//! The surface convention in the collocated equation (THEORY.md section 8). With `periodic`
+//! The surface convention in the collocated equation (docs/theory.md section 8). With `periodic`
 //! ([`Convention::PeriodicSurface`]) the right side of [2.8] gains the constant
 //!
 //! ```text
@@ -53,7 +53,7 @@ pub(super) fn tau0_side(prm: &SlidingParamsF64, map: &Map) -> f64 {
 }
 
 /// K = (kappa P2 - 2 beta l tau0)/L of a solution with load `p2` and half-length `l` in the
-/// `periodic` convention (THEORY.md section 8); 0 in `paper` and for a single punch.
+/// `periodic` convention (docs/theory.md section 8); 0 in `paper` and for a single punch.
 pub(super) fn k_constant(prm: &SlidingParamsF64, p2: f64, l: f64) -> f64 {
     match (prm.convention, prm.period) {
         (Convention::PeriodicSurface, Some(big_l)) => (prm.kappa * p2 - 2.0 * prm.beta * l * prm.tau0) / big_l,

@@ -1,4 +1,4 @@
-//! A polynomial or circular profile (THEORY.md section 9) in the f64 method: the state at fixed
+//! A polynomial or circular profile (docs/theory.md section 9) in the f64 method: the state at fixed
 //! contact size with the centre found by Newton's method, and the scalar equation P2(size) = P2.
 //!
 //! At fixed size and centre c the right side is F(u) = (E*/2) g'(c + x(u) - c), collocated as

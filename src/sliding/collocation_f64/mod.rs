@@ -1,21 +1,21 @@
 //! Fast `f64` solution of Problem 1 (steady sliding with friction, adhesive friction and wear) by
 //! Gauss–Jacobi collocation of the cot-kernel singular integral equation.
 //!
-//! # Equation (THEORY.md section 3, the paper's [2.8])
-//! On the contact (-a, b), with H the periodic Hilbert operator of THEORY.md section 2,
+//! # Equation (docs/theory.md section 3, the paper's [2.8])
+//! On the contact (-a, b), with H the periodic Hilbert operator of docs/theory.md section 2,
 //!
 //! ```text
 //! kappa p + H[p] = (E*/2) g' + beta tau0,   kappa = E* cW/2 - beta mu,  theta = atan(kappa)/pi,
 //! ```
 //!
-//! p bounded at both ends. In the `periodic` convention (THEORY.md section 8; the problem's
+//! p bounded at both ends. In the `periodic` convention (docs/theory.md section 8; the problem's
 //! [`crate::model::SlidingProblem::convention`]) beta tau0 is replaced by beta tau0 + K,
 //! K = (kappa P2 - 2 beta l tau0)/L (`closure.rs`). The tangent map t = tan(pi (x - c)/L) = m u, m = tan(lambda), turns H
-//! into the finite Cauchy operator in u plus the constant (THEORY.md section 2)
+//! into the finite Cauchy operator in u plus the constant (docs/theory.md section 2)
 //! C0\[p\] = (1/pi) int_{-1}^{1} p(u') m^2 u'/(1 + m^2 u'^2) du'. For a single punch
 //! (L = infinity) u = (x - c)/l and C0 = 0 (`tangent_map.rs`).
 //!
-//! # Discretisation [reconstructed; independent of the exact reduction of THEORY.md section 3]
+//! # Discretisation [reconstructed; independent of the exact reduction of docs/theory.md section 3]
 //! p(u) = omega(u) G(u), omega = (1+u)^{1/2+theta} (1-u)^{1/2-theta}, G a polynomial of degree
 //! n - 1 represented by its values G_k at the n nodes t_k of the Gauss–Jacobi rule of omega
 //! (weights W_k). The constant part of the equation is an unknown K:
@@ -44,13 +44,13 @@
 //! (cos 2 pi c/L, sin 2 pi c/L) for the sinusoid, both conditions are solved for c in closed form
 //! at fixed lambda, and only a scalar equation in lambda remains (Brent's method on a bracket,
 //! [`crate::numerics::roots::brent`]); no 2D Newton iteration is needed. For the parabola lambda
-//! does not depend on tau0 and c is explicit (THEORY.md section 3; `parabola.rs`). For the sinusoid
+//! does not depend on tau0 and c is explicit (docs/theory.md section 3; `parabola.rs`). For the sinusoid
 //! the scalar equation is X(lambda)^2 + Y(lambda)^2 = 1, (X, Y) = (cos, sin)(2 pi c/L) from the
 //! 2x2 linear system of the side conditions; all its roots are found by a scan and refined, which
 //! handles the non-monotone P2(lambda) for theta != 0 (`sinusoid.rs`).
 //!
 //! # Accuracy
-//! The quadrature error behaves like tan(lambda/2)^{2n} (THEORY.md section 3). Between the nodes G
+//! The quadrature error behaves like tan(lambda/2)^{2n} (docs/theory.md section 3). Between the nodes G
 //! is evaluated by the Nyström interpolant of the collocation equation (`interpolant.rs`), not by
 //! polynomial interpolation: its error follows the quadrature, tan(lambda/2)^{2n} (observed rate
 //! asserted in the test `convergence_in_the_number_of_nodes`), where the degree n-1 interpolant
@@ -97,7 +97,7 @@
 //! `profile.rs` (g' of the periodic extension), `tangent_map.rs` (x(u), its Jacobian, the weight of
 //! C0), `operator.rs` (rules, LU-factored matrix, cache, node count), `interpolant.rs` (unit bases,
 //! discrete states, the Nyström interpolant), `parabola.rs` and `sinusoid.rs` (the scalar equation
-//! in lambda per shape), `general.rs` (a polynomial or circular punch, THEORY.md section 9: F(u) =
+//! in lambda per shape), `general.rs` (a polynomial or circular punch, docs/theory.md section 9: F(u) =
 //! (E*/2) g'(x(u)) collocated directly, the centre by Newton's method in c with the g'' basis
 //! giving the derivative, P2(size) = P2 by Brent), `candidates.rs` (every root at the main run's nodes), `outputs.rs` (l, a, b,
 //! c, P1, P2, F_def, p of a state), `physical.rs` (p >= 0, gap), `admissible.rs` (the admissible range

@@ -90,7 +90,7 @@ pub(super) fn collocation(theta: f64, n: usize) -> Result<Rc<Collocation>> {
 
 /// Nodes for an error ~ `options.target` at relative size lambda: the quadrature and the Nyström
 /// interpolant converge like rho^{-2n}, rho = cot(lambda/2) (Bernstein ellipse through the
-/// singularities u = +-i/m of the data, THEORY.md section 3), so n = ln(1/target)/(2 ln rho) + 8
+/// singularities u = +-i/m of the data, docs/theory.md section 3), so n = ln(1/target)/(2 ln rho) + 8
 /// (8: margin for the constant), clamped to [8, max_nodes]. Heuristic, checked by the convergence
 /// tests for lambda <= 1.45.
 pub fn collocation_nodes(lambda: f64, options: &SolverOptions) -> usize {

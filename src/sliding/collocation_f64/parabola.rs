@@ -13,7 +13,7 @@ use std::f64::consts::PI;
 
 /// Parabola at fixed lambda (or l): RHS E* k (x(u) - c); the constant E* k c is absorbed in K,
 /// so G does not depend on c, and the solvability condition K_total = C0 - beta tau0 gives
-/// c = C0[G] - K - beta tau0/(E* k) (THEORY.md section 3: lambda does not depend on tau0, c explicit).
+/// c = C0[G] - K - beta tau0/(E* k) (docs/theory.md section 3: lambda does not depend on tau0, c explicit).
 /// In the `periodic` convention beta tau0 -> beta tau0 + K (`closure.rs`): c moves by -K/(E* k).
 pub(super) fn parabola_state(col: &Collocation, prm: &SlidingParamsF64, map: Map) -> Result<State> {
     let b = closed(prm, &map, basis(col, &map, |u| map.offset(u))?);
@@ -33,7 +33,7 @@ pub(super) fn kuznetsov_guess(prm: &SlidingParamsF64, big_l: f64, p2: f64) -> f6
 
 /// Parabola, given P2, periodic: solve P2(lambda) = P2 (monotone) with Brent; start from the
 /// Kuznetsov relation cos(lambda) = exp(-(pi l_s/L)^2/2) with the single-punch l_s
-/// (THEORY.md sections 3.6, 6).
+/// (docs/theory.md sections 3.6, 6).
 ///
 /// `near`: a lambda already solved at other nodes; the bracket then starts at +-1e-7 relative
 /// around it (a few Brent steps instead of a dozen).

@@ -1,6 +1,6 @@
 //! The f64 method's side of the shared physicality criterion ([`crate::sliding::physicality`]):
 //! p/omega = G(u) from the Nyström interpolant, and the surface slope off the contact from H[p]
-//! (THEORY.md section 2): w = g' - h' = (2/E*) (H[p] - K) - 2 beta tau0/E* (the last term removes
+//! (docs/theory.md section 2): w = g' - h' = (2/E*) (H[p] - K) - 2 beta tau0/E* (the last term removes
 //! the adhesive shear's edge step, which the criterion leaves out; K of the `periodic` convention,
 //! `closure.rs`); the profile's height from [`row_height_f64`].
 
@@ -16,7 +16,7 @@ use crate::params::sliding::{row_height_f64, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
-/// H[p](x) for x outside the contact (THEORY.md section 2). Near the contact (|u| <= 3) the
+/// H[p](x) for x outside the contact (docs/theory.md section 2). Near the contact (|u| <= 3) the
 /// Cauchy part is G(u) (1/pi) int omega/(u - t) - (1/pi) sum W_k (G(u) - G_k)/(u - t_k)
 /// (exact for the polynomial G), with the closed form of [`omega_cauchy_exterior`]; farther out
 /// the plain rule in the cot (or 1/(x - xi)) form.
@@ -46,7 +46,7 @@ fn hilbert_outside(col: &Collocation, prm: &SlidingParamsF64, st: &State, c0: f6
     }
 }
 
-/// C0[p] = sum_k W_k G_k (1/pi) m^2 t_k/(1 + m^2 t_k^2) (THEORY.md section 2); 0 for a single punch.
+/// C0[p] = sum_k W_k G_k (1/pi) m^2 t_k/(1 + m^2 t_k^2) (docs/theory.md section 2); 0 for a single punch.
 fn c0_of(col: &Collocation, st: &State) -> f64 {
     col.sum(&st.g, |t| st.map.c0_weight(t))
 }

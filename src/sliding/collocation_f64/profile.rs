@@ -1,11 +1,11 @@
 //! The f64 method's own evaluation of the punch profile: g'(x) of the periodic extension, and for
-//! a polynomial or circular punch (THEORY.md section 9) the analytic g', g'' and the
+//! a polynomial or circular punch (docs/theory.md section 9) the analytic g', g'' and the
 //! cancellation-free divided difference of g' used by the Nyström interpolant.
 
 use crate::params::sliding::{ShapeF64, SlidingParamsF64};
 use std::f64::consts::PI;
 
-/// g'(x) of the punch row (THEORY.md sections 1, 9): the profile on the cell (-L/2, L/2)
+/// g'(x) of the punch row (docs/theory.md sections 1, 9): the profile on the cell (-L/2, L/2)
 /// repeated with period L. 2 k x reduced to the cell for the parabola, (2 pi D/L) sin(2 pi x/L)
 /// for the sinusoid, sum_j slope_j x^j (x reduced to the cell) for a polynomial,
 /// x/sqrt(R^2 - x^2) for the circle, which is +infinity for x >= R and -infinity for x <= -R

@@ -24,7 +24,7 @@ fn all_candidates(prm: &SlidingParamsF64, options: &SolverOptions) -> Result<Vec
     }
 }
 
-/// Solves Problem 1 (THEORY.md section 3) in f64 by Gauss–Jacobi collocation and returns every
+/// Solves Problem 1 (docs/theory.md section 3) in f64 by Gauss–Jacobi collocation and returns every
 /// physical solution, smallest contact first, with p at the requested `points` (xh = (x - c)/l in
 /// (-1, 1)) and an accuracy estimate from a check run with n + max(8, n/4) nodes.
 ///

@@ -1,4 +1,4 @@
-//! Geometry of the tangent map (THEORY.md section 2): u -> x - c and its Jacobian, periodic
+//! Geometry of the tangent map (docs/theory.md section 2): u -> x - c and its Jacobian, periodic
 //! t = tan(pi (x - c)/L) = m u (m = tan lambda), or single x - c = l u.
 
 use std::f64::consts::PI;
@@ -31,7 +31,7 @@ impl Map {
             Map::Single { l } => l,
         }
     }
-    /// Weight of C0: (1/pi) m^2 u/(1 + m^2 u^2) (THEORY.md section 2); 0 for a single punch.
+    /// Weight of C0: (1/pi) m^2 u/(1 + m^2 u^2) (docs/theory.md section 2); 0 for a single punch.
     pub(super) fn c0_weight(&self, u: f64) -> f64 {
         match *self {
             Map::Periodic { m, .. } => m * m * u / (PI * (1.0 + m * m * u * u)),

@@ -74,7 +74,7 @@ const TOL: f64 = 1e-12;
 
 #[test]
 fn hertz_single_punch() {
-    // Hertz (THEORY.md section 6): P2 = (pi/2) E* k a^2, p = E* k sqrt(a^2 - x^2).
+    // Hertz (docs/theory.md section 6): P2 = (pi/2) E* k a^2, p = E* k sqrt(a^2 - x^2).
     let pts = [-0.9, -0.3, 0.0, 0.5, 0.99];
     let pb = problem(r(1, 2), None, parabola(r(3, 1)), r(0, 1), r(0, 1), r(0, 1), load(r(2, 1)));
     let s = solve_sliding_f64(&pb, &pts, &SolverOptions::default()).unwrap();
@@ -91,7 +91,7 @@ fn hertz_single_punch() {
 #[test]
 fn single_punch_with_friction_wear_and_adhesive_friction() {
     // l_s = a0/sqrt(1 - 4 theta^2), rbar_s = 2 theta - T, T = beta tau0/(E* k l_s),
-    // F_def = 2 pi E* k^2 l^3 (1 - 4 theta^2) (rbar/2 + theta/3) (THEORY.md [3.10]; F_def from
+    // F_def = 2 pi E* k^2 l^3 (1 - 4 theta^2) (rbar/2 + theta/3) (docs/theory.md [3.10]; F_def from
     // p = E* k l cos(pi theta) omega(xh) and the moments of omega).
     for (mu, cw, tau0) in [(r(3, 10), r(0, 1), r(1, 20)), (r(0, 1), r(7, 5), r(0, 1)), (r(1, 2), r(2, 5), r(1, 7))] {
         let (k, p2) = (2.0, 0.7);
@@ -166,7 +166,7 @@ fn westergaard_sinusoid() {
     }
 }
 
-/// THEORY.md section 3 exact reduction, evaluated independently in f64 (Gauss–Jacobi rule of
+/// docs/theory.md section 3 exact reduction, evaluated independently in f64 (Gauss–Jacobi rule of
 /// 1/omega, 400 nodes): E* cos(pi theta) X(i/m)/(2 pi i) int g'(x(u)) du/(omega (u - i/m))
 /// should equal P2/L - i beta tau0 [2.14]; and p(u) = omega(u) cos^2(pi theta)/pi
 /// int [F(u') - F(u)]/(u' - u) du'/omega(u') [2.13].
@@ -229,7 +229,7 @@ fn periodic_parabola_with_friction_wear_and_adhesion_matches_exact_reduction() {
 
 #[test]
 fn parabola_lambda_does_not_depend_on_tau0_and_c_shifts_by_beta_tau0() {
-    // THEORY.md section 3: for the parabola lambda does not depend on tau0; c is explicit,
+    // docs/theory.md section 3: for the parabola lambda does not depend on tau0; c is explicit,
     // and from the solvability condition dc = -beta dtau0/(E* k).
     let mk = |tau0: Exact| problem(r(1, 4), Some(r(2, 1)), parabola(r(3, 1)), r(2, 5), tau0, r(1, 3), load(r(1, 1)));
     let s0 = solve_sliding_f64(&mk(r(0, 1)), &[], &SolverOptions::default()).unwrap();
@@ -242,7 +242,7 @@ fn parabola_lambda_does_not_depend_on_tau0_and_c_shifts_by_beta_tau0() {
 
 #[test]
 fn periodic_parabola_tends_to_the_single_punch() {
-    // L -> infinity: l -> l_s, rbar -> 2 theta - T with corrections O(Lambda^2) (THEORY.md [3.10]).
+    // L -> infinity: l -> l_s, rbar -> 2 theta - T with corrections O(Lambda^2) (docs/theory.md [3.10]).
     let pb = problem(r(1, 4), Some(r(1000, 1)), parabola(r(1, 1)), r(2, 5), r(1, 30), r(1, 3), load(r(1, 1)));
     let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
     let s = s.primary();
@@ -370,7 +370,7 @@ fn sinusoid_past_the_load_maximum_is_not_physical() {
 
 #[test]
 fn small_load_with_adhesive_friction_drifts_to_minus_beta_tau0_over_e_k() {
-    // THEORY.md section 7: as P2 -> 0 with tau0 > 0, c -> -beta tau0/(E* k) (= -1/300 here).
+    // docs/theory.md section 7: as P2 -> 0 with tau0 > 0, c -> -beta tau0/(E* k) (= -1/300 here).
     let pb = problem(r(1, 4), Some(r(1, 1)), parabola(r(1, 1)), r(1, 2), r(1, 100), r(0, 1), load(r(1, 100_000_000)));
     let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
     let s = s.primary();
@@ -382,7 +382,7 @@ fn small_load_with_adhesive_friction_drifts_to_minus_beta_tau0_over_e_k() {
 
 #[test]
 fn theta_near_one_half_single_punch() {
-    // cW = 100, nu = 1/4: theta = 0.4936; l_s = a0/sqrt(1 - 4 theta^2) (THEORY.md [3.10]).
+    // cW = 100, nu = 1/4: theta = 0.4936; l_s = a0/sqrt(1 - 4 theta^2) (docs/theory.md [3.10]).
     let pb = problem(r(1, 4), None, parabola(r(1, 1)), r(0, 1), r(0, 1), r(100, 1), load(r(1, 100)));
     let s = solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap();
     let s = s.primary();

@@ -1,4 +1,4 @@
-//! One physicality criterion for every Problem 1 method (THEORY.md section 8).
+//! One physicality criterion for every Problem 1 method (docs/theory.md section 8).
 //!
 //! A method (MPFR reduction, f64 collocation, or the series method through one of them) hands its
 //! solution over as two functions, [`ContactFunctions`]: the bounded factor p(u)/omega(u) of the
@@ -82,7 +82,7 @@ pub struct Setting {
     /// 2 beta tau0/E*: the slope step the adhesive shear puts just past the contact ends.
     pub edge_step: f64,
     /// The closure defect by its formula, M = (2/E*) beta P1 - cW P2, in `paper` with a period;
-    /// 0 otherwise (THEORY.md section 8).
+    /// 0 otherwise (docs/theory.md section 8).
     pub closure_formula: f64,
     /// Relative tolerance of the pressure test (the method's accuracy of p/omega).
     pub pressure_tol: f64,

@@ -1,4 +1,4 @@
-//! The locating stage's shared pieces (THEORY.md section 3): its digits and node cap, the noise
+//! The locating stage's shared pieces (docs/theory.md section 3): its digits and node cap, the noise
 //! level of its load residual, and Brent's method on a bracketed size (`root_in`); used by
 //! [`super::solve`] (parabola, sinusoid) and [`super::locate_profile`] (polynomial, circle).
 

@@ -1,4 +1,4 @@
-//! The centre of a polynomial or circular punch's contact at a given size (THEORY.md section 9).
+//! The centre of a polynomial or circular punch's contact at a given size (docs/theory.md section 9).
 //! The residual S(c) = Im[2.14] + beta tau0 (with the `periodic` convention's K,
 //! [`super::equation::closed_terms`]) is linear in g', so
 //!     dS/dc = the same integral with g''(x(u)) in place of g'(x(u)),

@@ -1,4 +1,4 @@
-//! The contact [-a, b] = [c - l, c + l] and the map u -> x(u) of THEORY.md section 3.
+//! The contact [-a, b] = [c - l, c + l] and the map u -> x(u) of docs/theory.md section 3.
 //!
 //! Periodic (period L): m = tan(lambda), lambda = pi l / L [2.1], t = tan(pi (x - c)/L) = m u,
 //! x(u) = c + (L/pi) arctan(m u), x'(u) = (L/pi) m / (1 + m^2 u^2).
@@ -11,7 +11,7 @@
 //! - sinusoid [2.16]: with phi = 2 pi c/L and s = m u, sin(2 pi x(u)/L) = sin(phi + 2 arctan s), so
 //!   q = (2 pi D/L) (sin phi, cos phi), B = ((1 - s^2)/(1 + s^2), 2 s/(1 + s^2)).
 //!
-//! A polynomial or circular profile (THEORY.md section 9) has no such basis: g'(x(u)) is
+//! A polynomial or circular profile (docs/theory.md section 9) has no such basis: g'(x(u)) is
 //! evaluated directly at each node for each (lambda, c) ([`super::profile`]), and the centre is
 //! found by Newton's method there.
 

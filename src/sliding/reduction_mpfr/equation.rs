@@ -1,6 +1,6 @@
 //! The reduced equation [2.14] for (lambda, c): load and solvability in one complex equation.
 //!
-//! Derivation (THEORY.md section 3; Muskhelishvili, Singular Integral Equations, sections 78-79).
+//! Derivation (docs/theory.md section 3; Muskhelishvili, Singular Integral Equations, sections 78-79).
 //! With the tangent map, [2.8] becomes on u in (-1, 1)
 //!     kappa p(u) + (1/pi) PV int p(u') du'/(u - u') = F(u) + beta tau0 - C0,   F = (E*/2) g'(x(u)).
 //! Psi(z) = (1/(2 pi i)) int p(u') du'/(u' - z) satisfies (kappa - i) Psi+ - (kappa + i) Psi- = rhs;

@@ -6,7 +6,7 @@ use crate::error::Error;
 use crate::model::ModelError;
 use crate::numerics::gauss_jacobi_mpfr::QuadratureError;
 
-/// Why Problem 1 could not be solved (THEORY.md section 3).
+/// Why Problem 1 could not be solved (docs/theory.md section 3).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SlidingError {
     /// An input (or a derived parameter) outside the range the method handles.

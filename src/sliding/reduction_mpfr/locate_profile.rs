@@ -1,4 +1,4 @@
-//! Locating the contact of a polynomial or circular punch (THEORY.md section 9) at low
+//! Locating the contact of a polynomial or circular punch (docs/theory.md section 9) at low
 //! precision, and the node count such a profile needs; the stages of [`super::solve`] for the
 //! parabola and the sinusoid stay there.
 
@@ -50,7 +50,7 @@ pub(super) fn profile_nodes(params: &SlidingParamsMpfr, s: f64, digits: f64) -> 
     }
 }
 
-/// The locating stage for a polynomial or circular punch (THEORY.md section 9): P2 grows with the
+/// The locating stage for a polynomial or circular punch (docs/theory.md section 9): P2 grows with the
 /// contact size for a convex profile, so the size is bracketed geometrically from the
 /// single-punch estimate l_s of the curvature scale k ([`SlidingParamsMpfr::k`]) and refined by
 /// Brent's method, as for the parabola. The sizes are capped by the lambda of the node cap, by

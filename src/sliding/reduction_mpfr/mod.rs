@@ -1,7 +1,7 @@
-//! Problem 1 at high precision: the exact reduction of THEORY.md section 3 evaluated with MPFR (rug).
+//! Problem 1 at high precision: the exact reduction of docs/theory.md section 3 evaluated with MPFR (rug).
 //!
 //! The contact [-a, b] of a parabolic (g = k x^2), sinusoidal (g = D (1 - cos(2 pi x/L)) [2.16]),
-//! polynomial (g = sum_j c_j x^j) or circular (g = R - sqrt(R^2 - x^2)) punch (THEORY.md section 9),
+//! polynomial (g = sum_j c_j x^j) or circular (g = R - sqrt(R^2 - x^2)) punch (docs/theory.md section 9),
 //! periodic with period L or single (L = infinity), under the load P2 (inverse problem) or
 //! for a given half-length l (direct problem). The canonical equation [2.8]
 //!     kappa p + H\[p\] = (E*/2) g' + beta tau0,  theta = arctan(kappa)/pi,
@@ -18,11 +18,11 @@
 //! Files: `setup` (the parameters of one solve, once per precision), `contact` (the map x(u) and
 //! the slope basis), `equation` ([2.14] and the centre), `pressure` ([2.13], gap slope, integrals
 //! of p), `physical` (p >= 0, gap >= 0), `solve` (locating and refining the contact), `verify`
-//! (two runs), `solution`, `error`; for a polynomial or circular punch (THEORY.md section 9)
+//! (two runs), `solution`, `error`; for a polynomial or circular punch (docs/theory.md section 9)
 //! `profile` (g', g'' evaluated directly), `centre` (the centre by Newton's method) and
 //! `locate_profile`; `bracket` holds the locating stage's shared pieces.
 //!
-//! Conventions. By default the paper's (THEORY.md's) convention is used; the problem's
+//! Conventions. By default the paper's (docs/theory.md's) convention is used; the problem's
 //! [`crate::model::SlidingProblem::convention`] selects it. Two consequences found here
 //! (derivations in [`Convention`] and [`physical`], numerical proofs in the tests
 //! `paper_convention_gap_mismatch`, `outside_displacement_formula`):
@@ -38,7 +38,7 @@
 //!   before its maximum (test `non_monotone_sinusoid`). Both curves are charted by
 //!   `cargo run --release --example reduction_mpfr_explore -- load-curve [--periodic-surface]`.
 //!
-//! Independent checks (tests): closed forms of THEORY.md section 6 (Kuznetsov, Westergaard, Hertz)
+//! Independent checks (tests): closed forms of docs/theory.md section 6 (Kuznetsov, Westergaard, Hertz)
 //! to 30-40 digits; single-punch limit [3.10]; the returned p satisfies the original cot-kernel
 //! equation [2.8] to 1e-30 relative to E* k l (direct tanh-sinh quadrature, no tangent map);
 //! P2 = int p dx by a separate rule; direct vs inverse problem.

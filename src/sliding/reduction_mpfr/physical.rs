@@ -6,7 +6,7 @@
 //! precision at the criterion's points and handed over rounded to f64 (the criterion's decisions
 //! and its gap quadrature are in f64; the gap is a check, not an output).
 //!
-//! Conventions (derivations in THEORY.md section 8 and the module [`super`]): with the paper's
+//! Conventions (derivations in docs/theory.md section 8 and the module [`super`]): with the paper's
 //! symmetric summation [1.6]-[1.8] and the wear law v' = g' - cW p the surface is not periodic:
 //! the full gap slope integrated over the free arc leaves M = (2/E*) beta P1 - cW P2; adding
 //! K = (kappa P2 - 2 beta l tau0)/L to [2.8] (`periodic`) closes it. Removing M as a uniform slope

@@ -1,6 +1,6 @@
 //! The pressure [2.13], the gap slope outside the contact, and the integrals of p.
 //!
-//! With F(u) = (E*/2) g'(x(u)) and the Gauss–Jacobi rule (u_j, w_j) for 1/omega (THEORY.md section 3):
+//! With F(u) = (E*/2) g'(x(u)) and the Gauss–Jacobi rule (u_j, w_j) for 1/omega (docs/theory.md section 3):
 //!     p(u) = omega(u) cos^2(pi theta)/pi * D(u),   D(u) = int [F(u') - F(u)]/(u' - u) du'/omega(u'),
 //! which is Psi+ - Psi- for the Psi of [`super::equation`], since X+ - X- = 2 i omega cos(pi theta).
 //! p does not depend on tau0 or P2 [2.13]; sign(p) = sign(D) inside the contact.
@@ -130,7 +130,7 @@ impl<'a> Pressure<'a> {
         h
     }
 
-    /// [`Pressure::gap_slope`] of a polynomial or circular punch (THEORY.md section 9), with
+    /// [`Pressure::gap_slope`] of a polynomial or circular punch (docs/theory.md section 9), with
     /// g'_row the slope of the punch row ([`super::profile::row_slope`]: reduced to the cell;
     /// +-infinity beyond the circle's |x| >= R, where no punch is):
     /// h' = g'_row(x) - g'(x(t)) + (2/E*) X(t) cos(pi theta) D(t)/pi while the analytic g' is

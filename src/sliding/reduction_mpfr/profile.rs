@@ -1,4 +1,4 @@
-//! General convex profiles in the exact reduction (THEORY.md section 9): the polynomial
+//! General convex profiles in the exact reduction (docs/theory.md section 9): the polynomial
 //! g = sum_j c_j x^j and the circle g = R - sqrt(R^2 - x^2).
 //!
 //! Section 3's reduction holds for any g: only g'(x(u)) changes. It is evaluated exactly at
@@ -51,7 +51,7 @@ pub fn profile_curvature(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
     }
 }
 
-/// g' of the punch row at x, any shape (THEORY.md sections 1, 9: the profile on the cell (-L/2, L/2) repeated
+/// g' of the punch row at x, any shape (docs/theory.md sections 1, 9: the profile on the cell (-L/2, L/2) repeated
 /// with period L): x is reduced to the cell first. For the circle, where the cell reaches beyond
 /// |x| >= R there is no punch (its wall is vertical at |x| = R): +infinity for x >= R and
 /// -infinity for x <= -R, so that a gap integrated outward from the contact becomes +infinity.

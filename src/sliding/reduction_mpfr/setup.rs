@@ -1,5 +1,5 @@
 //! The inputs of one solve, built once: the problem's derived parameters
-//! ([`SlidingParamsMpfr`], in units of E*, THEORY.md sections 1 and 3) at the locating stage's
+//! ([`SlidingParamsMpfr`], in units of E*, docs/theory.md sections 1 and 3) at the locating stage's
 //! precision, plus what only this solver needs (the load in `f64` for that stage, the load as the
 //! user wrote it for messages). The working-precision parameters are built once per run by
 //! [`super::verify::solve_verified`] and [`super::solve::solve_at`].

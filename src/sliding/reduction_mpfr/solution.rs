@@ -13,7 +13,7 @@ pub struct PressurePoint {
     pub p: Float,
 }
 
-/// One solution of Problem 1 at working precision (THEORY.md section 3). Returned by the solver
+/// One solution of Problem 1 at working precision (docs/theory.md section 3). Returned by the solver
 /// in the problem's units; inside the solver the same struct holds loads and stresses in units of
 /// E* ([`SlidingSolution::in_units_of`] converts).
 #[derive(Debug, Clone)]

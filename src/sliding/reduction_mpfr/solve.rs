@@ -49,7 +49,7 @@ pub struct NodeRule {
     pub factor: f64,
 }
 
-/// Error model (THEORY.md section 3): the quadrature error behaves like tan(lambda/2)^(2n), so
+/// Error model (docs/theory.md section 3): the quadrature error behaves like tan(lambda/2)^(2n), so
 /// n = (digits + 4) ln 10 / (-2 ln tan(lambda/2)), at least 8 (a single punch, lambda = 0, needs few:
 /// the integrands are polynomials for the parabola). Heuristic margin of 4 digits for the constant.
 pub fn nodes_for(lambda: f64, digits: f64) -> usize {

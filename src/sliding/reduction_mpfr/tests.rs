@@ -1,4 +1,4 @@
-//! Tests of the high-precision sliding solver against closed forms (THEORY.md section 6) and the
+//! Tests of the high-precision sliding solver against closed forms (docs/theory.md section 6) and the
 //! single-punch limit [3.10], and of its internal consistency. Explorations that only print
 //! (timings, edge cases, the sinusoid's load curve) are `examples/reduction_mpfr_explore.rs`.
 
@@ -157,7 +157,7 @@ fn tanh_sinh(prec: u32, mut g: impl FnMut(&Float) -> Float) -> Float {
 
 #[test]
 fn kuznetsov_periodic_parabola_frictionless() {
-    // P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], THEORY.md section 6. nu = 1/2: beta = 0, theta = 0.
+    // P2 = (E* k L^2/pi) ln sec(pi a/L) [2.15], docs/theory.md section 6. nu = 1/2: beta = 0, theta = 0.
     for a in ["1/10", "1/4", "3/10"] {
         let pb = Case { e: "3", shape: Shape::Parabola("2"), mu: "1/5", ..FRICTIONLESS }.size(a);
         let v = solve_verified(&pb, &[q("1/2")], 30).unwrap();
@@ -337,7 +337,7 @@ fn theta_too_close_to_one_half_and_bad_points_are_errors() {
 
 /// The sinusoid with friction (theta = -0.102): P2(lambda) rises to a maximum (0.16247 at
 /// 2l/L ~ 0.61) and falls again, so a load below the maximum has two roots of [2.14]. Under the
-/// shared criterion (THEORY.md section 8; in `paper` a negative gap is a warning) the larger root
+/// shared criterion (docs/theory.md section 8; in `paper` a negative gap is a warning) the larger root
 /// is refused for p < 0 at the trailing end; P2 = 3/20 is solved with a gap warning beside the
 /// closure defect M = (2/E*) beta P1 (asserted), and a load above the maximum is refused with the
 /// admissible range (0, 0.16247]. The whole curve is charted by
@@ -397,7 +397,7 @@ fn largest_admissible_load(text: &str) -> f64 {
 /// See: issue 9. The refusal states the given load and the largest load in the problem's units
 /// (the solver works in units of E*, which must not leak into messages): E* = 5, D = 1/10, L = 2,
 /// frictionless; the scan of the admissible range reaches lambda = 1.45, where the sinusoid
-/// carries pi E* D sin^2(1.45) = 1.5481 (Westergaard, THEORY.md section 6).
+/// carries pi E* D sin^2(1.45) = 1.5481 (Westergaard, docs/theory.md section 6).
 #[test]
 fn refusal_is_in_the_problems_units() {
     let pb = Case { e: "5", period: "2", shape: Shape::Sinusoid("1/10"), ..FRICTIONLESS }.load("7/3");
@@ -595,7 +595,7 @@ fn verified_digits_are_honest() {
     }
 }
 
-/// Issue 11: the pressure returned for a polynomial or circular punch (THEORY.md section 9)
+/// Issue 11: the pressure returned for a polynomial or circular punch (docs/theory.md section 9)
 /// satisfies the original equation [2.8] with the `periodic` convention's K where it applies,
 ///     kappa p(x) + H[p](x) = (E*/2) g'(x) + beta tau0 + K,  K = (kappa P2 - 2 beta l tau0)/L,
 /// H by direct quadrature as in `original_cot_kernel_equation_is_satisfied`, and g' evaluated

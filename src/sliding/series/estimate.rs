@@ -1,4 +1,4 @@
-//! The error estimate of the truncated series (THEORY.md section 5): how far the value through
+//! The error estimate of the truncated series (docs/theory.md section 5): how far the value through
 //! Lambda^N may be from the sum of the whole series. Estimated, never verified.
 //!
 //! Every quantity q (l, c, F_def, p(xh)) is a series in Lambda^2; with V_m its value through
@@ -9,7 +9,7 @@
 //! E_q = max(|t_K|, S M rho/(1 - rho)),   M = max_{0 <= i < W} |t_(K-i)| rho^i,
 //! ```
 //!
-//! In the `periodic` convention (THEORY.md section 8) the series hold every power of Lambda; the
+//! In the `periodic` convention (docs/theory.md section 8) the series hold every power of Lambda; the
 //! terms are then taken in pairs, t_m = V_m - V_(m-1) with V_m the value through Lambda^(N-2(K-m))
 //! (the terms of Lambda^(n-1) and Lambda^n together), so rho is still a rate per Lambda^2 and the
 //! parabola's l/l_s, even in both conventions, gives no zero terms. The remainder after

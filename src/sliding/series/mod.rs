@@ -1,4 +1,4 @@
-//! Problem 1 by its truncated exact series (THEORY.md section 5, [3.7]-[3.12]): the third method
+//! Problem 1 by its truncated exact series (docs/theory.md section 5, [3.7]-[3.12]): the third method
 //! beside the MPFR reduction and the f64 collocation, and the cheap one for small contacts.
 //!
 //! The exact expansions in Lambda = pi l_s/L (`crate::asymptotics::sliding`, symbolic in theta

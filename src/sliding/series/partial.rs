@@ -1,4 +1,4 @@
-//! The series quantities at one truncation order (THEORY.md section 5, [3.7]-[3.12]), in units of
+//! The series quantities at one truncation order (docs/theory.md section 5, [3.7]-[3.12]), in units of
 //! E* (loads and pressures divided by E*; lengths as they are).
 
 use super::point::SeriesPoint;

@@ -1,5 +1,5 @@
 //! The evaluation point of the Problem 1 series: the values of its variables theta, T and
-//! Lambda = pi l_s/L at a problem's parameters (THEORY.md section 5, [3.10]), all read from
+//! Lambda = pi l_s/L at a problem's parameters (docs/theory.md section 5, [3.10]), all read from
 //! [`SlidingParamsMpfr`] (theta, T, l_s and the osculating k are computed there and nowhere else).
 
 use crate::asymptotics::sliding::SlidingExpansion;

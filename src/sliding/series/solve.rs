@@ -1,4 +1,4 @@
-//! The series method's solution of Problem 1: the truncated exact series (THEORY.md section 5,
+//! The series method's solution of Problem 1: the truncated exact series (docs/theory.md section 5,
 //! [3.7]-[3.12]) evaluated in MPFR at a problem's parameters, with an estimated (not verified)
 //! accuracy per quantity ([`super::estimate`]).
 

@@ -104,7 +104,7 @@ fn estimate_grid(shapes: &[SlidingShape], convention: Convention) -> (usize, usi
 #[test]
 fn estimate_never_exceeds_the_true_digits() {
     // 24 of the 36 grid problems have an MPFR solution under the shared physicality criterion (in
-    // `paper` a negative gap is a warning, THEORY.md section 8): 72 (problem, order) pairs, of
+    // `paper` a negative gap is a warning, docs/theory.md section 8): 72 (problem, order) pairs, of
     // which the series refuses 4, all for the frictionless sinusoid near Lambda = 1 (pi a/L = 1.2
     // at order 4; pi a/L = 1.4, Lambda = 0.985, at every order).
     let counts = estimate_grid(&[SlidingShape::Parabolic, SlidingShape::Sinusoidal], Convention::Paper);
