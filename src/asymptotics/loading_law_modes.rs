@@ -399,7 +399,7 @@ impl ModeExponent {
         }
     }
 
-    /// JSON: {"exponent": string or null, "digits", "searched_to", "resonances": [powers]}.
+    /// JSON: `{"exponent": string or null, "digits", "searched_to", "resonances": [powers]}`.
     pub fn json(&self, order: usize) -> serde_json::Value {
         serde_json::json!({
             "exponent": self.value_text(),

@@ -74,11 +74,11 @@ pub const COMMITTED: &str = include_str!("../../calibration/methods.csv");
 /// The calibrated case a row measures (the first CSV column).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Case {
-    /// Problem 1, parabola ([`sliding_case`]): `sliding-parabolic`.
+    /// Problem 1, parabola (`sliding_case`): `sliding-parabolic`.
     SlidingParabolic,
-    /// Problem 1, sinusoid ([`sinusoid_case`]): `sliding-sinusoidal`.
+    /// Problem 1, sinusoid (`sinusoid_case`): `sliding-sinusoidal`.
     SlidingSinusoidal,
-    /// Problem 2 at nu = 0 ([`adhesion_case_nu`]): `adhesion-nu0`.
+    /// Problem 2 at nu = 0 (`adhesion_case_nu`): `adhesion-nu0`.
     AdhesionNu0,
     /// Problem 2 at nu = 0.3: `adhesion-nu0.3`.
     AdhesionNu03,
