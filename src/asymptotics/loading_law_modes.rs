@@ -327,6 +327,15 @@ pub struct ModeExponent {
     pub det_at_zero: Float,
 }
 
+/// Digits of mu* printed wherever a loading-law problem reports its mode.
+pub const MODE_DIGITS: u32 = 12;
+
+/// The mode of a loading-law problem: at its nu and n = N'(0) (the self-similar start's ratio),
+/// to [`MODE_DIGITS`] digits.
+pub fn problem_mode(problem: &crate::model::LoadingLawProblem) -> Result<ModeExponent, Error> {
+    mode_exponent(problem.material().poisson_ratio(), &problem.law().initial_ratio(), MODE_DIGITS)
+}
+
 /// The mode exponent at Poisson's ratio `nu` and n = `ratio` to `digits` digits (two runs, the
 /// second with more bits and a finer rule).
 pub fn mode_exponent(nu: &Q, ratio: &Q, digits: u32) -> Result<ModeExponent, Error> {

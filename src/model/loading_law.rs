@@ -28,6 +28,10 @@ impl LoadingLaw {
             }
         }
     }
+    /// n = N'(0), the ratio the loading starts with (0 for a law without a linear term).
+    pub fn initial_ratio(&self) -> Exact {
+        self.derivative().into_iter().next().unwrap_or_else(|| Exact::from_integer(0.into()))
+    }
     /// The scene key that gives this law (for messages): `tangential_ratio` or `loading_law`.
     pub fn key(&self) -> &'static str {
         match self {

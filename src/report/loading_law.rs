@@ -223,13 +223,12 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
 /// history only up to C eta^mu*, and a discretisation's error at small sizes grows like
 /// (Lambda/eta)^mu*.
 fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
-    use crate::asymptotics::loading_law_modes::{mode_exponent, MU_MAX};
+    use crate::asymptotics::loading_law_modes::{mode_exponent, MODE_DIGITS, MU_MAX};
     let q = |n: i64, d: i64| Exact::new(n.into(), d.into());
     let mut cases: Vec<(String, Exact, Exact)> = rows
         .iter()
         .map(|r| {
-            let n0 = r.problem.law().derivative().into_iter().next().unwrap_or_else(|| q(0, 1));
-            (format!("`{}`", r.scene), r.problem.material().poisson_ratio().clone(), n0)
+            (format!("`{}`", r.scene), r.problem.material().poisson_ratio().clone(), r.problem.law().initial_ratio())
         })
         .collect();
     if ctx.profile == Profile::Full {
@@ -246,13 +245,13 @@ fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
          Mellin symbol of the two edge conditions is singular (`src/asymptotics/loading_law_modes.rs`): there \
          the law and both edge conditions fix the history only up to C eta^mu*, and a discretisation's error \
          at small sizes grows toward the final size like (Lambda/eta)^mu*. mu* is the smallest real zero on \
-         (0, {MU_MAX}] (12 digits asked, two runs); complex zeros are counted by the argument principle in the \
+         (0, {MU_MAX}] ({MODE_DIGITS} digits asked, two runs); complex zeros are counted by the argument principle in the \
          module's tests. Small mu* (small nu, large n) is where both loading-law methods lose their digits.\n\n\
          | case | nu | n = N'(0) | mu* | digits |\n|---|---|---|---|---|"
     );
     ctx.step("loading law: homogeneous modes".to_string());
     for (name, nu, n) in cases {
-        let row = match mode_exponent(&nu, &n, 12) {
+        let row = match mode_exponent(&nu, &n, MODE_DIGITS) {
             Ok(m) => match m.value_text() {
                 Some(v) => format!("{v} | {}", fmt_digits(Some(m.digits))),
                 None => format!("none below {MU_MAX} | -"),

@@ -241,7 +241,9 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     }
     // The homogeneous mode eta^mu* of the self-similar start (n = N'(0)): where it exists the
     // problem fixes its history only up to C eta^mu* (asymptotics::loading_law_modes).
-    let mode = law_mode(p);
+    // None when it cannot be computed: the self-similar start has no solution with both ends
+    // advancing, a case the solvers refuse on their own.
+    let mode = crate::asymptotics::loading_law_modes::problem_mode(p).ok();
     m.insert("mode".into(), mode.as_ref().map_or(Value::Null, |m| m.json(0)));
     let mode_text = mode.as_ref().and_then(|m| m.value_text());
     // Fewer digits than asked (the f64 method's cap is 15): say so and why when it is known.
@@ -268,14 +270,6 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     m.insert("warnings".into(), Value::Array(warnings));
     m.insert("provenance".into(), prov.json());
     m
-}
-
-/// The mode exponent at the problem's nu and n = N'(0), 12 digits (`None` when it cannot be
-/// computed: the self-similar start has no solution with both ends advancing, a case the solvers
-/// refuse on their own).
-fn law_mode(p: &LoadingLawProblem) -> Option<crate::asymptotics::loading_law_modes::ModeExponent> {
-    let n0 = p.law().derivative().into_iter().next().unwrap_or_else(|| Exact::from_integer(0.into()));
-    crate::asymptotics::loading_law_modes::mode_exponent(p.material().poisson_ratio(), &n0, 12).ok()
 }
 
 /// The ends' phases, tension zones and needed friction against the distance (module doc).

@@ -437,11 +437,12 @@ pub fn solve_law_sampled(
 /// A collocation that did not converge, with the problem's homogeneous mode named when it has
 /// one ([`crate::asymptotics::loading_law_modes`]: the history is fixed only up to C eta^mu*, and
 /// the discretisation's error at small sizes grows like (Lambda/eta)^mu*; nu = 0, n = 1/2, l/L =
-/// 1/8 at 20 digits ends so, `tests/loading_law_cli.rs`).
+/// 1/8 at 20 digits ends so: `nu_zero_reach` in `tests/loading_law_agreement.rs`; the message:
+/// test `refusal_names_the_mode`).
 fn with_mode(problem: &LoadingLawProblem, e: AdhesionError) -> AdhesionError {
     let AdhesionError::NotConverged { what, reason } = e else { return e };
-    let n0 = problem.law().derivative().into_iter().next().unwrap_or_else(|| Exact::from_integer(0.into()));
-    let mode = crate::asymptotics::loading_law_modes::mode_exponent(problem.material().poisson_ratio(), &n0, 12);
+    let n0 = problem.law().initial_ratio();
+    let mode = crate::asymptotics::loading_law_modes::problem_mode(problem);
     let reason = match mode.ok().and_then(|m| m.value_text()) {
         Some(mu) => format!(
             "{reason}; the problem has the homogeneous mode eta^mu* with mu* = {mu} (nu = {}, n = N'(0) = {}; \
