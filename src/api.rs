@@ -23,7 +23,6 @@
 //! # Ok::<(), api::ApiError>(())
 //! ```
 
-use crate::asymptotics::catalog::{derive_polynomial_sliding, derive_sliding, SeriesObject};
 use crate::cli::{args::RawArgs, config::RunConfig};
 use clap::Parser;
 use serde_json::Value;
@@ -155,14 +154,7 @@ pub fn derive(object: &str, order: usize, options: &[(&str, &str)]) -> Result<De
     args.extend(["--format".to_string(), "json".to_string()]);
     match config(&args, &format!("series {object}"))? {
         RunConfig::Series { object, order, subs, convention, .. } => {
-            let parts = match object {
-                SeriesObject::Sliding(shape) => derive_sliding(shape, convention, order, &subs)?,
-                SeriesObject::PolynomialSliding => match &subs.profile {
-                    Some(profile) => derive_polynomial_sliding(profile, convention, order, &subs)?,
-                    None => object.derive(order, &subs)?,
-                },
-                other => other.derive(order, &subs)?,
-            };
+            let parts = object.derive_in(convention, order, &subs)?;
             Ok(Derivation::Exact { object: object.name(), parts })
         }
         RunConfig::LoadingLawSeries { nu, ratio, order, .. } => {

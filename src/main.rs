@@ -2,7 +2,6 @@
 //! 0 success, 2 invalid input (clap errors too), 1 no solution, no convergence or I/O failure.
 
 use clap::Parser;
-use periodic_contact::asymptotics::catalog::{derive_polynomial_sliding, derive_sliding, SeriesObject};
 use periodic_contact::cli::{args::Format, args::RawArgs, config::RunConfig};
 use periodic_contact::error::{Error, ErrorKind};
 use periodic_contact::model::ModelError;
@@ -12,14 +11,7 @@ use std::process::ExitCode;
 fn run(config: RunConfig) -> anyhow::Result<()> {
     match config {
         RunConfig::Series { object, order, subs, convention, format } => {
-            let parts = match object {
-                SeriesObject::Sliding(shape) => derive_sliding(shape, convention, order, &subs)?,
-                SeriesObject::PolynomialSliding => match &subs.profile {
-                    Some(profile) => derive_polynomial_sliding(profile, convention, order, &subs)?,
-                    None => object.derive(order, &subs)?,
-                },
-                other => other.derive(order, &subs)?,
-            };
+            let parts = object.derive_in(convention, order, &subs)?;
             use periodic_contact::asymptotics::print::{render, SeriesFormat};
             let format = match format {
                 Format::Text => SeriesFormat::Text,
@@ -38,7 +30,11 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 order,
                 periodic_contact::asymptotics::catalog::VALUE_DIGITS as u32,
             )?;
-            let mode = periodic_contact::asymptotics::loading_law_modes::mode_exponent(&nu, &ratio, 12)?;
+            let mode = periodic_contact::asymptotics::loading_law_modes::mode_exponent(
+                &nu,
+                &ratio,
+                periodic_contact::asymptotics::loading_law_modes::MODE_DIGITS,
+            )?;
             let text = match format {
                 Format::Json => {
                     let mut v = s.json();

@@ -298,6 +298,25 @@ fn missing_profile() -> SeriesError {
 }
 
 impl SeriesObject {
+    /// [`SeriesObject::derive`] in the surface `convention` (docs/theory.md section 8): the
+    /// Problem 1 expansions (`sliding`, the polynomial punch's) depend on it, the other objects do
+    /// not. What `series OBJECT --convention C` and `api::derive` print.
+    pub fn derive_in(
+        self,
+        convention: Convention,
+        order: usize,
+        subs: &Substitutions,
+    ) -> Result<Vec<Derived>, SeriesError> {
+        match self {
+            SeriesObject::Sliding(shape) => derive_sliding(shape, convention, order, subs),
+            SeriesObject::PolynomialSliding => {
+                let profile = subs.profile.as_ref().ok_or_else(missing_profile)?;
+                derive_polynomial_sliding(profile, convention, order, subs)
+            }
+            other => other.derive(order, subs),
+        }
+    }
+
     /// Derives the object through `order` (docs/theory.md section 5 order convention): one part for
     /// the foundation objects, several for the Problem 1 expansions.
     pub fn derive(self, order: usize, subs: &Substitutions) -> Result<Vec<Derived>, SeriesError> {
