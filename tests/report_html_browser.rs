@@ -12,7 +12,7 @@
 //! Chromium installed by `scripts/setup --browser`:
 //! `cargo test --test report_html_browser -- --ignored`.
 
-use periodic_contact::report::{section::Profile, write_report, ReportOptions};
+mod common;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -101,15 +101,7 @@ svgs.forEach((s, i) => {{
 #[test]
 #[ignore = "needs Chromium: scripts/setup --browser, then cargo test --test report_html_browser -- --ignored"]
 fn every_chart_renders_in_headless_chromium() {
-    let out = std::env::temp_dir().join(format!("periodic-contact-html-test-{}", std::process::id()));
-    let opts = ReportOptions {
-        out: out.clone(),
-        scenes: concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/report_scenes").into(),
-        order: 4,
-        profile: Profile::Fast,
-        progress: false,
-    };
-    let files = write_report(&opts).unwrap();
+    let (out, files) = common::fast_report("html-test");
     let n_svg = files.files.iter().filter(|p| p.extension().is_some_and(|x| x == "svg")).count();
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert_eq!(html.matches("<svg").count(), n_svg, "every chart inline, once");

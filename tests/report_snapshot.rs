@@ -4,20 +4,12 @@
 //! checked against `periodic-contact solve --json` on the same scene.
 
 mod common;
-use periodic_contact::report::{loading_law, section::Profile, write_report, ReportOptions};
+use periodic_contact::report::{loading_law, section::Profile};
 use rug::Float;
 
 #[test]
 fn report_text_fast_scene_set() {
-    let out = std::env::temp_dir().join(format!("periodic-contact-report-test-{}", std::process::id()));
-    let opts = ReportOptions {
-        out: out.clone(),
-        scenes: concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/report_scenes").into(),
-        order: 4,
-        profile: Profile::Fast,
-        progress: false,
-    };
-    let files = write_report(&opts).unwrap();
+    let (out, files) = common::fast_report("report-test");
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert_eq!(md, files.markdown);
     // Every chart has its SVG and CSV; the SVG names its axes and curves.
