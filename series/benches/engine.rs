@@ -30,6 +30,13 @@ fn rational(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("zcot", n), &n, |b, &n| b.iter(|| Series::<Q>::zcot_series(black_box(n))));
         let x = Series::<Q>::var(n);
         g.bench_with_input(BenchmarkId::new("tan_revert", n), &x, |b, x| b.iter(|| x.tan().unwrap().revert().unwrap()));
+        // The peer job at theta = 1/3 over Q (the common-denominator GMP route, src/dense_q.rs).
+        let a = Q::new(5.into(), 6.into());
+        g.bench_with_input(BenchmarkId::new("sinc_power_q", n), &n, |b, &n| {
+            b.iter(|| Series::<Q>::sinc_series(black_box(n)).pow(&a).unwrap())
+        });
+        let f = Series::<Q>::sinc_series(n).pow(&a).unwrap().shift(1).truncate(n);
+        g.bench_with_input(BenchmarkId::new("sinc_power_q_reversion", n), &f, |b, f| b.iter(|| f.revert().unwrap()));
     }
     g.finish();
 }

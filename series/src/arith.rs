@@ -1,5 +1,6 @@
 //! Multiplication, inverse and division of truncated series.
 
+use crate::dense_q::{as_q, from_q, Dense, DENSE_MIN};
 use crate::{Ring, Series, SeriesError};
 
 impl<R: Ring> Series<R> {
@@ -14,6 +15,19 @@ impl<R: Ring> Series<R> {
 
     /// `self * other` truncated to `min(n, exact precision)` coefficients.
     pub fn mul_trunc(&self, other: &Self, n: usize) -> Self {
+        let (va, vb) = (self.valuation(), other.valuation());
+        let p = n.min((self.prec() + vb).min(other.prec() + va));
+        if p >= DENSE_MIN && self.prec().min(other.prec()) >= DENSE_MIN {
+            if let (Some(a), Some(b)) = (as_q(self), as_q(other)) {
+                return from_q(Dense::from_q(a.coeffs()).mullow(&Dense::from_q(b.coeffs()), p).to_q());
+            }
+        }
+        self.mul_trunc_generic(other, n)
+    }
+
+    /// [`Series::mul_trunc`] by the schoolbook convolution in any ring (the reference the fast
+    /// route of `Series<Q>` is tested against).
+    pub(crate) fn mul_trunc_generic(&self, other: &Self, n: usize) -> Self {
         let (va, vb) = (self.valuation(), other.valuation());
         let p = n.min((self.prec() + vb).min(other.prec() + va));
         let mut out = vec![R::zero(); p];
@@ -40,6 +54,18 @@ impl<R: Ring> Series<R> {
     /// assert!(Series::<Q>::var(4).inv().is_err()); // 1/x is not a power series
     /// ```
     pub fn inv(&self) -> Result<Self, SeriesError> {
+        if self.prec() >= DENSE_MIN {
+            if let Some(a) = as_q(self) {
+                if !a.coeffs()[0].is_zero() {
+                    return Ok(from_q(Dense::from_q(a.coeffs()).inv(a.prec()).to_q()));
+                }
+            }
+        }
+        self.inv_generic()
+    }
+
+    /// [`Series::inv`] by the recurrence in any ring.
+    pub(crate) fn inv_generic(&self) -> Result<Self, SeriesError> {
         let a0 = self.coeffs.first().cloned().unwrap_or_else(R::zero);
         let b0 =
             a0.inv().ok_or_else(|| SeriesError::NonInvertibleConstantTerm { operation: "inv", constant: a0.text() })?;

@@ -1,5 +1,6 @@
 //! Composition and reversion.
 
+use crate::dense_q::{as_q, from_q, Dense, DENSE_MIN};
 use crate::{Ring, Series, SeriesError};
 
 impl<R: Ring> Series<R> {
@@ -43,6 +44,18 @@ impl<R: Ring> Series<R> {
     /// assert_eq!(atan.text("x"), "x - 1/3*x^3 + 1/5*x^5 + O(x^6)");
     /// ```
     pub fn revert(&self) -> Result<Self, SeriesError> {
+        if self.prec() >= DENSE_MIN {
+            if let Some(a) = as_q(self) {
+                if a.coeffs()[0].is_zero() && !a.coeffs()[1].is_zero() {
+                    return Ok(from_q(Dense::from_q(a.coeffs()).revert().to_q()));
+                }
+            }
+        }
+        self.revert_generic()
+    }
+
+    /// [`Series::revert`] by Lagrange inversion with one exp per coefficient, in any ring.
+    pub(crate) fn revert_generic(&self) -> Result<Self, SeriesError> {
         let p = self.prec();
         if let Some(c) = self.coeffs.first() {
             if !c.is_zero() {
@@ -59,12 +72,12 @@ impl<R: Ring> Series<R> {
         })?;
         // h = self / (a1 x), known to p - 1 coefficients.
         let h = Series { coeffs: self.coeffs[1..].iter().map(|c| c.mul(&a1_inv)).collect() };
-        let log_h = h.log()?;
+        let log_h = h.log_generic()?;
         let mut out = vec![R::zero(); p];
         let mut a1_pow = a1_inv.clone(); // a1^(-n)
         for n in 1..p {
             // [x^(n-1)] exp(-n log h), with exp truncated to n coefficients.
-            let e = log_h.truncate(n).scale(&crate::Q::from_integer((-(n as i64)).into())).exp()?;
+            let e = log_h.truncate(n).scale(&crate::Q::from_integer((-(n as i64)).into())).exp_generic()?;
             out[n] = e.coeffs[n - 1].mul(&a1_pow).div_int(n as i64);
             a1_pow = a1_pow.mul(&a1_inv);
         }

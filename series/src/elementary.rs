@@ -2,6 +2,7 @@
 //! tan, sinc, z cot z. Each states its precondition (FLINT-style) and returns a typed error when
 //! it is not met.
 
+use crate::dense_q::{as_q, from_q, to_rug, Dense, DENSE_MIN};
 use crate::ring::Q;
 use crate::{Ring, Series, SeriesError};
 use num_bigint::BigInt;
@@ -33,6 +34,17 @@ impl<R: Ring> Series<R> {
     /// ```
     pub fn exp(&self) -> Result<Self, SeriesError> {
         check_zero_constant(self, "exp")?;
+        if self.prec() >= DENSE_MIN {
+            if let Some(a) = as_q(self) {
+                return Ok(from_q(Dense::from_q(a.coeffs()).exp(a.prec()).to_q()));
+            }
+        }
+        self.exp_generic()
+    }
+
+    /// [`Series::exp`] by the recurrence in any ring.
+    pub(crate) fn exp_generic(&self) -> Result<Self, SeriesError> {
+        check_zero_constant(self, "exp")?;
         let p = self.prec();
         let kf: Vec<R> = self.coeffs.iter().enumerate().map(|(k, c)| c.mul_int(k as i64)).collect();
         let mut g: Vec<R> = Vec::with_capacity(p);
@@ -55,10 +67,21 @@ impl<R: Ring> Series<R> {
     /// `log(self)`; requires `self(0) = 1`. Computed as `integral(f'/f)`.
     pub fn log(&self) -> Result<Self, SeriesError> {
         check_unit_constant(self, "log")?;
+        if self.prec() >= DENSE_MIN {
+            if let Some(a) = as_q(self) {
+                return Ok(from_q(Dense::from_q(a.coeffs()).log(a.prec()).to_q()));
+            }
+        }
+        self.log_generic()
+    }
+
+    /// [`Series::log`] through the generic inverse and product.
+    pub(crate) fn log_generic(&self) -> Result<Self, SeriesError> {
+        check_unit_constant(self, "log")?;
         if self.prec() == 0 {
             return Ok(self.clone());
         }
-        let q = self.derivative().mul(&self.inv()?);
+        let q = self.derivative().mul_trunc_generic(&self.inv_generic()?, usize::MAX);
         Ok(q.integral())
     }
 
@@ -74,6 +97,18 @@ impl<R: Ring> Series<R> {
     /// assert_eq!(f.coeff(2).unwrap().text(), "1/2*theta^2 - 1/2*theta");
     /// ```
     pub fn pow(&self, alpha: &R) -> Result<Self, SeriesError> {
+        check_unit_constant(self, "pow")?;
+        if self.prec() >= DENSE_MIN {
+            if let (Some(a), Some(e)) = (as_q(self), (alpha as &dyn std::any::Any).downcast_ref::<Q>()) {
+                let (p, q) = (to_rug(e.numer()), to_rug(e.denom()));
+                return Ok(from_q(Dense::from_q(a.coeffs()).pow(&p, &q, a.prec()).to_q()));
+            }
+        }
+        self.pow_generic(alpha)
+    }
+
+    /// [`Series::pow`] by Miller's recurrence in any ring.
+    pub(crate) fn pow_generic(&self, alpha: &R) -> Result<Self, SeriesError> {
         check_unit_constant(self, "pow")?;
         let p = self.prec();
         let a1 = alpha.add(&R::one());

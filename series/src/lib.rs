@@ -3,7 +3,10 @@
 //! The exact engine of `periodic-contact`: truncated power series in one variable whose
 //! truncation order is part of the value ([`Series`]), over exact coefficient rings:
 //!
-//! - [`Q`]: rationals (num-rational 0.4 / num-bigint 0.4);
+//! - [`Q`]: rationals (num-rational 0.4 / num-bigint 0.4); products, inverses, log, exp, powers and
+//!   reversions of `Series<Q>` with at least 24 coefficients run in common-denominator form over GMP
+//!   integers (Kronecker-substitution products, Newton iterations, baby-step giant-step Lagrange
+//!   reversion: FLINT's `fmpq_poly` methods) and give the same reduced rationals;
 //! - [`Poly`]: multivariate polynomials over Q in named [`Symbol`]s (theta, T, xh, eps, B, S, ...),
 //!   in common-denominator form;
 //! - [`Gaussian`]: the extension `R[i]`, i^2 = -1, of any of these;
@@ -30,6 +33,7 @@
 
 mod arith;
 mod compose;
+mod dense_q;
 mod elementary;
 mod error;
 mod frac;
