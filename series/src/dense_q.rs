@@ -19,8 +19,9 @@
 //! reduced [`Q`]s: the values are exact, hence identical to the generic recurrences' (tests
 //! compare both routes coefficient by coefficient).
 
+use crate::gmp::{to_big, to_rug};
 use crate::ring::Q;
-use num_bigint::{BigInt, BigUint, Sign};
+use num_bigint::BigInt;
 use rug::integer::Order;
 use rug::{Assign, Integer};
 
@@ -29,25 +30,6 @@ use rug::{Assign, Integer};
 pub(crate) struct Dense {
     num: Vec<Integer>,
     den: Integer,
-}
-
-pub(crate) fn to_rug(b: &BigInt) -> Integer {
-    let (sign, digits) = b.to_u32_digits();
-    let mut i = Integer::from_digits(&digits, Order::Lsf);
-    if sign == Sign::Minus {
-        i = -i;
-    }
-    i
-}
-
-fn to_big(i: &Integer) -> BigInt {
-    let digits = i.to_digits::<u32>(Order::Lsf);
-    let sign = match i.cmp0() {
-        std::cmp::Ordering::Less => Sign::Minus,
-        std::cmp::Ordering::Equal => Sign::NoSign,
-        std::cmp::Ordering::Greater => Sign::Plus,
-    };
-    BigInt::from_biguint(sign, BigUint::new(digits))
 }
 
 impl Dense {

@@ -2,7 +2,8 @@
 //! tan, sinc, z cot z. Each states its precondition (FLINT-style) and returns a typed error when
 //! it is not met.
 
-use crate::dense_q::{as_q, from_q, to_rug, Dense, DENSE_MIN};
+use crate::dense_q::{as_q, from_q, Dense, DENSE_MIN};
+use crate::gmp::to_rug;
 use crate::ring::Q;
 use crate::{Ring, Series, SeriesError};
 use num_bigint::BigInt;

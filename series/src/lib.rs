@@ -38,6 +38,7 @@ mod elementary;
 mod error;
 mod frac;
 mod gaussian;
+mod gmp;
 mod poly;
 mod print;
 mod ring;

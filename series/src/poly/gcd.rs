@@ -192,37 +192,80 @@ fn monic(p: &Poly) -> Poly {
     p.scale(&lc.recip())
 }
 
-/// Dense coefficients (index = exponent) of a polynomial in `x` alone.
-fn dense_univariate(p: &Poly, x: Symbol) -> Vec<Q> {
-    let mut out = vec![<Q as Zero>::zero(); p.degree_in(x) as usize + 1];
-    for (m, q) in p.terms() {
-        let (_, e) = m.remove(x);
-        out[e as usize] += q;
+/// The prime of the coprimality certificate, 2^61 - 1.
+const P: u64 = (1 << 61) - 1;
+
+fn mul_mod(a: u64, b: u64) -> u64 {
+    ((a as u128 * b as u128) % P as u128) as u64
+}
+
+fn pow_mod(mut a: u64, mut e: u64) -> u64 {
+    let mut r = 1;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, a);
+        }
+        a = mul_mod(a, a);
+        e >>= 1;
+    }
+    r
+}
+
+/// `n mod P` in `[0, P)`.
+fn big_mod(n: &BigInt) -> u64 {
+    let r = n
+        .magnitude()
+        .iter_u64_digits()
+        .rev()
+        .fold(0u64, |acc, d| (((acc as u128) << 64 | d as u128) % P as u128) as u64);
+    if num_traits::Signed::is_negative(n) && r != 0 {
+        P - r
+    } else {
+        r
+    }
+}
+
+/// The image mod P of `den p` (an integer polynomial) in `x` alone, the other symbols set to
+/// `point` (dense, index = exponent).
+fn image_mod(p: &Poly, x: Symbol, point: &[(Symbol, u64)]) -> Vec<u64> {
+    let mut out = vec![0u64; p.degree_in(x) as usize + 1];
+    for (m, n) in &p.terms {
+        let mut c = big_mod(n);
+        let mut e_x = 0;
+        for &(s, e) in m.factors() {
+            if s == x {
+                e_x = e;
+            } else if let Some(&(_, v)) = point.iter().find(|(t, _)| *t == s) {
+                c = mul_mod(c, pow_mod(v, e as u64));
+            }
+        }
+        let slot = &mut out[e_x as usize];
+        *slot = (*slot + c) % P;
     }
     out
 }
 
-/// Degree of the gcd of two univariate polynomials over Q (dense, non-zero leading
-/// coefficients): Euclid with monic remainders.
-fn univariate_gcd_degree(a: Vec<Q>, b: Vec<Q>) -> usize {
+/// Degree of the gcd of two univariate polynomials mod P (dense, non-zero leading coefficients):
+/// Euclid with monic remainders.
+fn univariate_gcd_degree_mod(a: Vec<u64>, b: Vec<u64>) -> usize {
     let (mut a, mut b) = if a.len() >= b.len() { (a, b) } else { (b, a) };
     loop {
-        while b.last().is_some_and(<Q as Zero>::is_zero) {
+        while b.last() == Some(&0) {
             b.pop();
         }
         if b.is_empty() {
             return a.len().saturating_sub(1);
         }
-        let lb = b.last().expect("non-empty").recip();
-        b.iter_mut().for_each(|c| *c *= &lb);
+        let lb = pow_mod(*b.last().expect("non-empty"), P - 2);
+        b.iter_mut().for_each(|c| *c = mul_mod(*c, lb));
         // a mod b (b monic).
         while a.len() >= b.len() {
             let lead = a.pop().expect("non-empty");
             let off = a.len() + 1 - b.len();
             for (k, c) in b[..b.len() - 1].iter().enumerate() {
-                a[off + k] -= &lead * c;
+                a[off + k] = (a[off + k] + P - mul_mod(lead, *c)) % P;
             }
-            while a.last().is_some_and(<Q as Zero>::is_zero) {
+            while a.last() == Some(&0) {
                 a.pop();
             }
         }
@@ -231,11 +274,14 @@ fn univariate_gcd_degree(a: Vec<Q>, b: Vec<Q>) -> usize {
 }
 
 /// A proof that `gcd(a, b)` is a constant, or `false` (inconclusive). For each symbol `x` of
-/// both, the other symbols are set to fixed rationals at which neither leading coefficient in `x`
-/// vanishes; a non-constant common factor `g` involving `x` would survive with its full degree in
-/// `x` (its leading coefficient divides theirs) and divide both images, so a constant univariate
-/// gcd of the images excludes every factor involving `x`. Cheap (univariate Euclid), it spares
-/// the primitive PRS of [`gcd`] on the coprime pairs that dominate fraction arithmetic.
+/// both, the integer polynomials `den a`, `den b` are reduced mod the prime P = 2^61 - 1 and the
+/// other symbols set to fixed residues at which neither leading coefficient in `x` vanishes mod P.
+/// A non-constant common factor `g` involving `x` (primitive, in Z[symbols] by Gauss's lemma)
+/// would survive there with its full degree in `x` (the degrees of the images of `a = g h` add up
+/// to `deg_x a`, so neither factor loses degree) and divide both images, so a constant gcd of the
+/// images mod P excludes every factor involving `x`. Cheap (univariate Euclid over 61-bit
+/// residues), it spares the primitive PRS of [`gcd`] on the coprime pairs that dominate fraction
+/// arithmetic; an unlucky prime or point only makes it inconclusive.
 fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
     let (sa, sb) = (a.symbols(), b.symbols());
     let common: Vec<Symbol> = sa.iter().copied().filter(|s| sb.contains(s)).collect();
@@ -244,19 +290,19 @@ fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
     others.sort();
     others.dedup();
     'vars: for &x in &common {
-        let (da, db) = (a.degree_in(x), b.degree_in(x));
-        for attempt in 0..4i64 {
-            let (mut ia, mut ib) = (a.clone(), b.clone());
-            for (k, &y) in others.iter().filter(|&&y| y != x).enumerate() {
-                // Small, distinct, non-integer points: 3/7, 5/11, 7/13, ... shifted by attempt.
-                let v = Q::new((2 * (k as i64 + attempt) + 3).into(), (4 * (k as i64 + attempt) + 7).into());
-                ia = ia.subs(y, &v);
-                ib = ib.subs(y, &v);
-            }
-            if ia.degree_in(x) != da || ib.degree_in(x) != db || ia.is_zero() || ib.is_zero() {
+        let (da, db) = (a.degree_in(x) as usize, b.degree_in(x) as usize);
+        for attempt in 0..4u64 {
+            let point: Vec<(Symbol, u64)> = others
+                .iter()
+                .filter(|&&y| y != x)
+                .enumerate()
+                .map(|(k, &y)| (y, 1_000_003 * (k as u64 + 1) + 7_919 * attempt + 3))
+                .collect();
+            let (ia, ib) = (image_mod(a, x, &point), image_mod(b, x, &point));
+            if ia[da] == 0 || ib[db] == 0 {
                 continue; // a leading coefficient vanished there: try another point
             }
-            if univariate_gcd_degree(dense_univariate(&ia, x), dense_univariate(&ib, x)) == 0 {
+            if univariate_gcd_degree_mod(ia, ib) == 0 {
                 continue 'vars;
             }
             return false;

@@ -259,7 +259,7 @@ impl Poly {
         if !den.is_one() {
             let mut g = den.clone();
             for (_, n) in &terms {
-                g = g.gcd(n);
+                g = crate::gmp::gcd(&g, n);
                 if g.is_one() {
                     break;
                 }
@@ -301,7 +301,7 @@ impl Poly {
             if g.is_one() {
                 return true;
             }
-            g = g.gcd(n);
+            g = crate::gmp::gcd(&g, n);
         }
         g.is_one()
     }
@@ -395,7 +395,7 @@ impl Poly {
             let t = Poly::merge(self, &one, other, &one, negate);
             return Poly { terms: t, den: self.den.clone() };
         }
-        let g = self.den.gcd(&other.den);
+        let g = crate::gmp::gcd(&self.den, &other.den);
         let sa = &other.den / &g;
         let sb = &self.den / &g;
         let den = &self.den * &sa;
