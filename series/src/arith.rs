@@ -1,6 +1,6 @@
 //! Multiplication, inverse and division of truncated series.
 
-use crate::dense_q::{as_q, from_q, Dense, DENSE_MIN};
+use crate::dense_q::{dense_of, dense_route, DENSE_MIN};
 use crate::{Ring, Series, SeriesError};
 
 impl<R: Ring> Series<R> {
@@ -18,8 +18,10 @@ impl<R: Ring> Series<R> {
         let (va, vb) = (self.valuation(), other.valuation());
         let p = n.min((self.prec() + vb).min(other.prec() + va));
         if p >= DENSE_MIN && self.prec().min(other.prec()) >= DENSE_MIN {
-            if let (Some(a), Some(b)) = (as_q(self), as_q(other)) {
-                return from_q(Dense::from_q(a.coeffs()).mullow(&Dense::from_q(b.coeffs()), p).to_q());
+            if let Some(b) = dense_of(other) {
+                if let Some(r) = dense_route(self, |a| a.mullow(&b, p)) {
+                    return r;
+                }
             }
         }
         self.mul_trunc_generic(other, n)
@@ -54,11 +56,9 @@ impl<R: Ring> Series<R> {
     /// assert!(Series::<Q>::var(4).inv().is_err()); // 1/x is not a power series
     /// ```
     pub fn inv(&self) -> Result<Self, SeriesError> {
-        if self.prec() >= DENSE_MIN {
-            if let Some(a) = as_q(self) {
-                if !a.coeffs()[0].is_zero() {
-                    return Ok(from_q(Dense::from_q(a.coeffs()).inv(a.prec()).to_q()));
-                }
+        if self.coeffs.first().is_some_and(|c| !c.is_zero()) {
+            if let Some(r) = dense_route(self, |a| a.inv(self.prec())) {
+                return Ok(r);
             }
         }
         self.inv_generic()

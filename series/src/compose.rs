@@ -1,6 +1,6 @@
 //! Composition and reversion.
 
-use crate::dense_q::{as_q, from_q, Dense, DENSE_MIN};
+use crate::dense_q::dense_route;
 use crate::{Ring, Series, SeriesError};
 
 impl<R: Ring> Series<R> {
@@ -44,11 +44,9 @@ impl<R: Ring> Series<R> {
     /// assert_eq!(atan.text("x"), "x - 1/3*x^3 + 1/5*x^5 + O(x^6)");
     /// ```
     pub fn revert(&self) -> Result<Self, SeriesError> {
-        if self.prec() >= DENSE_MIN {
-            if let Some(a) = as_q(self) {
-                if a.coeffs()[0].is_zero() && !a.coeffs()[1].is_zero() {
-                    return Ok(from_q(Dense::from_q(a.coeffs()).revert().to_q()));
-                }
+        if self.coeffs.first().is_some_and(R::is_zero) && self.coeffs.get(1).is_some_and(|c| !c.is_zero()) {
+            if let Some(r) = dense_route(self, |a| a.revert()) {
+                return Ok(r);
             }
         }
         self.revert_generic()

@@ -415,15 +415,35 @@ fn unpack(v: &Integer, limbs: usize, out: &mut [Integer]) {
 }
 
 /// `s` as a `Series<Q>` when `R = Q`.
-pub(crate) fn as_q<R: crate::Ring>(s: &crate::Series<R>) -> Option<&crate::Series<Q>> {
+fn as_q<R: crate::Ring>(s: &crate::Series<R>) -> Option<&crate::Series<Q>> {
     (s as &dyn std::any::Any).downcast_ref::<crate::Series<Q>>()
 }
 
 /// The series of these rational coefficients as a `Series<R>`; only called when `R = Q`
 /// (after [`as_q`] succeeded).
-pub(crate) fn from_q<R: crate::Ring>(c: Vec<Q>) -> crate::Series<R> {
+fn from_q<R: crate::Ring>(c: Vec<Q>) -> crate::Series<R> {
     let s: Box<dyn std::any::Any> = Box::new(crate::Series::<Q>::from_coeffs(c));
     *s.downcast::<crate::Series<R>>().expect("from_q is called only when R = Q")
+}
+
+/// The fast route of a `Series<R>` operation: when `R = Q` and `s` has at least [`DENSE_MIN`]
+/// coefficients, `op` applied to its dense form and the result returned as reduced rationals;
+/// `None` otherwise (the caller runs its generic recurrence). The callers check the operation's
+/// precondition first.
+pub(crate) fn dense_route<R: crate::Ring>(
+    s: &crate::Series<R>,
+    op: impl FnOnce(&Dense) -> Dense,
+) -> Option<crate::Series<R>> {
+    if s.prec() < DENSE_MIN {
+        return None;
+    }
+    let a = as_q(s)?;
+    Some(from_q(op(&Dense::from_q(a.coeffs())).to_q()))
+}
+
+/// `s` in dense form when `R = Q` (the second operand of a product).
+pub(crate) fn dense_of<R: crate::Ring>(s: &crate::Series<R>) -> Option<Dense> {
+    as_q(s).map(|a| Dense::from_q(a.coeffs()))
 }
 
 /// The fast-path threshold: below this many coefficients the generic recurrences are as fast.

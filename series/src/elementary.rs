@@ -2,7 +2,7 @@
 //! tan, sinc, z cot z. Each states its precondition (FLINT-style) and returns a typed error when
 //! it is not met.
 
-use crate::dense_q::{as_q, from_q, Dense, DENSE_MIN};
+use crate::dense_q::dense_route;
 use crate::gmp::to_rug;
 use crate::ring::Q;
 use crate::{Ring, Series, SeriesError};
@@ -35,12 +35,10 @@ impl<R: Ring> Series<R> {
     /// ```
     pub fn exp(&self) -> Result<Self, SeriesError> {
         check_zero_constant(self, "exp")?;
-        if self.prec() >= DENSE_MIN {
-            if let Some(a) = as_q(self) {
-                return Ok(from_q(Dense::from_q(a.coeffs()).exp(a.prec()).to_q()));
-            }
+        match dense_route(self, |a| a.exp(self.prec())) {
+            Some(r) => Ok(r),
+            None => self.exp_generic(),
         }
-        self.exp_generic()
     }
 
     /// [`Series::exp`] by the recurrence in any ring.
@@ -68,12 +66,10 @@ impl<R: Ring> Series<R> {
     /// `log(self)`; requires `self(0) = 1`. Computed as `integral(f'/f)`.
     pub fn log(&self) -> Result<Self, SeriesError> {
         check_unit_constant(self, "log")?;
-        if self.prec() >= DENSE_MIN {
-            if let Some(a) = as_q(self) {
-                return Ok(from_q(Dense::from_q(a.coeffs()).log(a.prec()).to_q()));
-            }
+        match dense_route(self, |a| a.log(self.prec())) {
+            Some(r) => Ok(r),
+            None => self.log_generic(),
         }
-        self.log_generic()
     }
 
     /// [`Series::log`] through the generic inverse and product.
@@ -99,10 +95,10 @@ impl<R: Ring> Series<R> {
     /// ```
     pub fn pow(&self, alpha: &R) -> Result<Self, SeriesError> {
         check_unit_constant(self, "pow")?;
-        if self.prec() >= DENSE_MIN {
-            if let (Some(a), Some(e)) = (as_q(self), (alpha as &dyn std::any::Any).downcast_ref::<Q>()) {
-                let (p, q) = (to_rug(e.numer()), to_rug(e.denom()));
-                return Ok(from_q(Dense::from_q(a.coeffs()).pow(&p, &q, a.prec()).to_q()));
+        if let Some(e) = (alpha as &dyn std::any::Any).downcast_ref::<Q>() {
+            let (p, q) = (to_rug(e.numer()), to_rug(e.denom()));
+            if let Some(r) = dense_route(self, |a| a.pow(&p, &q, self.prec())) {
+                return Ok(r);
             }
         }
         self.pow_generic(alpha)

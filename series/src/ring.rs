@@ -175,7 +175,7 @@ impl Ring for Q {
         *self = if *sd == d {
             Q::new_raw(sn + n, d)
         } else {
-            let g = num_integer::Integer::gcd(sd, &d);
+            let g = crate::gmp::gcd(sd, &d);
             let (fd, fs) = (&d / &g, sd / &g);
             Q::new_raw(sn * &fd + n * fs, sd * fd)
         };
