@@ -113,17 +113,21 @@ impl Rhs {
 /// the interpolant's tan(lambda/2)^n; it is also the analytic continuation used off the contact.
 pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
     let xs = &col.colloc;
+    let n = col.rule.nodes.len();
     let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
-    let xr = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { xs[i - 1] } else { xs[i] };
-    let mut num = st.rhs.divided_difference(&st.map, u, xr);
-    let mut den = 1.0 / (PI * col.theta).cos();
-    for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
-        let d = u - t;
-        if d == 0.0 {
-            return *g;
-        }
-        let q = w / (PI * d * (xr - t));
-        num += q * g;
+    let r = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { i - 1 } else { i };
+    let nodes = &col.rule.nodes[..n];
+    if let Some(k) = nodes.iter().position(|t| *t == u) {
+        return st.g[k];
+    }
+    // W_k/(pi (x_r - t_k)) from the collocation matrix, so the loop has one division per node.
+    let row = &col.kernel[r * n..(r + 1) * n];
+    let g = &st.g[..n];
+    let mut num = st.rhs.divided_difference(&st.map, u, xs[r]);
+    let mut den = col.sec_pi_theta;
+    for k in 0..n {
+        let q = row[k] / (u - nodes[k]);
+        num += q * g[k];
         den += q;
     }
     num / den

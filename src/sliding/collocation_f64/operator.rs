@@ -19,6 +19,11 @@ pub struct Collocation {
     pub(super) rule: GaussRule,
     /// Collocation points x_r (zeros of P_{n+1}^{(-alpha,-beta)}), ascending.
     pub(super) colloc: Vec<f64>,
+    /// The matrix's kernel part W_k/(pi (x_r - t_k)), row r at [r n, (r + 1) n) (for the Nyström
+    /// interpolant, `interpolant::g_at`).
+    pub(super) kernel: Vec<f64>,
+    /// 1/cos(pi theta).
+    pub(super) sec_pi_theta: f64,
     lu: LU<f64, Dyn, Dyn>,
 }
 
@@ -29,13 +34,16 @@ impl Collocation {
         let (rule, conj) = sliding_rules(n, theta)?;
         let colloc = conj.nodes;
         let mut m = DMatrix::<f64>::zeros(n + 1, n + 1);
+        let mut kernel = Vec::with_capacity((n + 1) * n);
         for (r, xr) in colloc.iter().enumerate() {
             for k in 0..n {
                 m[(r, k)] = rule.weights[k] / (PI * (xr - rule.nodes[k]));
+                kernel.push(m[(r, k)]);
             }
             m[(r, n)] = 1.0;
         }
-        Ok(Collocation { theta, rule, colloc, lu: m.lu() })
+        let sec_pi_theta = 1.0 / (PI * theta).cos();
+        Ok(Collocation { theta, rule, colloc, kernel, sec_pi_theta, lu: m.lu() })
     }
 
     /// Number of nodes n.

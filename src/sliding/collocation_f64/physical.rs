@@ -19,9 +19,9 @@ use std::f64::consts::PI;
 /// H[p](x) for x outside the contact (docs/theory.md section 2). Near the contact (|u| <= 3) the
 /// Cauchy part is G(u) (1/pi) int omega/(u - t) - (1/pi) sum W_k (G(u) - G_k)/(u - t_k)
 /// (exact for the polynomial G), with the closed form of [`omega_cauchy_exterior`]; farther out
-/// the plain rule in the cot (or 1/(x - xi)) form.
+/// the plain rule in the cot (or 1/(x - xi)) form, through the node terms of [`FarField`].
 /// `c0` is C0[p] of the state ([`c0_of`]).
-fn hilbert_outside(col: &Collocation, prm: &SlidingParamsF64, st: &State, c0: f64, x: f64) -> f64 {
+fn hilbert_outside(col: &Collocation, st: &State, far: &FarField, theta: f64, c0: f64, x: f64) -> f64 {
     let u = st.map.u_of_x(x, st.c);
     if u.is_finite() && u.abs() <= 3.0 {
         // Off the contact |u| >= 1; rounding at the very edge could give |u| slightly below 1.
@@ -31,18 +31,52 @@ fn hilbert_outside(col: &Collocation, prm: &SlidingParamsF64, st: &State, c0: f6
         for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
             s += w * (gu - g) / (u - t);
         }
-        gu * omega_cauchy_exterior(u, prm.theta) - s / PI + c0
+        gu * omega_cauchy_exterior(u, theta) - s / PI + c0
     } else {
-        let mut s = 0.0;
-        for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
-            let xi = st.c + st.map.offset(*t);
-            let jac = st.map.jac(*t);
-            s += match st.map {
-                Map::Periodic { big_l, .. } => w * g * jac / (big_l * (PI * (x - xi) / big_l).tan()),
-                Map::Single { .. } => w * g * jac / (PI * (x - xi)),
-            };
+        far.at(st, x)
+    }
+}
+
+/// The plain rule for H[p] far from the contact, its node factors computed once per state:
+/// periodic, with phi_x = pi (x - c)/L and phi_k = atan(m t_k) = pi (xi_k - c)/L (the tangent
+/// map), the node term W_k G_k x'(t_k)/(L tan(phi_x - phi_k)) is
+///
+/// ```text
+/// a_k (cos phi_x + b_k sin phi_x)/(sin phi_x - b_k cos phi_x),
+/// a_k = W_k G_k m/(pi (1 + m^2 t_k^2)),   b_k = m t_k = tan phi_k
+/// ```
+///
+/// (cot(phi_x - phi_k) with cos phi_k, sin phi_k = (1, b_k)/sqrt(1 + b_k^2)): one sine and cosine
+/// per point instead of a tangent per node; single punch: W_k G_k l/(pi (x - xi_k)),
+/// xi_k = c + l t_k.
+struct FarField {
+    /// (a_k, b_k) periodic, or (W_k G_k l/pi, xi_k) single.
+    nodes: Vec<(f64, f64)>,
+}
+
+impl FarField {
+    fn new(col: &Collocation, st: &State) -> Self {
+        let nodes = col
+            .rule
+            .nodes
+            .iter()
+            .zip(&col.rule.weights)
+            .zip(&st.g)
+            .map(|((t, w), g)| match st.map {
+                Map::Periodic { m, .. } => (w * g * m / (PI * (1.0 + m * m * t * t)), m * t),
+                Map::Single { l } => (w * g * l / PI, st.c + l * t),
+            })
+            .collect();
+        FarField { nodes }
+    }
+    fn at(&self, st: &State, x: f64) -> f64 {
+        match st.map {
+            Map::Periodic { big_l, .. } => {
+                let (s, c) = (PI * (x - st.c) / big_l).sin_cos();
+                self.nodes.iter().map(|(a, b)| a * (c + b * s) / (s - b * c)).sum()
+            }
+            Map::Single { .. } => self.nodes.iter().map(|(a, xi)| a / (x - xi)).sum(),
         }
-        s
     }
 }
 
@@ -56,6 +90,7 @@ struct Functions<'a> {
     col: &'a Collocation,
     prm: &'a SlidingParamsF64,
     st: &'a State,
+    far: FarField,
     c0: f64,
     k_const: f64,
 }
@@ -66,7 +101,7 @@ impl ContactFunctions for Functions<'_> {
     }
     fn surface_slope(&self, xi: f64) -> f64 {
         let (prm, x) = (self.prm, self.st.c + xi);
-        2.0 / prm.e_star * (hilbert_outside(self.col, prm, self.st, self.c0, x) - self.k_const)
+        2.0 / prm.e_star * (hilbert_outside(self.col, self.st, &self.far, prm.theta, self.c0, x) - self.k_const)
             - 2.0 * prm.beta * prm.tau0 / prm.e_star
     }
     fn profile_height(&self, x: f64) -> f64 {
@@ -111,6 +146,13 @@ pub(super) fn physicality(
     st: &State,
     out: &Outputs,
 ) -> Result<Assessment, Refusal> {
-    let f = Functions { col, prm, st, c0: c0_of(col, st), k_const: k_constant(prm, out.p2, out.l) };
+    let f = Functions {
+        col,
+        prm,
+        st,
+        far: FarField::new(col, st),
+        c0: c0_of(col, st),
+        k_const: k_constant(prm, out.p2, out.l),
+    };
     assess(&f, &setting(prm, out))
 }

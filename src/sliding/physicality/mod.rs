@@ -35,7 +35,7 @@ pub mod admissible;
 use crate::error::Error;
 use crate::model::{readable, Convention, SlidingLoad};
 use crate::numerics::accuracy::readable_f64;
-use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
+use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, GaussRule};
 
 /// A method's solution as the criterion sees it (lengths and loads in any one consistent unit).
 pub trait ContactFunctions {
@@ -261,7 +261,9 @@ const GAP_PANELS: usize = 32;
 /// theta) next to the end), the profile's own height taken exactly (so its steps at the cell
 /// edges and a slope singular at the edge of a circle need no quadrature).
 fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64) -> Vec<(f64, f64)> {
-    let gl = gauss_jacobi(6, 0.0, 0.0).expect("6-point Gauss-Legendre");
+    // The 6-point Gauss-Legendre rule, computed once per process (it does not depend on the contact).
+    static GL: std::sync::OnceLock<GaussRule> = std::sync::OnceLock::new();
+    let gl = GL.get_or_init(|| gauss_jacobi(6, 0.0, 0.0).expect("6-point Gauss-Legendre"));
     let g_end = f.profile_height(c + start);
     let mut w_int = 0.0;
     let mut out = Vec::with_capacity(GAP_PANELS);

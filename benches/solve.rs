@@ -1,0 +1,58 @@
+//! Criterion benchmarks of one solve and one series evaluation (issue 14):
+//! - `f64_solve`: one verified f64 solve of Problem 1 (`solve_sliding_f64`: the scene
+//!   `scenes/sliding_friction.toml`, periodic parabola, mu = 0.3, P2 = 1/100, lambda = 0.2497,
+//!   automatic nodes (16) for >= 13 digits), which includes its check run with n + 8 nodes, the
+//!   p >= 0 samples, the gap integration of the physicality criterion and p on the 201-point grid
+//!   of max p (both runs); collocation operators cached per thread as in `solve`;
+//! - `series_eval`: one evaluation of the derived l/l_s of the same problem through Lambda^16 at
+//!   Lambda (coefficients prepared once, `numerics::evaluate::PreparedSeries`), in f64 and in MPFR at
+//!   30 digits (103 bits).
+//!
+//! Run: `cargo bench --bench solve`
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use periodic_contact::asymptotics::sliding::sliding_expansion_with;
+use periodic_contact::model::SlidingProblem;
+use periodic_contact::numerics::evaluate::PreparedSeries;
+use periodic_contact::numerics::precision::precision_for;
+use periodic_contact::scene::parse::parse_scene;
+use periodic_contact::scene::SceneProblem;
+use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, SolverOptions};
+use periodic_contact::sliding::series::{expansion_shape, series_point};
+use rug::Float;
+
+fn problem() -> SlidingProblem {
+    let text = include_str!("../scenes/sliding_friction.toml");
+    match parse_scene(text).expect("the shipped scene parses").problem {
+        SceneProblem::Sliding(p) => p,
+        _ => unreachable!("sliding_friction.toml is a sliding scene"),
+    }
+}
+
+fn f64_solve(c: &mut Criterion) {
+    let p = problem();
+    let opts = SolverOptions::default();
+    let s = solve_sliding_f64(&p, &[], &opts).expect("the scene solves");
+    let sol = &s.solutions[0];
+    assert!(sol.digits().0.iter().all(|d| *d >= 13.0), "digits {:?}", sol.digits());
+    c.bench_function("f64_solve/sliding_friction", |b| b.iter(|| solve_sliding_f64(black_box(&p), &[], &opts)));
+}
+
+fn series_eval(c: &mut Criterion) {
+    let p = problem();
+    let order = 16;
+    let e = sliding_expansion_with(expansion_shape(&p).expect("parabola"), order, p.convention()).expect("derives");
+    let prec = precision_for(30);
+    let sp = series_point(&p, prec).expect("parameters");
+    let prepared = PreparedSeries::new(&e.l_over_ls, &sp.bindings(), prec).expect("bound symbols");
+    let x = sp.big_lambda.clone();
+    let xf = x.to_f64();
+    let mut acc = Float::new(prec);
+    c.bench_function("series_eval/l_over_ls_order16_f64", |b| b.iter(|| prepared.at_f64(black_box(xf))));
+    c.bench_function("series_eval/l_over_ls_order16_mpfr30", |b| {
+        b.iter(|| prepared.at_mpfr_into(black_box(&x), &mut acc))
+    });
+}
+
+criterion_group!(benches, f64_solve, series_eval);
+criterion_main!(benches);
