@@ -103,14 +103,42 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
     }
 }
 
+/// The rule for 1/omega with n nodes for the sinusoid's load-curve scan, which needs only the
+/// signs of P2 - target (SCAN_DIGITS): the f64 Gauss–Jacobi rule
+/// ([`crate::numerics::gauss_jacobi_f64`], about 15 correct digits) rounded to the parameters'
+/// precision. The MPFR rule at the locating precision costs O(n^2) MPFR operations per Newton pass,
+/// and the scan up to the node cap needs rules of several hundred nodes (about 0.2 s in all, the
+/// solver's former floor); brackets are then refined with MPFR rules ([`load_lo`]).
+fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
+    let (a, b) = params.inverse_weight_exponents();
+    let r = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, a.to_f64(), b.to_f64())
+        .map_err(|e| SlidingError::NoConvergence(format!("the scan's f64 rule: {e}")))?;
+    let lift = |v: &[f64]| v.iter().map(|x| Float::with_val(params.prec, *x)).collect();
+    Ok(Arc::new(GaussJacobiRule {
+        alpha: a,
+        beta: b,
+        nodes: lift(&r.nodes),
+        weights: lift(&r.weights),
+        prec: params.prec,
+    }))
+}
+
 /// Centre solutions (all branches) at size s with n nodes.
 fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
-    let rule = inverse_rule(params, n)?;
+    branches_with(params, s, &*inverse_rule(params, n)?)
+}
+
+/// Centre solutions (all branches) at size s with the rule `rule` for 1/omega.
+fn branches_with(
+    params: &SlidingParamsMpfr,
+    s: &Float,
+    rule: &GaussJacobiRule,
+) -> Result<Vec<ShiftSolution>, SlidingError> {
     let size = Size::new(params, s);
     if is_general(&params.shape) {
-        return Ok(centre(params, &size, &rule).into_iter().collect());
+        return Ok(centre(params, &size, rule).into_iter().collect());
     }
-    Ok(shift_solutions(params, &size, &equation_terms(params, &size, &rule)))
+    Ok(shift_solutions(params, &size, &equation_terms(params, &size, rule)))
 }
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).
@@ -197,11 +225,16 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
             // Both centre branches come from the same two integrals: evaluate them once per point.
             let grid = 48;
             let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
+            let mut rules: std::collections::HashMap<usize, Arc<GaussJacobiRule>> = Default::default();
             for i in 1..=grid {
                 let s = cap * i as f64 / grid as f64;
                 // The scan only needs signs: SCAN_DIGITS; brackets are refined with LOCATE_DIGITS.
                 let n = bucket(nodes_for(s, SCAN_DIGITS));
-                let b = branches(params, &Float::with_val(params.prec, s), n)?;
+                let rule = match rules.get(&n) {
+                    Some(r) => r.clone(),
+                    None => rules.entry(n).or_insert(scan_rule(params, n)?).clone(),
+                };
+                let b = branches_with(params, &Float::with_val(params.prec, s), &rule)?;
                 for (br, curve) in curves.iter_mut().enumerate() {
                     curve.push((s, b.get(br).map(|v| (v.p2.to_f64() - target) / target)));
                 }
