@@ -137,6 +137,24 @@ fn refusal_follows_the_estimate() {
     assert!(err.to_string().contains("do not decrease at Lambda = pi l_s/L = 1.07"), "{err}");
 }
 
+/// Inside the radius but with alternating terms: the frictionless parabola at Lambda = pi^(1/2)
+/// (Lambda^2 = pi, half the radius 2 pi of Kuznetsov's series; P2 = 1/2, lambda = 1.3614) was
+/// refused ("the terms do not decrease": single-step ratios up to 4.8 at order 24). The pair
+/// envelopes give rate 0.43 and an estimate the MPFR solution confirms.
+#[test]
+fn alternating_terms_inside_the_radius_are_accepted() {
+    let e = sliding_expansion_with(SlidingShape::Parabolic, 24, Convention::Paper).unwrap();
+    let p = grid_problem(false, 0.0, std::f64::consts::PI.sqrt());
+    let m = crate::sliding::solve_verified(&p, &[], 30).unwrap();
+    for (order, at_least) in [(12, 2.5), (24, 4.5)] {
+        let s = solve_series_with(&e, &p, &[], order, 30).unwrap();
+        assert!(s.accuracy.rate < 0.5, "order {order}: rate {}", s.accuracy.rate);
+        assert!(s.accuracy.contact >= at_least, "order {order}: {:?}", s.accuracy);
+        let d = verified_digits_mpfr(&Float::with_val(s.prec, &s.l - &m[0].solution.l), &s.l, 30.0);
+        assert!(s.accuracy.contact <= d + 0.05, "order {order}: estimated {} > true {d}", s.accuracy.contact);
+    }
+}
+
 #[test]
 fn input_errors_say_what_was_given_and_what_to_do() {
     let base = grid_problem(false, 0.0, 0.5);
