@@ -127,3 +127,40 @@ fn both_methods_quote_the_same_largest_load() {
         }
     }
 }
+
+/// See: issue 13 ("never a search limit presented as physics"). Frictionless sinusoid (E* = 1,
+/// D = 1/10, L = 1; full contact carries pi E* D = 0.3141593) and parabola (k = 1: every load has a
+/// contact, Kuznetsov [2.15]). Both methods solve P2 = 0.31 (Westergaard lambda =
+/// asin(sqrt(0.31/(pi/10))) = 1.455478523538) to their digits; P2 = 0.314, below full contact but
+/// beyond both methods' reach (lambda = 1.548), is refused as out of reach (no convergence), naming
+/// the physical limit; P2 = 0.32, above full contact, as no solution; the parabola at P2 = 2
+/// (lambda = 1.5689) as out of reach, naming Kuznetsov.
+#[test]
+fn refusals_near_full_contact_name_the_physical_limit() {
+    let conv = Convention::Paper;
+    let westergaard = (0.31f64 / (std::f64::consts::PI / 10.0)).sqrt().asin();
+    let at = problem(true, "0", "0", "0", SlidingLoad::NormalLoad(q("31/100")), conv);
+    let f = solve_sliding_f64(&at, &[], &SolverOptions::default()).unwrap();
+    assert!((f.solutions[0].lambda - westergaard).abs() < 1e-11, "f64 lambda {}", f.solutions[0].lambda);
+    let m = solve_verified(&at, &[], 20).unwrap();
+    let lm = m[0].solution.lambda.as_ref().unwrap().to_f64();
+    assert!((lm - westergaard).abs() < 1e-14, "MPFR lambda {lm}");
+    let cases = [
+        (true, "314/1000", ErrorKind::NoConvergence, "full contact (lambda -> pi/2) carries P2 = pi E* D = 0.3141593"),
+        (true, "32/100", ErrorKind::NoSolution, "it exceeds the full-contact load pi E* D = 0.3141593"),
+        (false, "2", ErrorKind::NoConvergence, "physically every load has a contact"),
+    ];
+    for (sinusoid, load, kind, words) in cases {
+        let pb = problem(sinusoid, "0", "0", "0", SlidingLoad::NormalLoad(q(load)), conv);
+        let fe = Error::from(solve_sliding_f64(&pb, &[], &SolverOptions::default()).unwrap_err());
+        let me = Error::from(solve_verified(&pb, &[], 20).unwrap_err());
+        for e in [fe, me] {
+            let text = e.to_string();
+            assert_eq!(e.kind(), kind, "{load}: {text}");
+            assert!(text.contains(words), "{load}: {text}");
+            if kind == ErrorKind::NoConvergence {
+                assert!(text.contains("beyond this method's reach") && !text.contains("no contact carries"), "{text}");
+            }
+        }
+    }
+}

@@ -152,6 +152,12 @@ pub(super) fn candidates(
                     // Nodes for the Kuznetsov-type guess of lambda (parabola_lambda), then for the
                     // solved lambda until the node count settles (at most 3 more solves).
                     let mut n = options.nodes.unwrap_or_else(|| pick(kuznetsov_guess(prm, big_l, p2)));
+                    if options.nodes.is_none() && n >= options.max_nodes {
+                        // The guess (exact at theta = 0) needs all the nodes allowed or more: beyond
+                        // this method's reach; the solver's refusal tells from the admissible scan
+                        // whether the load is also beyond the physical range.
+                        return Err(SlidingF64Error::NoRoot { load: p2, largest: f64::NAN });
+                    }
                     let mut lam = parabola_lambda(prm, big_l, p2, n, None)?;
                     if options.nodes.is_none() {
                         for _ in 0..3 {

@@ -14,7 +14,7 @@ use crate::params::sliding::SlidingParamsF64;
 use std::f64::consts::PI;
 
 /// Largest lambda of the scan (contact fraction 2 lambda/pi = 0.92).
-pub(super) const SCAN_MAX: f64 = 1.45;
+pub(super) const SCAN_MAX: f64 = crate::sliding::physicality::admissible::LAMBDA_SCAN_MAX;
 
 /// Sinusoid at fixed lambda: F = s (X sin 2phi + Y cos 2phi), s = pi E* D/L, phi = atan(m u),
 /// (X, Y) = (cos, sin)(2 pi c/L). Returns the two unit bases (sin 2phi, cos 2phi), with the load
@@ -124,7 +124,7 @@ pub(super) fn refine_sinusoid_lambda(
 /// A root of the sinusoid's scalar equation at load P2: lambda and the nodes it was solved at.
 pub(super) type Root = (f64, usize);
 
-/// Scans lambda in (0, 1.45] for sign changes of ln|(X, Y)| (Soldatenkov's P2(lambda) is not
+/// Scans lambda in (0, [`SCAN_MAX`]] for sign changes of ln|(X, Y)| (Soldatenkov's P2(lambda) is not
 /// monotone for theta != 0, so there may be several), refines each with Brent at the nodes for
 /// that lambda. When there is none, returns [`SlidingF64Error::NoRoot`] with the
 /// largest load seen on the scan (physical or not; the solver replaces it by the admissible range).
@@ -136,14 +136,18 @@ pub(super) fn sinusoid_scan(
     options: &SolverOptions,
 ) -> Result<Vec<Root>> {
     const STEPS: usize = 64;
-    let n_scan = options.nodes.unwrap_or(48);
-    let col = collocation(prm.theta, n_scan)?;
+    // Signs only: 48 nodes, or more near full contact for an error ~ 1e-8 (in steps of 16, so
+    // few operators are factored).
+    let scan_options = SolverOptions { target: 1e-8, ..*options };
+    let n_scan =
+        |lam: f64| options.nodes.unwrap_or_else(|| collocation_nodes(lam, &scan_options).max(48).div_ceil(16) * 16);
     let mut out = Vec::new();
     let mut max_load: f64 = 0.0;
     let mut prev: Option<(f64, f64)> = None;
     for j in 1..=STEPS {
         // Denser near 0 (small loads): lambda_j = SCAN_MAX (j/STEPS)^1.5.
         let lam = SCAN_MAX * (j as f64 / STEPS as f64).powf(1.5);
+        let col = collocation(prm.theta, n_scan(lam))?;
         let map = Map::periodic(big_l, lam);
         let (bx, by) = sinusoid_bases(&col, prm, &map)?;
         let r1 = tau0_side(prm, &map) / s;

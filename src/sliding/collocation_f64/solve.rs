@@ -12,7 +12,7 @@ use super::verify::check_run;
 use crate::model::SlidingProblem;
 use crate::numerics::accuracy::readable_f64;
 use crate::params::sliding::{check_profile_on_contact, SlidingParamsF64};
-use crate::sliding::physicality::refusal;
+use crate::sliding::physicality::refusal_in_reach;
 
 /// Every candidate root of the side conditions at the main run's nodes, before the physicality
 /// check removes some (for the sinusoid with theta != 0 a load below the maximum is reached
@@ -101,8 +101,10 @@ pub fn solve_sliding_f64(
         });
     }
     if solutions.is_empty() {
-        let ranges = ranges_text(&prm, &admissible_range(&prm, options)?);
-        return Err(SlidingF64Error::Refused(refusal(problem.load(), &reasons, &ranges)));
+        let adm = admissible_range(&prm, options)?;
+        let ranges = ranges_text(&prm, &adm);
+        let fraction = |s: f64| 2.0 * s / std::f64::consts::PI;
+        return Err(SlidingF64Error::Refused(refusal_in_reach(problem, &adm, 1.0, fraction, &reasons, &ranges)));
     }
     solutions.sort_by(|x, y| x.l.total_cmp(&y.l));
     Ok(SlidingSolutionsF64 { solutions })

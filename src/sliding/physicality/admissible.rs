@@ -18,9 +18,12 @@ pub const SCAN_POINTS: usize = 48;
 const BISECTIONS: usize = 30;
 /// Golden-section steps on the largest load.
 const GOLDEN_STEPS: usize = 40;
-/// Largest lambda scanned for a period (contact fraction 2 lambda/pi = 0.92): beyond it the
-/// methods need more nodes than their locating stages use.
-pub const LAMBDA_SCAN_MAX: f64 = 1.45;
+/// Largest lambda scanned for a period (contact fraction 2 lambda/pi = 0.971): the reach of the
+/// MPFR method's locating stage (lambda_cap(16 digits, 512 nodes) = 1.5258, `reduction_mpfr`),
+/// which the f64 method's load scan matches; beyond it the node counts grow without bound as the
+/// contact fills the period. A run of physical sizes that reaches it is "open above": the load
+/// may be carried beyond the scan ([`crate::sliding::physicality::refusal_in_reach`]).
+pub const LAMBDA_SCAN_MAX: f64 = 1.525;
 
 /// The contacts of the direct problem at one size: (load, physical) for each centre solution.
 pub type SizeContacts = Vec<(f64, bool)>;

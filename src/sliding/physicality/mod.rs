@@ -33,7 +33,7 @@
 pub mod admissible;
 
 use crate::error::Error;
-use crate::model::{readable, Convention, SlidingLoad};
+use crate::model::{readable, Convention, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, GaussRule};
 
@@ -395,6 +395,102 @@ pub fn refusal(load: &SlidingLoad, reasons: &[String], ranges: &str) -> Error {
     let (subject, verb) = if reasons.len() == 1 { ("the contact", "is") } else { ("the contacts", "are") };
     Error::NotPhysical {
         why: format!("{subject} with {name} = {value} {verb} not physical ({}); {ranges}", reasons.join("; ")),
+    }
+}
+
+/// What the physics allows at large loads, where a closed form knows it (kappa = tau0 = 0, the
+/// frictionless equation, docs/theory.md section 6): the sinusoid carries at most the full-contact
+/// load pi E* D (Westergaard [2.17], P2 = pi E* D sin^2 lambda -> pi E* D as lambda -> pi/2); the
+/// parabola carries every load (Kuznetsov [2.15], cos lambda = exp(-Lambda^2/2): the centred contact
+/// approaches full contact as P2 -> infinity). None elsewhere (friction, wear, adhesive shear,
+/// other profiles): there the admissible range comes only from a method's scan.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LoadLimit {
+    /// Full contact carries this load (in the problem's units): every load below it has a contact.
+    FullContact(f64),
+    /// Every load has a contact.
+    Unbounded,
+}
+
+impl LoadLimit {
+    /// The limit of `problem`, if a closed form gives it.
+    pub fn of(problem: &SlidingProblem) -> Option<LoadLimit> {
+        if !problem.kappa_and_tau0_vanish() || !matches!(problem.period(), Period::Finite(_)) {
+            return None;
+        }
+        match problem.shape() {
+            PunchShape::Sinusoidal { amplitude } => {
+                let e_d = crate::numerics::exact::to_f64(&(problem.material().contact_modulus() * amplitude))?;
+                Some(LoadLimit::FullContact(std::f64::consts::PI * e_d))
+            }
+            PunchShape::Parabolic { .. } => Some(LoadLimit::Unbounded),
+            _ => None,
+        }
+    }
+
+    /// The limit in words.
+    pub fn text(self) -> String {
+        match self {
+            LoadLimit::FullContact(v) => format!(
+                "physically every load below full contact has a contact: full contact (lambda -> pi/2) carries \
+                 P2 = pi E* D = {} (Westergaard [2.17])",
+                readable_f64(v)
+            ),
+            LoadLimit::Unbounded => "physically every load has a contact: it approaches full contact (lambda -> pi/2) \
+                                     as P2 grows without bound (Kuznetsov [2.15])"
+                .into(),
+        }
+    }
+}
+
+/// The refusal of a method that found no contact for a given load, knowing its admissible scan
+/// `adm` (loads in units of `unit`): [`refusal`] when the scan settles the question (the load lies
+/// outside every physical run, and no run reaches the scan's end, or the load is above the
+/// closed-form limit of [`LoadLimit`]); otherwise the load may be carried by a contact beyond this
+/// method's reach, and the refusal says so (`NoConvergence`), with the end of the scan
+/// (`fraction` of its size, 2 lambda/pi) and the physical limit where one is known. A search limit
+/// is never presented as physics.
+pub fn refusal_in_reach(
+    problem: &SlidingProblem,
+    adm: &admissible::Admissible,
+    unit: f64,
+    fraction: impl Fn(f64) -> f64,
+    reasons: &[String],
+    ranges: &str,
+) -> Error {
+    let (SlidingLoad::NormalLoad(v), Period::Finite(_)) = (problem.load(), problem.period()) else {
+        return refusal(problem.load(), reasons, ranges);
+    };
+    let (Some(load), Some(last)) = (crate::numerics::exact::to_f64(v), adm.runs.last()) else {
+        return refusal(problem.load(), reasons, ranges);
+    };
+    let limit = LoadLimit::of(problem);
+    let above_limit = matches!(limit, Some(LoadLimit::FullContact(m)) if load >= m);
+    if !reasons.is_empty() || !last.open_above || above_limit || load <= last.load_hi.0 * unit {
+        return match (above_limit, limit) {
+            (true, Some(LoadLimit::FullContact(m))) if reasons.is_empty() => Error::NoSolution {
+                why: format!(
+                    "no contact carries normal_load = {}: it exceeds the full-contact load pi E* D = {} (Westergaard \
+                     [2.17]), the most the sinusoid carries; {ranges}",
+                    readable(v),
+                    readable_f64(m)
+                ),
+            },
+            _ => refusal(problem.load(), reasons, ranges),
+        };
+    }
+    let physics = match limit {
+        Some(l) => l.text(),
+        None => "the physical limit beyond the scan is not known in closed form at these parameters".into(),
+    };
+    Error::NoConvergence {
+        what: format!(
+            "normal_load = {} needs a contact beyond this method's reach: its scan ends at contact fraction 2l/L = {} \
+             carrying {} (the node count needed grows without bound as the contact fills the period); {physics}; {ranges}",
+            readable(v),
+            readable_f64(fraction(last.size_hi)),
+            readable_f64(last.load_hi.0 * unit)
+        ),
     }
 }
 

@@ -31,7 +31,7 @@ use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};
 use crate::params::sliding::{check_profile_on_contact, ShapeMpfr, SlidingParamsMpfr, TargetMpfr};
 use crate::sliding::physicality::admissible::{admissible, Admissible, SizeContacts, LAMBDA_SCAN_MAX};
 use crate::sliding::physicality::CLOSURE_TOL;
-use crate::sliding::physicality::{refusal, Assessment, Refusal};
+use crate::sliding::physicality::{refusal_in_reach, Assessment, Refusal};
 use rug::Float;
 use std::sync::Arc;
 
@@ -191,13 +191,10 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
                     fhi = f(hi, 0)?.unwrap_or(f64::NAN);
                     tries += 1;
                     if tries > 60 || (smax.is_finite() && smax - hi < 1e-12) {
-                        return Err(SlidingError::NoSolution {
-                            load: setup.load_text.clone().unwrap_or_default(),
-                            why: format!(
-                                "the contact would exceed lambda = pi l/L = {} (about {LOCATE_NODES} nodes for {LOCATE_DIGITS} digits; the periodic parabola also needs the contact inside (-L/2, L/2)); the load is too large for this method",
-                                readable_f64(cap)
-                            ),
-                        });
+                        // Beyond this stage's reach (about LOCATE_NODES nodes for LOCATE_DIGITS
+                        // digits): the admissible scan tells whether the load is out of the
+                        // physical range (the contact leaves the cell) or only out of reach.
+                        return Err(refused(setup, &[])?);
                     }
                 }
             } else if f0 > 0.0 {
@@ -306,7 +303,8 @@ fn refused(setup: &Setup, reasons: &[String]) -> Result<SlidingError, SlidingErr
         }
         (TargetMpfr::HalfLength(_), None) => adm.sizes_text(|s| s),
     };
-    Ok(SlidingError::Core(refusal(setup.problem.load(), reasons, &ranges)))
+    let fraction = |s: f64| 2.0 * s / std::f64::consts::PI;
+    Ok(SlidingError::Core(refusal_in_reach(&setup.problem, &adm, unit, fraction, reasons, &ranges)))
 }
 
 /// The shared criterion for the contact of branch solution `sol` at size `s` (the loads P1 =

@@ -396,8 +396,9 @@ fn largest_admissible_load(text: &str) -> f64 {
 
 /// See: issue 9. The refusal states the given load and the largest load in the problem's units
 /// (the solver works in units of E*, which must not leak into messages): E* = 5, D = 1/10, L = 2,
-/// frictionless; the scan of the admissible range reaches lambda = 1.45, where the sinusoid
-/// carries pi E* D sin^2(1.45) = 1.5481 (Westergaard, docs/theory.md section 6).
+/// frictionless; the scan of the admissible range reaches lambda = 1.525, where the sinusoid
+/// carries pi E* D sin^2(1.525) = 1.5675 (Westergaard, docs/theory.md section 6); the load is above
+/// full contact, pi E* D = 1.5708, which the refusal names.
 #[test]
 fn refusal_is_in_the_problems_units() {
     let pb = Case { e: "5", period: "2", shape: Shape::Sinusoid("1/10"), ..FRICTIONLESS }.load("7/3");
@@ -406,9 +407,14 @@ fn refusal_is_in_the_problems_units() {
     let text = e.to_string();
     assert!(text.contains("normal_load = 7/3"), "{text}");
     let cap = largest_admissible_load(&text);
-    let westergaard = std::f64::consts::PI * 5.0 * 0.1 * 1.45f64.sin().powi(2);
+    let westergaard = std::f64::consts::PI * 5.0 * 0.1 * 1.525f64.sin().powi(2);
     assert!((cap - westergaard).abs() < 1e-6 * westergaard, "{cap} vs {westergaard}: {text}");
-    assert!(text.starts_with("no solution: no contact carries normal_load = 7/3 at these parameters; "), "{text}");
+    assert!(
+        text.starts_with(
+            "no solution: no contact carries normal_load = 7/3: it exceeds the full-contact load pi E* D = 1.570796"
+        ),
+        "{text}"
+    );
 }
 
 /// Independent check of the reduction [2.13]-[2.14] for theta != 0, tau0 > 0 on a periodic row:
