@@ -249,6 +249,39 @@ pub fn gauss_jacobi_uncached(
     if n == 0 || n > MAX_NODES {
         return Err(QuadratureError::Nodes { n, max: MAX_NODES });
     }
+    if alpha == beta && (*alpha == 0.5f64 || *alpha == -0.5f64) {
+        return Ok(chebyshev_rule(alpha, n, prec));
+    }
+    newton_rule(alpha, beta, n, prec)
+}
+
+/// The Gauss–Chebyshev rules in closed form (theta = 0: the weights 1/omega and omega of
+/// docs/theory.md section 3), computed at `prec` + [`GUARD_BITS`] bits and rounded:
+/// alpha = beta = -1/2, u_i = -cos((2i - 1) pi/(2n)), w_i = pi/n (DLMF 3.5.23); alpha = beta = 1/2,
+/// u_i = -cos(i pi/(n + 1)), w_i = pi/(n + 1) sin^2(i pi/(n + 1)) (DLMF 3.5.24); i = 1..n. n cosines
+/// instead of the O(n^2) Newton passes; the test `chebyshev_closed_forms_equal_newton` compares them.
+fn chebyshev_rule(alpha: &Float, n: usize, prec: u32) -> GaussJacobiRule {
+    let wp = prec + GUARD_BITS;
+    let pi = pi(wp);
+    let second_kind = *alpha > 0u32;
+    let (mut nodes, mut weights) = (Vec::with_capacity(n), Vec::with_capacity(n));
+    for i in 1..=n {
+        let (t, w) = if second_kind {
+            let t = Float::with_val(wp, &pi * i as u32) / (n + 1) as u32;
+            let s2 = Float::with_val(wp, t.sin_ref()).square();
+            (t, Float::with_val(wp, &pi * s2) / (n + 1) as u32)
+        } else {
+            let t = Float::with_val(wp, &pi * (2 * i - 1) as u32) / (2 * n) as u32;
+            (t, Float::with_val(wp, &pi / n as u32))
+        };
+        nodes.push(Float::with_val(prec, -t.cos()));
+        weights.push(Float::with_val(prec, &w));
+    }
+    GaussJacobiRule { alpha: alpha.clone(), beta: alpha.clone(), nodes, weights, prec }
+}
+
+/// The rule by Newton's method from the f64 eigenvalues (module doc), for any exponents.
+fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<GaussJacobiRule, QuadratureError> {
     let wp = prec + GUARD_BITS + (usize::BITS - n.leading_zeros());
     let (a, b) = recurrence(alpha, beta, n, wp);
     let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
@@ -389,6 +422,22 @@ mod tests {
                         let scale = Float::with_val(prec, jm[0].abs_ref());
                         assert!(err <= tol(prec) * scale, "prec {prec} theta {num}/{den} n {n} k {k}: err {err}");
                     }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn chebyshev_closed_forms_equal_newton() {
+        for prec in [64u32, 200] {
+            for (a, n) in [(-0.5f64, 1usize), (-0.5, 33), (0.5, 33), (0.5, 128)] {
+                let h = Float::with_val(prec, a);
+                let fast = gauss_jacobi_uncached(&h, &h, n, prec).unwrap();
+                let newton = newton_rule(&h, &h, n, prec).unwrap();
+                for i in 0..n {
+                    assert!(Float::with_val(prec, &fast.nodes[i] - &newton.nodes[i]).abs() <= tol(prec), "{a} {n} {i}");
+                    let dw = Float::with_val(prec, &fast.weights[i] - &newton.weights[i]).abs();
+                    assert!(dw <= Float::with_val(prec, tol(prec) * &newton.weights[i]), "{a} {n} weight {i}");
                 }
             }
         }
