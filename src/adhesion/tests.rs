@@ -461,3 +461,16 @@ fn f64_estimate_never_overclaims() {
         assert!(e.headline >= 8.0, "nu {nu} a/L {a}: {e:?}");
     }
 }
+
+/// See: issue 13 ("a warning blaming near full contact; the cause is the small-nu conditioning").
+/// nu = 0, lambda = 1 (L = 1, a = 1/pi to 12 digits): fewer digits verified than asked, and the
+/// warning names the conditioning of the incremental equation, not full contact.
+#[test]
+fn small_nu_shortfall_names_the_conditioning() {
+    let a = Exact::new(318309886184i64.into(), 1000000000000i64.into());
+    let pr = problem(q(0, 1), Some(q(1, 1)), AdhesionSize::HalfWidth(a));
+    let v = solve_verified(&pr, &[], 20).unwrap();
+    assert!(v.digits_verified.headline < 20.0, "{}", v.digits_verified.headline);
+    let w = v.warnings.iter().find(|w| w.contains("requested digits verified")).expect("a shortfall warning");
+    assert!(w.contains("ill-conditioned") && !w.contains("full contact"), "{w}");
+}
