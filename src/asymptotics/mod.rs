@@ -4,6 +4,7 @@
 
 pub mod adhesion;
 pub mod adhesion_numeric;
+pub mod adhesion_singularity;
 pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;
