@@ -53,8 +53,9 @@
 //! # The pole of the exact coefficients (Re M_(2N+1) = 0)
 //! M_m ~ 2^(-1/2+i eps) Gamma(1/2 - i eps) m^(-1/2+i eps) for large m: its phase grows like
 //! eps ln m and D_N = Re M_(2N+1) > 0 for small N changes sign once, where the phase passes pi/2
-//! (m ~ exp(pi/(2 eps) - eps ln 2 - arg Gamma(1/2 - i eps)) ~ 600 at nu = 0, beyond 2 10^3 for
-//! nu >= 0.1, measured exactly by [`AdhesionRun::sign_change`]). For N at and beyond the first
+//! (by this asymptotic form at m ~ exp(pi/(2 eps) - ln 2 - arg Gamma(1/2 - i eps)/eps), about 560 at
+//! nu = 0 and 2 10^3 at nu = 0.1; measured exactly by [`AdhesionRun::sign_change`]: 2N+1 = 607 at
+//! nu = 0, none through 2N+1 = 1001 at nu = 1/10, tested). For N at and beyond the first
 //! N* with D_N(nu) <= 0, D_N has a zero at some nu' between nu and 1/2 (D_N > 0 at nu = 1/2, where
 //! the moments are real), so the exact p_N, c_(2N), A_(2N+1) have a pole in nu there, and at the given
 //! nu p_(N*) is divided by a small D_(N*) and every later coefficient carries it. The numerical

@@ -38,7 +38,7 @@
 //!   4.27, near (pi/2)^2 = 2.47, the value at nu = 1/2. Roughly p_j/p_(j-1) ~ 1/((pi/2)^2 cos phi_j):
 //!   the coefficients grow like the product of 1/cos phi_j, and the phase of M_m ~ m^(-1/2+i eps)
 //!   turns like eps ln m, reaching pi/2 at the resonance (nu = 0: j = 303, where D_j changes sign,
-//!   module doc of [`super::adhesion_numeric`]; nu = 3/10: m ~ 10^6).
+//!   module doc of [`super::adhesion_numeric`]; nu = 3/10: m ~ 10^6, estimated from the asymptotic phase, not computed).
 //!
 //! # What it implies
 //! - eta_s(nu) as a fixed real singularity of P'(eta)/eta is not supported by the coefficients:
@@ -49,7 +49,7 @@
 //! - p_j/p_(j-1) ~ 1/((pi/2)^2 cos phi_j) (the scaled column is 2.47-2.50 at j = 10 for every nu):
 //!   the coefficients grow like the product of 1/cos phi_j. The radius of convergence of the formal
 //!   series is then set far out, near the resonance (the smallest smoothed local estimate over one
-//!   turn of the phase: at nu = 0 near j ~ 300, below 0.1; at nu = 3/10 only near j ~ 10^6); 600
+//!   turn of the phase: at nu = 0 near j ~ 300, below 0.1; at nu = 3/10 only near j ~ 10^6 by the asymptotic phase); 600
 //!   coefficients cannot settle it, and for the sizes of interest it is irrelevant: through
 //!   lambda^600 the terms still decrease for lambda below the local estimates above.
 //! - The solvers' trouble is the same near-resonance seen at finite lambda, i.e. conditioning, not a
