@@ -61,7 +61,8 @@
 //!   nu = 3/10: 27.2 at 1.2, 3.2 at 1.4: a steady loss of about 10 digits per 0.1 of lambda at
 //!   nu = 0, no wall at a particular lambda. Option (a) of issue 13 is the consistent reading:
 //!   the solution continues (nothing in the contact mechanics changes at lambda ~ 1), and what is
-//!   needed is working precision raised as the conditioning demands, not a lambda_s.
+//!   needed is a better-conditioned solve of the incremental equation (working precision alone
+//!   may not suffice if the discretisation itself is ill-conditioned), not a lambda_s.
 
 use super::adhesion_numeric::{adhesion_numeric, AdhesionNumeric};
 use crate::error::Error;
