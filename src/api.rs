@@ -29,6 +29,7 @@ use serde_json::Value;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+pub use crate::asymptotics::adhesion_numeric::AdhesionNumeric;
 pub use crate::asymptotics::catalog::Derived;
 pub use crate::asymptotics::loading_law::LawSeries;
 pub use crate::error::{Error, ErrorKind};
@@ -87,6 +88,9 @@ pub enum Derivation {
     },
     /// `loading-law`: numerical coefficients at given nu and n (MPFR, verified by a second run).
     LoadingLaw(Box<LawSeries>),
+    /// `adhesion` with `nu` beyond the exact route's order or with `digits`: numerical
+    /// coefficients at nu (MPFR, verified by a second run).
+    AdhesionNumeric(Box<AdhesionNumeric>),
 }
 
 impl Derivation {
@@ -102,6 +106,7 @@ impl Derivation {
                 }),
             },
             Derivation::LoadingLaw(s) => s.json(),
+            Derivation::AdhesionNumeric(s) => s.json(),
         }
     }
 
@@ -110,13 +115,14 @@ impl Derivation {
         match self {
             Derivation::Exact { parts, .. } => parts.iter().map(|d| d.text()).collect::<Vec<_>>().join("\n"),
             Derivation::LoadingLaw(s) => s.text(),
+            Derivation::AdhesionNumeric(s) => s.text(),
         }
     }
 }
 
 /// Option names of [`derive()`] (the CLI's flags without the dashes, `rbar_s` for `--rbar-s`).
-pub const SERIES_OPTIONS: [&str; 10] =
-    ["theta", "xh", "T", "nu", "ratio", "shape", "coefficients", "degree", "rbar_s", "convention"];
+pub const SERIES_OPTIONS: [&str; 11] =
+    ["theta", "xh", "T", "nu", "digits", "ratio", "shape", "coefficients", "degree", "rbar_s", "convention"];
 
 /// The clap error's message without its `error: ` prefix and usage lines.
 fn clap_message(e: &clap::Error) -> String {
@@ -163,6 +169,9 @@ pub fn derive(object: &str, order: usize, options: &[(&str, &str)]) -> Result<De
                 &nu, &ratio, order, digits,
             )?)))
         }
+        RunConfig::AdhesionNumericSeries { nu, order, digits, .. } => Ok(Derivation::AdhesionNumeric(Box::new(
+            crate::asymptotics::adhesion_numeric::adhesion_numeric(&nu, order, digits)?,
+        ))),
         _ => unreachable!("a `series` command line validates to a series configuration"),
     }
 }

@@ -23,6 +23,14 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             let text = render(object.name(), &parts, format);
             std::io::stdout().write_all(text.as_bytes())?;
         }
+        RunConfig::AdhesionNumericSeries { nu, order, digits, format } => {
+            let s = periodic_contact::asymptotics::adhesion_numeric::adhesion_numeric(&nu, order, digits)?;
+            let text = match format {
+                Format::Json => format!("{}\n", serde_json::to_string_pretty(&s.json())?),
+                _ => s.text(),
+            };
+            std::io::stdout().write_all(text.as_bytes())?;
+        }
         RunConfig::LoadingLawSeries { nu, ratio, order, format } => {
             let s = periodic_contact::asymptotics::loading_law::loading_law_series(
                 &nu,

@@ -110,8 +110,12 @@
 //! # Convergence (observed, not proven)
 //! The lambda^2-series of P2 has radius pi/2 at nu = 1/2 (ln sec); for nu < 1/2 the recurrence
 //! divides by D_N = Re M_{2N+1}, which method 2 of the adhesion solvers observed to change sign near
-//! N ~ 302 at nu = 0 (see the module doc of the adhesion series_f64 method): the exact coefficients then have a pole
-//! in nu, and the series is at best slowly convergent at small nu.
+//! N ~ 302 at nu = 0 (see the module doc of the adhesion series_f64 method; measured: the first
+//! N with D_N <= 0 is 303, `adhesion_numeric::tests::sign_change_at_nu_zero`): the exact
+//! coefficients then have a pole in nu. The numerical route ([`super::adhesion_numeric`]) gives the
+//! coefficients at a given nu to order 1000; their ratio analysis ([`super::adhesion_singularity`])
+//! finds no fixed singularity for nu < 1/2: the coefficients grow like the product of
+//! 1/cos arg M_(2j+1).
 
 use crate::model::Material;
 use crate::numerics::evaluate::{poly_mpfr, UnboundSymbol};

@@ -3,6 +3,8 @@
 //! Order convention (docs/theory.md section 5): "order N" keeps every term through lambda^N.
 
 pub mod adhesion;
+pub mod adhesion_numeric;
+pub mod adhesion_singularity;
 pub mod catalog;
 pub mod jacobi_moments;
 pub mod kernel;

@@ -138,9 +138,13 @@ pub enum RawCommand {
         #[arg(long = "T", value_name = "R", allow_hyphen_values = true)]
         t: Option<String>,
         /// Poisson's ratio in [0, 1/2] (adhesion: also print the coefficients' values to 30 digits;
-        /// loading-law: required).
+        /// beyond order 24, or with --digits, the numerical route; loading-law: required).
         #[arg(long, value_name = "R", allow_hyphen_values = true)]
         nu: Option<String>,
+        /// Digits of the numerical route of `adhesion --nu R` (default 30, at most 1000): the
+        /// coefficients at nu in MPFR, verified by a second run, any order up to 1000.
+        #[arg(long, value_name = "D", allow_hyphen_values = true)]
+        digits: Option<String>,
         /// n = P1/P2 >= 0 of the linear loading law (loading-law, required).
         #[arg(long, value_name = "R", allow_hyphen_values = true)]
         ratio: Option<String>,
@@ -294,8 +298,20 @@ Formats (--format):
                lambda -> lambda_ (and E, I, N, O, Q, beta, gamma, pi, zeta if they occur)
   mathematica  an association <|\"part\" -> series + O[v]^(N+1)|>; underscores dropped (rho_4 -> rho4)
 
+Problem 2 (adhesion) has two routes:
+  exact        symbols eps, B, S (docs/theory.md section 5), orders up to 24; with
+               --nu R also each coefficient's value at nu to 30 digits
+  numerical    with --nu R beyond order 24, or with --digits D at any order: C_P/pi, c_n and A_n at
+               nu in MPFR (text or json), orders up to 1000, each coefficient printed with the
+               digits a second run at higher precision verifies (--digits D asked, default 30).
+               Where Re M_(2N+1) changes sign (nu = 0: N = 303) the exact coefficients have a
+               pole in nu: the output says so and stops before it. The stress kernels h_N are
+               not printed by either route: polynomials of degree 2N+1 in (xi, tau) with complex
+               coefficients (the library's `adhesion_expansion` holds them exactly to order 24)
+
 Examples:
   periodic-contact series kernel --order 12
   periodic-contact series sliding --order 8 --format sympy > sliding.py
   python3 -c \"import sympy; d = sympy.sympify(open('sliding.py').read()); print(d['l_over_ls'])\"
-  periodic-contact series adhesion --order 6 --format latex";
+  periodic-contact series adhesion --order 6 --format latex
+  periodic-contact series adhesion --order 200 --nu 3/10 --format json";

@@ -30,6 +30,18 @@ pub enum RunConfig {
         /// Output format.
         format: Format,
     },
+    /// `series adhesion --nu R --order N [--digits D]` beyond the exact route's order or with
+    /// `--digits` (numerical coefficients, [`crate::asymptotics::adhesion_numeric`]).
+    AdhesionNumericSeries {
+        /// Poisson's ratio.
+        nu: Q,
+        /// Terms through lambda^order.
+        order: usize,
+        /// Digits asked.
+        digits: u32,
+        /// Output format (text or json).
+        format: Format,
+    },
     /// `series loading-law --nu R --ratio R --order N` (numerical coefficients,
     /// [`crate::asymptotics::loading_law::loading_law_series`]).
     LoadingLawSeries {
@@ -83,7 +95,8 @@ pub enum RunConfig {
 
 /// Largest order accepted per object, where the exact derivation still takes seconds (the
 /// coefficients of Y grow like order^2 terms each; `series adhesion --order 24`: 3.8 s on a shared
-/// 2-core machine, README "Speed of the exact engine").
+/// 2-core machine, README "Speed of the exact engine"). The adhesion series with `--nu` goes
+/// beyond, by its numerical route, up to [`crate::asymptotics::adhesion_numeric::MAX_ORDER`].
 pub fn max_order(object: SeriesObject) -> usize {
     match object {
         SeriesObject::Kernel | SeriesObject::Jacobi => 2000,
@@ -286,6 +299,7 @@ impl RunConfig {
                 xh,
                 t,
                 nu,
+                digits,
                 ratio,
                 shape,
                 coefficients,
@@ -296,7 +310,7 @@ impl RunConfig {
             } => {
                 if object == ObjectName::LoadingLaw {
                     let given = [("--theta", &theta), ("--xh", &xh), ("--T", &t), ("--coefficients", &coefficients)];
-                    let more = [("--degree", &degree), ("--rbar-s", &rbar_s)];
+                    let more = [("--degree", &degree), ("--rbar-s", &rbar_s), ("--digits", &digits)];
                     return loading_law_series(LawFlags {
                         order: &order,
                         nu: nu.as_deref(),
@@ -346,7 +360,39 @@ impl RunConfig {
                         "only the sliding series with --shape polynomial has rbar_s",
                     ));
                 }
-                let order = parse_order(&order, max_order(object))?;
+                // The adhesion series with --nu takes any order up to the numerical route's cap.
+                let numeric_possible = object == SeriesObject::Adhesion && nu.is_some();
+                let order = if numeric_possible {
+                    parse_order(&order, crate::asymptotics::adhesion_numeric::MAX_ORDER)?
+                } else {
+                    parse_order(&order, max_order(object)).map_err(|e| match object {
+                        SeriesObject::Adhesion => ModelError {
+                            expected: format!(
+                                "{} (the exact route; with --nu R the numerical route takes up to {})",
+                                e.expected,
+                                crate::asymptotics::adhesion_numeric::MAX_ORDER
+                            ),
+                            ..e
+                        },
+                        _ => e,
+                    })?
+                };
+                let digits =
+                    digits
+                        .map(|d| {
+                            let max = crate::asymptotics::adhesion_numeric::MAX_DIGITS;
+                            d.trim().parse::<u32>().ok().filter(|v| (1..=max).contains(v)).ok_or_else(|| {
+                                ModelError::new("--digits", &d, format!("must be an integer in [1, {max}]"))
+                            })
+                        })
+                        .transpose()?;
+                if let (Some(d), false) = (digits, numeric_possible) {
+                    return Err(ModelError::new(
+                        "--digits",
+                        d,
+                        "only the adhesion series with --nu R (its numerical route) takes digits",
+                    ));
+                }
                 let theta = theta.map(|t| parse_exact("--theta", &t)).transpose()?;
                 if let Some(t) = &theta {
                     if t.abs() >= Q::new(1.into(), 2.into()) {
@@ -386,6 +432,20 @@ impl RunConfig {
                             "only the adhesion series of the parabola takes nu (a polynomial profile keeps symbols)",
                         ));
                     }
+                }
+                if let (Some(v), true) = (&nu, order > max_order(object) || digits.is_some()) {
+                    if !matches!(format, Format::Text | Format::Json) {
+                        return Err(ModelError::new(
+                            "--format",
+                            format!("{format:?}").to_lowercase(),
+                            format!(
+                                "the numerical route of the adhesion series (order > {} or --digits) prints text or json (its coefficients are numbers)",
+                                max_order(object)
+                            ),
+                        ));
+                    }
+                    let digits = digits.unwrap_or(crate::asymptotics::catalog::VALUE_DIGITS as u32);
+                    return Ok(RunConfig::AdhesionNumericSeries { nu: v.clone(), order, digits, format });
                 }
                 let subs = Substitutions { theta, xh, t, nu, rbar_s, profile };
                 Ok(RunConfig::Series { object, order, subs, convention, format })

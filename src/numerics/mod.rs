@@ -9,5 +9,6 @@ pub mod exact;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
 pub mod precision;
+pub mod real_series;
 pub mod roots;
 pub mod tanh_sinh;
