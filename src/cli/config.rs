@@ -29,6 +29,8 @@ pub enum RunConfig {
         convention: Convention,
         /// Output format.
         format: Format,
+        /// Also print the Pade approximants (text only, [`crate::asymptotics::pade`]).
+        pade: bool,
     },
     /// `series loading-law --nu R --ratio R --order N` (numerical coefficients,
     /// [`crate::asymptotics::loading_law::loading_law_series`]).
@@ -293,7 +295,22 @@ impl RunConfig {
                 rbar_s,
                 convention,
                 format,
+                pade,
             } => {
+                if pade && format != Format::Text {
+                    return Err(ModelError::new(
+                        "--pade",
+                        format!("with --format {}", format!("{format:?}").to_lowercase()),
+                        "the Pade approximants are printed as text only: drop --format or --pade",
+                    ));
+                }
+                if pade && object == ObjectName::LoadingLaw {
+                    return Err(ModelError::new(
+                        "--pade",
+                        "with loading-law",
+                        "the Pade approximants are built for kernel, weight, sliding and adhesion",
+                    ));
+                }
                 if object == ObjectName::LoadingLaw {
                     let given = [("--theta", &theta), ("--xh", &xh), ("--T", &t), ("--coefficients", &coefficients)];
                     let more = [("--degree", &degree), ("--rbar-s", &rbar_s)];
@@ -388,7 +405,7 @@ impl RunConfig {
                     }
                 }
                 let subs = Substitutions { theta, xh, t, nu, rbar_s, profile };
-                Ok(RunConfig::Series { object, order, subs, convention, format })
+                Ok(RunConfig::Series { object, order, subs, convention, format, pade })
             }
             RawCommand::Solve { scene, digits, method, order, convention, format, json } => {
                 let text = std::fs::read_to_string(&scene)
@@ -417,6 +434,7 @@ impl RunConfig {
                     MethodName::Mpfr => Method::Mpfr,
                     MethodName::F64 => Method::F64,
                     MethodName::Series => Method::Series,
+                    MethodName::Pade => Method::Pade,
                 });
                 let series_order = order.map(|o| parse_order(&o, 24)).transpose()?;
                 let forced = Forced { method, digits, series_order };

@@ -1,0 +1,116 @@
+//! Report section "Pade resummation" (docs/theory.md section 11): per object (Kuznetsov's l, the
+//! sinusoid's a, Problem 1 with friction l and c, Problem 2's P2 at nu = 0 and 3/10) and contact
+//! size lambda, the digits of the plain partial sum and of the best Padé approximant from the same
+//! coefficients against the full solution, the Padé method's estimate, and every refusal with its
+//! reason ([`crate::verification::pade`]). One chart (digits against lambda, plain dashed, Padé
+//! solid) and one table. The default report takes the series through Lambda^24 (Problem 1) and
+//! lambda^16 (Problem 2) with references at 30 digits; `--fast` through Lambda^12 and lambda^8,
+//! references at 16 digits, at three sizes.
+
+use super::chart::{Chart, Curve, Draw, Legend};
+use super::section::{Ctx, Profile, Section};
+use crate::verification::pade::{pade_rows, PadeRow, LAMBDAS};
+use std::fmt::Write as _;
+
+/// (Problem 1 order, Problem 2 order, lambdas, reference digits) of a profile.
+fn plan(profile: Profile) -> (usize, usize, &'static [f64], u32) {
+    match profile {
+        Profile::Full => (24, 16, &LAMBDAS, 30),
+        Profile::Fast => (12, 8, &[0.4, 1.0, 1.4], 16),
+    }
+}
+
+fn cell(d: Option<f64>) -> String {
+    d.map_or("-".into(), |x| format!("{x:.1}"))
+}
+
+/// Builds the section.
+pub fn section(ctx: &mut Ctx) -> Section {
+    ctx.step("Pade resummation");
+    let (p1, p2, lambdas, digits) = plan(ctx.profile);
+    let rows = pade_rows(p1, p2, lambdas, digits);
+    let mut s = Section::default();
+    let md = &mut s.markdown;
+    let _ = writeln!(
+        md,
+        "## Pade resummation\n\n\
+         docs/theory.md section 11. The same exact coefficients summed plainly and by near-diagonal Pade \
+         approximants [L/M] (L + M = all coefficients, |L - M| <= 2) in w = Lambda^2 (Problem 1, series \
+         through Lambda^{p1}) or w = lambda^2 (Problem 2's load, through lambda^{p2}); both against a \
+         reference without the series (closed form, or the verified MPFR solver at {digits} digits; capped at \
+         its digits). Coefficients: exact rationals for the frictionless punches, MPFR values (exact binary \
+         rationals) at transcendental parameters. The best approximant is the one whose neighbours [L-1/M], \
+         [L/M-1] agree with it best (estimated digits); an approximant with a pole within 5% of |w| of the \
+         segment [0, w] not matched by a zero is refused. lambda = pi l/L (pi a/L); digits on the scale l (Problem 1) or P2.\n"
+    );
+    let _ = writeln!(
+        md,
+        "| object | lambda | w | coefficients | plain digits | Pade [L/M] | Pade digits | estimated | reference |\n\
+         |---|---:|---:|---|---:|---|---:|---:|---|"
+    );
+    let mut refusals = vec![];
+    for r in &rows {
+        let (lm, true_d, est) = match r.pade {
+            Some((l, m, e, t)) => (format!("[{l}/{m}]"), Some(t), Some(e)),
+            None => ("refused".into(), None, None),
+        };
+        let w = if r.w.is_finite() { format!("{:.4}", r.w) } else { "-".into() };
+        let _ = writeln!(
+            md,
+            "| {} | {} | {w} | {} | {} | {lm} | {} | {} | {} |",
+            r.object,
+            r.lambda,
+            r.coefficients,
+            cell(r.plain),
+            cell(true_d),
+            cell(est),
+            r.reference
+        );
+        if let Some(why) = &r.refusal {
+            refusals.push(format!("- {} at lambda = {}: {why}", r.object, r.lambda));
+        }
+    }
+    if !refusals.is_empty() {
+        let _ = writeln!(md, "\nRefusals (no Pade value, or no reference):\n\n{}", refusals.join("\n"));
+    }
+    md.push('\n');
+    s.charts.push(chart(&rows));
+    s
+}
+
+fn chart(rows: &[PadeRow]) -> Chart {
+    let mut objects: Vec<&str> = vec![];
+    for r in rows {
+        if !objects.contains(&r.object.as_str()) {
+            objects.push(&r.object);
+        }
+    }
+    let mut curves = vec![];
+    for (i, o) in objects.iter().enumerate() {
+        let of = |f: &dyn Fn(&PadeRow) -> Option<f64>| -> Vec<(f64, f64)> {
+            rows.iter().filter(|r| r.object == *o).map(|r| (r.lambda, f(r).unwrap_or(f64::NAN))).collect()
+        };
+        curves.push(Curve {
+            name: format!("{o}, Pade"),
+            points: of(&|r| r.pade.map(|p| p.3)),
+            draw: Draw::LineMarkers,
+            colour: Some(i),
+        });
+        curves.push(Curve {
+            name: format!("{o}, plain"),
+            points: of(&|r| r.plain),
+            draw: Draw::Dashed,
+            colour: Some(i),
+        });
+    }
+    Chart {
+        stem: "pade".into(),
+        title: "Pade resummation: digits against the full solution".into(),
+        x_label: "contact size lambda = pi l/L [-]".into(),
+        y_label: "correct digits [-]".into(),
+        x_log: false,
+        y_log: false,
+        curves,
+        legend: Legend::Above,
+    }
+}
