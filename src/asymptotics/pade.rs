@@ -39,17 +39,28 @@ pub fn near_diagonal(n: usize) -> Vec<(usize, usize)> {
     pairs
 }
 
-fn poly_text(c: &[Q], var: &str) -> String {
+/// Significant digits of the printed coefficients of an approximant built from numerical values
+/// (the values carry 30; the approximant's own conditioning may leave fewer).
+const NUMERIC_DIGITS: usize = 20;
+
+fn poly_text(c: &[Q], var: &str, exact: bool) -> String {
     if c.is_empty() {
         return "0".into();
     }
+    let text = |a: &Q| {
+        if exact {
+            q_text(a)
+        } else {
+            crate::numerics::accuracy::fmt_mpfr(&crate::numerics::exact::to_float(a, 128), NUMERIC_DIGITS)
+        }
+    };
     c.iter()
         .enumerate()
         .filter(|(_, a)| !a.is_zero())
         .map(|(k, a)| match k {
-            0 => q_text(a),
-            1 => format!("({}) {var}", q_text(a)),
-            _ => format!("({}) {var}^{k}", q_text(a)),
+            0 => text(a),
+            1 => format!("({}) {var}", text(a)),
+            _ => format!("({}) {var}^{k}", text(a)),
         })
         .collect::<Vec<_>>()
         .join(" + ")
@@ -80,7 +91,13 @@ pub fn pade_text(parts: &[Derived]) -> String {
         } else {
             (c.clone(), format!("w = {}", d.variable))
         };
+        let exact = source == "exact";
         s.push_str(&format!("  variable {var}; coefficients {source}; w^0 .. w^{}\n", cw.len() - 1));
+        if !exact {
+            s.push_str(&format!(
+                "  (P and Q printed to {NUMERIC_DIGITS} significant digits; exact for the rounded values)\n"
+            ));
+        }
         let f = Series::from_coeffs(cw.clone());
         let pairs = near_diagonal(cw.len() - 1);
         if pairs.is_empty() {
@@ -89,8 +106,8 @@ pub fn pade_text(parts: &[Derived]) -> String {
         for (l, m) in pairs {
             match Pade::new(&f, l, m) {
                 Ok(p) => {
-                    s.push_str(&format!("  [{l}/{m}] P = {}\n", poly_text(&p.numer, "w")));
-                    s.push_str(&format!("  [{l}/{m}] Q = {}\n", poly_text(&p.denom, "w")));
+                    s.push_str(&format!("  [{l}/{m}] P = {}\n", poly_text(&p.numer, "w", exact)));
+                    s.push_str(&format!("  [{l}/{m}] Q = {}\n", poly_text(&p.denom, "w", exact)));
                     let poles: Vec<String> = polynomial_roots(&p.denom).iter().map(complex_text).collect();
                     s.push_str(&format!(
                         "  [{l}/{m}] poles: {}\n",

@@ -2,8 +2,9 @@
 //! sinusoid's a, Problem 1 with friction l and c, Problem 2's P2 at nu = 0 and 3/10) and contact
 //! size lambda, the digits of the plain partial sum and of the best Padé approximant from the same
 //! coefficients against the full solution, the Padé method's estimate, and every refusal with its
-//! reason ([`crate::verification::pade`]). One chart (digits against lambda, plain dashed, Padé
-//! solid) and one table. The default report takes the series through Lambda^24 (Problem 1) and
+//! reason ([`crate::verification::pade`]); for the two closed-form objects also after the
+//! conformal map of their known singularity. One chart (digits against lambda: plain dashed, Padé
+//! solid, conformal + Padé markers) and one table. The default report takes the series through Lambda^24 (Problem 1) and
 //! lambda^16 (Problem 2) with references at 30 digits; `--fast` through Lambda^12 and lambda^8,
 //! references at 16 digits, at three sizes.
 
@@ -45,8 +46,15 @@ pub fn section(ctx: &mut Ctx) -> Section {
     );
     let _ = writeln!(
         md,
-        "| object | lambda | w | coefficients | plain digits | Pade [L/M] | Pade digits | estimated | reference |\n\
-         |---|---:|---:|---|---:|---|---:|---:|---|"
+        "The closed-form objects have known singularities (Kuznetsov: w = +-2 pi i, where exp(-w/2) = -1; the \
+         sinusoid: w = 1, where sin lambda = 1): their rows are also resummed after the conformal map of the cut \
+         plane onto the unit disc (`conformal`: the series of f(w(z)) in z, Pade approximants in z at z(w); \
+         docs/theory.md section 11).\n"
+    );
+    let _ = writeln!(
+        md,
+        "| object | lambda | w | coefficients | plain digits | Pade [L/M] | Pade digits | estimated | conformal [L/M] | conformal digits | estimated | reference |\n\
+         |---|---:|---:|---|---:|---|---:|---:|---|---:|---:|---|"
     );
     let mut refusals = vec![];
     for r in &rows {
@@ -54,16 +62,23 @@ pub fn section(ctx: &mut Ctx) -> Section {
             Some((l, m, e, t)) => (format!("[{l}/{m}]"), Some(t), Some(e)),
             None => ("refused".into(), None, None),
         };
+        let (clm, ctrue, cest) = match (r.conformal, &r.map) {
+            (Some((l, m, e, t)), _) => (format!("[{l}/{m}]"), Some(t), Some(e)),
+            (None, Some(_)) => ("refused".into(), None, None),
+            (None, None) => ("-".into(), None, None),
+        };
         let w = if r.w.is_finite() { format!("{:.4}", r.w) } else { "-".into() };
         let _ = writeln!(
             md,
-            "| {} | {} | {w} | {} | {} | {lm} | {} | {} | {} |",
+            "| {} | {} | {w} | {} | {} | {lm} | {} | {} | {clm} | {} | {} | {} |",
             r.object,
             r.lambda,
             r.coefficients,
             cell(r.plain),
             cell(true_d),
             cell(est),
+            cell(ctrue),
+            cell(cest),
             r.reference
         );
         if let Some(why) = &r.refusal {

@@ -17,6 +17,11 @@
 //!   MPFR coefficients at nu, w = lambda^2, against the verified MPFR Volterra solver at a =
 //!   lambda L/pi.
 //!
+//! The two closed-form objects have known singularities, and their rows also resum after the
+//! conformal map of the cut plane onto the unit disc ([`crate::numerics::pade::Conformal`]):
+//! Kuznetsov's at w = +-2 pi i (exp(-w/2) = -1), cuts along the imaginary axis; the sinusoid's
+//! at w = 1 (sin lambda = 1), cut [1, infinity).
+//!
 //! Scales: l for l, c (Problem 1), P2 for the load; the digits of a comparison are capped by the
 //! reference's own digits.
 
@@ -26,7 +31,8 @@ use crate::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, Slid
 use crate::model::{AdhesionProblem, AdhesionSize, Convention, Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::numerics::accuracy::verified_digits_mpfr;
 use crate::numerics::evaluate::series_q_mpfr;
-use crate::numerics::pade::{float_to_q, resum, resum_mpfr};
+use crate::numerics::exact::to_float;
+use crate::numerics::pade::{float_to_q, resum, resum_conformal, resum_mpfr, Conformal, Cut};
 use crate::sliding::series::pade::solve_pade_with;
 use crate::sliding::series::partial::partial;
 use crate::sliding::series::point::series_point;
@@ -50,6 +56,10 @@ pub struct PadeRow {
     pub plain: Option<f64>,
     /// The best Padé approximant: (L, M, estimated digits, digits against the reference).
     pub pade: Option<(usize, usize, f64, f64)>,
+    /// The conformal map of the known singularity (closed-form objects only), as text.
+    pub map: Option<String>,
+    /// The best Padé approximant in z after that map: (L, M, estimated, against the reference).
+    pub conformal: Option<(usize, usize, f64, f64)>,
     /// Why there is no Padé value (every candidate refused) or no reference.
     pub refusal: Option<String>,
 }
@@ -82,6 +92,16 @@ pub fn frictionless_l_over_ls(e: &SlidingExpansion) -> Series<Q> {
     Series::from_coeffs(c)
 }
 
+/// The conformal map of the known singularity of the frictionless l/l_s (module doc).
+pub fn singularity_map(shape: SlidingShape, prec: u32) -> Conformal {
+    match shape {
+        SlidingShape::Parabolic => {
+            Conformal { cut: Cut::Imaginary, radius: Float::with_val(prec, rug::float::Constant::Pi) * 2u32 }
+        }
+        SlidingShape::Sinusoidal => Conformal { cut: Cut::Real, radius: Float::with_val(prec, 1) },
+    }
+}
+
 /// The closed-form rows (`Kuznetsov l`, `sinusoid a`) at `digits` digits.
 fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
     let prec = crate::numerics::precision::precision_for(digits);
@@ -91,6 +111,11 @@ fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: 
     let (name, reference) = match shape {
         SlidingShape::Parabolic => ("Kuznetsov l", "closed form cos(lambda) = exp(-Lambda^2/2) [2.15]"),
         SlidingShape::Sinusoidal => ("sinusoid a", "closed form sin(lambda) = Lambda [2.17]"),
+    };
+    let map = singularity_map(shape, prec);
+    let map_text = match shape {
+        SlidingShape::Parabolic => "cuts from w = +-2 pi i along the imaginary axis",
+        SlidingShape::Sinusoidal => "cut [1, inf) from w = 1",
     };
     lambdas
         .iter()
@@ -105,6 +130,9 @@ fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: 
             let d = |x: &Float| verified_digits_mpfr(&Float::with_val(prec, x - &truth), &truth, cap);
             let r = resum(&f, &w, &truth, cap, prec);
             let pade = r.best().map(|b| (b.l, b.m, b.digits, d(&b.value)));
+            let cw: Vec<Float> = f.coeffs().iter().map(|c| to_float(c, prec)).collect();
+            let conformal = resum_conformal(&cw, &map, &w, &truth, cap, prec)
+                .and_then(|r| r.best().map(|b| (b.l, b.m, b.digits, d(&b.value))));
             PadeRow {
                 object: name.into(),
                 lambda: lam,
@@ -113,6 +141,8 @@ fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: 
                 reference: reference.into(),
                 plain: Some(d(&plain)),
                 pade,
+                map: Some(map_text.into()),
+                conformal,
                 refusal: pade.is_none().then(|| r.refusals().join("; ")),
             }
         })
@@ -141,6 +171,8 @@ fn friction_rows(order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
             reference: "MPFR reduction (verified)".into(),
             plain: None,
             pade: None,
+            map: None,
+            conformal: None,
             refusal: None,
         };
         let (mut rl, mut rc) = (row("friction l"), row("friction c"));
@@ -208,7 +240,7 @@ fn adhesion_rows(nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<Pade
         .iter()
         .map(|&lam| {
             let a = near(lam / std::f64::consts::PI);
-            let a_f = crate::numerics::exact::to_float(&a, prec);
+            let a_f = to_float(&a, prec);
             let lambda = Float::with_val(prec, &pi * &a_f);
             let w = Float::with_val(prec, lambda.clone().square());
             let mut row = PadeRow {
@@ -219,6 +251,8 @@ fn adhesion_rows(nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<Pade
                 reference: "MPFR Volterra (verified)".into(),
                 plain: None,
                 pade: None,
+                map: None,
+                conformal: None,
                 refusal: None,
             };
             let problem = AdhesionProblem::new(
