@@ -48,6 +48,8 @@ pub struct PadeRow {
     pub lambda: f64,
     /// The series variable w at that size (Lambda^2 or lambda^2).
     pub w: f64,
+    /// The order N of the series (every term through Lambda^N or lambda^N).
+    pub order: usize,
     /// `exact` (rationals) or `MPFR` (coefficients at transcendental parameters).
     pub coefficients: &'static str,
     /// The reference: `closed form [2.15]` etc., or the MPFR solver.
@@ -103,11 +105,11 @@ pub fn singularity_map(shape: SlidingShape, prec: u32) -> Conformal {
 }
 
 /// The closed-form rows (`Kuznetsov l`, `sinusoid a`) at `digits` digits.
-fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
+fn closed_form_rows(e: &SlidingExpansion, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
     let prec = crate::numerics::precision::precision_for(digits);
     let cap = digits as f64;
-    let e = sliding_expansion_with(shape, order, Convention::Paper).expect("the paper expansion derives");
-    let f = frictionless_l_over_ls(&e);
+    let shape = e.shape;
+    let f = frictionless_l_over_ls(e).truncate(order / 2 + 1);
     let (name, reference) = match shape {
         SlidingShape::Parabolic => ("Kuznetsov l", "closed form cos(lambda) = exp(-Lambda^2/2) [2.15]"),
         SlidingShape::Sinusoidal => ("sinusoid a", "closed form sin(lambda) = Lambda [2.17]"),
@@ -137,6 +139,7 @@ fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: 
                 object: name.into(),
                 lambda: lam,
                 w: w.to_f64(),
+                order,
                 coefficients: "exact",
                 reference: reference.into(),
                 plain: Some(d(&plain)),
@@ -150,11 +153,9 @@ fn closed_form_rows(shape: SlidingShape, order: usize, lambdas: &[f64], digits: 
 }
 
 /// The friction rows (`friction l`, `friction c`).
-fn friction_rows(order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
+fn friction_rows(e: &SlidingExpansion, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
     let prec = crate::numerics::precision::precision_for(digits);
     let cap = digits as f64;
-    let e =
-        sliding_expansion_with(SlidingShape::Parabolic, order, Convention::Paper).expect("the paper expansion derives");
     let base = |b: crate::model::SlidingProblemBuilder| {
         b.material(Material::from_contact_modulus(q(3, 10), q(1, 1)).expect("valid material"))
             .period(Period::Finite(q(1, 1)))
@@ -167,6 +168,7 @@ fn friction_rows(order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
             object: object.into(),
             lambda: lam,
             w: f64::NAN,
+            order,
             coefficients: "MPFR",
             reference: "MPFR reduction (verified)".into(),
             plain: None,
@@ -205,11 +207,11 @@ fn friction_rows(order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
         let w = Float::with_val(prec, sp.big_lambda.clone().square()).to_f64();
         rl.w = w;
         rc.w = w;
-        let plain = partial(&e, order, &sp, &[]);
+        let plain = partial(e, order, &sp, &[]);
         let d = |x: &Float, y: &Float| verified_digits_mpfr(&Float::with_val(prec, x - y), &m.l, ref_digits);
         rl.plain = Some(d(&plain.l, &m.l));
         rc.plain = Some(d(&plain.c, &m.c));
-        match solve_pade_with(&e, &problem, &[], order, digits) {
+        match solve_pade_with(e, &problem, &[], order, digits) {
             Ok(s) => {
                 let of = |name: &str| s.chosen.iter().find(|c| c.quantity == name).expect("chosen per quantity");
                 let (cl, cr) = (of("l/l_s"), of("rbar - rbar_s"));
@@ -247,6 +249,7 @@ fn adhesion_rows(nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<Pade
                 object: name.clone(),
                 lambda: lam,
                 w: w.to_f64(),
+                order,
                 coefficients: "MPFR",
                 reference: "MPFR Volterra (verified)".into(),
                 plain: None,
@@ -289,14 +292,37 @@ fn adhesion_rows(nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<Pade
         .collect()
 }
 
-/// Every row of the chart: the sliding objects from their series through Lambda^`sliding_order`,
-/// Problem 2 through lambda^`adhesion_order`, references at `digits` digits.
-pub fn pade_rows(sliding_order: usize, adhesion_order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
-    let mut rows = closed_form_rows(SlidingShape::Parabolic, sliding_order, lambdas, digits);
-    rows.extend(closed_form_rows(SlidingShape::Sinusoidal, sliding_order, lambdas, digits));
-    rows.extend(friction_rows(sliding_order, lambdas, digits));
+/// The orders, sizes and reference digits of a chart.
+#[derive(Debug, Clone)]
+pub struct PadePlan {
+    /// Order of the parabola's series (Kuznetsov, friction).
+    pub parabola: usize,
+    /// Order of the sinusoid's series (its symbolic derivation is the dearest: 0.34 s at 12,
+    /// 2.3 s at 16 in release, `time periodic-contact series sliding --shape sinusoidal --order N`).
+    pub sinusoid: usize,
+    /// Order of Problem 2's load series.
+    pub adhesion: usize,
+    /// The sizes lambda.
+    pub lambdas: Vec<f64>,
+    /// Digits of the references (and the cap of every comparison).
+    pub digits: u32,
+}
+
+/// Every row of the chart at `plan`: Kuznetsov, sinusoid, friction l and c, P2 at nu = 0, 3/10.
+pub fn pade_rows(plan: &PadePlan) -> Vec<PadeRow> {
+    let paper =
+        |shape, order| sliding_expansion_with(shape, order, Convention::Paper).expect("the paper expansion derives");
+    let parabola = paper(SlidingShape::Parabolic, plan.parabola);
+    let mut rows = closed_form_rows(&parabola, plan.parabola, &plan.lambdas, plan.digits);
+    rows.extend(closed_form_rows(
+        &paper(SlidingShape::Sinusoidal, plan.sinusoid),
+        plan.sinusoid,
+        &plan.lambdas,
+        plan.digits,
+    ));
+    rows.extend(friction_rows(&parabola, plan.parabola, &plan.lambdas, plan.digits));
     for nu in [q(0, 1), q(3, 10)] {
-        rows.extend(adhesion_rows(&nu, adhesion_order, lambdas, digits));
+        rows.extend(adhesion_rows(&nu, plan.adhesion, &plan.lambdas, plan.digits));
     }
     rows
 }
