@@ -59,6 +59,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
          plane onto the unit disc (`conformal`: the series of f(w(z)) in z, Pade approximants in z at z(w); \
          docs/theory.md section 11).\n"
     );
+    let _ = writeln!(md, "![Pade resummation](pade.svg) (data: `pade.csv`)\n");
     let _ = writeln!(
         md,
         "| object | lambda | N | w | coefficients | plain digits | Pade [L/M] | Pade digits | estimated | conformal [L/M] | conformal digits | estimated | reference |\n\
@@ -68,6 +69,8 @@ pub fn section(ctx: &mut Ctx) -> Section {
     for r in &rows {
         let (lm, true_d, est) = match r.pade {
             Some((l, m, e, t)) => (format!("[{l}/{m}]"), Some(t), Some(e)),
+            // No reference: no comparison was made (the reason is listed below the table).
+            None if r.plain.is_none() => ("-".into(), None, None),
             None => ("refused".into(), None, None),
         };
         let (clm, ctrue, cest) = match (r.conformal, &r.map) {
