@@ -10,7 +10,7 @@ use std::process::ExitCode;
 
 fn run(config: RunConfig) -> anyhow::Result<()> {
     match config {
-        RunConfig::Series { object, order, subs, convention, format } => {
+        RunConfig::Series { object, order, subs, convention, format, pade } => {
             let parts = object.derive_in(convention, order, &subs)?;
             use periodic_contact::asymptotics::print::{render, SeriesFormat};
             let format = match format {
@@ -20,7 +20,10 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 Format::Sympy => SeriesFormat::Sympy,
                 Format::Mathematica => SeriesFormat::Mathematica,
             };
-            let text = render(object.name(), &parts, format);
+            let mut text = render(object.name(), &parts, format);
+            if pade {
+                text.push_str(&periodic_contact::asymptotics::pade::pade_text(&parts));
+            }
             std::io::stdout().write_all(text.as_bytes())?;
         }
         RunConfig::AdhesionNumericSeries { nu, order, digits, format } => {

@@ -94,6 +94,7 @@ fn routes_and_refusals() {
         (vec!["series", "kernel", "--order", "4", "--digits", "20"], "--digits"),
         (vec!["series", "adhesion", "--order", "40", "--nu", "0.3", "--format", "latex"], "text or json"),
         (vec!["series", "adhesion", "--order", "40", "--nu", "0.7"], "must lie in [0, 1/2]"),
+        (vec!["series", "adhesion", "--order", "40", "--nu", "0.3", "--pade"], "built by the exact route"),
         (vec!["series", "loading-law", "--order", "4", "--nu", "0.3", "--ratio", "0", "--digits", "9"], "--digits"),
     ] {
         let (code, out, err) = run(&args);

@@ -63,4 +63,25 @@ pub enum SeriesError {
         /// The text as given.
         text: String,
     },
+    /// A Pade approximant [L/M] needs the coefficients of x^0 .. x^(L+M).
+    #[error("Pade [{l}/{m}]: needs the coefficients through x^{} (L + M), the series knows {known}", .l + .m)]
+    PadeOrder {
+        /// Numerator degree bound L.
+        l: usize,
+        /// Denominator degree bound M.
+        m: usize,
+        /// The number of known coefficients.
+        known: usize,
+    },
+    /// The [L/M] approximant does not exist (a degenerate block of the Pade table): the rational
+    /// function of the Euclidean algorithm matches fewer than L + M + 1 coefficients.
+    #[error("Pade [{l}/{m}] does not exist: the rational function of degrees <= ({l}, {m}) closest to the series matches only its first {matched} coefficients (singular block of the Pade table)")]
+    PadeDoesNotExist {
+        /// Numerator degree bound L.
+        l: usize,
+        /// Denominator degree bound M.
+        m: usize,
+        /// The number of leading coefficients the reduced approximant reproduces.
+        matched: usize,
+    },
 }

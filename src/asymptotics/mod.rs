@@ -10,6 +10,7 @@ pub mod jacobi_moments;
 pub mod kernel;
 pub mod loading_law;
 pub mod loading_law_modes;
+pub mod pade;
 pub mod polynomial;
 pub mod print;
 pub mod sliding;

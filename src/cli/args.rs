@@ -95,6 +95,8 @@ pub enum MethodName {
     F64,
     /// Truncated exact series evaluated in MPFR (Problem 1).
     Series,
+    /// Pade approximants of that series (Problem 1; docs/theory.md section 11).
+    Pade,
 }
 
 /// Surface conventions of Problem 1 (docs/theory.md section 8).
@@ -169,6 +171,11 @@ pub enum RawCommand {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
+        /// Also print the near-diagonal Pade approximants [L/M] of each part in w = var^2 (even
+        /// series) or var, and their poles (text format; needs numerical coefficients: substitute
+        /// every symbol, or give --nu for adhesion). docs/theory.md section 11.
+        #[arg(long)]
+        pade: bool,
     },
     /// Solve the problem a scene file describes and print the result with its verified accuracy.
     #[command(long_about = SOLVE_HELP)]
@@ -182,7 +189,7 @@ pub enum RawCommand {
         /// Method, forced (overrides [output] method and the choice by target_digits).
         #[arg(long, value_enum)]
         method: Option<MethodName>,
-        /// Series order for --method series (default 12).
+        /// Series order for --method series or pade (default 12).
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: Option<String>,
         /// Surface convention of Problem 1 (overrides [problem] convention; default paper).

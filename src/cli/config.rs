@@ -29,6 +29,8 @@ pub enum RunConfig {
         convention: Convention,
         /// Output format.
         format: Format,
+        /// Also print the Pade approximants (text only, [`crate::asymptotics::pade`]).
+        pade: bool,
     },
     /// `series adhesion --nu R --order N [--digits D]` beyond the exact route's order or with
     /// `--digits` (numerical coefficients, [`crate::asymptotics::adhesion_numeric`]).
@@ -307,7 +309,22 @@ impl RunConfig {
                 rbar_s,
                 convention,
                 format,
+                pade,
             } => {
+                if pade && format != Format::Text {
+                    return Err(ModelError::new(
+                        "--pade",
+                        format!("with --format {}", format!("{format:?}").to_lowercase()),
+                        "the Pade approximants are printed as text only: drop --format or --pade",
+                    ));
+                }
+                if pade && object == ObjectName::LoadingLaw {
+                    return Err(ModelError::new(
+                        "--pade",
+                        "with loading-law",
+                        "the Pade approximants are built for kernel, weight, sliding and adhesion",
+                    ));
+                }
                 if object == ObjectName::LoadingLaw {
                     let given = [("--theta", &theta), ("--xh", &xh), ("--T", &t), ("--coefficients", &coefficients)];
                     let more = [("--degree", &degree), ("--rbar-s", &rbar_s), ("--digits", &digits)];
@@ -444,11 +461,22 @@ impl RunConfig {
                             ),
                         ));
                     }
+                    if pade {
+                        return Err(ModelError::new(
+                            "--pade",
+                            "given",
+                            format!(
+                                "the Pade approximants are built by the exact route (order <= {}, no --digits); drop --pade or \
+                                 lower --order",
+                                max_order(object)
+                            ),
+                        ));
+                    }
                     let digits = digits.unwrap_or(crate::asymptotics::catalog::VALUE_DIGITS as u32);
                     return Ok(RunConfig::AdhesionNumericSeries { nu: v.clone(), order, digits, format });
                 }
                 let subs = Substitutions { theta, xh, t, nu, rbar_s, profile };
-                Ok(RunConfig::Series { object, order, subs, convention, format })
+                Ok(RunConfig::Series { object, order, subs, convention, format, pade })
             }
             RawCommand::Solve { scene, digits, method, order, convention, format, json } => {
                 let text = std::fs::read_to_string(&scene)
@@ -477,6 +505,7 @@ impl RunConfig {
                     MethodName::Mpfr => Method::Mpfr,
                     MethodName::F64 => Method::F64,
                     MethodName::Series => Method::Series,
+                    MethodName::Pade => Method::Pade,
                 });
                 let series_order = order.map(|o| parse_order(&o, 24)).transpose()?;
                 let forced = Forced { method, digits, series_order };

@@ -8,6 +8,7 @@ pub mod evaluate;
 pub mod exact;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
+pub mod pade;
 pub mod precision;
 pub mod real_series;
 pub mod roots;

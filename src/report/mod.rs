@@ -26,6 +26,7 @@ pub mod conventions;
 pub mod html;
 pub mod loading_law;
 pub mod orders;
+pub mod pade;
 pub mod runner;
 pub mod section;
 pub mod shapes;
@@ -185,6 +186,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     sections.push(timed("6. paper vs periodic", &mut ctx, &mut |c| Ok(conventions::section(c, &scenes)))?);
     sections.push(timed("punch shapes", &mut ctx, &mut |c| Ok(shapes::section(c, &scenes)))?);
     sections.push(timed("loading law", &mut ctx, &mut |c| Ok(loading_law::section(c, &scenes)))?);
+    sections.push(timed("Pade resummation", &mut ctx, &mut |c| Ok(pade::section(c)))?);
     ctx.progress.finish_and_clear();
 
     let mut md = String::new();

@@ -88,6 +88,8 @@ pub enum Method {
     F64,
     /// The truncated exact series evaluated in MPFR.
     Series,
+    /// The Pade approximants of the same series (docs/theory.md section 11).
+    Pade,
 }
 
 impl Method {
@@ -97,6 +99,7 @@ impl Method {
             "mpfr" => Some(Method::Mpfr),
             "f64" => Some(Method::F64),
             "series" => Some(Method::Series),
+            "pade" => Some(Method::Pade),
             _ => None,
         }
     }
@@ -106,6 +109,7 @@ impl Method {
             Method::Mpfr => "mpfr",
             Method::F64 => "f64",
             Method::Series => "series",
+            Method::Pade => "pade",
         }
     }
 }

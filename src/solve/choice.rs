@@ -575,6 +575,7 @@ pub fn solve_chosen(
         let Some(d) = claimed_digits(&v).filter(|d| *d < target as f64) else { break };
         let label = |r: &super::SolveRequest| match r.method {
             crate::scene::Method::Series => format!("series order {}", r.series_order),
+            crate::scene::Method::Pade => format!("Pade of the series order {}", r.series_order),
             crate::scene::Method::F64 => "f64".to_string(),
             crate::scene::Method::Mpfr => format!("MPFR verified at {} digits", r.digits),
         };

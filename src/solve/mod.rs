@@ -9,6 +9,7 @@ pub mod answer_adhesion;
 pub mod answer_f64;
 pub mod answer_law;
 pub mod answer_mpfr;
+pub mod answer_pade;
 pub mod answer_series;
 pub mod choice;
 pub mod format;
@@ -43,23 +44,25 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
             Method::Mpfr => sliding_mpfr(p, scene, req),
             Method::F64 => sliding_f64(p, scene, req),
             Method::Series => sliding_series(p, scene, req),
+            Method::Pade => sliding_pade(p, scene, req),
         }
         .map_err(|e| with_periodic_hint(e, p)),
         SceneProblem::Adhesion(p) => match req.method {
             Method::Mpfr => adhesion_mpfr(p, scene, req),
             Method::F64 => adhesion_f64(p, scene, req),
-            Method::Series => Err(Error::input(
+            Method::Series | Method::Pade => Err(Error::input(
                 "--method",
-                "series",
-                "the adhesion problem is solved by \"mpfr\" or \"f64\" (its series: `periodic-contact series adhesion`)",
+                req.method.name(),
+                "the adhesion problem is solved by \"mpfr\" or \"f64\" (its series and their Pade approximants: \
+                 `periodic-contact series adhesion --nu R --pade`)",
             )),
         },
         SceneProblem::LoadingLaw(p) => match req.method {
             Method::Mpfr => law_mpfr(p, scene, req),
             Method::F64 => law_f64(p, scene, req),
-            Method::Series => Err(Error::input(
+            Method::Series | Method::Pade => Err(Error::input(
                 "--method",
-                "series",
+                req.method.name(),
                 "the loading-law problem is solved by \"mpfr\" or \"f64\" (no series method yet)",
             )),
         },
@@ -179,6 +182,11 @@ fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Resul
         vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits, p.convention()), req.digits)],
         p,
     ))
+}
+
+fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+    let s = sliding::series::pade::solve_pade(p, &scene.output.points, req.series_order, req.digits)?;
+    Ok(sliding_top(vec![answer_pade::sliding_json(&s, req.digits, p.convention())], p))
 }
 
 fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {

@@ -3,3 +3,4 @@
 
 pub mod closed_form_load;
 pub mod convergence;
+pub mod pade;

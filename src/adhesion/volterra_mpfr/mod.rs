@@ -37,17 +37,16 @@
 //! bringing the sign change down to low degrees as lambda grows: the first-kind equation then has
 //! (near-)homogeneous solutions and the discrete problem loses digits without bound. The same
 //! factor 1/Re M_{2n+1} enters the lambda^2 series (see [`crate::adhesion::series_f64`]).
-//! A second chart (`cargo run --release --example adhesion_charts -- singularity`, 200-bit runs) reads the decay rate rho
-//! of the Chebyshev coefficients of F on [0, lambda^2] and the real singularity t_s it implies
-//! (z = 2 t_s/lambda^2 - 1, rho = z + sqrt(z^2 - 1)): nu = 0.3 gives a stable
-//! t_s = 2.05-2.10 for lambda = 0.4-0.8, i.e. f = P'(eta)/eta is singular at a real
-//! eta_s ~ 1.43-1.45 < pi/2 (consistent with the breakdown between lambda = 1.26 and 1.41);
-//! nu = 0 gives t_s ~ 0.75-1.07 (eta_s ~ 0.86-1.04, drifting with lambda). With the gradual loss
-//! of digits beyond it (nu = 0: 6 digits at 0.94, 2 at 1.10), this points to a weak real-axis
-//! singularity of the incremental solution at eta_s(nu) < pi/2 (eta_s -> pi/2 as nu -> 1/2), which
-//! also bounds the radius of the lambda^2 series. Its nature (a non-analytic term of high order
-//! vs a blow-up of dP2/da) is not settled here; a composite basis split at eta_s would be the
-//! remedy for the method.
+//! A second chart (`cargo run --release --example adhesion_charts -- singularity`, 200-bit runs) reads
+//! the decay rate of the Chebyshev coefficients of F on [0, lambda^2] and the real singularity it
+//! would imply (nu = 0.3: eta_s ~ 1.43-1.45; nu = 0: 0.86-1.04, drifting with lambda). That reading
+//! is not confirmed by the long series: the ratio analysis of 300 verified coefficients
+//! ([`crate::asymptotics::adhesion_singularity`], docs/theory.md section 11) finds no fixed
+//! singularity below nu = 1/2 (the local estimate drifts with the order and tracks the phase of
+//! M_(2j+1)). The loss of digits is the conditioning described above, steady in lambda (nu = 0:
+//! 17.5 verified digits at lambda = 0.8, 8.1 at 0.9, 4.7 at 1.0 with 20 asked), and more requested
+//! digits do not recover it (nu = 0, lambda = 1: 4.4, 3.5, 3.4 at 20, 30, 40: the two runs'
+//! discretisation errors, amplified); a better-conditioned formulation is the remedy.
 //! [`verify::solve_verified`] reports the loss (fewer verified digits, and a typed error below 2 digits).
 
 //!

@@ -8,6 +8,7 @@
 //! [`solve`] (the solution with its estimated digits per quantity).
 
 pub mod estimate;
+pub mod pade;
 pub mod partial;
 pub mod point;
 pub mod solve;

@@ -198,8 +198,9 @@ pub fn solve_series_with(
     Ok(s)
 }
 
-/// The solution in the units of the problem from the values through Lambda^order.
-fn solution(
+/// The solution in the units of the problem from the values through Lambda^order (or their Pade
+/// values, [`super::pade`]).
+pub(super) fn solution(
     params: &SlidingParamsMpfr,
     sp: &SeriesPoint,
     hi: &Partial,
