@@ -207,6 +207,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     })
     .map_err(ReportError::Threads)?;
     ctx.progress.finish_and_clear();
+    let threads = opts.jobs.unwrap_or_else(rayon::current_num_threads);
     let mut files = Vec::new();
     let mut sections: Vec<Section> = Vec::new();
     let mut timings = String::new();
@@ -251,7 +252,8 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     }
     write(&mut files, "report.html", &html::page("periodic-contact report", &md, &svgs, &tex)?)?;
     let mut t = format!(
-        "# Timings of this report run\n\nMachine: {}. Build: {}. Profile: {:?}. Total wall time: {:.1} s.\n\n\
+        "# Timings of this report run\n\nMachine: {}. Build: {}. Profile: {:?}. Threads: {threads} (the sections and \
+         the stability maps' cells run in parallel, so the section times below overlap). Total wall time: {:.1} s.\n\n\
          | section | seconds |\n|---|---:|\n{timings}",
         machine(),
         if cfg!(debug_assertions) { "debug" } else { "release" },
