@@ -1,5 +1,5 @@
 //! Wall time of the exact Problem 1 derivations (`sliding_expansion_with`) per shape, convention
-//! and order: the numbers quoted in `src/report/runner.rs` (ExpansionCache) and in the stability
+//! and order: the numbers quoted in `src/report/runner.rs` (RunCache) and in the stability
 //! section's choice of series orders. Orders as arguments (default 8 12):
 //! `cargo run --release --example expansion_timing -- 8 12 16`.
 

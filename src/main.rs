@@ -83,7 +83,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             use clap::CommandFactory;
             clap_mangen::Man::new(RawArgs::command()).render(&mut std::io::stdout())?;
         }
-        RunConfig::Report { out, scenes, order, fast } => {
+        RunConfig::Report { out, scenes, order, fast, jobs } => {
             use periodic_contact::report::{section::Profile, write_report, ReportError, ReportOptions};
             let opts = ReportOptions {
                 out: out.clone(),
@@ -91,6 +91,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 order,
                 profile: if fast { Profile::Fast } else { Profile::Full },
                 progress: true,
+                jobs,
             };
             let files = write_report(&opts).map_err(|e| match e {
                 ReportError::Scene { path, error } => anyhow::Error::new(ModelError::new(

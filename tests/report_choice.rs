@@ -4,7 +4,7 @@
 
 use periodic_contact::report::calibration::{choose, Table};
 use periodic_contact::report::choice::check_choice;
-use periodic_contact::report::runner::{ExpansionCache, Knob};
+use periodic_contact::report::runner::{Knob, RunCache};
 use periodic_contact::scene::parse::parse_scene;
 
 fn scene(name: &str) -> periodic_contact::scene::Scene {
@@ -15,7 +15,7 @@ fn scene(name: &str) -> periodic_contact::scene::Scene {
 #[test]
 fn chosen_method_meets_the_target_and_the_next_cheaper_does_not() {
     let table = Table::committed().unwrap();
-    let mut cache = ExpansionCache::default();
+    let cache = RunCache::default();
     // (scene, the method family expected to win)
     for (name, family) in [
         ("kuznetsov_parabola", "series"),
@@ -25,7 +25,7 @@ fn chosen_method_meets_the_target_and_the_next_cheaper_does_not() {
     ] {
         let s = scene(name);
         let target = s.output.target_digits.unwrap();
-        let c = check_choice(&table, &s.problem, target, &mut cache).unwrap();
+        let c = check_choice(&table, &s.problem, target, &cache).unwrap();
         eprintln!(
             "{name}: {} ({:?}); cheaper {:?} ({:?})",
             c.choice.knob().label(),

@@ -26,3 +26,12 @@ fn invalid_scene_in_the_folder_is_invalid_input() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("bad.toml"), "{err}");
 }
+
+#[test]
+fn jobs_out_of_range_is_invalid_input() {
+    for bad in ["0", "-1", "two", "257"] {
+        let (code, err) = run(&["report", &format!("--jobs={bad}"), "--out", "/tmp/unused-report"]);
+        assert_eq!(code, 2, "--jobs {bad}: {err}");
+        assert!(err.contains("--jobs") && err.contains(bad) && err.contains("[1, 256]"), "{err}");
+    }
+}

@@ -6,7 +6,7 @@
 //! size beyond the slope limit is refused naming the parameter; the section's text and charts.
 
 use periodic_contact::model::{Exact, PunchShape};
-use periodic_contact::report::runner::ExpansionCache;
+use periodic_contact::report::runner::RunCache;
 use periodic_contact::report::section::{Ctx, Profile};
 use periodic_contact::report::shapes::{cases, grid, row, single_punch, ShapeCase};
 use periodic_contact::report::{calibration, load_scenes};
@@ -61,7 +61,7 @@ fn cases_are_the_distinct_new_profiles_of_the_scenes() {
 #[test]
 fn even_profiles_agree_with_the_closed_form() {
     let all = cases(&shipped());
-    let mut cache = ExpansionCache::default();
+    let cache = RunCache::default();
     for (case, lambdas) in [
         (case_with(&all, Some(QUARTIC_B)), &[0.5, 1.1][..]),
         (case_with(&all, None), &[0.5][..]),
@@ -69,7 +69,7 @@ fn even_profiles_agree_with_the_closed_form() {
     ] {
         for (a, beyond) in grid(&case, lambdas) {
             assert!(!beyond, "{:?}", case.shape);
-            let r = row(&mut cache, &case, &a, false);
+            let r = row(&cache, &case, &a, false);
             let closed = r.closed.as_ref().unwrap().as_ref().unwrap();
             assert!(closed.digits(77.0) >= 60.0, "closed form: {:?}", closed.abs_err);
             let name = format!("{} a = {a}", case.shape.name());
@@ -88,16 +88,16 @@ fn even_profiles_agree_with_the_closed_form() {
 #[test]
 fn single_punch_follows_the_power_law() {
     let all = cases(&shipped());
-    let mut cache = ExpansionCache::default();
+    let cache = RunCache::default();
     for case in [case_with(&all, Some(QUARTIC_A)), case_with(&all, None)] {
-        let sp = single_punch(&mut cache, &case, &q("3/20"));
+        let sp = single_punch(&cache, &case, &q("3/20"));
         let m = sp.mpfr_agreement().unwrap_or_else(|| panic!("{:?}", sp.mpfr.as_ref().err()));
         assert!(m >= 25.0, "{}: MPFR agrees to {m} digits", case.shape.name());
         let f = sp.f64_agreement().unwrap_or_else(|| panic!("{:?}", sp.f64.as_ref().err()));
         assert!(f >= 12.0, "{}: f64 agrees to {f} digits", case.shape.name());
     }
     // The quartic's law by hand at a = 3/20, E* = 1: pi (c2 a^2/2 + 3 c4 a^4/4), c2 = 1, c4 = 1/10.
-    let sp = single_punch(&mut cache, &case_with(&all, Some(QUARTIC_A)), &q("3/20"));
+    let sp = single_punch(&cache, &case_with(&all, Some(QUARTIC_A)), &q("3/20"));
     let a: f64 = 0.15;
     let hand = std::f64::consts::PI * (a * a / 2.0 + 0.075 * a.powi(4));
     let law = sp.closed.as_ref().unwrap().value.to_f64();
@@ -108,9 +108,9 @@ fn single_punch_follows_the_power_law() {
 fn odd_profile_has_no_closed_form_and_its_methods_agree() {
     let all = cases(&shipped());
     let case = case_with(&all, Some(CUBIC));
-    let mut cache = ExpansionCache::default();
+    let cache = RunCache::default();
     let (a, _) = grid(&case, &[0.5]).remove(0);
-    let r = row(&mut cache, &case, &a, false);
+    let r = row(&cache, &case, &a, false);
     assert!(r.closed.is_none() && r.adhesion.is_none());
     let d = r.f64_vs_mpfr().unwrap();
     assert!(d >= 12.0, "f64 vs MPFR: {d}");
@@ -128,7 +128,7 @@ fn beyond_the_slope_limit_the_size_is_refused_naming_it() {
     assert_eq!(g.len(), 3, "{g:?}");
     assert_eq!(g.iter().map(|x| x.1).collect::<Vec<_>>(), [false, false, true]);
     let (a, beyond) = g.last().unwrap();
-    let r = row(&mut ExpansionCache::default(), &case, a, *beyond);
+    let r = row(&RunCache::default(), &case, a, *beyond);
     let e = r.mpfr.as_ref().unwrap_err();
     assert!(e.contains("half_length") && e.contains("small slope"), "{e}");
     assert!(r.f64.is_none() && r.adhesion.is_none());

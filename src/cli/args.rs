@@ -233,6 +233,11 @@ pub enum RawCommand {
         /// Small grids (seconds instead of minutes): the fixed set of the snapshot test.
         #[arg(long)]
         fast: bool,
+        /// Threads for the report's sections and cells, an integer in [1, 256] (default: one per
+        /// logical CPU, or RAYON_NUM_THREADS); 1 runs everything on one thread. report.md is the same
+        /// for every value.
+        #[arg(long, value_name = "N")]
+        jobs: Option<String>,
     },
     /// Print a shell completion script, e.g. `periodic-contact completions bash >
     /// ~/.local/share/bash-completion/completions/periodic-contact`.

@@ -87,6 +87,8 @@ pub enum RunConfig {
         order: usize,
         /// Small grids.
         fast: bool,
+        /// Threads (`None`: one per logical CPU).
+        jobs: Option<usize>,
     },
     /// `calibrate --out FILE`
     Calibrate {
@@ -116,6 +118,18 @@ pub fn parse_order(text: &str, max: usize) -> Result<usize, ModelError> {
         .ok()
         .filter(|&n| n <= max)
         .ok_or_else(|| ModelError::new("--order", text, format!("must be an integer in [0, {max}]")))
+}
+
+/// Largest `report --jobs`.
+pub const MAX_JOBS: usize = 256;
+
+/// Parses `report --jobs N`: an integer in [1, MAX_JOBS].
+pub fn parse_jobs(text: &str) -> Result<usize, ModelError> {
+    text.trim()
+        .parse::<usize>()
+        .ok()
+        .filter(|n| (1..=MAX_JOBS).contains(n))
+        .ok_or_else(|| ModelError::new("--jobs", text, format!("must be an integer in [1, {MAX_JOBS}]")))
 }
 
 /// Parses an exact rational flag.
@@ -514,12 +528,13 @@ impl RunConfig {
                 let format = if json || format == Some(SolveFormat::Json) { Format::Json } else { Format::Text };
                 Ok(RunConfig::Solve { scene: Box::new(parsed), choice, format })
             }
-            RawCommand::Report { out, scenes, order, fast } => {
+            RawCommand::Report { out, scenes, order, fast, jobs } => {
                 let order = parse_order(&order, 40)?;
                 if !scenes.is_dir() {
                     return Err(ModelError::new("--scenes", scenes.display(), "must be a folder of *.toml scenes"));
                 }
-                Ok(RunConfig::Report { out, scenes, order, fast })
+                let jobs = jobs.map(|j| parse_jobs(&j)).transpose()?;
+                Ok(RunConfig::Report { out, scenes, order, fast, jobs })
             }
             RawCommand::Calibrate { out } => Ok(RunConfig::Calibrate { out }),
             RawCommand::Scene { template, shape, law } => scene_template(template, shape, law),

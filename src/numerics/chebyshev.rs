@@ -1,7 +1,7 @@
 //! Chebyshev interpolation on tau in [0, 1] (x = 2 tau - 1) in MPFR: nodes of the first kind,
 //! coefficients, Clenshaw evaluation, and the integral int_0^T.
 
-use rug::Float;
+use rug::{Assign, Float};
 
 /// Chebyshev points of the first kind mapped to (0, 1): tau_i = (1 + cos(pi (i + 1/2)/n))/2.
 pub fn nodes(n: usize, prec: u32) -> Vec<Float> {
@@ -33,17 +33,53 @@ pub fn coefficients(values: &[Float], prec: u32) -> Vec<Float> {
 
 /// Clenshaw evaluation of sum_j c_j T_j(x).
 pub fn evaluate(coeffs: &[Float], x: &Float, prec: u32) -> Float {
-    let mut b1 = Float::with_val(prec, 0);
-    let mut b2 = Float::with_val(prec, 0);
-    let two_x = Float::with_val(prec, x * 2u32);
-    for c in coeffs.iter().skip(1).rev() {
-        let b0 = Float::with_val(prec, &two_x * &b1) - &b2 + c;
-        b2 = b1;
-        b1 = b0;
+    let mut out = Float::new(prec);
+    Clenshaw::new(prec).evaluate_into(coeffs, x, &mut out);
+    out
+}
+
+/// Scratch of [`evaluate`] for many evaluations at one precision without allocating (the same
+/// operations and roundings, so the same bits).
+#[derive(Debug, Clone)]
+pub struct Clenshaw {
+    prec: u32,
+    b0: Float,
+    b1: Float,
+    b2: Float,
+    two_x: Float,
+}
+
+impl Clenshaw {
+    /// Scratch at `prec` bits.
+    pub fn new(prec: u32) -> Self {
+        let z = Float::new(prec);
+        Clenshaw { prec, b0: z.clone(), b1: z.clone(), b2: z.clone(), two_x: z }
     }
-    match coeffs.first() {
-        Some(c0) => Float::with_val(prec, x * &b1) - &b2 + c0,
-        None => Float::with_val(prec, 0),
+
+    /// sum_j c_j T_j(x) into `out` (rounded to `prec` bits, the precision `out` is set to).
+    pub fn evaluate_into(&mut self, coeffs: &[Float], x: &Float, out: &mut Float) {
+        let prec = self.prec;
+        let Clenshaw { b0, b1, b2, two_x, .. } = self;
+        b1.assign(0);
+        b2.assign(0);
+        two_x.assign(x * 2u32);
+        for c in coeffs.iter().skip(1).rev() {
+            b0.assign(&*two_x * &*b1);
+            *b0 -= &*b2;
+            *b0 += c;
+            // (b2, b1) <- (b1, b0); b0 is scratch again.
+            std::mem::swap(b2, b1);
+            std::mem::swap(b1, b0);
+        }
+        out.set_prec(prec);
+        match coeffs.first() {
+            Some(c0) => {
+                out.assign(x * &*b1);
+                *out -= &*b2;
+                *out += c0;
+            }
+            None => out.assign(0),
+        }
     }
 }
 

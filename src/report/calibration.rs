@@ -18,7 +18,7 @@
 //!
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 
-use super::runner::{self, ExpansionCache, Knob, Outcome};
+use super::runner::{self, Knob, Outcome, RunCache};
 use crate::model::{AdhesionProblem, AdhesionSize};
 use crate::model::{Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::params::sliding::{single_punch_half_length_f64, SlidingParamsF64};
@@ -96,9 +96,9 @@ pub const ADHESION_LAMBDAS: [f64; 5] = [0.1, 0.2, 0.4, 0.8, 1.2];
 
 /// Measures the table (the `calibrate` command). `progress` is called after each case.
 pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table, String> {
-    let mut cache = ExpansionCache::default();
+    let cache = RunCache::default();
     let mut rows = Vec::new();
-    let best_of = |problem: &SceneProblem, knob: Knob, cache: &mut ExpansionCache| -> Result<Outcome, String> {
+    let best_of = |problem: &SceneProblem, knob: Knob, cache: &RunCache| -> Result<Outcome, String> {
         // Fast runs are repeated (best of 3) so that the cost is not timer noise.
         let mut o = runner::run(problem, knob, cache)?;
         if o.seconds < 0.05 {
@@ -117,12 +117,12 @@ pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table,
     for (key, case) in sliding_cases {
         for &lam in &SLIDING_LAMBDAS {
             let p = SceneProblem::Sliding(case(lam));
-            let reference = runner::run(&p, Knob::Mpfr(80), &mut cache)?;
+            let reference = runner::run(&p, Knob::Mpfr(80), &cache)?;
             let mut knobs: Vec<Knob> = (1..=runner::MAX_SERIES_ORDER / 2).map(|m| Knob::Series(2 * m)).collect();
             knobs.extend([Knob::F64(None), Knob::Mpfr(15), Knob::Mpfr(30), Knob::Mpfr(60)]);
             let big_lambda = lambda_estimate(&p);
             for knob in knobs {
-                if let Ok(o) = best_of(&p, knob, &mut cache) {
+                if let Ok(o) = best_of(&p, knob, &cache) {
                     let digits = runner::digits_of(runner::error(&o, &reference, false), 70.0);
                     // Rows are keyed by Lambda = pi l_s/L, what the chooser computes before solving.
                     rows.push(Row { problem: key, knob, lambda: big_lambda, digits, seconds: o.seconds });
@@ -135,12 +135,12 @@ pub fn calibrate(machine: &str, mut progress: impl FnMut(&str)) -> Result<Table,
         for &lam in &ADHESION_LAMBDAS {
             let p = SceneProblem::Adhesion(adhesion_case_nu(nu.clone(), lam));
             // nu = 0 beyond lambda ~ 0.85: no reference (ill-conditioned), no row.
-            let Ok(reference) = runner::run(&p, Knob::MpfrVerified(50), &mut cache) else { continue };
+            let Ok(reference) = runner::run(&p, Knob::MpfrVerified(50), &cache) else { continue };
             if reference.verified_digits.unwrap_or(0.0) < 40.0 {
                 continue;
             }
             for knob in [Knob::F64(None), Knob::Mpfr(10), Knob::Mpfr(20), Knob::Mpfr(30)] {
-                if let Ok(o) = best_of(&p, knob, &mut cache) {
+                if let Ok(o) = best_of(&p, knob, &cache) {
                     let digits = runner::digits_of(runner::error(&o, &reference, true), 70.0);
                     rows.push(Row { problem: key, knob, lambda: reference.lambda, digits, seconds: o.seconds });
                 }

@@ -3,7 +3,7 @@
 //! the chosen method meets the target and the next cheaper one does not.
 
 use super::calibration::{choose, Choice, Table};
-use super::runner::{self, ExpansionCache, Knob};
+use super::runner::{self, Knob, RunCache};
 use super::section::{fmt_digits, Ctx, Section};
 use crate::scene::{Scene, SceneProblem};
 use std::fmt::Write as _;
@@ -48,12 +48,12 @@ pub fn check_choice(
     table: &Table,
     problem: &SceneProblem,
     target: u32,
-    cache: &mut ExpansionCache,
+    cache: &RunCache,
 ) -> Result<ChoiceCheck, String> {
     let choice = choose(table, problem, target);
     let reference = runner::run(problem, Knob::Mpfr(target + 20), cache)?;
     let given = runner::given_size(problem);
-    let digits = |k: Knob, cache: &mut ExpansionCache| {
+    let digits = |k: Knob, cache: &RunCache| {
         runner::run(problem, k, cache).ok().map(|o| {
             let d = runner::digits_of(runner::error(&o, &reference, given), (target + 20) as f64);
             // Verified MPFR claims no more than it verified.
@@ -66,7 +66,7 @@ pub fn check_choice(
 }
 
 /// Builds the method-choice section.
-pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
+pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let _ = writeln!(
         s.markdown,
@@ -98,7 +98,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
                     Knob::MpfrVerified(d).label()
                 );
             }
-            Ok(t) => match check_choice(&ctx.table, &scene.problem, t, &mut ctx.cache) {
+            Ok(t) => match check_choice(&ctx.table, &scene.problem, t, &ctx.cache) {
                 Ok(c) => {
                     let _ = writeln!(
                         s.markdown,

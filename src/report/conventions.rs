@@ -18,7 +18,7 @@
 //!   r_1 Lambda.
 
 use super::chart::{Chart, Curve, Draw, Legend};
-use super::runner::ExpansionCache;
+use super::runner::RunCache;
 use super::section::{fmt_digits, Ctx, Profile, Section};
 use crate::asymptotics::sliding::SlidingShape;
 use crate::model::{Convention, Exact, Period, PunchShape, SlidingLoad, SlidingProblem};
@@ -93,16 +93,16 @@ pub struct Point {
     pub digits: f64,
 }
 
-/// Solves `p` with the verified MPFR solver at `digits`; the first (smallest) physical contact.
-pub fn solve_point(p: &SlidingProblem, digits: u32) -> Result<Point, String> {
-    let sols = crate::sliding::solve_verified(p, &[], digits).map_err(|e| crate::error::Error::from(e).to_string())?;
-    let v = sols.into_iter().next().ok_or("no physical solution")?;
-    let s = v.solution;
+/// Solves `p` with the verified MPFR solver at `digits`; the first (smallest) physical contact
+/// (once per problem in `cache`: the load-size curves solve the same scenes' loads).
+pub fn solve_point(cache: &RunCache, p: &SlidingProblem, digits: u32) -> Result<Point, String> {
+    let v = super::runner::verified_sliding(cache, p, digits)?.solution;
+    let s = &v.solution;
     Ok(Point {
         lambda: s.lambda.as_ref().map_or(0.0, |x| x.to_f64()),
-        l: s.l,
-        c: s.c,
-        f_def: s.f_def,
+        l: s.l.clone(),
+        c: s.c.clone(),
+        f_def: s.f_def.clone(),
         digits: v.accuracy.digits_verified,
     })
 }
@@ -142,13 +142,13 @@ impl CentreTerms {
 
 /// The coefficients of [`CentreTerms`] of `problem` (its load; its convention is ignored) from the
 /// exact expansions, evaluated at 128 bits.
-pub fn centre_terms(cache: &mut ExpansionCache, problem: &SlidingProblem) -> Result<CentreTerms, String> {
+pub fn centre_terms(cache: &RunCache, problem: &SlidingProblem) -> Result<CentreTerms, String> {
     let prec = super::runner::SERIES_BITS;
     let sp = series_point(problem, prec).map_err(|e| e.to_string())?;
     let shape: SlidingShape = expansion_shape(problem).map_err(|e| e.to_string())?;
     let binds = sp.bindings();
-    let mut coeff = |convention: Convention, k: usize| -> Result<f64, String> {
-        let e = cache.get(shape, convention, 2)?;
+    let coeff = |convention: Convention, k: usize| -> Result<f64, String> {
+        let e = cache.expansion(shape, convention, 2)?;
         Ok(match e.rbar_minus_rbar_s.coeff(k) {
             Some(c) => evaluate::poly_mpfr(c, &binds, prec).map_err(|e| e.to_string())?.to_f64(),
             None => 0.0,
@@ -188,7 +188,7 @@ fn describe(p: &SlidingProblem) -> String {
 }
 
 /// Builds the section.
-pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
+pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let cases = cases(scenes);
     let _ = writeln!(
@@ -224,7 +224,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
 
 type Run = (f64, Result<Point, String>);
 
-fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
+fn case_section(ctx: &Ctx, s: &mut Section, case: &Case) {
     let name = &case.name;
     let parabola = matches!(case.problem.shape(), PunchShape::Parabolic { .. });
     let _ = writeln!(s.markdown, "### Scene `{name}` ({})\n", describe(&case.problem));
@@ -239,7 +239,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
             ));
             let p = case.problem.to_builder().convention(convention).normal_load(load.clone()).build();
             let r = match p {
-                Ok(p) => solve_point(&p, DIGITS),
+                Ok(p) => solve_point(&ctx.cache, &p, DIGITS),
                 Err(e) => Err(e.to_string()),
             };
             v.push((to_f64(load).unwrap_or(f64::NAN), r));
@@ -297,7 +297,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
         );
         return;
     }
-    match centre_terms(&mut ctx.cache, &case.problem) {
+    match centre_terms(&ctx.cache, &case.problem) {
         Ok(t) => terms_chart(s, name, &t, ctx.profile),
         Err(e) => {
             let _ = writeln!(s.markdown, "The series terms could not be evaluated: {e}\n");
@@ -308,7 +308,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &Case) {
 /// The table: per load, each convention's lambda, c/l and F_def, the digits, the MPFR shift of
 /// c/l beside its leading series term r_1 Lambda, and (parabola) the check
 /// c_periodic - c_paper + K/(E* k), relative to l.
-fn table(ctx: &mut Ctx, s: &mut Section, case: &Case, runs: &[(Convention, Vec<Run>)], parabola: bool) {
+fn table(ctx: &Ctx, s: &mut Section, case: &Case, runs: &[(Convention, Vec<Run>)], parabola: bool) {
     let mut head = "| P2 |".to_string();
     let mut rule = "|---:|".to_string();
     for (conv, _) in runs {
@@ -333,7 +333,7 @@ fn table(ctx: &mut Ctx, s: &mut Section, case: &Case, runs: &[(Convention, Vec<R
             .normal_load(load.clone())
             .build()
             .map_err(|e| e.to_string())
-            .and_then(|p| centre_terms(&mut ctx.cache, &p))
+            .and_then(|p| centre_terms(&ctx.cache, &p))
             .map_or("-".into(), |t| fmt6(t.r1_periodic * t.big_lambda));
         let pts: Vec<Option<&Point>> = runs.iter().map(|r| r.1[i].1.as_ref().ok()).collect();
         let digits = pts.iter().flatten().map(|p| p.digits).fold(f64::INFINITY, f64::min);
@@ -467,8 +467,9 @@ mod tests {
     fn theory_check_values_and_the_k_shift() {
         // docs/theory.md section 8: lambda = 0.547045990639 in both conventions, c = -0.0118478575
         // (paper) and -0.0068478575 (periodic), so c_periodic - c_paper = -K/(E* k) = 0.005.
-        let pap = solve_point(&theory_case(Convention::Paper), 20).unwrap();
-        let per = solve_point(&theory_case(Convention::PeriodicSurface), 20).unwrap();
+        let cache = RunCache::default();
+        let pap = solve_point(&cache, &theory_case(Convention::Paper), 20).unwrap();
+        let per = solve_point(&cache, &theory_case(Convention::PeriodicSurface), 20).unwrap();
         for pt in [&pap, &per] {
             assert!((pt.lambda - 0.547045990639).abs() < 1e-11, "{}", pt.lambda);
             assert!(pt.digits > 15.0, "{}", pt.digits);
@@ -489,9 +490,9 @@ mod tests {
         // For tau0 = 0 the O(Lambda) term of rbar is the centre's shift -K/(E* k l) at leading
         // order: K/(E* k l) = kappa (1 - 4 theta^2) Lambda/(2 rho), rho = 1 + O(Lambda^2), so
         // r_1 = -kappa (1 - 4 theta^2)/2; the paper's series has no odd term.
-        let mut cache = ExpansionCache::default();
+        let cache = RunCache::default();
         let p = theory_case(Convention::Paper);
-        let t = centre_terms(&mut cache, &p).unwrap();
+        let t = centre_terms(&cache, &p).unwrap();
         let prm = SlidingParamsMpfr::new(&p, 128).unwrap();
         let (kappa, theta) = (prm.kappa.to_f64(), prm.theta.to_f64());
         let r1 = -kappa * (1.0 - 4.0 * theta * theta) / 2.0;

@@ -170,7 +170,7 @@ fn size_text(size: &LawSize) -> String {
 }
 
 /// Builds the section (no text when no scene has a loading law).
-pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
+pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let problems = problems(scenes);
     if problems.is_empty() {

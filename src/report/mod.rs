@@ -27,6 +27,7 @@ pub mod html;
 pub mod loading_law;
 pub mod orders;
 pub mod pade;
+pub mod parallel;
 pub mod runner;
 pub mod section;
 pub mod shapes;
@@ -63,6 +64,9 @@ pub struct ReportOptions {
     pub profile: Profile,
     /// Show a progress bar on stderr.
     pub progress: bool,
+    /// Threads for the sections and cells (`None`: one per logical CPU, or `RAYON_NUM_THREADS`;
+    /// `Some(1)`: everything on the calling thread). The text does not depend on it.
+    pub jobs: Option<usize>,
 }
 
 /// Why a report could not be written.
@@ -93,6 +97,9 @@ pub enum ReportError {
     /// The HTML page could not be made.
     #[error(transparent)]
     Html(#[from] html::HtmlError),
+    /// The thread pool could not be started.
+    #[error("report threads: {0}")]
+    Threads(String),
     /// A chart could not be drawn.
     #[error("chart {stem}: {why}")]
     Chart {
@@ -147,7 +154,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     std::fs::create_dir_all(&opts.out).map_err(io(&opts.out))?;
     let scenes = load_scenes(&opts.scenes)?;
     let progress = if opts.progress {
-        let pb = ProgressBar::new(9);
+        let pb = ProgressBar::new(10);
         pb.set_style(
             ProgressStyle::with_template("{spinner} [{elapsed_precise}] section {pos}/{len} {wide_msg}")
                 .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -157,37 +164,62 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     } else {
         ProgressBar::hidden()
     };
-    let mut ctx =
+    let ctx =
         Ctx { profile: opts.profile, cache: Default::default(), progress, table: calibration::Table::committed()? };
-    let mut files = Vec::new();
-    let mut timings = String::new();
-    let mut sections: Vec<Section> = Vec::new();
-    let mut timed = |name: &str, ctx: &mut Ctx, f: &mut dyn FnMut(&mut Ctx) -> Result<Section, ReportError>| {
-        let t0 = Instant::now();
-        let r = f(ctx);
-        let _ = writeln!(timings, "| {name} | {:.2} |", t0.elapsed().as_secs_f64());
-        ctx.progress.inc(1);
-        r
-    };
-    ctx.step("coefficient tables");
     let order = opts.order;
-    let mut tex = String::new();
-    let coeff = timed("1. coefficient tables", &mut ctx, &mut |_| {
-        let tables = coefficients::coefficient_tables(order)?;
-        tex = coefficients::latex(&tables);
-        Ok(Section { markdown: coefficients::markdown(&tables, order), ..Default::default() })
-    })?;
-    sections.push(coeff);
-    sections.push(timed("method choice", &mut ctx, &mut |c| Ok(choice::section(c, &scenes)))?);
-    sections.push(timed("2. convergence orders", &mut ctx, &mut |c| Ok(orders::section(c, &scenes)))?);
-    sections.push(timed("3. speed against accuracy", &mut ctx, &mut |c| Ok(speed::section(c)))?);
-    sections.push(timed("4. stability maps", &mut ctx, &mut |c| Ok(stability::section(c)))?);
-    sections.push(timed("5. load-size curves", &mut ctx, &mut |c| Ok(sweeps::section(c, &scenes)))?);
-    sections.push(timed("6. paper vs periodic", &mut ctx, &mut |c| Ok(conventions::section(c, &scenes)))?);
-    sections.push(timed("punch shapes", &mut ctx, &mut |c| Ok(shapes::section(c, &scenes)))?);
-    sections.push(timed("loading law", &mut ctx, &mut |c| Ok(loading_law::section(c, &scenes)))?);
-    sections.push(timed("Pade resummation", &mut ctx, &mut |c| Ok(pade::section(c)))?);
+    // The sections, independent of each other (they share only the run cache), in the report's
+    // order; `cost` orders their start (the costliest first, measured: the stability maps, then the
+    // loading law, the punch shapes and the load-size curves) so that the long ones overlap.
+    type Build<'a> = Box<dyn Fn(&Ctx) -> Result<(Section, String), ReportError> + Sync + 'a>;
+    let plain = |f: fn(&Ctx, &[(String, Scene)]) -> Section| -> Build<'_> {
+        let scenes = &scenes;
+        Box::new(move |c: &Ctx| Ok((f(c, scenes), String::new())))
+    };
+    let jobs: Vec<(&str, f64, Build)> = vec![
+        (
+            "1. coefficient tables",
+            1.0,
+            Box::new(move |_: &Ctx| {
+                let tables = coefficients::coefficient_tables(order)?;
+                let tex = coefficients::latex(&tables);
+                Ok((Section { markdown: coefficients::markdown(&tables, order), ..Default::default() }, tex))
+            }),
+        ),
+        ("method choice", 2.0, plain(choice::section)),
+        ("2. convergence orders", 1.5, plain(orders::section)),
+        ("3. speed against accuracy", 2.5, Box::new(|c: &Ctx| Ok((speed::section(c), String::new())))),
+        ("4. stability maps", 100.0, Box::new(|c: &Ctx| Ok((stability::section(c), String::new())))),
+        ("5. load-size curves", 9.0, plain(sweeps::section)),
+        ("6. paper vs periodic", 3.0, plain(conventions::section)),
+        ("punch shapes", 8.0, plain(shapes::section)),
+        ("loading law", 20.0, plain(loading_law::section)),
+        ("Pade resummation", 5.0, Box::new(|c: &Ctx| Ok((pade::section(c), String::new())))),
+    ];
+    let done = parallel::with_jobs(opts.jobs, || {
+        parallel::map(
+            &jobs,
+            |j| j.1,
+            |(name, _, build)| {
+                let t0 = Instant::now();
+                let r = build(&ctx);
+                ctx.progress.inc(1);
+                (r, format!("| {name} | {:.2} |\n", t0.elapsed().as_secs_f64()))
+            },
+        )
+    })
+    .map_err(ReportError::Threads)?;
     ctx.progress.finish_and_clear();
+    let threads = opts.jobs.unwrap_or_else(rayon::current_num_threads);
+    let mut files = Vec::new();
+    let mut sections: Vec<Section> = Vec::new();
+    let mut timings = String::new();
+    let mut tex = String::new();
+    for (r, line) in done {
+        let (section, t) = r?;
+        sections.push(section);
+        tex.push_str(&t);
+        timings.push_str(&line);
+    }
 
     let mut md = String::new();
     let names: Vec<&str> = scenes.iter().map(|s| s.0.as_str()).collect();
@@ -222,7 +254,8 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     }
     write(&mut files, "report.html", &html::page("periodic-contact report", &md, &svgs, &tex)?)?;
     let mut t = format!(
-        "# Timings of this report run\n\nMachine: {}. Build: {}. Profile: {:?}. Total wall time: {:.1} s.\n\n\
+        "# Timings of this report run\n\nMachine: {}. Build: {}. Profile: {:?}. Threads: {threads} (the sections and \
+         the stability maps' cells run in parallel, so the section times below overlap). Total wall time: {:.1} s.\n\n\
          | section | seconds |\n|---|---:|\n{timings}",
         machine(),
         if cfg!(debug_assertions) { "debug" } else { "release" },

@@ -38,7 +38,7 @@ fn plan(profile: Profile, convention: Convention) -> Plan {
 }
 
 /// Builds section 2 for the scenes.
-pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
+pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let (lambdas, corrections, digits) = plan(ctx.profile, Convention::Paper);
     let (p_lambdas, p_corrections, p_digits) = plan(ctx.profile, Convention::PeriodicSurface);
     let mut s = Section::default();

@@ -28,7 +28,7 @@ fn cell(d: Option<f64>) -> String {
 }
 
 /// Builds the section.
-pub fn section(ctx: &mut Ctx) -> Section {
+pub fn section(ctx: &Ctx) -> Section {
     ctx.step("Pade resummation");
     let plan = plan(ctx.profile);
     let rows = pade_rows(&plan);

@@ -13,6 +13,7 @@ use crate::sliding::series::series_point;
 use crate::sliding::{self, collocation_f64, Checks, NodeRule};
 use rug::Float;
 use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 use std::time::Instant;
 
 /// Working precision of comparisons (bits): errors down to 1e-70 are resolved.
@@ -66,45 +67,95 @@ pub fn given_size(p: &SceneProblem) -> bool {
     }
 }
 
-/// Exact expansions, derived once per (shape, convention) and kept at the largest order asked so
-/// far (derivation time is not part of a run's time: it is a one-off, like the coefficient
-/// tables). The parabola's are derived at once through [`MAX_SERIES_ORDER`] (under a second);
-/// the sinusoid's only through the order asked, since their cost grows steeply with the order
-/// (release build: `paper` about 3 s at order 12 and 24 s at 16, `periodic` about 2.5 s at order 8
-/// and 100 s at 12; measured by `cargo run --release --example expansion_timing`).
-#[derive(Default, Clone)]
-pub struct ExpansionCache {
-    map: HashMap<(bool, bool), SlidingExpansion>,
-    orders: HashMap<(bool, bool), usize>,
+/// What one report run shares across its sections, cells and threads, so that nothing is computed
+/// twice (issue 14):
+/// - the exact expansions, derived once per (shape, convention) and kept at the largest order
+///   asked so far (derivation time is not part of a run's time: it is a one-off, like the
+///   coefficient tables). The parabola's are derived at once through [`MAX_SERIES_ORDER`] (under a
+///   second); the sinusoid's only through the order asked, since their cost grows steeply with the
+///   order (release build: `paper` about 3 s at order 12 and 24 s at 16, `periodic` about 2.5 s at
+///   order 8 and 100 s at 12; measured by `cargo run --release --example expansion_timing`);
+/// - every run of [`run`], keyed exactly by (problem, knob): a cell, a sweep point or a check
+///   that asks for the same run gets the first one's outcome (and its measured time);
+/// - the verified MPFR solutions of Problem 1 ([`verified_sliding`]), which the load-size curves,
+///   the stability maps and "paper vs periodic" share.
+///
+/// Thread-safe: a value being computed by one thread is waited for, not computed again by another.
+/// A computation behind the cache must not wait on the report's thread pool (no rayon inside a
+/// solver called from here), or a worker waiting for its own slot would deadlock.
+#[derive(Default)]
+pub struct RunCache {
+    expansions: Mutex<HashMap<(bool, bool), ExpansionSlot>>,
+    runs: Memo<(String, Knob), Result<Outcome, String>>,
+    verified: Memo<(String, u32), Result<VerifiedRun, String>>,
 }
 
-impl ExpansionCache {
+type ExpansionSlot = Arc<Mutex<Option<(usize, Arc<SlidingExpansion>)>>>;
+
+/// A memo: one slot per key, filled once.
+struct Memo<K, V>(Mutex<HashMap<K, Arc<OnceLock<V>>>>);
+
+impl<K, V> Default for Memo<K, V> {
+    fn default() -> Self {
+        Memo(Mutex::new(HashMap::new()))
+    }
+}
+
+impl<K: std::hash::Hash + Eq, V: Clone> Memo<K, V> {
+    /// The value of `key`, computed by `f` the first time it is asked.
+    fn get_or(&self, key: K, f: impl FnOnce() -> V) -> V {
+        let slot = self.0.lock().unwrap_or_else(PoisonError::into_inner).entry(key).or_default().clone();
+        slot.get_or_init(f).clone()
+    }
+}
+
+/// The exact key of a problem: its full `Debug` text (every field, exact rationals).
+fn problem_key(p: &impl std::fmt::Debug) -> String {
+    format!("{p:?}")
+}
+
+/// A verified MPFR solution of Problem 1 (the first, smallest physical contact) with the wall time
+/// of the solve.
+#[derive(Debug, Clone)]
+pub struct VerifiedRun {
+    /// The solution and its verified digits.
+    pub solution: Arc<sliding::VerifiedSolution>,
+    /// Wall time of the solve in seconds.
+    pub seconds: f64,
+}
+
+/// [`sliding::solve_verified`] at `digits` (the first physical solution), once per (problem, digits)
+/// in `cache`; errors as the report states them.
+pub fn verified_sliding(cache: &RunCache, p: &SlidingProblem, digits: u32) -> Result<VerifiedRun, String> {
+    cache.verified.get_or((problem_key(p), digits), || {
+        let start = Instant::now();
+        let sols = sliding::solve_verified(p, &[], digits).map_err(why)?;
+        let seconds = start.elapsed().as_secs_f64();
+        let v = sols.into_iter().next().ok_or("no physical solution")?;
+        Ok(VerifiedRun { solution: Arc::new(v), seconds })
+    })
+}
+
+impl RunCache {
     /// The expansion of `shape` in `convention` through at least Lambda^order.
-    pub fn get(
-        &mut self,
+    pub fn expansion(
+        &self,
         shape: SlidingShape,
         convention: Convention,
         order: usize,
-    ) -> Result<&SlidingExpansion, String> {
+    ) -> Result<Arc<SlidingExpansion>, String> {
         let key = (shape == SlidingShape::Parabolic, convention == Convention::PeriodicSurface);
-        if self.orders.get(&key).is_none_or(|&have| have < order) {
-            let at = if key.0 { MAX_SERIES_ORDER.max(order) } else { order };
-            let e = sliding_expansion_with(shape, at, convention).map_err(|e| e.to_string())?;
-            self.map.insert(key, e);
-            self.orders.insert(key, at);
-        }
-        self.map.get(&key).ok_or_else(|| "expansion cache: missing entry".to_string())
-    }
-
-    /// Keeps, per (shape, convention), the higher-order expansion of `self` and `other`.
-    pub fn merge(&mut self, other: ExpansionCache) {
-        for (key, e) in other.map {
-            let theirs = other.orders.get(&key).copied().unwrap_or(0);
-            if self.orders.get(&key).is_none_or(|&have| have < theirs) {
-                self.map.insert(key, e);
-                self.orders.insert(key, theirs);
+        let slot = self.expansions.lock().unwrap_or_else(PoisonError::into_inner).entry(key).or_default().clone();
+        let mut have = slot.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some((at, e)) = have.as_ref() {
+            if *at >= order {
+                return Ok(e.clone());
             }
         }
+        let at = if key.0 { MAX_SERIES_ORDER.max(order) } else { order };
+        let e = Arc::new(sliding_expansion_with(shape, at, convention).map_err(|e| e.to_string())?);
+        *have = Some((at, e.clone()));
+        Ok(e)
     }
 }
 
@@ -130,9 +181,13 @@ pub const SERIES_BITS: u32 = 128;
 pub const LOADING_LAW_NOT_IN_REPORT: &str =
     "the loading-law problem is solved by `periodic-contact solve` (MPFR only) and in the section \"Loading law\", not by this section's methods";
 
-/// Runs `knob` on `problem`. Errors are the method's own (no solution, no convergence, not
-/// applicable), as text for the report.
-pub fn run(problem: &SceneProblem, knob: Knob, cache: &mut ExpansionCache) -> Result<Outcome, String> {
+/// Runs `knob` on `problem`, once per (problem, knob) in `cache`. Errors are the method's own (no
+/// solution, no convergence, not applicable), as text for the report.
+pub fn run(problem: &SceneProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {
+    cache.runs.get_or((problem_key(problem), knob), || run_uncached(problem, knob, cache))
+}
+
+fn run_uncached(problem: &SceneProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {
     match problem {
         SceneProblem::Sliding(p) => run_sliding(p, knob, cache),
         SceneProblem::Adhesion(p) => run_adhesion(p, knob),
@@ -140,7 +195,7 @@ pub fn run(problem: &SceneProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
     }
 }
 
-fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Result<Outcome, String> {
+fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {
     let pi = std::f64::consts::PI;
     let period = match p.period() {
         crate::model::Period::Finite(l) => crate::numerics::exact::to_f64(l),
@@ -150,11 +205,11 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
     match knob {
         Knob::Series(n) => {
             let shape = crate::sliding::series::expansion_shape(p).map_err(|e| e.to_string())?;
-            let e = cache.get(shape, p.convention(), n)?;
+            let e = cache.expansion(shape, p.convention(), n)?;
             let prec = SERIES_BITS;
             let start = Instant::now();
             let sp = series_point(p, prec).map_err(|e| e.to_string())?;
-            let (l, c) = sp.contact(e, n);
+            let (l, c) = sp.contact(&e, n);
             let seconds = start.elapsed().as_secs_f64();
             let load = match p.load() {
                 SlidingLoad::NormalLoad(x) => crate::numerics::exact::to_float(x, COMPARE_BITS),
@@ -211,10 +266,7 @@ fn run_sliding(p: &SlidingProblem, knob: Knob, cache: &mut ExpansionCache) -> Re
             })
         }
         Knob::MpfrVerified(d) => {
-            let start = Instant::now();
-            let sols = sliding::solve_verified(p, &[], d).map_err(why)?;
-            let seconds = start.elapsed().as_secs_f64();
-            let v = sols.first().ok_or("no physical solution")?;
+            let VerifiedRun { solution: v, seconds } = verified_sliding(cache, p, d)?;
             let s = &v.solution;
             Ok(Outcome {
                 size: Float::with_val(COMPARE_BITS, &s.l),

@@ -2,7 +2,7 @@
 
 use super::calibration::Table;
 use super::chart::Chart;
-use super::runner::ExpansionCache;
+use super::runner::RunCache;
 use indicatif::ProgressBar;
 
 /// Size of the run: the default report, or the fixed fast set of the snapshot test.
@@ -25,12 +25,13 @@ pub struct Section {
     pub timings: String,
 }
 
-/// Shared state of a report run.
+/// Shared state of a report run (shared by reference between the threads: the sections and the
+/// stability maps' cells run in parallel, [`super::parallel`]).
 pub struct Ctx {
     /// Size of the run.
     pub profile: Profile,
-    /// Derived expansions.
-    pub cache: ExpansionCache,
+    /// Derived expansions and every run, shared by the sections and their threads.
+    pub cache: RunCache,
     /// Progress (stderr).
     pub progress: ProgressBar,
     /// The calibration table.

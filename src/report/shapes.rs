@@ -23,7 +23,7 @@
 //! in both conventions, are in section 6 (c/l and F_def against the load).
 
 use super::chart::{Chart, Curve, Draw, Legend};
-use super::runner::{self, ExpansionCache, Knob, Outcome, COMPARE_BITS};
+use super::runner::{self, Knob, Outcome, RunCache, COMPARE_BITS};
 use super::section::{fmt_digits, Ctx, Profile, Section};
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::numerics::accuracy::{fmt_mpfr, print_mpfr, readable_f64, verified_digits_mpfr, F64_DIGITS_CAP};
@@ -264,7 +264,7 @@ pub fn grid(case: &ShapeCase, lambdas: &[f64]) -> Vec<(Exact, bool)> {
 }
 
 /// Runs one size of `case`.
-pub fn row(cache: &mut ExpansionCache, case: &ShapeCase, a: &Exact, beyond: bool) -> Row {
+pub fn row(cache: &RunCache, case: &ShapeCase, a: &Exact, beyond: bool) -> Row {
     let prec = COMPARE_BITS;
     let big_l = case.period_value().map(|l| to_float(l, prec));
     let af = to_float(a, prec);
@@ -275,9 +275,8 @@ pub fn row(cache: &mut ExpansionCache, case: &ShapeCase, a: &Exact, beyond: bool
             .map_err(|e| e.to_string())
     });
     let sliding = case.sliding(a, case.period.clone());
-    let run = |cache: &mut ExpansionCache, k: Knob| {
-        sliding.clone().and_then(|p| runner::run(&SceneProblem::Sliding(p), k, cache))
-    };
+    let run =
+        |cache: &RunCache, k: Knob| sliding.clone().and_then(|p| runner::run(&SceneProblem::Sliding(p), k, cache));
     let mpfr = run(cache, Knob::MpfrVerified(DIGITS));
     let f64 = (!beyond).then(|| run(cache, Knob::F64(None)));
     let adhesion = (case.even() && !beyond).then(|| {
@@ -318,7 +317,7 @@ impl SinglePunch {
 }
 
 /// The single punch of an even `case` at half-width `a`.
-pub fn single_punch(cache: &mut ExpansionCache, case: &ShapeCase, a: &Exact) -> SinglePunch {
+pub fn single_punch(cache: &RunCache, case: &ShapeCase, a: &Exact) -> SinglePunch {
     let prec = COMPARE_BITS;
     let (af, e) = (to_float(a, prec), to_float(&case.e_star, prec));
     let (law, closed) = match &case.shape {
@@ -338,7 +337,7 @@ pub fn single_punch(cache: &mut ExpansionCache, case: &ShapeCase, a: &Exact) -> 
         ),
     };
     let p = case.sliding(a, Period::Infinite);
-    let mut run = |k: Knob| p.clone().and_then(|p| runner::run(&SceneProblem::Sliding(p), k, cache));
+    let run = |k: Knob| p.clone().and_then(|p| runner::run(&SceneProblem::Sliding(p), k, cache));
     let mpfr = run(Knob::MpfrVerified(DIGITS));
     let f64 = run(Knob::F64(None));
     SinglePunch { a: a.clone(), law, closed, mpfr, f64 }
@@ -366,7 +365,7 @@ fn rel_text(o: Option<&Result<Outcome, String>>, closed: Option<&LoadEstimate>) 
 }
 
 /// Builds the section; empty (no text) when no scene has a polynomial or circular punch.
-pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
+pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let cases = cases(scenes);
     if cases.is_empty() {
@@ -401,7 +400,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
     s
 }
 
-fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, lambdas: &[f64]) {
+fn case_section(ctx: &Ctx, s: &mut Section, case: &ShapeCase, index: usize, lambdas: &[f64]) {
     let scenes: Vec<String> = case.scenes.iter().map(|n| format!("`{n}`")).collect();
     let big_l = case.period_value().and_then(to_f64).unwrap_or(f64::NAN);
     let edge = case.slope_edge(big_l);
@@ -418,7 +417,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
     let mut rows = Vec::new();
     for (a, beyond) in grid(case, lambdas) {
         ctx.step(format!("punch shapes: {}, a = {}", case.shape.name(), crate::model::readable(&a)));
-        rows.push(row(&mut ctx.cache, case, &a, beyond));
+        rows.push(row(&ctx.cache, case, &a, beyond));
     }
     let even = case.even();
     if even {
@@ -506,7 +505,7 @@ fn case_section(ctx: &mut Ctx, s: &mut Section, case: &ShapeCase, index: usize, 
         let solved: Vec<&Row> = rows.iter().filter(|r| r.mpfr.is_ok()).collect();
         if let Some(a) = solved.get(1).or(solved.first()).map(|r| r.a.clone()) {
             ctx.step(format!("punch shapes: {}, single punch", case.shape.name()));
-            let sp = single_punch(&mut ctx.cache, case, &a);
+            let sp = single_punch(&ctx.cache, case, &a);
             let d = sp.mpfr.as_ref().ok().and_then(|o| o.verified_digits).unwrap_or(0.0);
             let closed = sp.closed.as_ref().ok();
             let _ = writeln!(

@@ -23,7 +23,7 @@ struct Study {
 }
 
 /// Builds section 3.
-pub fn section(ctx: &mut Ctx) -> Section {
+pub fn section(ctx: &Ctx) -> Section {
     let full = ctx.profile == Profile::Full;
     let big_lambda = 0.4;
     let lambda2 = 0.8;
@@ -101,7 +101,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
     for st in studies {
         ctx.step(format!("speed vs accuracy: {}", st.problem));
         let given = runner::given_size(&st.case);
-        let reference = match runner::run(&st.case, st.reference, &mut ctx.cache) {
+        let reference = match runner::run(&st.case, st.reference, &ctx.cache) {
             Ok(r) => r,
             Err(e) => {
                 let _ = writeln!(s.markdown, "{}: the reference run failed: {e}\n", st.title);
@@ -128,7 +128,7 @@ pub fn section(ctx: &mut Ctx) -> Section {
             let mut pts = Vec::new();
             for &k in knobs {
                 ctx.step(format!("speed vs accuracy: {} {}", st.problem, k.label()));
-                match runner::run(&st.case, k, &mut ctx.cache) {
+                match runner::run(&st.case, k, &ctx.cache) {
                     Ok(o) => {
                         let err = runner::error(&o, &reference, given);
                         let _ = writeln!(

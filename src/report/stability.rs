@@ -9,7 +9,7 @@
 
 use super::calibration::rational;
 use super::chart::{Chart, Curve, Draw, Legend};
-use super::runner::{self, ExpansionCache, Knob, Outcome};
+use super::runner::{self, Knob, Outcome, RunCache};
 use super::section::{fmt_digits, Ctx, Profile, Section};
 use crate::model::{AdhesionProblem, AdhesionSize, Convention, Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::scene::SceneProblem;
@@ -66,7 +66,7 @@ struct Cell {
     why: Vec<Option<String>>,
 }
 
-fn run_cell(cache: &mut ExpansionCache, problem: &SceneProblem, knobs: &[Knob], x: f64, lambda_target: f64) -> Cell {
+fn run_cell(cache: &RunCache, problem: &SceneProblem, knobs: &[Knob], x: f64, lambda_target: f64) -> Cell {
     let reference_knob = knobs[knobs.len() - 1];
     let reference: Result<Outcome, String> = runner::run(problem, reference_knob, cache);
     let given = runner::given_size(problem);
@@ -286,57 +286,62 @@ fn quartic_load(lam: f64) -> f64 {
         .map_or(f64::NAN, |v| v.value.to_f64())
 }
 
-/// One Problem 1 map: the grid (`thetas` x `lambdas`, load of each lambda from `load`) of
-/// `shape` in `convention`, with its own expansion cache; returns the map, the cache and the wall
-/// time.
-fn p1_map(
-    progress: &indicatif::ProgressBar,
-    mut cache: ExpansionCache,
-    shape: &PunchShape,
-    name: &str,
-    convention: Convention,
-    grid: (&[f64], &[f64]),
-    load: &(dyn Fn(f64) -> f64 + Sync),
-) -> (ConventionMap, ExpansionCache, f64) {
-    let t0 = std::time::Instant::now();
-    let knobs = match shape {
+/// The knobs of a Problem 1 map of `shape` in `convention`: the series (parabola and sinusoid
+/// only), f64, and the verified MPFR reference last.
+fn p1_knobs(shape: &PunchShape, convention: Convention) -> Vec<Knob> {
+    match shape {
         // The report's series are the parabola's and the sinusoid's.
         PunchShape::Polynomial { .. } | PunchShape::Circular { .. } => vec![Knob::F64(None), Knob::MpfrVerified(30)],
         _ => vec![Knob::Series(series_order(shape, convention)), Knob::F64(None), Knob::MpfrVerified(30)],
-    };
-    let mut cells = Vec::new();
+    }
+}
+
+/// One map to compute: its name (timings and progress), convention (Problem 1), knobs and cells.
+struct MapPlan {
+    name: &'static str,
+    convention: Option<Convention>,
+    knobs: Vec<Knob>,
+    jobs: Vec<CellJob>,
+}
+
+/// One cell to run: the problem at grid point (x, lambda).
+struct CellJob {
+    problem: SceneProblem,
+    x: f64,
+    lambda: f64,
+}
+
+/// The cells of one Problem 1 map: the grid (`thetas` x `lambdas`, load of each lambda from
+/// `load`) of `shape` in `convention`, rows by lambda.
+fn p1_plan(
+    shape: &PunchShape,
+    name: &'static str,
+    convention: Convention,
+    grid: (&[f64], &[f64]),
+    load: &dyn Fn(f64) -> f64,
+) -> MapPlan {
+    let mut jobs = Vec::new();
     for &lam in grid.1 {
         for &th in grid.0 {
-            progress.set_message(format!("stability, {name}, {}: theta = {th}, lambda = {lam}", convention.name()));
             if let Some(p) = sliding_at(shape.clone(), th, load(lam), convention) {
-                cells.push(run_cell(&mut cache, &SceneProblem::Sliding(p), &knobs, th, lam));
+                jobs.push(CellJob { problem: SceneProblem::Sliding(p), x: th, lambda: lam });
             }
         }
     }
-    (ConventionMap { convention, knobs, cells }, cache, t0.elapsed().as_secs_f64())
+    MapPlan { name, convention: Some(convention), knobs: p1_knobs(shape, convention), jobs }
 }
 
-fn timing_line(s: &mut Section, name: &str, map: &ConventionMap, seconds: f64, note: &str) {
-    let _ = writeln!(
-        s.timings,
-        "| stability map, {name}, `{}` ({} cells{note}) | {seconds:.2} |",
-        map.convention.name(),
-        map.cells.len()
-    );
-}
-
-/// The Problem 2 map: lambda vs nu.
-fn p2_cells(ctx: &mut Ctx, knobs: &[Knob]) -> Vec<Cell> {
-    let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if ctx.profile == Profile::Full {
+/// The cells of the Problem 2 map: lambda vs nu.
+fn p2_plan(profile: Profile, knobs: &[Knob]) -> MapPlan {
+    let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if profile == Profile::Full {
         (vec![(0, 1), (3, 20), (3, 10), (9, 20), (1, 2)], vec![0.2, 0.5, 0.8, 1.1, 1.4])
     } else {
         (vec![(3, 10)], vec![0.4])
     };
-    let mut cells = Vec::new();
+    let mut jobs = Vec::new();
     for &lam in &lambdas {
         for &(n, d) in &nus {
             let nu = n as f64 / d as f64;
-            ctx.step(format!("stability, adhesion: nu = {nu}, lambda = {lam}"));
             let Ok(material) = Material::from_contact_modulus(q(n, d), q(1, 1)) else { continue };
             let Ok(p) = AdhesionProblem::new(
                 material,
@@ -346,18 +351,51 @@ fn p2_cells(ctx: &mut Ctx, knobs: &[Knob]) -> Vec<Cell> {
             ) else {
                 continue;
             };
-            cells.push(run_cell(&mut ctx.cache, &SceneProblem::Adhesion(p), knobs, nu, lam));
+            jobs.push(CellJob { problem: SceneProblem::Adhesion(p), x: nu, lambda: lam });
         }
     }
-    cells
+    MapPlan { name: "adhesion", convention: None, knobs: knobs.to_vec(), jobs }
 }
 
-/// Builds section 4. The `periodic` parabola map is the costliest (its contacts stay physical up
-/// to lambda ~ 1.52, where the verified MPFR runs need hundreds of nodes): it runs on a second
-/// thread (with its own copy of the expansion cache, merged back) while this thread runs the
-/// other maps, so that on two cores the section takes about the longer of the two; the results
-/// do not depend on the threads.
-pub fn section(ctx: &mut Ctx) -> Section {
+/// Runs every cell of `plans` on the report's thread pool ([`super::parallel::map`]), the
+/// largest grid lambda first (the costly cells: the verified MPFR runs need hundreds of nodes
+/// near full contact); returns per plan its cells in grid order and the sum of their run times.
+fn run_plans(ctx: &Ctx, plans: &[MapPlan]) -> Vec<(Vec<Cell>, f64)> {
+    let all: Vec<(usize, &CellJob)> =
+        plans.iter().enumerate().flat_map(|(m, p)| p.jobs.iter().map(move |j| (m, j))).collect();
+    let done = super::parallel::map(
+        &all,
+        |(_, j)| j.lambda,
+        |&(m, j)| {
+            let plan = &plans[m];
+            let conv = plan.convention.map_or(String::new(), |c| format!(", {}", c.name()));
+            ctx.step(format!("stability, {}{conv}: x = {}, lambda = {}", plan.name, j.x, j.lambda));
+            let t0 = std::time::Instant::now();
+            let cell = run_cell(&ctx.cache, &j.problem, &plan.knobs, j.x, j.lambda);
+            (m, cell, t0.elapsed().as_secs_f64())
+        },
+    );
+    let mut out: Vec<(Vec<Cell>, f64)> = plans.iter().map(|_| (Vec::new(), 0.0)).collect();
+    for (m, cell, secs) in done {
+        out[m].0.push(cell);
+        out[m].1 += secs;
+    }
+    out
+}
+
+fn timing_line(s: &mut Section, name: &str, map: &ConventionMap, seconds: f64) {
+    let _ = writeln!(
+        s.timings,
+        "| stability map, {name}, `{}` ({} cells) | {seconds:.2} |",
+        map.convention.name(),
+        map.cells.len()
+    );
+}
+
+/// Builds section 4. Every cell of every map is one job on the report's thread pool
+/// ([`run_plans`]); the cells are collected in grid order, so the text does not depend on the
+/// threads. Timings: per map the sum of its cells' run times (they overlap in wall time).
+pub fn section(ctx: &Ctx) -> Section {
     let full = ctx.profile == Profile::Full;
     let mut s = Section::default();
     let _ = writeln!(
@@ -373,7 +411,10 @@ pub fn section(ctx: &mut Ctx) -> Section {
          over a period); the series of the `periodic` sinusoid is kept through Lambda^8 (its exact derivation \
          through Lambda^12 would take minutes).\n"
     );
-    let _ = writeln!(s.timings, "### Stability maps\n\n| map | seconds |\n|---|---:|");
+    let _ = writeln!(
+        s.timings,
+        "### Stability maps (per map: the sum of its cells' run times)\n\n| map | seconds |\n|---|---:|"
+    );
     let (p_thetas, p_lambdas): (Vec<f64>, Vec<f64>) = if full {
         (vec![-0.4, -0.2, 0.0, 0.2, 0.4], vec![0.1, 0.4, 0.7, 1.0, 1.3, 1.5])
     } else {
@@ -388,68 +429,42 @@ pub fn section(ctx: &mut Ctx) -> Section {
     let westergaard = |lam: f64| std::f64::consts::PI * 0.01 * lam.sin().powi(2);
     let sinusoid = PunchShape::Sinusoidal { amplitude: q(1, 100) };
     let adhesion_knobs = [Knob::F64(None), Knob::MpfrVerified(20)];
-    let progress = ctx.progress.clone();
-    let background_cache = ctx.cache.clone();
     let p_grid = (p_thetas.as_slice(), p_lambdas.as_slice());
     let s_grid = (s_thetas.as_slice(), s_lambdas.as_slice());
     let (q_thetas, q_lambdas) = (vec![-0.4, -0.2, 0.0, 0.2, 0.4], vec![0.2, 0.4, 0.6, 0.7, 0.8]);
     let q_grid = (q_thetas.as_slice(), q_lambdas.as_slice());
-    let (par_paper, sin_paper, sin_periodic, p2, par_periodic) = std::thread::scope(|sc| {
-        let background = sc.spawn(|| {
-            let (par, cache, secs) = p1_map(
-                &progress,
-                background_cache,
-                &parabola,
-                "parabola",
-                Convention::PeriodicSurface,
-                p_grid,
-                &kuznetsov,
-            );
-            // The quartic's maps (full report only) also run on this thread, the shorter of the two.
-            let mut quartic_maps = Vec::new();
-            let mut cache = cache;
-            if full {
-                for conv in [Convention::Paper, Convention::PeriodicSurface] {
-                    let (m, c, t) = p1_map(&progress, cache, &quartic(), "quartic", conv, q_grid, &quartic_load);
-                    cache = c;
-                    quartic_maps.push((m, t));
-                }
+    let mut plans = vec![
+        p1_plan(&parabola, "parabola", Convention::Paper, p_grid, &kuznetsov),
+        p1_plan(&parabola, "parabola", Convention::PeriodicSurface, p_grid, &kuznetsov),
+        p1_plan(&sinusoid, "sinusoid", Convention::Paper, s_grid, &westergaard),
+        p1_plan(&sinusoid, "sinusoid", Convention::PeriodicSurface, s_grid, &westergaard),
+        p2_plan(ctx.profile, &adhesion_knobs),
+    ];
+    // The quartic's maps: full report only.
+    if full {
+        for conv in [Convention::Paper, Convention::PeriodicSurface] {
+            plans.push(p1_plan(&quartic(), "quartic", conv, q_grid, &quartic_load));
+        }
+    }
+    let results = run_plans(ctx, &plans);
+    let mut p1 = Vec::new();
+    let mut p2 = (Vec::new(), 0.0);
+    for (plan, (cells, secs)) in plans.into_iter().zip(results) {
+        match plan.convention {
+            Some(convention) => {
+                let m = ConventionMap { convention, knobs: plan.knobs, cells };
+                timing_line(&mut s, plan.name, &m, secs);
+                p1.push(m);
             }
-            ((par, cache, secs), quartic_maps)
-        });
-        let mut run = |shape: &PunchShape, name: &str, conv: Convention, grid, load: &(dyn Fn(f64) -> f64 + Sync)| {
-            let (map, cache, secs) = p1_map(&progress, std::mem::take(&mut ctx.cache), shape, name, conv, grid, load);
-            ctx.cache = cache;
-            (map, secs)
-        };
-        let par_paper = run(&parabola, "parabola", Convention::Paper, p_grid, &kuznetsov);
-        let sin_paper = run(&sinusoid, "sinusoid", Convention::Paper, s_grid, &westergaard);
-        let sin_periodic = run(&sinusoid, "sinusoid", Convention::PeriodicSurface, s_grid, &westergaard);
-        let t0 = std::time::Instant::now();
-        let p2 = (p2_cells(ctx, &adhesion_knobs), t0.elapsed().as_secs_f64());
-        // A panic in the background thread is a bug: propagate it.
-        let par_periodic = background.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-        (par_paper, sin_paper, sin_periodic, p2, par_periodic)
-    });
-    let ((par_periodic_map, background_cache, par_periodic_secs), quartic_maps) = par_periodic;
-    ctx.cache.merge(background_cache);
-    timing_line(&mut s, "parabola", &par_paper.0, par_paper.1, "");
-    timing_line(
-        &mut s,
-        "parabola",
-        &par_periodic_map,
-        par_periodic_secs,
-        "; second thread, concurrent with the others",
-    );
-    timing_line(&mut s, "sinusoid", &sin_paper.0, sin_paper.1, "");
-    timing_line(&mut s, "sinusoid", &sin_periodic.0, sin_periodic.1, "");
-    for (m, secs) in &quartic_maps {
-        timing_line(&mut s, "quartic", m, *secs, "; second thread, after the periodic parabola");
+            None => p2 = (cells, secs),
+        }
     }
     let _ = writeln!(s.timings, "| stability map, Problem 2 ({} cells) | {:.2} |", p2.0.len(), p2.1);
-    let maps = [par_paper.0, par_periodic_map];
+    // In the order of `plans`: parabola, sinusoid (each `paper`, `periodic`), then the quartic's.
+    let mut p1 = p1.into_iter();
+    let maps: Vec<ConventionMap> = p1.by_ref().take(2).collect();
     map_section_conventions(&mut s, "stability_p1_parabola", "Problem 1, parabola (k = 1)", "", &maps);
-    let maps = [sin_paper.0, sin_periodic.0];
+    let maps: Vec<ConventionMap> = p1.by_ref().take(2).collect();
     map_section_conventions(
         &mut s,
         "stability_p1_sinusoid",
@@ -457,8 +472,8 @@ pub fn section(ctx: &mut Ctx) -> Section {
         "",
         &maps,
     );
-    if !quartic_maps.is_empty() {
-        let maps: Vec<ConventionMap> = quartic_maps.into_iter().map(|m| m.0).collect();
+    let maps: Vec<ConventionMap> = p1.collect();
+    if !maps.is_empty() {
         let title = "Problem 1, quartic g = x^2 + x^4/10 (L = 1): the slope limit";
         let note = format!(
             "The quartic of scene `quartic` (docs/theory.md section 9; issue 11), loaded by its frictionless \

@@ -119,7 +119,7 @@ fn sig(d: f64) -> usize {
 }
 
 /// Builds section 5.
-pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
+pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let _ = writeln!(
         s.markdown,
@@ -177,7 +177,7 @@ pub fn section(ctx: &mut Ctx, scenes: &[(String, Scene)]) -> Section {
             for &(k, pred) in &plan {
                 knob = k;
                 digits_claim = pred;
-                result = runner::run(p, k, &mut ctx.cache);
+                result = runner::run(p, k, &ctx.cache);
                 match &result {
                     Ok(_) => break,
                     Err(e) => failed.push(format!("{} failed ({e})", k.label())),

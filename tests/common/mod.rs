@@ -35,6 +35,12 @@ pub fn scene_file(name: &str, text: &str) -> String {
 /// Writes the report of the fixed fast scene set (`tests/data/report_scenes`, fast profile, order
 /// 4) into a per-process temporary folder named by `tag`: (the folder, what was written).
 pub fn fast_report(tag: &str) -> (std::path::PathBuf, periodic_contact::report::ReportFiles) {
+    fast_report_with(tag, None)
+}
+
+/// [`fast_report`] on `jobs` threads (`None`: one per logical CPU).
+#[allow(dead_code)]
+pub fn fast_report_with(tag: &str, jobs: Option<usize>) -> (std::path::PathBuf, periodic_contact::report::ReportFiles) {
     use periodic_contact::report::{section::Profile, write_report, ReportOptions};
     let out = std::env::temp_dir().join(format!("periodic-contact-{tag}-{}", std::process::id()));
     let opts = ReportOptions {
@@ -43,6 +49,7 @@ pub fn fast_report(tag: &str) -> (std::path::PathBuf, periodic_contact::report::
         order: 4,
         profile: Profile::Fast,
         progress: false,
+        jobs,
     };
     let files = write_report(&opts).unwrap();
     (out, files)

@@ -11,7 +11,7 @@ use crate::numerics::chebyshev;
 use crate::numerics::precision::{bits_for_digits, SOLVER_GUARD_BITS};
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsMpfr;
-use rug::Float;
+use rug::{Assign, Float};
 
 /// Largest collocation size accepted; beyond it lambda is too close to pi/2.
 pub const MAX_NODES: usize = 320;
@@ -161,6 +161,8 @@ pub fn solve_with_nodes_rhs(
     let mut a = vec![vec![Float::with_val(prec, 0); n]; n];
     let mut keep: Vec<Vec<(Float, Float)>> = Vec::with_capacity(n);
     let mut tj = vec![Float::with_val(prec, 0); n];
+    // Scratch for the products (in place: the same roundings as a fresh Float per product).
+    let mut t = Float::new(prec);
     for i in 0..n {
         let sigma = Float::with_val(prec, tau[i].sqrt_ref());
         let chi = Float::with_val(prec, lambda * &sigma);
@@ -172,8 +174,9 @@ pub fn solve_with_nodes_rhs(
             let im = im * &rule.w[q];
             let x = Float::with_val(prec, &tau[i] * &pre.s2[q]) * 2u32 - 1u32;
             chebyshev_values(&x, &mut tj, prec);
-            for j in 0..n {
-                a[i][j] += Float::with_val(prec, &re * &tj[j]);
+            for (aij, tj) in a[i].iter_mut().zip(&tj) {
+                t.assign(&re * tj);
+                *aij += &t;
             }
             row_keep.push((im, x));
         }
@@ -181,12 +184,15 @@ pub fn solve_with_nodes_rhs(
     }
     let b: Vec<Float> = tau.iter().map(|t| rhs.at(t, prec)).collect();
     let (f_coeffs, pivot_ratio) = gauss_solve(a, b, prec)?;
+    let mut clenshaw = chebyshev::Clenshaw::new(prec);
     let j_values: Vec<Float> = keep
         .iter()
         .map(|row| {
             let mut acc = Float::with_val(prec, 0);
             for (im, x) in row {
-                acc += chebyshev::evaluate(&f_coeffs, x, prec) * im;
+                clenshaw.evaluate_into(&f_coeffs, x, &mut t);
+                t *= im;
+                acc += &t;
             }
             acc
         })
@@ -226,22 +232,23 @@ fn chebyshev_values(x: &Float, out: &mut [Float], prec: u32) {
     if n > 1 {
         out[1] = x.clone();
     }
+    // T_j = 2 x T_{j-1} - T_{j-2}, in place (the caller's `out` holds `prec` bits).
     for j in 2..n {
-        let t = Float::with_val(prec, x * &out[j - 1]) * 2u32 - &out[j - 2];
-        out[j] = t;
+        let (done, rest) = out.split_at_mut(j);
+        let t = &mut rest[0];
+        t.assign(x * &done[j - 1]);
+        *t *= 2u32;
+        *t -= &done[j - 2];
     }
 }
 
 /// Gaussian elimination with partial pivoting; returns the solution and max/min |pivot|.
 fn gauss_solve(mut a: Vec<Vec<Float>>, mut b: Vec<Float>, prec: u32) -> Result<(Vec<Float>, f64), AdhesionError> {
     let n = b.len();
+    let mut t = Float::new(prec);
     let (mut pmax, mut pmin) = (0f64, f64::INFINITY);
     for k in 0..n {
-        let p = (k..n)
-            .max_by(|&i, &j| {
-                a[i][k].clone().abs().partial_cmp(&a[j][k].clone().abs()).unwrap_or(std::cmp::Ordering::Equal)
-            })
-            .unwrap_or(k);
+        let p = (k..n).max_by(|&i, &j| a[i][k].cmp_abs(&a[j][k]).unwrap_or(std::cmp::Ordering::Equal)).unwrap_or(k);
         a.swap(k, p);
         b.swap(k, p);
         let piv = a[k][k].clone();
@@ -254,24 +261,29 @@ fn gauss_solve(mut a: Vec<Vec<Float>>, mut b: Vec<Float>, prec: u32) -> Result<(
         }
         pmax = pmax.max(pa);
         pmin = pmin.min(pa);
-        for i in k + 1..n {
-            let m = Float::with_val(prec, &a[i][k] / &piv);
+        // Row operations in place (a scratch product: the same roundings as a fresh Float each).
+        let (top, below) = a.split_at_mut(k + 1);
+        let (bk, b_below) = b.split_at_mut(k + 1);
+        let (row_k, bk) = (&top[k], &bk[k]);
+        for (row_i, bi) in below.iter_mut().zip(b_below.iter_mut()) {
+            let m = Float::with_val(prec, &row_i[k] / &piv);
             if m.is_zero() {
                 continue;
             }
-            for j in k..n {
-                let t = Float::with_val(prec, &m * &a[k][j]);
-                a[i][j] -= t;
+            for (aij, akj) in row_i[k..].iter_mut().zip(&row_k[k..]) {
+                t.assign(&m * akj);
+                *aij -= &t;
             }
-            let t = Float::with_val(prec, &m * &b[k]);
-            b[i] -= t;
+            t.assign(&m * bk);
+            *bi -= &t;
         }
     }
     let mut x = vec![Float::with_val(prec, 0); n];
     for k in (0..n).rev() {
         let mut acc = b[k].clone();
         for j in k + 1..n {
-            acc -= Float::with_val(prec, &a[k][j] * &x[j]);
+            t.assign(&a[k][j] * &x[j]);
+            acc -= &t;
         }
         x[k] = acc / &a[k][k];
     }
