@@ -118,7 +118,7 @@ fn value_of(p: &Pade<Q>, w: &Float, prec: u32) -> Float {
 }
 
 /// The complex zeros of a polynomial with exact coefficients (low to high, the last non-zero),
-/// by the Aberth-Ehrlich iteration at [`ROOT_BITS`] bits. Empty for a constant.
+/// by the Aberth-Ehrlich iteration at `ROOT_BITS` bits. Empty for a constant.
 pub fn polynomial_roots(c: &[Q]) -> Vec<Complex> {
     let prec = ROOT_BITS;
     let mut c: Vec<Float> = c.iter().map(|a| to_float(a, prec)).collect();

@@ -393,7 +393,7 @@ fn timing_line(s: &mut Section, name: &str, map: &ConventionMap, seconds: f64) {
 }
 
 /// Builds section 4. Every cell of every map is one job on the report's thread pool
-/// ([`run_plans`]); the cells are collected in grid order, so the text does not depend on the
+/// (`run_plans`); the cells are collected in grid order, so the text does not depend on the
 /// threads. Timings: per map the sum of its cells' run times (they overlap in wall time).
 pub fn section(ctx: &Ctx) -> Section {
     let full = ctx.profile == Profile::Full;
