@@ -220,6 +220,18 @@ fn run(
     Ok((Run { partial, digits, chosen, w_is_square }, params, sp, xh))
 }
 
+/// The pade method needs two coefficients in Lambda^2 at least.
+fn check_order(order: usize) -> Result<(), Error> {
+    if order < 2 {
+        return Err(Error::input(
+            "--order",
+            order,
+            "the pade method needs an order >= 2 (two coefficients in Lambda^2 at least)",
+        ));
+    }
+    Ok(())
+}
+
 /// Solves `problem` by the Padé approximants of its series through Lambda^order (see
 /// [`solve_pade_with`]).
 pub fn solve_pade(
@@ -228,13 +240,7 @@ pub fn solve_pade(
     order: usize,
     digits: u32,
 ) -> Result<PadeSolution, Error> {
-    if order < 2 {
-        return Err(Error::input(
-            "--order",
-            order,
-            "the pade method needs an order >= 2 (two coefficients in Lambda^2 at least)",
-        ));
-    }
+    check_order(order)?;
     let e = sliding_expansion_with(expansion_shape(problem)?, order, problem.convention())
         .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
     solve_pade_with(&e, problem, points, order, digits)
@@ -254,13 +260,7 @@ pub fn solve_pade_with(
     order: usize,
     digits: u32,
 ) -> Result<PadeSolution, Error> {
-    if order < 2 {
-        return Err(Error::input(
-            "--order",
-            order,
-            "the pade method needs an order >= 2 (two coefficients in Lambda^2 at least)",
-        ));
-    }
+    check_order(order)?;
     assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
     assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
     assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
