@@ -154,13 +154,7 @@ pub(super) fn div_exact(a: &Poly, b: &Poly) -> Option<Poly> {
 
 /// Coefficients of `p` as a polynomial in `x`: `p = sum_k c_k x^k`, `c_k` free of `x`.
 fn coeffs_in(p: &Poly, x: Symbol) -> Vec<Poly> {
-    let d = p.degree_in(x) as usize;
-    let mut parts: Vec<Vec<(Monomial, Q)>> = vec![Vec::new(); d + 1];
-    for (m, q) in p.terms() {
-        let (rest, e) = m.remove(x);
-        parts[e as usize].push((rest, q));
-    }
-    parts.into_iter().map(Poly::from_rational_terms).collect()
+    p.split_in(x)
 }
 
 /// Content of `p` with respect to `x`: the gcd of its coefficients in `x`.
@@ -339,15 +333,25 @@ pub(super) fn gcd(a: &Poly, b: &Poly) -> Poly {
     }
     let (ca, cb) = (content_in(a, x), content_in(b, x));
     let g_content = gcd(&ca, &cb);
-    let mut p = div_exact(a, &ca).expect("content divides");
-    let mut q = div_exact(b, &cb).expect("content divides");
+    // Every member of the sequence is made primitive in x (its content, a polynomial in the other
+    // symbols, divided out) and over Z (coprime integer coefficients): when x is the last symbol
+    // the content is a number,
+    // which the division by `content_in` (gcd of non-zero constants = 1) leaves in place, and the
+    // pseudo-remainders' integers then grew exponentially along the sequence (a Series<Frac> in
+    // Q(a, b) with denominators sharing factors: its inverse through x^5 ran over 100 s).
+    let mut p = div_exact(a, &ca).expect("content divides").primitive_integer();
+    let mut q = div_exact(b, &cb).expect("content divides").primitive_integer();
     if p.degree_in(x) < q.degree_in(x) {
         std::mem::swap(&mut p, &mut q);
     }
     while !q.is_zero() && q.degree_in(x) > 0 {
         let r = prem(&p, &q, x);
         p = q;
-        q = if r.is_zero() { r } else { div_exact(&r, &content_in(&r, x)).expect("content divides") };
+        q = if r.is_zero() {
+            r
+        } else {
+            div_exact(&r, &content_in(&r, x)).expect("content divides").primitive_integer()
+        };
     }
     let g_prim = if q.is_zero() { p } else { Poly::one() };
     monic(&g_content.mul(&g_prim))

@@ -245,6 +245,44 @@ impl Poly {
         Poly::normalized(terms, den)
     }
 
+    /// The associate of `self` with coprime integer coefficients (denominator 1, the gcd of the
+    /// numerators divided out by GMP's gcd) and the sign of its first term positive: the scalar
+    /// normalisation of the gcd's remainder sequence, where any non-zero multiple will do.
+    pub(crate) fn primitive_integer(&self) -> Poly {
+        let Some(first) = self.terms.first() else { return self.clone() };
+        let mut g = first.1.abs();
+        for (_, n) in &self.terms[1..] {
+            if g.is_one() {
+                break;
+            }
+            g = crate::gmp::gcd(&g, n);
+        }
+        if first.1.is_negative() {
+            g = -g;
+        }
+        let terms = self.terms.iter().map(|(m, n)| (m.clone(), n / &g)).collect();
+        Poly { terms, den: BigInt::one() }
+    }
+
+    /// The coefficients of `self` as a polynomial in `x`: `self = sum_k c_k x^k`, `c_k` free of
+    /// `x` (index k). Works on the integer numerators and the common denominator directly (each
+    /// part reduced by its content with GMP's gcd), with no rational per term.
+    pub(crate) fn split_in(&self, x: Symbol) -> Vec<Poly> {
+        let d = self.degree_in(x) as usize;
+        let mut parts: Vec<Vec<(Monomial, BigInt)>> = vec![Vec::new(); d + 1];
+        for (m, n) in &self.terms {
+            let (rest, e) = m.remove(x);
+            parts[e as usize].push((rest, n.clone()));
+        }
+        parts
+            .into_iter()
+            .map(|mut t| {
+                t.sort_by(|a, b| a.0.cmp(&b.0));
+                Poly::normalized(t, self.den.clone())
+            })
+            .collect()
+    }
+
     fn normalized(terms: Vec<(Monomial, BigInt)>, mut den: BigInt) -> Poly {
         let mut terms: Vec<(Monomial, BigInt)> = terms.into_iter().filter(|(_, n)| !n.is_zero()).collect();
         if terms.is_empty() {
