@@ -69,9 +69,10 @@
 //!   lambda^200, A_n = 0.
 //! - Two precisions agree to the digits claimed; the sign change at nu = 0 lies near N ~ 300.
 
+use super::print::VerifiedPart;
 use crate::error::Error;
 use crate::model::Material;
-use crate::numerics::accuracy::{digits_cap_for_bits, print_mpfr, verified_digits_mpfr};
+use crate::numerics::accuracy::{digits_cap_for_bits, verified_digits_mpfr};
 use crate::numerics::precision::{bits_for_digits, SERIES_GUARD_BITS, VERIFY_EXTRA_BITS};
 use crate::numerics::real_series::{compose_several, mul_trunc, tan_sec_in_square};
 use crate::params::adhesion::{eps as eps_const, half_range_moments};
@@ -319,11 +320,6 @@ impl AdhesionNumeric {
         self.load.last().map_or(0, |c| c.0)
     }
 
-    fn value_text(&self, v: &Float, digits: f64) -> String {
-        let scale = Float::with_val(v.prec(), v.abs_ref());
-        print_mpfr(v, &scale, digits, self.digits)
-    }
-
     /// The sentence on the sign change of D_N (module doc, "The pole"), or on its absence.
     pub fn pole_text(&self) -> String {
         match &self.pole {
@@ -388,11 +384,8 @@ impl AdhesionNumeric {
     pub fn text(&self) -> String {
         let mut s = self.header().join("\n");
         s.push('\n');
-        for (name, formula, variable, cs) in self.parts() {
-            s.push_str(&format!("\npart: {name}\nformula: {formula}\nvariable {variable}\n"));
-            for (k, v, d) in cs {
-                s.push_str(&format!("[{variable}^{k}] {}\n", self.value_text(v, *d)));
-            }
+        for (object, formula, variable, coefficients) in self.parts() {
+            s.push_str(&VerifiedPart { object, formula, variable, coefficients }.text(self.digits));
         }
         s
     }
@@ -424,16 +417,9 @@ impl AdhesionNumeric {
                 "text": self.pole_text(),
             })),
             "short": self.short().iter().map(|(o, k, d)| serde_json::json!({"object": o, "power": k, "digits": round(*d)})).collect::<Vec<_>>(),
-            "parts": self.parts().iter().map(|(name, formula, variable, cs)| serde_json::json!({
-                "object": name,
-                "formula": formula,
-                "variable": variable,
-                "coefficients": cs.iter().map(|(k, v, d)| serde_json::json!({
-                    "power": k,
-                    "value": self.value_text(v, *d),
-                    "digits": round(*d),
-                })).collect::<Vec<_>>(),
-            })).collect::<Vec<_>>(),
+            "parts": self.parts().into_iter().map(|(object, formula, variable, coefficients)| {
+                VerifiedPart { object, formula, variable, coefficients }.json(self.digits)
+            }).collect::<Vec<_>>(),
         })
     }
 }

@@ -91,6 +91,7 @@
 //!
 //! So the coefficients here are given at a given nu and n in MPFR, verified by a second run.
 
+use super::print::VerifiedPart;
 use crate::error::Error;
 use crate::model::{Material, ModelError};
 use crate::numerics::accuracy::verified_digits_mpfr;
@@ -585,9 +586,8 @@ impl LawSeries {
         ]
     }
 
-    fn value_text(&self, v: &Float, digits: f64) -> String {
-        let scale = Float::with_val(v.prec(), v.abs_ref());
-        crate::numerics::accuracy::print_mpfr(v, &scale, digits, self.digits)
+    fn view(p: &LawSeriesPart) -> VerifiedPart<'_> {
+        VerifiedPart { object: p.object, formula: p.formula, variable: p.variable, coefficients: &p.coefficients }
     }
 
     /// Plain text: the header, then per part its name, formula and one line per coefficient.
@@ -595,10 +595,7 @@ impl LawSeries {
         let mut s = self.header().join("\n");
         s.push('\n');
         for p in &self.parts {
-            s.push_str(&format!("\npart: {}\nformula: {}\nvariable {}\n", p.object, p.formula, p.variable));
-            for (k, v, d) in &p.coefficients {
-                s.push_str(&format!("[{}^{k}] {}\n", p.variable, self.value_text(v, *d)));
-            }
+            s.push_str(&Self::view(p).text(self.digits));
         }
         s
     }
@@ -617,16 +614,7 @@ impl LawSeries {
             "digits": self.digits,
             "verified_digits": round(self.min_digits()),
             "residual": format!("{:.1e}", self.residual),
-            "parts": self.parts.iter().map(|p| serde_json::json!({
-                "object": p.object,
-                "formula": p.formula,
-                "variable": p.variable,
-                "coefficients": p.coefficients.iter().map(|(k, v, d)| serde_json::json!({
-                    "power": k,
-                    "value": self.value_text(v, *d),
-                    "digits": round(*d),
-                })).collect::<Vec<_>>(),
-            })).collect::<Vec<_>>(),
+            "parts": self.parts.iter().map(|p| Self::view(p).json(self.digits)).collect::<Vec<_>>(),
         })
     }
 }

@@ -389,3 +389,46 @@ mod tests {
         assert_eq!(term_latex(&frac("1*x + 1", "1"), "z", 2, false), "+ \\left(x + 1\\right) z^{2}");
     }
 }
+
+/// One part of an expansion computed numerically and verified by a second run (the loading
+/// law's [`super::loading_law::LawSeries`] and the adhesion series' numerical route
+/// [`super::adhesion_numeric::AdhesionNumeric`]): its name, formula in words, expansion variable and
+/// non-zero coefficients (power, value, verified digits).
+pub(crate) struct VerifiedPart<'a> {
+    pub(crate) object: &'a str,
+    pub(crate) formula: &'a str,
+    pub(crate) variable: &'a str,
+    pub(crate) coefficients: &'a [(usize, rug::Float, f64)],
+}
+
+impl VerifiedPart<'_> {
+    /// A value with its verified digits (at most `asked`), on the scale of its own magnitude.
+    fn value_text(v: &rug::Float, digits: f64, asked: u32) -> String {
+        let scale = rug::Float::with_val(v.prec(), v.abs_ref());
+        crate::numerics::accuracy::print_mpfr(v, &scale, digits, asked)
+    }
+
+    /// `part:`, `formula:`, `variable` lines, then `[var^k] value` per coefficient.
+    pub(crate) fn text(&self, asked: u32) -> String {
+        let mut s = format!("\npart: {}\nformula: {}\nvariable {}\n", self.object, self.formula, self.variable);
+        for (k, v, d) in self.coefficients {
+            s.push_str(&format!("[{}^{k}] {}\n", self.variable, Self::value_text(v, *d, asked)));
+        }
+        s
+    }
+
+    /// `{"object", "formula", "variable", "coefficients": [{"power", "value", "digits"}]}` (values
+    /// as strings, digits to 0.1).
+    pub(crate) fn json(&self, asked: u32) -> serde_json::Value {
+        serde_json::json!({
+            "object": self.object,
+            "formula": self.formula,
+            "variable": self.variable,
+            "coefficients": self.coefficients.iter().map(|(k, v, d)| serde_json::json!({
+                "power": k,
+                "value": Self::value_text(v, *d, asked),
+                "digits": (d * 10.0).round() / 10.0,
+            })).collect::<Vec<_>>(),
+        })
+    }
+}

@@ -103,8 +103,7 @@ pub fn solve_sliding_f64(
     if solutions.is_empty() {
         let adm = admissible_range(&prm, options)?;
         let ranges = ranges_text(&prm, &adm);
-        let fraction = |s: f64| 2.0 * s / std::f64::consts::PI;
-        return Err(SlidingF64Error::Refused(refusal_in_reach(problem, &adm, 1.0, fraction, &reasons, &ranges)));
+        return Err(SlidingF64Error::Refused(refusal_in_reach(problem, &adm, 1.0, &reasons, &ranges)));
     }
     solutions.sort_by(|x, y| x.l.total_cmp(&y.l));
     Ok(SlidingSolutionsF64 { solutions })

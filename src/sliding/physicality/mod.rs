@@ -445,16 +445,15 @@ impl LoadLimit {
 
 /// The refusal of a method that found no contact for a given load, knowing its admissible scan
 /// `adm` (loads in units of `unit`): [`refusal`] when the scan settles the question (the load lies
-/// outside every physical run, and no run reaches the scan's end, or the load is above the
-/// closed-form limit of [`LoadLimit`]); otherwise the load may be carried by a contact beyond this
-/// method's reach, and the refusal says so (`NoConvergence`), with the end of the scan
-/// (`fraction` of its size, 2 lambda/pi) and the physical limit where one is known. A search limit
-/// is never presented as physics.
+/// outside every physical run, and no run reaches the scan's end), "no solution" naming the
+/// closed-form limit of [`LoadLimit`] when the load is above it; otherwise the load may be carried
+/// by a contact beyond this method's reach, and the refusal says so (`NoConvergence`), with the end
+/// of the scan (as the contact fraction 2l/L = 2 lambda/pi) and the physical limit where one is
+/// known. A search limit is never presented as physics.
 pub fn refusal_in_reach(
     problem: &SlidingProblem,
     adm: &admissible::Admissible,
     unit: f64,
-    fraction: impl Fn(f64) -> f64,
     reasons: &[String],
     ranges: &str,
 ) -> Error {
@@ -465,19 +464,23 @@ pub fn refusal_in_reach(
         return refusal(problem.load(), reasons, ranges);
     };
     let limit = LoadLimit::of(problem);
-    let above_limit = matches!(limit, Some(LoadLimit::FullContact(m)) if load >= m);
-    if !reasons.is_empty() || !last.open_above || above_limit || load <= last.load_hi.0 * unit {
-        return match (above_limit, limit) {
-            (true, Some(LoadLimit::FullContact(m))) if reasons.is_empty() => Error::NoSolution {
-                why: format!(
-                    "no contact carries normal_load = {}: it exceeds the full-contact load pi E* D = {} (Westergaard \
-                     [2.17]), the most the sinusoid carries; {ranges}",
-                    readable(v),
-                    readable_f64(m)
-                ),
-            },
-            _ => refusal(problem.load(), reasons, ranges),
+    // The full-contact load, when the load is at or above it.
+    let exceeded = match limit {
+        Some(LoadLimit::FullContact(m)) if load >= m => Some(m),
+        _ => None,
+    };
+    if let (Some(m), true) = (exceeded, reasons.is_empty()) {
+        return Error::NoSolution {
+            why: format!(
+                "no contact carries normal_load = {}: it exceeds the full-contact load pi E* D = {} (Westergaard \
+                 [2.17]), the most the sinusoid carries; {ranges}",
+                readable(v),
+                readable_f64(m)
+            ),
         };
+    }
+    if !reasons.is_empty() || !last.open_above || exceeded.is_some() || load <= last.load_hi.0 * unit {
+        return refusal(problem.load(), reasons, ranges);
     }
     let physics = match limit {
         Some(l) => l.text(),
@@ -488,7 +491,7 @@ pub fn refusal_in_reach(
             "normal_load = {} needs a contact beyond this method's reach: its scan ends at contact fraction 2l/L = {} \
              carrying {} (the node count needed grows without bound as the contact fills the period); {physics}; {ranges}",
             readable(v),
-            readable_f64(fraction(last.size_hi)),
+            readable_f64(2.0 * last.size_hi / std::f64::consts::PI),
             readable_f64(last.load_hi.0 * unit)
         ),
     }

@@ -109,18 +109,12 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
 /// precision. The MPFR rule at the locating precision costs O(n^2) MPFR operations per Newton pass,
 /// and the scan up to the node cap needs rules of several hundred nodes (about 0.2 s in all, the
 /// solver's former floor); brackets are then refined with MPFR rules ([`load_lo`]).
-fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
+fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<GaussJacobiRule, SlidingError> {
     let (a, b) = params.inverse_weight_exponents();
     let r = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, a.to_f64(), b.to_f64())
         .map_err(|e| SlidingError::NoConvergence(format!("the scan's f64 rule: {e}")))?;
     let lift = |v: &[f64]| v.iter().map(|x| Float::with_val(params.prec, *x)).collect();
-    Ok(Arc::new(GaussJacobiRule {
-        alpha: a,
-        beta: b,
-        nodes: lift(&r.nodes),
-        weights: lift(&r.weights),
-        prec: params.prec,
-    }))
+    Ok(GaussJacobiRule { alpha: a, beta: b, nodes: lift(&r.nodes), weights: lift(&r.weights), prec: params.prec })
 }
 
 /// Centre solutions (all branches) at size s with n nodes.
@@ -222,16 +216,15 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
             // Both centre branches come from the same two integrals: evaluate them once per point.
             let grid = 48;
             let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
-            let mut rules: std::collections::HashMap<usize, Arc<GaussJacobiRule>> = Default::default();
+            let mut rules: std::collections::HashMap<usize, GaussJacobiRule> = Default::default();
             for i in 1..=grid {
                 let s = cap * i as f64 / grid as f64;
                 // The scan only needs signs: SCAN_DIGITS; brackets are refined with LOCATE_DIGITS.
                 let n = bucket(nodes_for(s, SCAN_DIGITS));
-                let rule = match rules.get(&n) {
-                    Some(r) => r.clone(),
-                    None => rules.entry(n).or_insert(scan_rule(params, n)?).clone(),
-                };
-                let b = branches_with(params, &Float::with_val(params.prec, s), &rule)?;
+                if !rules.contains_key(&n) {
+                    rules.insert(n, scan_rule(params, n)?);
+                }
+                let b = branches_with(params, &Float::with_val(params.prec, s), &rules[&n])?;
                 for (br, curve) in curves.iter_mut().enumerate() {
                     curve.push((s, b.get(br).map(|v| (v.p2.to_f64() - target) / target)));
                 }
@@ -303,8 +296,7 @@ fn refused(setup: &Setup, reasons: &[String]) -> Result<SlidingError, SlidingErr
         }
         (TargetMpfr::HalfLength(_), None) => adm.sizes_text(|s| s),
     };
-    let fraction = |s: f64| 2.0 * s / std::f64::consts::PI;
-    Ok(SlidingError::Core(refusal_in_reach(&setup.problem, &adm, unit, fraction, reasons, &ranges)))
+    Ok(SlidingError::Core(refusal_in_reach(&setup.problem, &adm, unit, reasons, &ranges)))
 }
 
 /// The shared criterion for the contact of branch solution `sol` at size `s` (the loads P1 =

@@ -15,8 +15,8 @@
 
 use super::partial::Partial;
 use super::point::SeriesPoint;
-use super::solve::{expansion_shape, solution, SeriesAccuracy, SeriesSolution};
-use crate::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion};
+use super::solve::{check_order, derive_expansion, expansion_shape, solution, SeriesAccuracy, SeriesSolution};
+use crate::asymptotics::sliding::SlidingExpansion;
 use crate::error::Error;
 use crate::model::{Exact, SlidingProblem};
 use crate::numerics::accuracy::{readable_f64, readable_mpfr, verified_digits_mpfr};
@@ -220,17 +220,8 @@ fn run(
     Ok((Run { partial, digits, chosen, w_is_square }, params, sp, xh))
 }
 
-/// The pade method needs two coefficients in Lambda^2 at least.
-fn check_order(order: usize) -> Result<(), Error> {
-    if order < 2 {
-        return Err(Error::input(
-            "--order",
-            order,
-            "the pade method needs an order >= 2 (two coefficients in Lambda^2 at least)",
-        ));
-    }
-    Ok(())
-}
+/// What the pade method says of an order below 2: it needs two coefficients in Lambda^2 at least.
+const PADE_ORDER: &str = "the pade method needs an order >= 2 (two coefficients in Lambda^2 at least)";
 
 /// Solves `problem` by the Padé approximants of its series through Lambda^order (see
 /// [`solve_pade_with`]).
@@ -240,10 +231,8 @@ pub fn solve_pade(
     order: usize,
     digits: u32,
 ) -> Result<PadeSolution, Error> {
-    check_order(order)?;
-    let e = sliding_expansion_with(expansion_shape(problem)?, order, problem.convention())
-        .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
-    solve_pade_with(&e, problem, points, order, digits)
+    check_order(order, PADE_ORDER)?;
+    solve_pade_with(&derive_expansion(problem, order)?, problem, points, order, digits)
 }
 
 /// [`solve_pade`] with the expansion already derived (of the problem's shape and convention,
@@ -260,7 +249,7 @@ pub fn solve_pade_with(
     order: usize,
     digits: u32,
 ) -> Result<PadeSolution, Error> {
-    check_order(order)?;
+    check_order(order, PADE_ORDER)?;
     assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
     assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
     assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");

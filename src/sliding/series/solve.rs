@@ -102,21 +102,26 @@ pub fn solve_series(
     order: usize,
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
-    check_order(order)?;
-    let e = sliding_expansion_with(expansion_shape(problem)?, order, problem.convention())
-        .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })?;
-    solve_series_with(&e, problem, points, order, digits)
+    check_order(order, SERIES_ORDER)?;
+    solve_series_with(&derive_expansion(problem, order)?, problem, points, order, digits)
 }
 
-fn check_order(order: usize) -> Result<(), Error> {
+/// What the series method says of an order below 2.
+const SERIES_ORDER: &str = "the series method needs an order >= 2 (it estimates its error from the terms it keeps)";
+
+/// Refuses an order below 2 (`--order`), saying `expected` (the series and pade methods).
+pub(super) fn check_order(order: usize, expected: &str) -> Result<(), Error> {
     if order < 2 {
-        return Err(Error::input(
-            "--order",
-            order,
-            "the series method needs an order >= 2 (it estimates its error from the terms it keeps)",
-        ));
+        return Err(Error::input("--order", order, expected));
     }
     Ok(())
+}
+
+/// The problem's expansion through Lambda^order (its shape and convention); an engine failure is
+/// no convergence.
+pub(super) fn derive_expansion(problem: &SlidingProblem, order: usize) -> Result<SlidingExpansion, Error> {
+    sliding_expansion_with(expansion_shape(problem)?, order, problem.convention())
+        .map_err(|err| Error::NoConvergence { what: format!("the series through Lambda^{order}: {err}") })
 }
 
 /// [`solve_series`] with an expansion already derived (of the problem's shape and convention,
@@ -134,7 +139,7 @@ pub fn solve_series_with(
     order: usize,
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
-    check_order(order)?;
+    check_order(order, SERIES_ORDER)?;
     assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
     assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
     assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
