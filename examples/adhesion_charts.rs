@@ -14,6 +14,9 @@
 //!     against the requested digits (nu = 0.3, a/L = 3/20, 11 points)
 //! cargo run --release --example adhesion_charts -- series-timing     time of the order-12 exact
 //!     series without stresses and of its values at 100 bits, and the values at nu = 0
+//! cargo run --release --example adhesion_charts -- homogeneous       the homogeneous solution
+//!     (asymptotics::adhesion_mode): loads of collocations with 60-120 nodes at 300 bits, their
+//!     residual between the nodes, and log10 |F_a - F_b| over tau, at nu = 0, 0.3, 1/2
 //! ```
 
 use periodic_contact::adhesion::series_f64::{self, SeriesParams, UniversalSeries};
@@ -184,6 +187,47 @@ fn series_timing() {
     }
 }
 
+fn homogeneous() {
+    let prec = 300;
+    let p = VolterraParams { prec, target_bits: prec - 40, refine: 1.3 };
+    let pi = Float::with_val(prec, rug::float::Constant::Pi);
+    for (nu, lams) in [(q(0, 1), vec![0.8, 0.9, 1.0]), (q(3, 10), vec![1.2, 1.35, 1.45]), (q(1, 2), vec![1.0, 1.45])] {
+        let c = AdhesionParamsMpfr::new(&material(&nu), prec);
+        let f = AdhesionParamsF64::new(&material(&nu));
+        let mode = periodic_contact::asymptotics::adhesion_mode::symmetric_mode_exponent(f.eps, f.b, f.s, 2_000_000);
+        println!("nu {nu}: m* = {mode:?}");
+        for lam in lams {
+            let l = Float::with_val(prec, lam);
+            let runs: Vec<_> = [60usize, 80, 100, 120]
+                .iter()
+                .filter_map(|&n| volterra_mpfr::solve_with_nodes(&c, &l, p, n).ok().map(|s| (n, s)))
+                .collect();
+            for (n, s) in &runs {
+                let res = (1..24)
+                    .map(|k| {
+                        let sigma = Float::with_val(prec, k as f64 / 24.0 + 0.007);
+                        Float::with_val(prec, s.integral_i(&sigma).0 - &pi).abs().to_f64()
+                    })
+                    .fold(0f64, f64::max);
+                println!(
+                    "  lambda {lam}: n {n}: load {} residual {res:.1e}",
+                    s.load_ratio().to_string_radix(10, Some(32))
+                );
+            }
+            if let [(_, a), .., (_, b)] = runs.as_slice() {
+                let d: Vec<String> = (1..=10)
+                    .map(|k| {
+                        let t = Float::with_val(prec, k as f64 / 10.0);
+                        let v = Float::with_val(prec, a.f_at(&t) - b.f_at(&t)).abs().to_f64();
+                        format!("{:.1}", v.max(1e-300).log10())
+                    })
+                    .collect();
+                println!("  lambda {lam}: log10|F_60 - F_120| at tau = 0.1..1: {}", d.join(" "));
+            }
+        }
+    }
+}
+
 fn main() {
     match std::env::args().nth(1).as_deref() {
         Some("conditioning") => conditioning(),
@@ -192,8 +236,9 @@ fn main() {
         Some("timing") => timing(),
         Some("digits-cost") => digits_cost(),
         Some("series-timing") => series_timing(),
+        Some("homogeneous") => homogeneous(),
         _ => eprintln!(
-            "usage: adhesion_charts conditioning | singularity | series-ratios | timing | digits-cost | series-timing"
+            "usage: adhesion_charts conditioning | singularity | series-ratios | timing | digits-cost | series-timing | homogeneous"
         ),
     }
 }

@@ -7,7 +7,9 @@
 //!   `solution` (dimensional), `verify` (two runs, verified digits);
 //! - [`series_f64`] (method 2): power series in lambda^2, `f64`; `kernel`, `series` (the
 //!   universal coefficients), `solve` (one lambda), `solution` (dimensional), `verify` (two runs,
-//!   estimated digits).
+//!   estimated digits);
+//! - [`collocation_f64`] (method 2b): collocation in eta, `f64`, one block of the loading law's
+//!   march with N = 0, where the series stops (issue 13); [`method_f64`] picks between 2 and 2b.
 //!
 //! Punches: the parabola, even polynomials and the circle (both methods), with the refusals of
 //! [`profile`] (convexity, |x| < R, slope limit). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
@@ -19,7 +21,8 @@
 //! Entry points:
 //! - [`solve_verified`]`(problem, points, digits)`: MPFR, two runs, verified digits per quantity;
 //! - [`solve_mpfr`]`(problem, points, params)`: one MPFR run;
-//! - [`solve_f64`]`(problem, points)`: the independent f64 method, with estimated digits.
+//! - [`solve_f64`]`(problem, points)`: the independent f64 method (series, else collocation in
+//!   eta), with estimated digits.
 //!
 //! docs/theory.md section 4 was checked numerically, not only used: the unit-load flat-punch stress
 //! satisfies (H + i beta) sigma_flat = 0 inside and H\[sigma_flat\] = K/L outside (to 1e-13), and the
@@ -28,8 +31,10 @@
 //! to docs/theory.md was needed. Additions: the conditioning limits of the incremental method at small
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
+pub mod collocation_f64;
 pub mod error;
 pub mod loading_law;
+pub mod method_f64;
 pub mod points;
 pub mod profile;
 pub mod scales;
@@ -38,9 +43,9 @@ pub mod tension;
 pub mod volterra_mpfr;
 
 pub use error::AdhesionError;
+pub use method_f64::solve_f64;
 pub use scales::{Digits, ScalesF64, ScalesMpfr};
-pub use series_f64::solution::{AdhesionSolutionF64, PointValuesF64};
-pub use series_f64::verify::solve_f64;
+pub use series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
 pub use volterra_mpfr::solution::{solve_mpfr, solve_mpfr_with, AdhesionSolution, PointValues, TensionZones};
 pub use volterra_mpfr::verify::{solve_verified, VerifiedSolution};
 

@@ -46,8 +46,11 @@
 //!
 //! At n = 0 (the symmetric problem) det M = 2 M_f M_g and both factors vanish close together:
 //! nu = 0: mu* = 603.731091 (9.2), a pair of zeros that the plain sign scan steps over (found by
-//! the finer rescan at the minimum of |det M|), matching the pole of the exact symmetric
-//! coefficients where Re M_(2N+1) = 0 near N = 302 (issue 13); no zero found below 2000 at
+//! the finer rescan at the minimum of |det M|): the smaller one is M_g's (the centre moving);
+//! M_f(mu) = Re M_(mu+1) vanishes at 604.73, the symmetric problem's own mode
+//! ([`super::adhesion_mode`], test `the_loading_law_symbol_has_this_zero_in_its_f_column`), which
+//! is the pole of the exact symmetric coefficients where Re M_(2N+1) = 0 near N = 302 (issue 13).
+//! No zero found below 2000 at
 //! n = 0 for nu >= 1/10. Checks (tests below): nu = 0, n = 1/2 and 1/5 against an
 //! independent mpmath computation of the same determinant (`mp.findroot` on the 2x2
 //! determinant with `mp.quad`, run once: 31.8395100566, 178.311153189); the series' coefficients

@@ -3,6 +3,7 @@
 //! Order convention (docs/theory.md section 5): "order N" keeps every term through lambda^N.
 
 pub mod adhesion;
+pub mod adhesion_mode;
 pub mod adhesion_numeric;
 pub mod adhesion_singularity;
 pub mod catalog;

@@ -92,6 +92,6 @@ pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]
             field("q2", &|pt| pt.q2, sc.stress, d.q2),
         ],
         tension_zones: None,
-        warnings: vec![],
+        warnings: s.warnings.clone(),
     }
 }

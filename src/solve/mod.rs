@@ -199,6 +199,8 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
     let mut m = render::adhesion_json(&answer_adhesion::f64_answer(p, &s, &scene.output.points), shown);
     m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
+    m.insert("route".into(), json!(s.route.name()));
     Ok(Value::Object(m))
 }
 

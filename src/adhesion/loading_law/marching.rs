@@ -77,6 +77,14 @@ impl MarchSetting {
     fn constant_ratio(&self) -> bool {
         self.slope.len() <= 1
     }
+    /// No tangential load (N = 0) on an even punch (G odd): the contact stays centred, gamma = 0,
+    /// and only the leading edge's equation is imposed (the trailing one is its mirror image).
+    /// Then the march is a method for section 4's symmetric Problem 2 in its own right: with
+    /// gamma free, its own error would move the centre at small nu (the asymmetric homogeneous
+    /// modes of [`crate::asymptotics::loading_law_modes`]) although the exact centre stays put.
+    pub fn symmetric(&self) -> bool {
+        self.slope.iter().all(|c| *c == 0.0) && self.profile.iter().step_by(2).all(|c| *c == 0.0)
+    }
 }
 
 /// The discretisation of the march.
@@ -376,11 +384,12 @@ impl March {
         with_history: Option<&[[C64; 2]]>,
     ) -> Result<(Vec<f64>, Vec<[C64; 2]>), AdhesionError> {
         let k = self.blocks.len() - 1;
-        let mut out = Vec::with_capacity(2 * lambdas.len());
+        let sides: &[Side] = if self.setting.symmetric() { &[Side::Right] } else { &[Side::Right, Side::Left] };
+        let mut out = Vec::with_capacity(sides.len() * lambdas.len());
         let mut hist = Vec::with_capacity(lambdas.len());
         for (j, (&lam, &gl)) in lambdas.iter().zip(gammas).enumerate() {
             let mut h = [C64::new(0.0, 0.0); 2];
-            for (i, side) in [Side::Right, Side::Left].into_iter().enumerate() {
+            for (i, &side) in sides.iter().enumerate() {
                 h[i] = match with_history {
                     Some(hs) => hs[j][i],
                     None => self.history(side, lam, gl, k)?,
@@ -493,6 +502,9 @@ impl March {
 pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> Result<March, AdhesionError> {
     let rules = Rules::new(options)?;
     let m = options.nodes;
+    // Unknowns per block: the values of F, and of Gm unless the contact stays centred.
+    let symmetric = setting.symmetric();
+    let unknowns = if symmetric { m } else { 2 * m };
     let (h, count) = match end {
         MarchEnd::Size(lam) => {
             let count = (lam / options.block).ceil().max(1.0) as usize;
@@ -509,13 +521,13 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         let mut x: Vec<f64> = match mar.blocks.last() {
             Some(b) => {
                 let us: Vec<f64> = lambdas.iter().map(|l| b.u(*l)).collect();
-                us.iter().map(|u| cheb(&b.f, *u)).chain(us.iter().map(|u| cheb(&b.g, *u))).collect()
+                us.iter().map(|u| cheb(&b.f, *u)).chain(us.iter().map(|u| cheb(&b.g, *u))).take(unknowns).collect()
             }
-            None => (0..2 * m).map(|i| if i < m { setting.start } else { 0.0 }).collect(),
+            None => (0..unknowns).map(|i| if i < m { setting.start } else { 0.0 }).collect(),
         };
         let install = |mar: &mut March, x: &[f64]| {
-            let blk =
-                Block::new(start, h, mar.rules.coefficients(&x[..m]), mar.rules.coefficients(&x[m..]), load_start);
+            let g = if symmetric { vec![0.0; m] } else { mar.rules.coefficients(&x[m..]) };
+            let blk = Block::new(start, h, mar.rules.coefficients(&x[..m]), g, load_start);
             if mar.blocks.len() == k + 1 {
                 mar.blocks[k] = blk;
             } else {
@@ -532,7 +544,8 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         let mut stalls = 0;
         for _ in 0..40 {
             mar.steps += 1;
-            let gammas: Vec<f64> = lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect();
+            let gammas: Vec<f64> =
+                if symmetric { vec![0.0; m] } else { lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect() };
             let (r, hist) = mar.residual(&lambdas, &gammas, None)?;
             let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
             if rmax < best.0 {
@@ -652,16 +665,19 @@ fn jacobian(
 ) -> Result<nalgebra::DMatrix<f64>, AdhesionError> {
     let m = lambdas.len();
     let k = mar.blocks.len() - 1;
-    let mut jac = nalgebra::DMatrix::zeros(2 * m, 2 * m);
-    for i in 0..2 * m {
+    // x holds m values (symmetric: F only) or 2 m (F and Gm); as many equations.
+    let q = x.len();
+    let mut jac = nalgebra::DMatrix::zeros(q, q);
+    for i in 0..q {
         let step = 1e-7 * (1.0 + x[i].abs());
         let mut xp = x.to_vec();
         xp[i] += step;
         install(mar, &xp);
-        let gp: Vec<f64> = lambdas.iter().zip(&xp[m..]).map(|(l, g)| l * g).collect();
+        let gp: Vec<f64> =
+            if q == m { gammas.to_vec() } else { lambdas.iter().zip(&xp[m..]).map(|(l, g)| l * g).collect() };
         // The history at the unperturbed gamma: its dependence is added below.
         let (rp, _) = mar.residual(lambdas, &gp, Some(hist))?;
-        for row in 0..2 * m {
+        for row in 0..q {
             jac[(row, i)] = (rp[row] - r[row]) / step;
         }
         // The residual above moved G(chi_e) with gamma; the history's share is added here.

@@ -25,9 +25,30 @@ pub struct PointValuesF64 {
     pub q2: f64,
 }
 
+/// Which f64 method produced an [`AdhesionSolutionF64`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum F64Route {
+    /// The power series in lambda^2 (this module).
+    Series,
+    /// The collocation in eta ([`crate::adhesion::collocation_f64`]), where the series stops.
+    Collocation,
+}
+
+impl F64Route {
+    /// The name printed in the JSON (`route`).
+    pub fn name(self) -> &'static str {
+        match self {
+            F64Route::Series => "lambda^2 series",
+            F64Route::Collocation => "collocation in eta",
+        }
+    }
+}
+
 /// Method 2 solution (f64).
 #[derive(Debug, Clone, PartialEq)]
 pub struct AdhesionSolutionF64 {
+    /// The method that produced it.
+    pub route: F64Route,
     /// lambda.
     pub lambda: f64,
     /// a.
@@ -36,11 +57,13 @@ pub struct AdhesionSolutionF64 {
     pub normal_load: f64,
     /// Points.
     pub points: Vec<PointValuesF64>,
-    /// Series terms used.
+    /// Series terms used (the collocation: points).
     pub terms: usize,
     /// Digits per quantity estimated by a second, finer run ([`super::verify`]); never more than
     /// the true digits (tested against method 1).
     pub digits_estimated: Digits,
+    /// Why digits are short, if they are (the collocation at small nu; empty otherwise).
+    pub warnings: Vec<String>,
 }
 
 /// One run of method 2 (f64 power series in lambda^2) on the universal series of the problem's
@@ -99,12 +122,14 @@ pub(super) fn solve_run(
         })
         .collect();
     Ok(AdhesionSolutionF64 {
+        route: F64Route::Series,
         lambda,
         half_width: a,
         normal_load: load,
         points: pts,
         terms: sol.f.len(),
         digits_estimated: Digits::from_points(0.0, [], 0.0),
+        warnings: Vec::new(),
     })
 }
 

@@ -33,8 +33,9 @@ pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhesion
     Ok(sol)
 }
 
-/// Digits of `sol` from its difference to the finer run `fine` (module doc).
-fn estimate(problem: &AdhesionProblem, sol: &AdhesionSolutionF64, fine: &AdhesionSolutionF64) -> Digits {
+/// Digits of `sol` from its difference to the finer run `fine` (module doc); shared with the
+/// collocation in eta ([`crate::adhesion::collocation_f64`]), whose check run is its `fine`.
+pub(crate) fn estimate(problem: &AdhesionProblem, sol: &AdhesionSolutionF64, fine: &AdhesionSolutionF64) -> Digits {
     let cap = F64_DIGITS_CAP;
     let scales = ScalesF64::new(problem, fine.half_width, fine.normal_load);
     let size = match problem.size() {

@@ -43,10 +43,12 @@
 //! is not confirmed by the long series: the ratio analysis of 300 verified coefficients
 //! ([`crate::asymptotics::adhesion_singularity`], docs/theory.md section 11) finds no fixed
 //! singularity below nu = 1/2 (the local estimate drifts with the order and tracks the phase of
-//! M_(2j+1)). The loss of digits is the conditioning described above, steady in lambda (nu = 0:
-//! 17.5 verified digits at lambda = 0.8, 8.1 at 0.9, 4.7 at 1.0 with 20 asked), and more requested
-//! digits do not recover it (nu = 0, lambda = 1: 4.4, 3.5, 3.4 at 20, 30, 40: the two runs'
-//! discretisation errors, amplified); a better-conditioned formulation is the remedy.
+//! M_(2j+1)). The loss of digits is steady in lambda (nu = 0: 17.5 verified digits at lambda = 0.8,
+//! 8.1 at 0.9, 4.7 at 1.0 with 20 asked), and more requested digits do not recover it (nu = 0,
+//! lambda = 1: 4.4, 3.5, 3.4 at 20, 30, 40). The cause is settled in
+//! [`crate::asymptotics::adhesion_mode`]: below nu = 1/2 the incremental problem has a homogeneous
+//! solution H ~ eta^m* (Re M_m* = 0; m* = 605.73 at nu = 0), so the two runs, each satisfying the
+//! equation to its precision, pick different multiples of H; no formulation removes that.
 //! [`verify::solve_verified`] reports the loss (fewer verified digits, and a typed error below 2 digits).
 
 //!

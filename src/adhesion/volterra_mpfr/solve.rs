@@ -126,7 +126,17 @@ pub fn solve_rhs(
                 parameter: "lambda",
                 value: readable_mpfr(lambda),
                 valid: format!("a contact for which {MAX_NODES} Chebyshev nodes suffice"),
-                reason: format!("Chebyshev coefficients decay too slowly (rate {rate:.3} per node)"),
+                reason: {
+                    // Below nu = 1/2 slow decay is the homogeneous solution's share in F
+                    // (asymptotics::adhesion_mode), not only the approach to full contact.
+                    let f = constants.to_f64();
+                    let mode = if f.eps > 0.0 {
+                        format!("; {}", crate::asymptotics::adhesion_mode::mode_sentence(f.eps, f.b, f.s))
+                    } else {
+                        String::new()
+                    };
+                    format!("Chebyshev coefficients decay too slowly (rate {rate:.3} per node){mode}")
+                },
             });
         }
     }

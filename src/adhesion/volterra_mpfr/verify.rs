@@ -10,9 +10,22 @@ use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
 use crate::adhesion::error::AdhesionError;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
+use crate::asymptotics::adhesion_mode::mode_sentence;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
+use crate::params::adhesion::AdhesionParamsF64;
 use std::time::Instant;
+
+/// Why two runs disagree below full contact: at nu < 1/2 the homogeneous solution
+/// ([`crate::asymptotics::adhesion_mode`], naming its exponent m*), at nu = 1/2 the conditioning.
+fn small_nu_cause(problem: &AdhesionProblem) -> String {
+    let c = AdhesionParamsF64::new(problem.material());
+    if c.eps > 0.0 {
+        mode_sentence(c.eps, c.b, c.s)
+    } else {
+        "the Volterra equation of the incremental method is ill-conditioned here (volterra_mpfr, Conditioning)".into()
+    }
+}
 
 /// Below this many verified digits `solve_verified` returns `IllConditioned` instead of values.
 pub const MIN_DIGITS: f64 = 2.0;
@@ -83,10 +96,7 @@ pub fn solve_verified(
             parameter: "lambda",
             value: readable_f64(lam),
             valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
-            reason: format!(
-                "two runs agree to only {headline:.1} digits: the Volterra equation of the incremental method is \
-                 ill-conditioned here (see volterra_mpfr, Conditioning)"
-            ),
+            reason: format!("two runs agree to only {headline:.1} digits: {}", small_nu_cause(problem)),
         });
     }
     if headline < digits_requested as f64 {
@@ -94,12 +104,12 @@ pub fn solve_verified(
         // conditioning of the incremental equation (module doc of volterra_mpfr, Conditioning):
         // more requested digits do not help there (nu = 0, lambda = 1: 4.4, 3.5, 3.4 verified
         // at 20, 30, 40 requested).
-        let cause = if lam >= FULL_CONTACT_LAMBDA {
-            "near full contact lambda -> pi/2 the solution is singular and the discretisation converges slowly"
-        } else {
-            "the Volterra equation of the incremental method is ill-conditioned at this nu and size (volterra_mpfr, \
-             Conditioning: at small nu the operator nearly annihilates some powers eta^(2j+1), and the two runs' \
-             discretisation errors are amplified); more requested digits do not recover them"
+        let near = "near full contact lambda -> pi/2 the solution is singular and the discretisation converges slowly";
+        let eps_positive = AdhesionParamsF64::new(problem.material()).eps > 0.0;
+        let cause = match (lam >= FULL_CONTACT_LAMBDA, eps_positive) {
+            (true, true) => format!("{near}; and {}", small_nu_cause(problem)),
+            (true, false) => near.to_string(),
+            (false, _) => small_nu_cause(problem),
         };
         warnings.push(format!(
             "only {headline:.1} of {digits_requested} requested digits verified (lambda = {lam:.6}; {cause})"

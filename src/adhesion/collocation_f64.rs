@@ -1,0 +1,395 @@
+//! Method 2b (`f64`): section 4's symmetric Problem 2 by collocation in eta, the f64 method where
+//! the lambda^2 series of [`super::series_f64`] stops (issue 13: it refuses lambda >= ~0.74 at
+//! nu = 0 and ~1.2 at nu = 0.3, the radius it observes).
+//!
+//! The equation is the leading edge's condition of the incremental method (docs/theory.md
+//! sections 4 and 10, chi = pi x/L, lambda = pi a/L, P2 = E* k (L/pi)^2 P):
+//!   Re int_0^chi P'(eta) L K(chi - eta; eta) d eta = G(chi),   0 < chi <= lambda,
+//! with the flat punch's outside slope L K of [`super::loading_law::kernel_f64`] and the punch's
+//! scaled slope G(chi) = pi^2 g'(L chi/pi)/(2 k L) (the parabola: pi chi; an even polynomial
+//! g = sum c_2m x^(2m): pi sum_m (m c_2m/k) (L/pi)^(2m-2) chi^(2m-1)). It is solved as one block
+//! of the loading law's march ([`super::loading_law::marching`] with N = 0, the contact centred,
+//! gamma = 0): F = P'(eta)/eta a polynomial of degree m - 1 in eta on [0, lambda] (Chebyshev),
+//! fixed by the equation at the m right-Radau points, the integral by tanh-sinh in chi - eta.
+//! So nothing is shared with method 1 ([`super::volterra_mpfr`], MPFR, Chebyshev in tau =
+//! (eta/lambda)^2 with the substitution eta = chi s and its own kernel) or with the series.
+//! psi, phi and the stresses are the march's fields (their scalings: [`super::loading_law::
+//! verified_f64`]).
+//!
+//! Size of the discretisation: F is analytic on [0, lambda] with its nearest singularities at
+//! eta = +-pi/2 (full contact), so its Chebyshev coefficients in u = 2 eta/lambda - 1 fall like
+//! rho^-j, rho = u* + sqrt(u*^2 - 1), u* = pi/lambda - 1; m = ceil(37/ln rho) + 4 points (about
+//! 16 digits), the check run 8 more (and finer rules). Digits are estimated from the two runs as
+//! for the series ([`super::series_f64::verify`]).
+//!
+//! What stops it is the problem, not the rule (docs/theory.md section 11, [`super::volterra_mpfr`],
+//! Conditioning): below nu = 1/2 the incremental problem is solved only up to a homogeneous
+//! solution, so two discretisations may pick different multiples of it and the estimate falls
+//! (measured by `cargo test --release --lib adhesion::collocation_f64 -- --nocapture`). Agreement
+//! with method 1 (tests below): nu = 0.3, lambda = 1.2 (where the series refuses) and nu = 0,
+//! lambda = 0.7, load and fields to >= 12 digits.
+//!
+//! Punches: the parabola and even polynomials (G a polynomial in chi); the circle's slope is not
+//! a polynomial, and it is refused here (the series serves it inside its radius).
+
+use super::error::AdhesionError;
+use super::loading_law::kernel_f64::KernelF64;
+use super::loading_law::marching::{march, March, MarchEnd, MarchOptions, MarchSetting};
+use super::profile::{check_profile_on_contact, largest_admissible_half_width};
+use super::scales::Digits;
+use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
+use super::series_f64::verify::estimate;
+use super::series_f64::RightSeries;
+use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
+use crate::numerics::accuracy::readable_f64;
+use crate::numerics::exact::to_f64;
+use crate::params::adhesion::AdhesionParamsF64;
+use std::f64::consts::PI;
+
+/// Largest number of collocation points (lambda ~ 1.52).
+pub const MAX_POINTS: usize = 100;
+
+/// Collocation points of the nominal run at `lambda` (module doc), or `None` beyond
+/// [`MAX_POINTS`].
+pub fn points_for(lambda: f64) -> Option<usize> {
+    let u = PI / lambda.max(1e-3) - 1.0;
+    let rho = u + (u * u - 1.0).max(0.0).sqrt();
+    let m = (37.0 / rho.ln()).ceil() + 4.0;
+    (m.is_finite() && m <= MAX_POINTS as f64).then_some((m as usize).max(8))
+}
+
+/// The nominal options for `lambda` and the check run's (8 more points, finer rules).
+fn options(lambda: f64) -> Option<[MarchOptions; 2]> {
+    let m = points_for(lambda)?;
+    let nominal = MarchOptions { nodes: m, block: lambda, gauss: 40, bits: 60 };
+    Some([nominal, MarchOptions { nodes: m + 8, block: lambda, gauss: 52, bits: 76 }])
+}
+
+/// The problem's data in f64 and the march's setting.
+struct Setup {
+    period: f64,
+    k: f64,
+    e_star: f64,
+    setting: MarchSetting,
+}
+
+impl Setup {
+    fn new(problem: &AdhesionProblem) -> Result<Self, AdhesionError> {
+        let conv = |q: &Exact, name: &'static str| {
+            to_f64(q).filter(|v| v.is_finite() && *v > 0.0).ok_or_else(|| AdhesionError::InvalidArgument {
+                parameter: name,
+                value: readable(q),
+                expected: "a positive number that fits in f64".into(),
+            })
+        };
+        let period = match problem.period() {
+            Period::Finite(l) => conv(l, "period")?,
+            Period::Infinite => {
+                return Err(AdhesionError::InvalidArgument {
+                    parameter: "period",
+                    value: "inf".into(),
+                    expected: "a finite period for the collocation in eta (the single punch is \
+                               self-similar: the lambda^2 series gives it at lambda = 0)"
+                        .into(),
+                })
+            }
+        };
+        if let PunchShape::Circular { radius } = problem.shape() {
+            return Err(AdhesionError::InvalidArgument {
+                parameter: "shape",
+                value: format!("circular (radius {})", readable(radius)),
+                expected: "the parabola or an even polynomial for the collocation in eta (the circle's slope is \
+                           not a polynomial in x; the lambda^2 series serves it inside its radius)"
+                    .into(),
+            });
+        }
+        let k = conv(problem.curvature(), "k")?;
+        let e_star = conv(problem.material().contact_modulus(), "contact_modulus")?;
+        // G(chi) = pi sum_n r_n(L/pi) chi^(2n+1) (module doc; r_n(a) = w_n a^(2n)).
+        let r = RightSeries::new(problem)?.coefficients(period / PI, usize::MAX);
+        let mut profile = vec![0.0; 2 * r.len()];
+        for (n, rn) in r.iter().enumerate() {
+            profile[2 * n + 1] = PI * rn;
+        }
+        if profile.iter().any(|c| !c.is_finite()) {
+            return Err(AdhesionError::InvalidArgument {
+                parameter: "coefficients",
+                value: "the punch's polynomial".into(),
+                expected: "coefficients whose slope in units of the period fits in f64".into(),
+            });
+        }
+        let c = AdhesionParamsF64::new(problem.material());
+        let setting = MarchSetting {
+            kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
+            tilt: false,
+            slope: vec![0.0],
+            p2_per_p: e_star * k * period * period / (PI * PI),
+            profile,
+            start: 2.0 * c.load_constant,
+            law_key: "tangential_ratio",
+            law_text: "0".into(),
+        };
+        Ok(Setup { period, k, e_star, setting })
+    }
+
+    fn lambda_of(&self, a: f64) -> f64 {
+        PI * a / self.period
+    }
+
+    /// The march to `lambda` with the nominal (`which` = 0) or the check run's options.
+    fn solve_at(&self, lambda: f64, which: usize) -> Result<March, AdhesionError> {
+        let o = options(lambda).ok_or_else(|| too_large(lambda))?;
+        march(&self.setting, &o[which], MarchEnd::Size(lambda))
+    }
+
+    /// Dimensional values of the march `mar` at the points x/a.
+    fn values(&self, mar: &March, points: &[f64]) -> Result<AdhesionSolutionF64, AdhesionError> {
+        let lambda = mar.end;
+        let (l_over_pi, pi2) = (self.period / PI, PI * PI);
+        let psi_scale = 2.0 * self.k * self.period / pi2;
+        let q_scale = self.e_star * self.k * self.period / pi2;
+        let pts = points
+            .iter()
+            .map(|&s| {
+                let chi = lambda * s;
+                let sigma = mar.sigma_hat(chi)? * q_scale;
+                Ok(PointValuesF64 {
+                    x_over_a: s,
+                    psi: -psi_scale * mar.psi_hat(chi)?,
+                    phi: -psi_scale * l_over_pi * mar.psi_hat_integral(chi)?,
+                    q1: sigma.im,
+                    q2: sigma.re,
+                })
+            })
+            .collect::<Result<Vec<_>, AdhesionError>>()?;
+        Ok(AdhesionSolutionF64 {
+            route: F64Route::Collocation,
+            lambda,
+            half_width: l_over_pi * lambda,
+            normal_load: mar.load(lambda) * self.setting.p2_per_p,
+            points: pts,
+            terms: mar.options.nodes,
+            digits_estimated: Digits::from_points(0.0, [], 0.0),
+            warnings: Vec::new(),
+        })
+    }
+
+    /// The size lambda carrying P2 = `target` (run `which`): Newton's method on P(lambda), which
+    /// increases with dP/dlambda = P'(lambda), safeguarded by bisection in (0, `lambda_max`).
+    fn lambda_for_load(&self, target: f64, lambda_max: f64, which: usize) -> Result<March, AdhesionError> {
+        let p = target / self.setting.p2_per_p;
+        // First guess: Kuznetsov's parabola with C_P (P = 2 C_P ln sec lambda).
+        let guess = (-p / self.setting.start).exp().acos();
+        let (mut lo, mut hi) = (0.0f64, lambda_max);
+        let mut lam = if guess.is_finite() && guess > 0.0 && guess < hi { guess } else { 0.5 * hi };
+        let mut last: Option<AdhesionError> = None;
+        for _ in 0..100 {
+            match self.solve_at(lam, which) {
+                Ok(mar) => {
+                    let (pl, dp) = (mar.load(lam), mar.p_prime(lam));
+                    if pl < p {
+                        lo = lam;
+                    } else {
+                        hi = lam;
+                    }
+                    let newton = lam - (pl - p) / dp;
+                    if (newton - lam).abs() <= 8.0 * f64::EPSILON * lam {
+                        return Ok(mar);
+                    }
+                    lam = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+                }
+                Err(e) => {
+                    hi = lam;
+                    lam = 0.5 * (lo + hi);
+                    last = Some(e);
+                }
+            }
+            if hi - lo <= 8.0 * f64::EPSILON * hi {
+                break;
+            }
+        }
+        Err(last.unwrap_or(AdhesionError::IllConditioned {
+            method: "f64-collocation",
+            parameter: "normal_load",
+            value: readable_f64(target),
+            valid: format!("a load whose contact has lambda = pi a/L below {}", readable_f64(lambda_max)),
+            reason: "the collocation in eta needs more than 100 points closer to full contact".into(),
+        }))
+    }
+}
+
+fn too_large(lambda: f64) -> AdhesionError {
+    AdhesionError::IllConditioned {
+        method: "f64-collocation",
+        parameter: "lambda",
+        value: readable_f64(lambda),
+        valid: "lambda = pi a/L below about 1.52".into(),
+        reason: format!(
+            "F = P'/eta is singular at full contact lambda = pi/2; more than {MAX_POINTS} collocation points would be needed"
+        ),
+    }
+}
+
+/// Method 2b with estimated digits (module doc): the nominal run's values, digits from the check
+/// run's difference (never more than [`crate::numerics::accuracy::F64_DIGITS_CAP`]).
+pub fn solve_collocation_f64(
+    problem: &AdhesionProblem,
+    points: &[Exact],
+) -> Result<AdhesionSolutionF64, AdhesionError> {
+    super::points::check_points(points)?;
+    let setup = Setup::new(problem)?;
+    let xs: Vec<f64> = points.iter().map(|p| to_f64(p).unwrap_or(0.0)).collect();
+    let run = |which: usize| -> Result<AdhesionSolutionF64, AdhesionError> {
+        let mar = match problem.size() {
+            AdhesionSize::HalfWidth(a) => {
+                let a = to_f64(a).unwrap_or(f64::NAN);
+                check_profile_on_contact(problem, a)?;
+                setup.solve_at(setup.lambda_of(a), which)?
+            }
+            AdhesionSize::NormalLoad(p2) => {
+                let lambda_max = largest_admissible_half_width(problem).map_or(1.52, |a| setup.lambda_of(a).min(1.52));
+                let mar = setup.lambda_for_load(to_f64(p2).unwrap_or(f64::NAN), lambda_max, which)?;
+                check_profile_on_contact(problem, mar.end * setup.period / PI)?;
+                mar
+            }
+        };
+        setup.values(&mar, &xs)
+    };
+    let mut sol = run(0)?;
+    sol.digits_estimated = match run(1) {
+        Ok(fine) => estimate(problem, &sol, &fine),
+        Err(_) => Digits::from_points(0.0, sol.points.iter().map(|_| [0.0; 4]), 0.0),
+    };
+    let headline = sol.digits_estimated.headline;
+    // The two runs disagree below nu = 1/2 where the homogeneous solution has grown (module doc).
+    let c = AdhesionParamsF64::new(problem.material());
+    let cause = || if c.eps > 0.0 { mode_sentence(c.eps, c.b, c.s) } else { "the collocation converges slowly".into() };
+    if headline < MIN_DIGITS {
+        return Err(AdhesionError::IllConditioned {
+            method: "f64-collocation",
+            parameter: "lambda",
+            value: readable_f64(sol.lambda),
+            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
+            reason: format!("two runs agree to only {headline:.1} digits: {}", cause()),
+        });
+    }
+    if headline < SHORT_DIGITS {
+        sol.warnings.push(format!("only {headline:.1} digits estimated (lambda = {:.6}; {})", sol.lambda, cause()));
+    }
+    Ok(sol)
+}
+
+/// Below this many estimated digits the collocation refuses (as method 1 does).
+pub const MIN_DIGITS: f64 = 2.0;
+/// Below this many estimated digits its answer carries a warning naming the cause.
+pub const SHORT_DIGITS: f64 = 12.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::adhesion::volterra_mpfr::VolterraParams;
+    use crate::adhesion::{solve_mpfr, solve_verified};
+    use crate::model::{Material, PunchShape};
+
+    fn q(n: i64, d: i64) -> Exact {
+        Exact::new(n.into(), d.into())
+    }
+
+    fn problem(nu: Exact, size: AdhesionSize) -> AdhesionProblem {
+        let m = Material::from_contact_modulus(nu, q(2, 1)).unwrap();
+        AdhesionProblem::new(m, Period::finite(q(1, 1)).unwrap(), PunchShape::parabolic(q(3, 1)).unwrap(), size)
+            .unwrap()
+    }
+
+    fn pts() -> Vec<Exact> {
+        vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100)]
+    }
+
+    /// The two issue-13 points where the series either refuses (nu = 0.3, lambda = 1.2) or is
+    /// the other f64 method (nu = 0, lambda = 0.7): method 1 at 20 digits (verified >= 20) and
+    /// this method agree to 1e-12 in the load and the fields (scales k a, k a^2, E* k a), and
+    /// the estimate claims no more than the agreement shows.
+    #[test]
+    fn agrees_with_method_1_where_the_series_stops() {
+        // a = lambda L/pi with lambda = 6/5 and 7/10 rounded to 20 digits (exact strings).
+        for (nu, a) in [(q(3, 10), "0.38197186342054880584"), (q(0, 1), "0.22281692032865347008")] {
+            let a = exact_series::parse_rational(a).unwrap();
+            let pr = problem(nu.clone(), AdhesionSize::HalfWidth(a));
+            let v = solve_verified(&pr, &pts(), 20).unwrap();
+            assert!(v.digits_verified.size >= 20.0, "nu {nu}: {}", v.digits_verified.size);
+            let m = &v.solution;
+            let f = solve_collocation_f64(&pr, &pts()).unwrap();
+            let (ka, eka) = (3.0 * f.half_width, 6.0 * f.half_width);
+            let rel = (m.normal_load.to_f64() - f.normal_load).abs() / f.normal_load;
+            println!(
+                "nu {nu} lambda {:.3}: points {} load rel {rel:.1e}, estimated {:?}",
+                f.lambda, f.terms, f.digits_estimated
+            );
+            assert!(rel < 1e-12, "nu {nu}: {} vs {}", m.normal_load, f.normal_load);
+            for (u, w) in m.points.iter().zip(&f.points) {
+                let e = [
+                    (u.psi.to_f64() - w.psi).abs() / ka,
+                    (u.phi.to_f64() - w.phi).abs() / (ka * f.half_width),
+                    (u.q1.to_f64() - w.q1).abs() / eka,
+                    (u.q2.to_f64() - w.q2).abs() / eka,
+                ];
+                println!("  x/a {}: {:.1e} {:.1e} {:.1e} {:.1e}", w.x_over_a, e[0], e[1], e[2], e[3]);
+                assert!(e.iter().all(|e| *e < 1e-12), "nu {nu} x/a {}: {e:?}", w.x_over_a);
+            }
+            let true_digits = -rel.log10();
+            assert!(f.digits_estimated.size >= 12.0 && f.digits_estimated.size <= true_digits + 0.5);
+        }
+    }
+
+    /// nu = 0, lambda = 1.2 (issue 13's hard point): the two runs disagree and the refusal names
+    /// the homogeneous solution and its exponent, as method 1's does.
+    #[test]
+    fn small_nu_refusal_names_the_mode() {
+        let a = exact_series::parse_rational("0.38197186342054880584").unwrap();
+        let e = solve_collocation_f64(&problem(q(0, 1), AdhesionSize::HalfWidth(a)), &[]).unwrap_err();
+        let text = e.to_string();
+        assert!(text.contains("homogeneous solution") && text.contains("m* = 605.7"), "{text}");
+    }
+
+    /// A given load: the half-width method 1 finds (nu = 0.3, lambda = 1.2) is found again.
+    #[test]
+    fn a_given_load_finds_the_half_width() {
+        let a = exact_series::parse_rational("0.38197186342054880584").unwrap();
+        let pr = problem(q(3, 10), AdhesionSize::HalfWidth(a));
+        let m = solve_mpfr(&pr, &[], VolterraParams::for_digits(20)).unwrap();
+        let p2 = exact_series::parse_rational(&format!("{:.20e}", m.normal_load.to_f64())).unwrap();
+        let pl = problem(q(3, 10), AdhesionSize::NormalLoad(p2));
+        let f = solve_collocation_f64(&pl, &[]).unwrap();
+        assert!((f.half_width - 0.381_971_863_420_548_8).abs() < 1e-12, "{}", f.half_width);
+        assert!(f.digits_estimated.size >= 11.0, "{:?}", f.digits_estimated);
+    }
+
+    /// The circle and the single punch are refused naming the parameter; lambda near pi/2 names
+    /// the point count.
+    #[test]
+    fn refusals_name_the_parameter() {
+        let m = Material::from_contact_modulus(q(3, 10), q(2, 1)).unwrap();
+        let circle = AdhesionProblem::new(
+            m.clone(),
+            Period::finite(q(1, 1)).unwrap(),
+            PunchShape::circular(q(2, 1)).unwrap(),
+            AdhesionSize::HalfWidth(q(1, 4)),
+        )
+        .unwrap();
+        let e = solve_collocation_f64(&circle, &[]).unwrap_err();
+        assert!(matches!(e, AdhesionError::InvalidArgument { parameter: "shape", .. }), "{e}");
+        let single = AdhesionProblem::new(
+            m,
+            Period::Infinite,
+            PunchShape::parabolic(q(3, 1)).unwrap(),
+            AdhesionSize::HalfWidth(q(1, 4)),
+        )
+        .unwrap();
+        let e = solve_collocation_f64(&single, &[]).unwrap_err();
+        assert!(matches!(e, AdhesionError::InvalidArgument { parameter: "period", .. }), "{e}");
+        let near = problem(q(3, 10), AdhesionSize::HalfWidth(q(4999, 10000)));
+        let e = solve_collocation_f64(&near, &[]).unwrap_err();
+        assert!(matches!(e, AdhesionError::IllConditioned { parameter: "lambda", .. }), "{e}");
+    }
+}

@@ -1,0 +1,39 @@
+//! The f64 answer of section 4's Problem 2: the lambda^2 series ([`super::series_f64`]) where its
+//! estimate reaches [`SERIES_ENOUGH`] digits, else the collocation in eta
+//! ([`super::collocation_f64`]), whichever estimates more digits; both are independent of the
+//! MPFR method. The single punch and the circle stay with the series (the collocation does not
+//! serve them). When both refuse, the collocation's refusal is returned if the series refused
+//! for its radius (the collocation reaches further, so its reason is the binding one), else the
+//! series'.
+
+use super::collocation_f64::solve_collocation_f64;
+use super::error::AdhesionError;
+use super::series_f64::solution::AdhesionSolutionF64;
+use crate::model::{AdhesionProblem, Exact, Period, PunchShape};
+
+/// Estimated digits above which the series' answer is kept without trying the collocation.
+pub const SERIES_ENOUGH: f64 = 13.0;
+
+/// The f64 method of Problem 2 with estimated digits (module doc).
+pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<AdhesionSolutionF64, AdhesionError> {
+    let series = super::series_f64::verify::solve_f64(problem, points);
+    if let Ok(s) = &series {
+        if s.digits_estimated.headline >= SERIES_ENOUGH {
+            return series;
+        }
+    }
+    let served =
+        matches!(problem.period(), Period::Finite(_)) && !matches!(problem.shape(), PunchShape::Circular { .. });
+    if !served {
+        return series;
+    }
+    match (series, solve_collocation_f64(problem, points)) {
+        (Ok(s), Ok(c)) => Ok(if s.digits_estimated.headline >= c.digits_estimated.headline { s } else { c }),
+        (Ok(s), Err(_)) => Ok(s),
+        (Err(_), Ok(c)) => Ok(c),
+        (Err(se), Err(ce)) => Err(match se {
+            AdhesionError::IllConditioned { .. } => ce,
+            other => other,
+        }),
+    }
+}
