@@ -33,8 +33,8 @@
 //! a polynomial, and it is refused here (the series serves it inside its radius).
 
 use super::error::AdhesionError;
-use super::loading_law::kernel_f64::KernelF64;
-use super::loading_law::marching::{march, March, MarchEnd, MarchOptions, MarchSetting};
+use super::loading_law::kernel_f64::{KernelF64, Side};
+use super::loading_law::marching::{single_block, March, MarchOptions, MarchSetting};
 use super::profile::{check_profile_on_contact, largest_admissible_half_width};
 use super::scales::Digits;
 use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
@@ -44,6 +44,8 @@ use crate::asymptotics::adhesion_mode::mode_sentence;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
+use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
+use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use crate::params::adhesion::AdhesionParamsF64;
 use std::f64::consts::PI;
 
@@ -137,10 +139,44 @@ impl Setup {
         PI * a / self.period
     }
 
-    /// The march to `lambda` with the nominal (`which` = 0) or the check run's options.
+    /// The solution at `lambda` with the nominal (`which` = 0) or the check run's options: the
+    /// collocation equations of one block of the march (module doc), linear in F because gamma
+    /// = 0, assembled and solved directly (the march's Newton with a difference Jacobian would
+    /// reach the same values at m times the cost); the fields then come from the march's block.
     fn solve_at(&self, lambda: f64, which: usize) -> Result<March, AdhesionError> {
-        let o = options(lambda).ok_or_else(|| too_large(lambda))?;
-        march(&self.setting, &o[which], MarchEnd::Size(lambda))
+        let o = options(lambda).ok_or_else(|| too_large(lambda))?[which];
+        let m = o.nodes;
+        let rule_error = |e: crate::numerics::gauss_jacobi_f64::QuadratureError| AdhesionError::NotConverged {
+            what: "collocation in eta: rules",
+            reason: e.to_string(),
+        };
+        // Right-Radau points u in (-1, 1] (the march's collocation points) and tanh-sinh on (0, 1).
+        let mut radau = gauss_jacobi(m - 1, 1.0, 0.0).map_err(rule_error)?.nodes;
+        radau.push(1.0);
+        let ts = tanh_sinh_f64(o.bits, 1.0);
+        let k = &self.setting.kernel;
+        let mut a = nalgebra::DMatrix::<f64>::zeros(m, m);
+        let mut b = nalgebra::DVector::<f64>::zeros(m);
+        let mut t = vec![0.0; m];
+        for (i, u_i) in radau.iter().enumerate() {
+            let chi = 0.5 * lambda * (1.0 + u_i);
+            // Re int_0^chi K(chi - eta; eta) eta F(eta) d eta, eta = chi s, chi - eta = chi (1 - s).
+            for &(s, c, w) in &ts {
+                let eta = chi * s;
+                let weight = k.increment_outside(Side::Right, chi * c, eta, 0.0, false).re * eta * w * chi;
+                let u = 2.0 * eta / lambda - 1.0;
+                chebyshev_values(u, &mut t);
+                for (j, tj) in t.iter().enumerate() {
+                    a[(i, j)] += weight * tj;
+                }
+            }
+            b[i] = self.setting.profile.iter().rev().fold(0.0, |acc, p| acc * chi + p);
+        }
+        let f = a.lu().solve(&b).ok_or(AdhesionError::NotConverged {
+            what: "collocation in eta",
+            reason: format!("singular collocation matrix at lambda = {}", readable_f64(lambda)),
+        })?;
+        single_block(&self.setting, &o, lambda, f.iter().copied().collect())
     }
 
     /// Dimensional values of the march `mar` at the points x/a.
@@ -216,6 +252,20 @@ impl Setup {
             valid: format!("a load whose contact has lambda = pi a/L below {}", readable_f64(lambda_max)),
             reason: "the collocation in eta needs more than 100 points closer to full contact".into(),
         }))
+    }
+}
+
+/// T_j(u), j < t.len(), by the three-term recurrence.
+fn chebyshev_values(u: f64, t: &mut [f64]) {
+    let n = t.len();
+    if n > 0 {
+        t[0] = 1.0;
+    }
+    if n > 1 {
+        t[1] = u;
+    }
+    for j in 2..n {
+        t[j] = 2.0 * u * t[j - 1] - t[j - 2];
     }
 }
 

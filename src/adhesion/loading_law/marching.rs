@@ -498,6 +498,22 @@ impl March {
     }
 }
 
+/// One block on [0, `lambda`] holding F = P'/eta with the Chebyshev coefficients `f` (in
+/// u = 2 eta/lambda - 1) and gamma = 0: the march's fields (load, psi, phi, stresses) for a
+/// symmetric solution found by another solve ([`crate::adhesion::collocation_f64`], which solves
+/// the same collocation equations of one block directly: they are linear in F when gamma = 0).
+pub fn single_block(
+    setting: &MarchSetting,
+    options: &MarchOptions,
+    lambda: f64,
+    f: Vec<f64>,
+) -> Result<March, AdhesionError> {
+    let rules = Rules::new(options)?;
+    let g = vec![0.0; f.len()];
+    let blocks = vec![Block::new(0.0, lambda, f, g, 0.0)];
+    Ok(March { setting: setting.clone(), options: *options, blocks, end: lambda, steps: 1, rules })
+}
+
 /// Marches from 0 to `end` (module doc).
 pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> Result<March, AdhesionError> {
     let rules = Rules::new(options)?;
