@@ -16,10 +16,13 @@
 //!
 //! m*(nu): the first sign change of Re M_m over odd m by the recurrence of section 4,
 //! (m + 1) M_(m+1) = m M_(m-1) + 2 i eps M_m from M_0 = B/2 + i S, M_1 = 1 + 2 i eps M_0 (neutral:
-//! both solutions ~ m^(-1/2)), interpolated linearly between the two odd m. nu = 0: 605.73
-//! (mpmath's root of Re B(m+1, 1/2 - i eps) 2F1(1/2 - i eps, m+1; m+3/2 - i eps; -1) =
-//! 605.731090977680826547, run once), nu = 1/10: 2284.5 (2284.48225353), nu = 1/5: 20001.7
-//! (20001.6925017875); beyond 2e5 at nu >= 0.3 (test `mode_exponent_against_mpmath`). The loading
+//! both solutions ~ m^(-1/2)), interpolated linearly between the two odd m, then refined by the
+//! secant method on Re M_x at real x (the two starting moments by quadrature, the recurrence
+//! beyond: [`half_range_moment`]). nu = 0: 605.731090977683 (mpmath's root of
+//! Re B(m+1, 1/2 - i eps) 2F1(1/2 - i eps, m+1; m+3/2 - i eps; -1) = 605.731090977680826547, run
+//! once), nu = 1/10: 2284.482253534 (2284.48225353), nu = 1/5: 20001.69250179
+//! (20001.6925017875), nu = 3/10: 1409212.5236 (1409212.523566145) (tests
+//! `mode_exponent_against_mpmath`, `refined_mode_exponent_against_mpmath`). The loading
 //! law's mode at n = 0 ([`super::loading_law_modes`]: 603.73, in F = P'/eta, the smaller zero of
 //! det M = 2 M_f M_g) is the antisymmetric one (the centre moving); this one, 604.73 in F, is
 //! M_f's: the two lie close together, as that module says.
@@ -78,10 +81,68 @@ pub fn symmetric_mode_exponent(eps: f64, b: f64, s: f64, m_max: usize) -> Option
     None
 }
 
+/// M_x at a real x >= 1 (complex, as (re, im)): M_(x0 - 1) and M_x0, x0 = 1 + frac(x), by
+/// tanh-sinh quadrature of the definition (the endpoint factor (1 - y)^(-1/2 - i eps) from
+/// 1 - y held exactly by the rule), then the recurrence up to x (it holds at every real index
+/// > 0: integrate d/dy [y^x (1 + y)^(1/2 + i eps) (1 - y)^(1/2 - i eps)] over (0, 1)).
+pub fn half_range_moment(eps: f64, x: f64) -> (f64, f64) {
+    let x0 = 1.0 + x.fract();
+    let rule = crate::numerics::tanh_sinh::tanh_sinh_f64(53, 2.0);
+    let moment = |m: f64| {
+        let (mut re, mut im) = (0.0, 0.0);
+        for &(y, c, w) in &rule {
+            if y <= 0.0 || c <= 0.0 {
+                continue;
+            }
+            // y^m (1 + y)^(-1/2) (1 - y)^(-1/2) e^(i eps (ln(1 + y) - ln(1 - y))).
+            let modulus = (m * y.ln() - 0.5 * (y.ln_1p() + c.ln())).exp();
+            let phase = eps * (y.ln_1p() - c.ln());
+            re += w * modulus * phase.cos();
+            im += w * modulus * phase.sin();
+        }
+        (re, im)
+    };
+    let (mut prev, mut cur) = (moment(x0 - 1.0), moment(x0));
+    let mut k = x0;
+    while k + 0.5 < x {
+        // (k + 1) M_(k+1) = k M_(k-1) + 2 i eps M_k.
+        let next = ((k * prev.0 - 2.0 * eps * cur.1) / (k + 1.0), (k * prev.1 + 2.0 * eps * cur.0) / (k + 1.0));
+        prev = cur;
+        cur = next;
+        k += 1.0;
+    }
+    cur
+}
+
+/// m* refined: the secant method on Re M_x ([`half_range_moment`]) from the interpolated value
+/// of [`symmetric_mode_exponent`] inside its bracket of odd integers.
+pub fn symmetric_mode_exponent_refined(eps: f64, b: f64, s: f64, m_max: usize) -> Option<f64> {
+    let guess = symmetric_mode_exponent(eps, b, s, m_max)?;
+    let f = |x: f64| half_range_moment(eps, x).0;
+    let (mut x0, mut x1) = (guess - 0.01, guess + 0.01);
+    let (mut f0, mut f1) = (f(x0), f(x1));
+    for _ in 0..40 {
+        if f1 == f0 {
+            break;
+        }
+        let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        if !x2.is_finite() {
+            break;
+        }
+        (x0, f0) = (x1, f1);
+        x1 = x2;
+        f1 = f(x1);
+        if (x1 - x0).abs() <= 1e-13 * x1 {
+            break;
+        }
+    }
+    Some(x1)
+}
+
 /// The sentence the solvers add where their runs disagree at nu < 1/2 (module doc), naming m*.
 pub fn mode_sentence(eps: f64, b: f64, s: f64) -> String {
-    let m = match symmetric_mode_exponent(eps, b, s, 2_000_000) {
-        Some(m) => format!("m* = {m:.1}"),
+    let m = match symmetric_mode_exponent_refined(eps, b, s, 2_000_000) {
+        Some(m) => format!("m* = {m:.10}"),
         None => "m* > 2e6".into(),
     };
     format!(
@@ -116,6 +177,45 @@ mod tests {
         }
         assert_eq!(at((3, 10)), None, "beyond 4e5 at nu = 0.3");
         assert_eq!(at((1, 2)), None, "eps = 0: Re M_m > 0");
+    }
+
+    /// Refined by the secant method on Re M_x: the mpmath roots (findroot on Re B 2F1, run once;
+    /// nu = 3/10: 1409212.523566145) to 1e-9 relative (measured: 605.731090977683,
+    /// 2284.482253534496, 20001.692501787606, 13 to 14 digits); M_x at a non-integer index from
+    /// the recurrence equals the direct quadrature.
+    #[test]
+    fn refined_mode_exponent_against_mpmath() {
+        // `cargo test --release --lib adhesion_mode -- --nocapture` prints the values.
+        let params = |nu: (i64, i64)| {
+            let m = Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into()))
+                .unwrap();
+            AdhesionParamsF64::new(&m)
+        };
+        for (nu, want) in [
+            ((0, 1), 605.731_090_977_680_8),
+            ((1, 10), 2284.482_253_53),
+            ((1, 5), 20_001.692_501_787_5),
+            ((3, 10), 1_409_212.523_566_145),
+        ] {
+            let c = params(nu);
+            let m = symmetric_mode_exponent_refined(c.eps, c.b, c.s, 2_000_000).unwrap();
+            println!("nu {nu:?}: m* = {m:.12} (mpmath {want})");
+            assert!((m - want).abs() < 1e-9 * want, "nu {nu:?}: {m} vs {want}");
+        }
+        // The recurrence from a fractional start (x0 = 1.3) against the direct quadrature at 7.3.
+        let c = params((0, 1));
+        let (re, im) = half_range_moment(c.eps, 7.3);
+        let rule = crate::numerics::tanh_sinh::tanh_sinh_f64(53, 2.0);
+        let (mut dr, mut di) = (0.0, 0.0);
+        for &(y, one_minus, w) in &rule {
+            if y > 0.0 && one_minus > 0.0 {
+                let modulus = (7.3 * y.ln() - 0.5 * (y.ln_1p() + one_minus.ln())).exp();
+                let phase = c.eps * (y.ln_1p() - one_minus.ln());
+                dr += w * modulus * phase.cos();
+                di += w * modulus * phase.sin();
+            }
+        }
+        assert!((re - dr).abs() < 1e-14 && (im - di).abs() < 1e-14, "{re} {im} vs {dr} {di}");
     }
 
     /// The loading law's symbol at n = 0 (independent code: tanh-sinh quadrature of its kernel in
