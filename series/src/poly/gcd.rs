@@ -276,7 +276,7 @@ fn univariate_gcd_degree_mod(a: Vec<u64>, b: Vec<u64>) -> usize {
 /// images mod P excludes every factor involving `x`. Cheap (univariate Euclid over 61-bit
 /// residues), it spares the primitive PRS of [`gcd`] on the coprime pairs that dominate fraction
 /// arithmetic; an unlucky prime or point only makes it inconclusive.
-fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
+pub(super) fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
     let (sa, sb) = (a.symbols(), b.symbols());
     let common: Vec<Symbol> = sa.iter().copied().filter(|s| sb.contains(s)).collect();
     let mut others: Vec<Symbol> = sa.clone();
@@ -317,6 +317,33 @@ pub(super) fn gcd(a: &Poly, b: &Poly) -> Poly {
     if coprime_certificate(a, b) {
         return Poly::one();
     }
+    if let Some((g, _, _)) = super::heu::gcd_cofactors(a, b) {
+        return g;
+    }
+    prs_gcd(a, b)
+}
+
+/// `(g, a/g, b/g)`, `g` the monic gcd: the certificate, then GCDHEU (which yields the cofactors
+/// from its division check), then the PRS and two exact divisions.
+pub(super) fn gcd_cofactors(a: &Poly, b: &Poly) -> (Poly, Poly, Poly) {
+    if !a.is_zero() && !b.is_zero() {
+        if coprime_certificate(a, b) {
+            return (Poly::one(), a.clone(), b.clone());
+        }
+        if let Some(r) = super::heu::gcd_cofactors(a, b) {
+            return r;
+        }
+    }
+    let g = if a.is_zero() || b.is_zero() { gcd(a, b) } else { prs_gcd(a, b) };
+    if g.is_zero() {
+        return (g, Poly::zero(), Poly::zero());
+    }
+    let (fa, fb) = (div_exact(a, &g).expect("the gcd divides"), div_exact(b, &g).expect("the gcd divides"));
+    (g, fa, fb)
+}
+
+/// The monic gcd of two non-zero polynomials by the recursive primitive PRS.
+fn prs_gcd(a: &Poly, b: &Poly) -> Poly {
     let mut syms = a.symbols();
     syms.extend(b.symbols());
     syms.sort();

@@ -7,6 +7,7 @@
 //! `fmpq_poly` does the same).
 
 mod gcd;
+mod heu;
 
 use crate::ring::{q_latex, q_text, Q};
 use crate::{Ring, Symbol};
@@ -206,6 +207,21 @@ impl Poly {
     /// The monic greatest common divisor (lex-leading coefficient 1; gcd(0, 0) = 0).
     pub fn gcd(&self, other: &Poly) -> Poly {
         gcd::gcd(self, other)
+    }
+
+    /// The monic gcd `g` with the cofactors `self / g` and `other / g` (both non-zero; for
+    /// zeros the cofactors are computed by [`Poly::div_exact`] as well).
+    ///
+    /// ```
+    /// use exact_series::{Poly, Ring};
+    /// let (a, b) = (Poly::var("a").unwrap(), Poly::var("b").unwrap());
+    /// let g = a.add(&b); // a + b
+    /// let (x, y) = (g.mul(&a.sub(&b)), g.mul(&g).mul_int(3));
+    /// let (d, fx, fy) = x.gcd_cofactors(&y);
+    /// assert_eq!((d, fx, fy), (g.clone(), a.sub(&b), g.mul_int(3)));
+    /// ```
+    pub fn gcd_cofactors(&self, other: &Poly) -> (Poly, Poly, Poly) {
+        gcd::gcd_cofactors(self, other)
     }
 
     /// Substitutes the polynomial `value` for the symbol `s`.
