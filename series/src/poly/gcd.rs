@@ -343,7 +343,7 @@ pub(super) fn gcd_cofactors(a: &Poly, b: &Poly) -> (Poly, Poly, Poly) {
 }
 
 /// The monic gcd of two non-zero polynomials by the recursive primitive PRS.
-fn prs_gcd(a: &Poly, b: &Poly) -> Poly {
+pub(super) fn prs_gcd(a: &Poly, b: &Poly) -> Poly {
     let mut syms = a.symbols();
     syms.extend(b.symbols());
     syms.sort();
