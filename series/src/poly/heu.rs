@@ -174,20 +174,29 @@ fn divide(a: &[(u64, Integer)], b: &[(u64, Integer)], nvars: usize) -> Option<ZP
     Some(q)
 }
 
-/// `gcd(a, b)` in Z[x_1..x_k] (content included: the gcd of the contents times the primitive gcd,
-/// positive leading coefficient), by GCDHEU; `None` when the heuristic gives up.
-fn heu(a: &[(u64, Integer)], b: &[(u64, Integer)], k: usize) -> Option<ZPoly> {
+/// `(g, a/g, b/g)` with `g = gcd(a, b)` in Z[x_1..x_k] (content included: the gcd of the
+/// contents times the primitive gcd, positive leading coefficient), by GCDHEU; `None` when the
+/// heuristic gives up. The cofactors are the quotients of the division check.
+fn heu(a: &[(u64, Integer)], b: &[(u64, Integer)], k: usize) -> Option<(ZPoly, ZPoly, ZPoly)> {
     let (ca, cb) = (content(a), content(b));
     let gc = ca.gcd_ref(&cb).complete();
+    let (fa, fb) = (ca.div_exact_ref(&gc).complete(), cb.div_exact_ref(&gc).complete());
+    let scaled = |p: ZPoly, c: &Integer| -> ZPoly {
+        if *c == 1 {
+            p
+        } else {
+            p.into_iter().map(|(m, x)| (m, x * c)).collect()
+        }
+    };
     if k == 0 {
-        return Some(vec![(0, gc)]);
+        return Some((vec![(0, gc)], vec![(0, fa)], vec![(0, fb)]));
     }
     let var = k - 1;
     let (a1, b1) = (div_int(a, &ca), div_int(b, &cb));
     let (da, db) = (degree(&a1, var), degree(&b1, var));
     if da == 0 && db == 0 {
-        let h = heu(&a1, &b1, var)?;
-        return Some(h.into_iter().map(|(m, c)| (m, c * &gc)).collect());
+        let (h, qa, qb) = heu(&a1, &b1, var)?;
+        return Some((scaled(h, &gc), scaled(qa, &fa), scaled(qb, &fb)));
     }
     let mut xi: Integer = norm(&a1).min(norm(&b1)) * 2u32 + 2u32;
     for _ in 0..TRIES {
@@ -196,10 +205,12 @@ fn heu(a: &[(u64, Integer)], b: &[(u64, Integer)], k: usize) -> Option<ZPoly> {
         }
         let (ea, eb) = (evaluate(&a1, var, &xi), evaluate(&b1, var, &xi));
         if !ea.is_empty() && !eb.is_empty() {
-            if let Some(h) = heu(&ea, &eb, var) {
+            if let Some((h, _, _)) = heu(&ea, &eb, var) {
                 let g = primitive(&reconstruct(&h, var, &xi)?);
-                if divide(&a1, &g, k).is_some() && divide(&b1, &g, k).is_some() {
-                    return Some(g.into_iter().map(|(m, c)| (m, c * &gc)).collect());
+                if let Some(qa) = divide(&a1, &g, k) {
+                    if let Some(qb) = divide(&b1, &g, k) {
+                        return Some((scaled(g, &gc), scaled(qa, &fa), scaled(qb, &fb)));
+                    }
                 }
             }
         }
@@ -262,16 +273,16 @@ pub(super) fn gcd_cofactors(a: &Poly, b: &Poly) -> Option<(Poly, Poly, Poly)> {
         return None;
     }
     let (pa, pb) = (pack(a, &syms)?, pack(b, &syms)?);
-    let (ca, cb) = (content(&pa), content(&pb));
-    let (a1, b1) = (div_int(&pa, &ca), div_int(&pb, &cb));
-    let g = primitive(&heu(&a1, &b1, syms.len())?);
-    let (qa, qb) = (divide(&a1, &g, syms.len())?, divide(&b1, &g, syms.len())?);
-    // a = (ca / den_a) g qa; the monic gcd is g / lc(g), so a / gcd = (ca lc(g) / den_a) qa.
+    // Integer numerators: pa = G qa, pb = G qb with G = gc g, g primitive with lc(g) > 0.
+    let (big_g, qa, qb) = heu(&pa, &pb, syms.len())?;
+    let gc = content(&big_g);
+    let g = div_int(&big_g, &gc);
+    // a = pa / den_a; the monic gcd is g / lc(g), so a / gcd = (gc lc(g) / den_a) qa.
     let lc = leading(&g).1.clone();
     let one = BigInt::from(1);
     let gp = unpack(&g, &syms, &Integer::from(1), &one).scale(&crate::ring::Q::new(1.into(), to_big(&lc)));
-    let (fa, fb) =
-        (unpack(&qa, &syms, &(&ca * &lc).complete(), &a.den), unpack(&qb, &syms, &(&cb * &lc).complete(), &b.den));
+    let s = (&gc * &lc).complete();
+    let (fa, fb) = (unpack(&qa, &syms, &s, &a.den), unpack(&qb, &syms, &s, &b.den));
     if !g.iter().all(|(m, _)| *m == 0) && !super::gcd::coprime_certificate(&fa, &fb) {
         return None;
     }
