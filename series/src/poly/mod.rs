@@ -609,15 +609,23 @@ impl Poly {
 /// skips a symbol starts with a later one: greater), 0 when no later symbol occurs (a list that
 /// ends there is a prefix: smaller).
 fn monomial_order_key(exps: impl Iterator<Item = u32>) -> u64 {
-    let e: Vec<u32> = exps.collect();
+    let mut e = [0u32; 4];
+    for (slot, x) in e.iter_mut().zip(exps) {
+        *slot = x;
+    }
+    // From the last symbol back: whether a later symbol occurs.
     let mut key = 0u64;
-    for i in 0..4 {
-        let field = match e.get(i) {
-            Some(&x) if x > 0 => u64::from(x),
-            _ if e[i.min(e.len())..].iter().any(|&x| x > 0) => 0xFFFF,
-            _ => 0,
+    let mut later = false;
+    for i in (0..4).rev() {
+        let field = if e[i] > 0 {
+            u64::from(e[i])
+        } else if later {
+            0xFFFF
+        } else {
+            0
         };
-        key = (key << 16) | field;
+        later |= e[i] > 0;
+        key |= field << (16 * (3 - i));
     }
     key
 }
