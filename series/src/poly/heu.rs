@@ -189,7 +189,9 @@ fn heu(a: &[(u64, Integer)], b: &[(u64, Integer)], k: usize) -> Option<(ZPoly, Z
         }
     };
     if k == 0 {
-        return Some((vec![(0, gc)], vec![(0, fa)], vec![(0, fb)]));
+        // Constants: the cofactors carry the signs (the contents are positive).
+        let (qa, qb) = (a[0].1.div_exact_ref(&gc).complete(), b[0].1.div_exact_ref(&gc).complete());
+        return Some((vec![(0, gc)], vec![(0, qa)], vec![(0, qb)]));
     }
     let var = k - 1;
     let (a1, b1) = (div_int(a, &ca), div_int(b, &cb));
@@ -319,6 +321,10 @@ mod tests {
         let h = t.add(&Poly::from_q(&crate::ring::Q::new(1.into(), 2.into())));
         let (gg, fx, fy) = gcd_cofactors(&h.mul(&t.sub(&Poly::from_int(3))), &h.mul(&h)).unwrap();
         assert_eq!((gg, fx, fy), (h.clone(), t.sub(&Poly::from_int(3)), h.clone()));
+        // constants: the cofactors keep their signs
+        let (m2, six) = (Poly::from_int(-2), Poly::from_int(6));
+        assert_eq!(gcd_cofactors(&m2, &six).unwrap(), (Poly::one(), m2.clone(), six.clone()));
+        assert_eq!(gcd_cofactors(&m2.mul(&g), &six.mul(&g)).unwrap(), (g.clone(), m2, six));
         let syms = [Symbol::new("a").unwrap(), Symbol::new("b").unwrap(), Symbol::new("c").unwrap()];
         let (px, pg) = (pack(&g.mul(&p).add(&Poly::one()), &syms).unwrap(), pack(&g, &syms).unwrap());
         assert!(divide(&px, &pg, 3).is_none());
