@@ -1,5 +1,5 @@
-//! A fraction-field job (issue 14; its peer side in `bench/peers/series` is not written yet):
-//! coefficients in Q(a, b).
+//! A fraction-field job (issue 14; its peers, python-flint's fmpz_mpoly fractions and SymPy's
+//! field, in `bench/peers/series`): coefficients in Q(a, b).
 //! f = 1 + x/(a + b) + a x^2/(a - b) + (1 + a b) x^3/(a^2 + b) + O(x^N); its inverse 1/f and its
 //! logarithm log f through x^(N-1), each reduced to lowest terms. Prints one JSON line with the
 //! best-of-`repeat` times and the text of the last coefficient of each (for the peer's check).

@@ -33,12 +33,21 @@ impl Frac {
         if num.is_zero() {
             return Some(Frac::zero());
         }
-        let g = num.gcd(&den);
-        let (n, d) = (num.div_exact(&g)?, den.div_exact(&g)?);
-        let lc = d.leading_coefficient_lex();
-        let inv = lc.recip();
-        Some(Frac { num: n.scale(&inv), den: d.scale(&inv) })
+        let (_, n, d) = num.gcd_cofactors(&den);
+        Some(Frac::monic(n, d))
     }
+
+    /// `num/den` for coprime `num`, `den` (den non-zero): only the leading coefficient of `den`
+    /// made 1.
+    fn monic(num: Poly, den: Poly) -> Frac {
+        let lc = den.leading_coefficient_lex();
+        if lc.is_one() {
+            return Frac { num, den };
+        }
+        let inv = lc.recip();
+        Frac { num: num.scale(&inv), den: den.scale(&inv) }
+    }
+
     /// `num / base^e`, reduced, without forming the gcd of `num` and `base^e`. `base` is first
     /// split into squarefree pieces f_i with product `base` (f = gcd(p, dp/dx_1, ..., dp/dx_n)
     /// times p/f, recursively: p/f is squarefree over Q); then every piece is divided out of
@@ -150,11 +159,37 @@ impl Ring for Frac {
     fn is_zero(&self) -> bool {
         self.num.is_zero()
     }
+    /// Henrici's sum (P. Henrici, "A subroutine for computations with rational numbers", J. ACM
+    /// 3, 1956; Knuth, TAOCP 2, sec. 4.5.1): with g = gcd(d1, d2), d1 = g e1, d2 = g e2, the
+    /// numerator t = n1 e2 + n2 e1 is coprime to e1 e2, so only gcd(t, g) remains to be divided
+    /// out; when g = 1 the sum is already reduced. Gcds of the denominators and of t with their
+    /// common part, never of the full numerator with the full product.
     fn add(&self, o: &Self) -> Self {
+        if self.num.is_zero() {
+            return o.clone();
+        }
+        if o.num.is_zero() {
+            return self.clone();
+        }
         if self.den == o.den {
             return Frac::new(self.num.add(&o.num), self.den.clone()).expect("non-zero den");
         }
-        Frac::new(self.num.mul(&o.den).add(&o.num.mul(&self.den)), self.den.mul(&o.den)).expect("non-zero den")
+        if self.den.is_one() || o.den.is_one() {
+            // n1 + n2 d2 over d2: gcd(n1 + n2 d2, d2) = gcd(n1, d2) = 1 (and symmetrically).
+            let (p, f) = if self.den.is_one() { (self, o) } else { (o, self) };
+            return Frac { num: f.num.add(&p.num.mul(&f.den)), den: f.den.clone() };
+        }
+        let (g, e1, e2) = self.den.gcd_cofactors(&o.den);
+        let t = self.num.mul(&e2).add(&o.num.mul(&e1));
+        if t.is_zero() {
+            return Frac::zero();
+        }
+        // Monic g, d1, d2 make the cofactors and their products monic (lex is a monomial order).
+        if g.is_one() {
+            return Frac { num: t, den: self.den.mul(&o.den) };
+        }
+        let (_, num, g2) = t.gcd_cofactors(&g);
+        Frac::monic(num, g2.mul(&e1).mul(&e2))
     }
     fn sub(&self, o: &Self) -> Self {
         self.add(&o.neg())
@@ -162,11 +197,18 @@ impl Ring for Frac {
     fn neg(&self) -> Self {
         Frac { num: self.num.neg(), den: self.den.clone() }
     }
+    /// Henrici's product: (n1/d1)(n2/d2) = ((n1/g1)(n2/g2)) / ((d1/g2)(d2/g1)) with g1 =
+    /// gcd(n1, d2), g2 = gcd(n2, d1): reduced, with no gcd of the full products.
     fn mul(&self, o: &Self) -> Self {
+        if self.num.is_zero() || o.num.is_zero() {
+            return Frac::zero();
+        }
         if self.den.is_one() && o.den.is_one() {
             return Frac { num: self.num.mul(&o.num), den: Poly::one() };
         }
-        Frac::new(self.num.mul(&o.num), self.den.mul(&o.den)).expect("non-zero den")
+        let (_, n1, d2) = self.num.gcd_cofactors(&o.den);
+        let (_, n2, d1) = o.num.gcd_cofactors(&self.den);
+        Frac::monic(n1.mul(&n2), d1.mul(&d2))
     }
     fn from_q(q: &Q) -> Self {
         Frac { num: Poly::from_q(q), den: Poly::one() }
@@ -182,7 +224,7 @@ impl Ring for Frac {
         if self.num.is_zero() {
             return None;
         }
-        Frac::new(self.den.clone(), self.num.clone())
+        Some(Frac::monic(self.den.clone(), self.num.clone())) // already coprime
     }
     fn text(&self) -> String {
         if self.den.is_one() {

@@ -8,6 +8,9 @@ use rug::Integer;
 
 /// A num-bigint integer as a GMP integer.
 pub(crate) fn to_rug(b: &BigInt) -> Integer {
+    if let Some(x) = num_traits::ToPrimitive::to_i64(b) {
+        return Integer::from(x); // one word: no digit vector
+    }
     let (sign, digits) = b.to_u32_digits();
     let i = Integer::from_digits(&digits, Order::Lsf);
     if sign == Sign::Minus {
@@ -19,6 +22,9 @@ pub(crate) fn to_rug(b: &BigInt) -> Integer {
 
 /// A GMP integer as a num-bigint integer.
 pub(crate) fn to_big(i: &Integer) -> BigInt {
+    if let Some(x) = i.to_i64() {
+        return BigInt::from(x); // one word: no digit vector
+    }
     let sign = match i.cmp0() {
         std::cmp::Ordering::Less => Sign::Minus,
         std::cmp::Ordering::Equal => Sign::NoSign,
@@ -67,6 +73,13 @@ mod tests {
         assert_eq!(gcd(&BigInt::from(0), &BigInt::from(0)), BigInt::from(0));
         for x in [a.clone(), -a, b, BigInt::from(0), BigInt::from(-1)] {
             assert_eq!(to_big(&to_rug(&x)), x);
+        }
+        // the one-word fast paths at their edges, against the digit route
+        for x in [i64::MIN as i128, i64::MIN as i128 - 1, i64::MAX as i128, i64::MAX as i128 + 1, -7, 1 << 70] {
+            let b = BigInt::from(x);
+            let r = to_rug(&b);
+            assert_eq!(r, Integer::from(x));
+            assert_eq!(to_big(&r), b);
         }
     }
 }

@@ -46,3 +46,44 @@ fn substitution() {
     assert_eq!(f.subs(s, &Q::new(1.into(), 2.into())).unwrap().text(), "(-1)/(S - 2)");
     assert!(Frac::new(Poly::one(), x.clone()).unwrap().subs(s, &Q::from_integer(0.into())).is_none());
 }
+
+/// A fraction whose numerator and denominator are small random polynomials in a, b times powers
+/// of the factors a + b, a - b, a^2 + b (so that sums and products share factors: the case of
+/// the `frac_series` example).
+fn arb_frac() -> impl proptest::strategy::Strategy<Value = Frac> {
+    use proptest::prelude::*;
+    let small = proptest::collection::vec((0u32..3, 0u32..3, -5i64..=5), 1..=3);
+    (small.clone(), small, proptest::collection::vec(0u32..3, 6)).prop_map(|(n, d, e)| {
+        let (a, b) = (v("a"), v("b"));
+        let poly = |t: &[(u32, u32, i64)]| {
+            t.iter().fold(Poly::zero(), |acc, &(i, j, c)| {
+                let m = (0..i).fold(Poly::from_int(c), |p, _| p.mul(&a));
+                acc.add(&(0..j).fold(m, |p, _| p.mul(&b)))
+            })
+        };
+        let factors = [a.add(&b), a.sub(&b), a.mul(&a).add(&b)];
+        let power = |k: usize| (0..e[k]).fold(Poly::one(), |p, _| p.mul(&factors[k % 3]));
+        let num = poly(&n).mul(&power(0)).mul(&power(1));
+        let den = poly(&d).add(&Poly::from_int(7)).mul(&power(2)).mul(&power(3)).mul(&power(4)).mul(&power(5));
+        Frac::new(num, den).unwrap_or_else(Frac::one)
+    })
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+    /// Henrici's sum and product agree with the textbook formulas reduced by one gcd
+    /// (n1 d2 + n2 d1)/(d1 d2) and (n1 n2)/(d1 d2), and the field identities hold.
+    #[test]
+    fn henrici_matches_the_plain_formulas(x in arb_frac(), y in arb_frac()) {
+        let (n1, d1, n2, d2) = (x.numer(), x.denom(), y.numer(), y.denom());
+        let sum = x.add(&y);
+        proptest::prop_assert_eq!(&sum, &Frac::new(n1.mul(d2).add(&n2.mul(d1)), d1.mul(d2)).unwrap());
+        let prod = x.mul(&y);
+        proptest::prop_assert_eq!(&prod, &Frac::new(n1.mul(n2), d1.mul(d2)).unwrap());
+        proptest::prop_assert_eq!(sum.sub(&y), x.clone());
+        if !y.is_zero() {
+            proptest::prop_assert_eq!(prod.mul(&y.inv().unwrap()), x.clone());
+        }
+        proptest::prop_assert_eq!(x.sub(&x), Frac::zero());
+    }
+}

@@ -40,14 +40,12 @@ fn lex_cmp(a: &Monomial, b: &Monomial) -> Ordering {
 
 /// The leading term (lex) of a non-zero polynomial.
 pub(super) fn leading(p: &Poly) -> (Monomial, Q) {
-    let mut best: Option<(&Monomial, Q)> = None;
-    for (m, q) in p.terms() {
-        if best.as_ref().is_none_or(|(bm, _)| lex_cmp(m, bm) == Ordering::Greater) {
-            best = Some((m, q));
-        }
-    }
-    let (m, q) = best.expect("leading term of a non-zero polynomial");
-    (m.clone(), q)
+    let (m, n) = p
+        .terms
+        .iter()
+        .reduce(|best, t| if lex_cmp(&t.0, &best.0) == Ordering::Greater { t } else { best })
+        .expect("leading term of a non-zero polynomial");
+    (m.clone(), Q::new(n.clone(), p.den.clone()))
 }
 
 /// `m / d` when `d` divides `m`.
@@ -189,8 +187,20 @@ fn monic(p: &Poly) -> Poly {
 /// The prime of the coprimality certificate, 2^61 - 1.
 const P: u64 = (1 << 61) - 1;
 
+/// `x mod P` for any `x < 2^128`, by the Mersenne folding 2^61 = 1 (mod P): no division.
+fn reduce(x: u128) -> u64 {
+    let p = P as u128;
+    let r = (x & p) + (x >> 61); // < 2^61 + 2^67
+    let r = ((r & p) + (r >> 61)) as u64; // < 2^61 + 2^6
+    if r >= P {
+        r - P
+    } else {
+        r
+    }
+}
+
 fn mul_mod(a: u64, b: u64) -> u64 {
-    ((a as u128 * b as u128) % P as u128) as u64
+    reduce(a as u128 * b as u128)
 }
 
 fn pow_mod(mut a: u64, mut e: u64) -> u64 {
@@ -207,11 +217,8 @@ fn pow_mod(mut a: u64, mut e: u64) -> u64 {
 
 /// `n mod P` in `[0, P)`.
 fn big_mod(n: &BigInt) -> u64 {
-    let r = n
-        .magnitude()
-        .iter_u64_digits()
-        .rev()
-        .fold(0u64, |acc, d| (((acc as u128) << 64 | d as u128) % P as u128) as u64);
+    // 2^64 = 8 (mod P): acc 2^64 + d = 8 acc + d.
+    let r = n.magnitude().iter_u64_digits().rev().fold(0u64, |acc, d| reduce(8 * acc as u128 + d as u128));
     if num_traits::Signed::is_negative(n) && r != 0 {
         P - r
     } else {
@@ -223,14 +230,21 @@ fn big_mod(n: &BigInt) -> u64 {
 /// `point` (dense, index = exponent).
 fn image_mod(p: &Poly, x: Symbol, point: &[(Symbol, u64)]) -> Vec<u64> {
     let mut out = vec![0u64; p.degree_in(x) as usize + 1];
+    // Powers of each point coordinate, extended on demand.
+    let mut powers: Vec<Vec<u64>> = point.iter().map(|&(_, v)| vec![1, v]).collect();
     for (m, n) in &p.terms {
         let mut c = big_mod(n);
         let mut e_x = 0;
         for &(s, e) in m.factors() {
             if s == x {
                 e_x = e;
-            } else if let Some(&(_, v)) = point.iter().find(|(t, _)| *t == s) {
-                c = mul_mod(c, pow_mod(v, e as u64));
+            } else if let Some(k) = point.iter().position(|(t, _)| *t == s) {
+                let pw = &mut powers[k];
+                while pw.len() <= e as usize {
+                    let next = mul_mod(pw[pw.len() - 1], pw[1]);
+                    pw.push(next);
+                }
+                c = mul_mod(c, pw[e as usize]);
             }
         }
         let slot = &mut out[e_x as usize];
@@ -276,7 +290,7 @@ fn univariate_gcd_degree_mod(a: Vec<u64>, b: Vec<u64>) -> usize {
 /// images mod P excludes every factor involving `x`. Cheap (univariate Euclid over 61-bit
 /// residues), it spares the primitive PRS of [`gcd`] on the coprime pairs that dominate fraction
 /// arithmetic; an unlucky prime or point only makes it inconclusive.
-fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
+pub(super) fn coprime_certificate(a: &Poly, b: &Poly) -> bool {
     let (sa, sb) = (a.symbols(), b.symbols());
     let common: Vec<Symbol> = sa.iter().copied().filter(|s| sb.contains(s)).collect();
     let mut others: Vec<Symbol> = sa.clone();
@@ -317,6 +331,33 @@ pub(super) fn gcd(a: &Poly, b: &Poly) -> Poly {
     if coprime_certificate(a, b) {
         return Poly::one();
     }
+    if let Some((g, _, _)) = super::heu::gcd_cofactors(a, b) {
+        return g;
+    }
+    prs_gcd(a, b)
+}
+
+/// `(g, a/g, b/g)`, `g` the monic gcd: the certificate, then GCDHEU (which yields the cofactors
+/// from its division check), then the PRS and two exact divisions.
+pub(super) fn gcd_cofactors(a: &Poly, b: &Poly) -> (Poly, Poly, Poly) {
+    if !a.is_zero() && !b.is_zero() {
+        if coprime_certificate(a, b) {
+            return (Poly::one(), a.clone(), b.clone());
+        }
+        if let Some(r) = super::heu::gcd_cofactors(a, b) {
+            return r;
+        }
+    }
+    let g = if a.is_zero() || b.is_zero() { gcd(a, b) } else { prs_gcd(a, b) };
+    if g.is_zero() {
+        return (g, Poly::zero(), Poly::zero());
+    }
+    let (fa, fb) = (div_exact(a, &g).expect("the gcd divides"), div_exact(b, &g).expect("the gcd divides"));
+    (g, fa, fb)
+}
+
+/// The monic gcd of two non-zero polynomials by the recursive primitive PRS.
+pub(super) fn prs_gcd(a: &Poly, b: &Poly) -> Poly {
     let mut syms = a.symbols();
     syms.extend(b.symbols());
     syms.sort();

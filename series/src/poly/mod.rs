@@ -7,6 +7,7 @@
 //! `fmpq_poly` does the same).
 
 mod gcd;
+mod heu;
 
 use crate::ring::{q_latex, q_text, Q};
 use crate::{Ring, Symbol};
@@ -148,9 +149,15 @@ impl Poly {
     }
     /// The symbols that occur, sorted by name.
     pub fn symbols(&self) -> Vec<Symbol> {
-        let mut v: Vec<Symbol> = self.terms.iter().flat_map(|(m, _)| m.0.iter().map(|&(s, _)| s)).collect();
+        let mut v: Vec<Symbol> = Vec::new();
+        for (m, _) in &self.terms {
+            for &(s, _) in &m.0 {
+                if !v.contains(&s) {
+                    v.push(s);
+                }
+            }
+        }
         v.sort();
-        v.dedup();
         v
     }
     /// Degree in the symbol `s`.
@@ -206,6 +213,21 @@ impl Poly {
     /// The monic greatest common divisor (lex-leading coefficient 1; gcd(0, 0) = 0).
     pub fn gcd(&self, other: &Poly) -> Poly {
         gcd::gcd(self, other)
+    }
+
+    /// The monic gcd `g` with the cofactors `self / g` and `other / g` (both non-zero; for
+    /// zeros the cofactors are computed by [`Poly::div_exact`] as well).
+    ///
+    /// ```
+    /// use exact_series::{Poly, Ring};
+    /// let (a, b) = (Poly::var("a").unwrap(), Poly::var("b").unwrap());
+    /// let g = a.add(&b); // a + b
+    /// let (x, y) = (g.mul(&a.sub(&b)), g.mul(&g).mul_int(3));
+    /// let (d, fx, fy) = x.gcd_cofactors(&y);
+    /// assert_eq!((d, fx, fy), (g.clone(), a.sub(&b), g.mul_int(3)));
+    /// ```
+    pub fn gcd_cofactors(&self, other: &Poly) -> (Poly, Poly, Poly) {
+        gcd::gcd_cofactors(self, other)
     }
 
     /// Substitutes the polynomial `value` for the symbol `s`.
@@ -495,6 +517,12 @@ impl Poly {
                 return (terms, den);
             }
         }
+        let terms = self.mul_dense(other).unwrap_or_else(|| self.mul_sparse(other));
+        (terms, den)
+    }
+
+    /// The product's terms through a map keyed by monomial (any number of symbols).
+    fn mul_sparse(&self, other: &Poly) -> Vec<(Monomial, BigInt)> {
         let mut acc: BTreeMap<Monomial, BigInt> = BTreeMap::new();
         for (ma, na) in &self.terms {
             for (mb, nb) in &other.terms {
@@ -510,8 +538,96 @@ impl Poly {
                 }
             }
         }
-        (acc.into_iter().filter(|(_, n)| !n.is_zero()).collect(), den)
+        acc.into_iter().filter(|(_, n)| !n.is_zero()).collect()
     }
+}
+
+impl Poly {
+    /// The product's terms by dense accumulation over GMP integers: every exponent vector of the
+    /// product indexes one slot of the box of its degrees (mixed radix), each slot a GMP
+    /// multiply-add (no allocation per product term, no map); the non-zero slots are put in
+    /// [`Monomial`] order by a packed key ([`monomial_order_key`]). `None` (the caller's sparse
+    /// map decides) for more than 4 symbols, or when the box is more than 16 times the number of
+    /// term products or above 2^22 slots.
+    fn mul_dense(&self, other: &Poly) -> Option<Vec<(Monomial, BigInt)>> {
+        let mut syms = self.symbols();
+        for s in other.symbols() {
+            if !syms.contains(&s) {
+                syms.push(s);
+            }
+        }
+        syms.sort();
+        if syms.len() > 4 {
+            return None;
+        }
+        let pairs = self.terms.len().checked_mul(other.terms.len())?;
+        // (stride, dim) per symbol, in name order.
+        let mut radix: Vec<(usize, usize)> = Vec::with_capacity(syms.len());
+        let mut slots: usize = 1;
+        for &s in &syms {
+            let d = (self.degree_in(s) + other.degree_in(s)) as usize + 1;
+            radix.push((slots, d));
+            slots = slots.checked_mul(d)?;
+            if slots > (1 << 22) || slots > 16 * pairs || d >= 0xFFFF {
+                return None;
+            }
+        }
+        let index = |m: &Monomial| -> usize {
+            m.0.iter().map(|&(s, e)| radix[syms.binary_search(&s).expect("symbol")].0 * e as usize).sum()
+        };
+        let a: Vec<(usize, rug::Integer)> = self.terms.iter().map(|(m, n)| (index(m), crate::gmp::to_rug(n))).collect();
+        let b: Vec<(usize, rug::Integer)> =
+            other.terms.iter().map(|(m, n)| (index(m), crate::gmp::to_rug(n))).collect();
+        let mut acc: Vec<rug::Integer> = (0..slots).map(|_| rug::Integer::new()).collect();
+        for (ia, na) in &a {
+            for (ib, nb) in &b {
+                acc[ia + ib] += na * nb;
+            }
+        }
+        let exps = |k: usize| radix.iter().map(move |&(stride, dim)| ((k / stride) % dim) as u32);
+        let mut keyed: Vec<(u64, usize)> = acc
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| n.cmp0() != std::cmp::Ordering::Equal)
+            .map(|(k, _)| (monomial_order_key(exps(k)), k))
+            .collect();
+        keyed.sort_unstable();
+        let terms = keyed
+            .into_iter()
+            .map(|(_, k)| {
+                let f = syms.iter().copied().zip(exps(k)).filter(|&(_, e)| e > 0).collect();
+                (Monomial(f), crate::gmp::to_big(&acc[k]))
+            })
+            .collect();
+        Some(terms)
+    }
+}
+
+/// A `u64` whose order is [`Monomial`]'s (lexicographic on the list of non-zero factors, symbols
+/// by name) for the exponents of at most 4 symbols in name order, each below 0xFFFF: per symbol
+/// 16 bits, the exponent when positive, 0xFFFF when zero but a later symbol occurs (a list that
+/// skips a symbol starts with a later one: greater), 0 when no later symbol occurs (a list that
+/// ends there is a prefix: smaller).
+fn monomial_order_key(exps: impl Iterator<Item = u32>) -> u64 {
+    let mut e = [0u32; 4];
+    for (slot, x) in e.iter_mut().zip(exps) {
+        *slot = x;
+    }
+    // From the last symbol back: whether a later symbol occurs.
+    let mut key = 0u64;
+    let mut later = false;
+    for i in (0..4).rev() {
+        let field = if e[i] > 0 {
+            u64::from(e[i])
+        } else if later {
+            0xFFFF
+        } else {
+            0
+        };
+        later |= e[i] > 0;
+        key |= field << (16 * (3 - i));
+    }
+    key
 }
 
 impl Ring for Poly {
@@ -578,5 +694,54 @@ impl Ring for Poly {
         }
         let t = self.terms.iter().map(|(m, n)| (m.clone(), n * q.numer())).collect();
         Poly::normalized(t, &self.den * q.denom())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn arb_poly() -> impl Strategy<Value = Poly> {
+        let terms = proptest::collection::vec((proptest::collection::vec(0u32..4, 4), -50i64..=50), 0..=12);
+        (terms, 1usize..=4).prop_map(|(terms, nsym)| {
+            let syms = ["B", "S", "a", "eps"].map(|s| Symbol::new(s).unwrap());
+            Poly::from_rational_terms(terms.into_iter().map(|(e, c)| {
+                let m = (0..nsym).fold(Monomial::one(), |m, k| m.mul(&Monomial::power(syms[k], e[k])));
+                (m, Q::from_integer(c.into()))
+            }))
+        })
+    }
+
+    static DENSE: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+        /// The dense GMP product gives the sparse map's terms in the same (Monomial) order, and
+        /// the packed order key sorts exponent vectors as `Monomial`'s order does.
+        #[test]
+        fn dense_product_matches_the_sparse_one(a in arb_poly(), b in arb_poly()) {
+            if let Some(d) = a.mul_dense(&b) {
+                DENSE.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                prop_assert_eq!(d, a.mul_sparse(&b));
+            } else {
+                prop_assert!(a.is_zero() || b.is_zero() || a.terms.len() * b.terms.len() * 16 < 4096);
+            }
+            let syms = ["B", "S", "a", "eps"].map(|s| Symbol::new(s).unwrap());
+            let ms: Vec<&Monomial> = a.terms.iter().chain(&b.terms).map(|(m, _)| m).collect();
+            for x in &ms {
+                for y in &ms {
+                    let key = |m: &Monomial| monomial_order_key(syms.iter().map(|&s| m.exponent(s)));
+                    prop_assert_eq!(key(x).cmp(&key(y)), x.cmp(y));
+                }
+            }
+        }
+    }
+
+    /// The property above took the dense route in most cases (else it would test nothing).
+    #[test]
+    fn dense_route_is_exercised() {
+        dense_product_matches_the_sparse_one();
+        assert!(DENSE.load(std::sync::atomic::Ordering::Relaxed) > 40);
     }
 }
