@@ -6,11 +6,12 @@
 //!   ~100 s a point at 16 digits); the whole matrix n = 1/5, 1/2 x l/L = 1/8, 1/4 (Lambda = pi/8, pi/4) x both
 //!   conventions at nu = 0.3 with five points is `agreement_matrix_nu_03` (ignored; `cargo test
 //!   --release --test loading_law_agreement -- --ignored --nocapture`).
-//! - nu = 0: the f64 march refuses (its own error grows until an end recedes); the MPFR
-//!   collocation and the small-lambda series (`asymptotics::loading_law`), two methods built
-//!   differently, agree at n = 1/5 (CI: l/L = 1/16; ignored `nu_zero_reach`: l/L = 1/8, 1/4 and
-//!   n = 1/2), where the homogeneous mode eta^mu* (`asymptotics::loading_law_modes`) sets how
-//!   far either gets.
+//! - nu = 0: the f64 method (one block at small nu) agrees with the MPFR collocation at n = 1/5,
+//!   l/L = 1/16 and 1/8, and refuses where the homogeneous mode has grown (n = 1/5 at 1/4, n = 1/2
+//!   at 1/8); the MPFR collocation and the small-lambda series (`asymptotics::loading_law`), two
+//!   methods built differently, agree at n = 1/5 (CI: l/L = 1/16; ignored `nu_zero_reach`: l/L =
+//!   1/8, 1/4 and n = 1/2), where the homogeneous mode eta^mu* (`asymptotics::loading_law_modes`)
+//!   sets how far any method gets: the problem fixes its solution only up to C eta^mu*.
 //! - Limits: n = 0 is the symmetric problem (its f64 series solver), b = a; nu = 1/2 decouples
 //!   (P' = pi tan eta, b = a, q1 = n q2).
 
@@ -159,8 +160,21 @@ fn nu_zero_reach() {
     }
 }
 
-/// nu = 0: the march refuses (its growing error shows as an end that recedes) at both sizes and
-/// both laws, never a result with claimed digits.
+/// nu = 0, n = 1/5 (mu* = 178.3): where the problem fixes its solution the f64 method (one
+/// block at small nu, `verified_f64::solve_law_f64`) agrees with the MPFR collocation to >= 12
+/// digits at l/L = 1/16 and 1/8 (Lambda = 0.196, 0.393; measured by `solve --method f64/mpfr`:
+/// c = -5.086222209154e-3 against -5.086222209154380e-3 and -1.06415165828e-2 against
+/// -1.064151658277721e-2), in both conventions at 1/16.
+#[test]
+fn nu_zero_agrees_where_the_problem_fixes_the_solution() {
+    check(q(0, 1), q(1, 5), q(1, 16), Convention::Paper, &[]);
+    check(q(0, 1), q(1, 5), q(1, 16), Convention::PeriodicSurface, &[]);
+    check(q(0, 1), q(1, 5), q(1, 8), Convention::Paper, &[]);
+}
+
+/// nu = 0 beyond: n = 1/5 at l/L = 1/4 and n = 1/2 (mu* = 31.8) at 1/8, where the homogeneous
+/// mode has grown (the MPFR collocation verifies 2.6 and 2.1 digits there, or refuses): the f64
+/// method refuses (an end recedes), never a result with claimed digits.
 #[test]
 fn nu_zero_is_refused_not_answered() {
     for (n, size) in [(q(1, 5), q(1, 4)), (q(1, 2), q(1, 8))] {

@@ -29,8 +29,9 @@
 //! convention; `cargo test --release --test loading_law_agreement -- --ignored --nocapture
 //! nu_zero_reach` and `cargo run --release --example loading_law_small_nu`): nu = 0, n = 1/5
 //! (mu* = 178.3) verifies 25.9 digits at l/L = 1/16, 16.1 at 1/8, 2.6 at 1/4; n = 1/2 (mu* =
-//! 31.8) 2.1 at 1/8; nu = 1/10, n = 1/5 (mu* = 580) 18.2 at 1/8. (The f64 march's refusal at
-//! nu <= 0.1 is its own instability: at nu = 1/10, n = 1/5 the collocation still verifies 18.2.)
+//! 31.8) 2.1 at 1/8; nu = 1/10, n = 1/5 (mu* = 580) 18.2 at 1/8. (The f64 march with blocks of
+//! 0.05 refused nu <= 0.1 by its own instability; one block at small nu agrees with the
+//! collocation at nu = 0, n = 1/5, l/L = 1/16 and 1/8: `verified_f64::solve_law_f64`.)
 //!
 //! # Measured
 //! `cargo run --release --example loading_law_modes` (12 digits asked; verified digits in

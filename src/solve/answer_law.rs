@@ -257,7 +257,7 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
                 v.eps.to_f64()
             ),
             None => format!(
-                "at small nu (eps = {:.4}) the loading-law problem is ill-conditioned (the f64 march refuses nu <= 0.1)",
+                "at small nu (eps = {:.4}) the loading-law problem is ill-conditioned (its homogeneous modes: asymptotics::loading_law_modes)",
                 v.eps.to_f64()
             ),
         };

@@ -243,8 +243,9 @@ fn recedes(side: Side, lambda: f64) -> AdhesionError {
         what: "loading-law march",
         reason: format!(
             "the {} end recedes at lambda = {lambda:.4} (the contact must grow at both ends for complete adhesion; \
-             at small nu (nu <= 0.1 in tests/loading_law_agreement.rs) this is how the march's own growing error \
-             shows; the problem's homogeneous modes eta^mu*: asymptotics::loading_law_modes)",
+             at small nu this is the problem's homogeneous mode eta^mu* grown to this size (asymptotics::\
+             loading_law_modes: the history is fixed only up to C eta^mu*, and the discretisation's own error \
+             sets C), or with blocks of 0.05 their own growing error)",
             if side == Side::Right { "leading" } else { "trailing" }
         ),
     }
