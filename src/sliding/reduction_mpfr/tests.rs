@@ -417,6 +417,33 @@ fn refusal_is_in_the_problems_units() {
     );
 }
 
+/// Issue 14: the admissible range is scanned once per problem without its load. The memo's key
+/// ignores the load (the scan solves the direct problem only) but not friction, the memoized range
+/// equals a fresh scan, and two loads of one problem refused for the same reason quote the same
+/// range (theta = -0.4 by friction on the periodic parabola: physical loads up to about 0.0432,
+/// the report's stability map).
+#[test]
+fn admissible_range_is_memoized_per_problem_without_its_load() {
+    let base = Case { nu: "3/10", mu: "10771892/1000000", tau0: "0", cw: "0", ..BASE };
+    let (p1, p2) = (base.load("1/5"), base.load("1/4"));
+    let lo = |p: &SlidingProblem| Setup::new(p).unwrap().locate;
+    let (l1, l2) = (lo(&p1), lo(&p2));
+    assert_ne!(l1.target, l2.target);
+    assert_eq!(super::solve::admissible_key(&l1, 1.5), super::solve::admissible_key(&l2, 1.5));
+    let other = lo(&Case { mu: "10771893/1000000", ..base }.load("1/5"));
+    assert_ne!(super::solve::admissible_key(&l1, 1.5), super::solve::admissible_key(&other, 1.5));
+    assert_ne!(super::solve::admissible_key(&l1, 1.5), super::solve::admissible_key(&l1, 1.4));
+    let s_max = super::solve::scan_max(&l1);
+    let fresh = super::solve::admissible_scan(&l1, s_max).unwrap();
+    assert_eq!(super::solve::admissible_range(&l2).unwrap(), fresh);
+    assert_eq!(super::solve::admissible_range(&l1).unwrap(), fresh);
+    let max = fresh.max_load().expect("a physical run").0;
+    assert!(max > 0.0431 && max < 0.0433, "{fresh:?}");
+    let text = |p: &SlidingProblem| crate::error::Error::from(solve_verified(p, &[], 20).unwrap_err()).to_string();
+    let (t1, t2) = (text(&p1), text(&p2));
+    assert_eq!(largest_admissible_load(&t1), largest_admissible_load(&t2), "{t1}\n{t2}");
+}
+
 /// Independent check of the reduction [2.13]-[2.14] for theta != 0, tau0 > 0 on a periodic row:
 /// the pressure it returns satisfies the original equation [2.8]
 ///     kappa p(x) + H[p](x) = (E*/2) g'(x) + beta tau0,  H[p] = (1/L) PV int p(xi) cot(pi (x - xi)/L) dxi,
