@@ -12,8 +12,11 @@
 //!    where the factor $(1+\alpha+\beta)$ is cancelled analytically in $b_1$ and $a_0 = (\beta-\alpha)/(\alpha+\beta+2)$
 //!    (so that $\alpha + \beta = -1$ or $0$, the cases of docs/theory.md sections 3 and 5, are not 0/0);
 //! 2. f64 eigenvalues of the Jacobi matrix (implicit QL) as initial guesses;
-//! 3. Newton on $p_n$ evaluated by the recurrence at `prec + GUARD_BITS` bits, with precision
-//!    doubling from the f64 start;
+//! 3. Newton on $p_n$ evaluated by the recurrence (values only) at `prec + GUARD_BITS` bits, with
+//!    precision doubling from the f64 start: a first pass in double-double arithmetic (about 100
+//!    bits, [`Dd`]), then MPFR; the derivative from $p_n$ and $p_{n-1}$ by the structure relation
+//!    $(1-x^2) p_n'(x) = n\,((\alpha-\beta)/(2n+\alpha+\beta) - x)\, p_n(x) + (2n+\alpha+\beta+1)\, b_n\, p_{n-1}(x)$
+//!    (derived in [`Eval::run`]; half the operations of differentiating the recurrence, issue 14);
 //! 4. Christoffel weights $w_i = \mu_0 / \sum_{k<n} p_k(u_i)^2$ ($p_0 = 1$), the sum taken from the
 //!    last Newton pass by Christoffel–Darboux, $\sum_{k<n} p_k^2 = b_n p_n'(u_i) p_{n-1}(u_i)$ (DLMF 18.2.12),
 //!    $\mu_0 = 2^{\alpha+\beta+1}\Gamma(\alpha+1)\Gamma(\beta+1)/\Gamma(\alpha+\beta+2)$.
@@ -29,6 +32,10 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 /// Extra bits carried while the nodes and weights are computed.
 pub const GUARD_BITS: u32 = 32;
+
+/// Largest first rung of the Newton ladder done in double-double arithmetic ([`Dd`], 106 bits, of
+/// which the recurrence's rounding leaves about 100).
+const DD_BITS: u32 = 116;
 
 /// Largest number of nodes a rule may have (the f64 start and the O(n^2) Newton phase are
 /// the limits; beyond this the caller should change method).
@@ -180,15 +187,23 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Option<Vec<f64>> {
     Some(d)
 }
 
-/// Scratch for the recurrence at one precision.
+/// Scratch for the recurrence at one precision, with the constants of the structure relation.
 struct Eval {
     a: Vec<Float>,
     ib: Vec<Float>,
     b: Vec<Float>,
+    /// (alpha - beta)/(2n + alpha + beta).
+    shift: Float,
+    /// (2n + alpha + beta + 1) b_n.
+    c2: Float,
 }
 
 impl Eval {
-    fn new(a: &[Float], b: &[Float], prec: u32) -> Self {
+    fn new(alpha: &Float, beta: &Float, a: &[Float], b: &[Float], prec: u32) -> Self {
+        let n = a.len();
+        let s = Float::with_val(prec, alpha + beta) + (2 * n) as u32;
+        let shift = Float::with_val(prec, alpha - beta) / &s;
+        let c2 = Float::with_val(prec, &s + 1u32) * &b[n];
         Eval {
             a: a.iter().map(|x| Float::with_val(prec, x)).collect(),
             b: b.iter().map(|x| Float::with_val(prec, x)).collect(),
@@ -202,35 +217,124 @@ impl Eval {
                     }
                 })
                 .collect(),
+            shift,
+            c2,
         }
     }
 
-    /// p_n(x), p_n'(x), p_{n-1}(x) (p_0 = 1) and, if `want_sum`, sum_{k<n} p_k(x)^2.
-    fn run(&self, x: &Float, n: usize, prec: u32, want_sum: bool) -> (Float, Float, Float, Float) {
+    /// p_n(x), p_n'(x), p_{n-1}(x) (p_0 = 1; n = the length of the recurrence) for x in (-1, 1).
+    ///
+    /// The values by the recurrence; the derivative by the structure relation of the module doc,
+    /// $(1-x^2) p_n' = c_1(x) p_n + c_2 p_{n-1}$: its leading terms give $c_1 = n (\text{shift} - x)$
+    /// (with shift = (alpha - beta)/(2n + alpha + beta), DLMF 18.9.16 for the classical normalisation),
+    /// and $c_2 = \langle (1-x^2) p_n', p_{n-1} \rangle - \langle c_1 p_n, p_{n-1} \rangle$ in the
+    /// weight's inner product: by parts the first is $(n + \alpha + \beta + 1) b_n$, the second
+    /// $-n b_n$ (from $\langle x p_n, p_{n-1} \rangle = b_n$ and $k_{n-1}/k_n = b_n$), so
+    /// $c_2 = (2n + \alpha + \beta + 1) b_n$. The test `structure_relation_derivative` compares it
+    /// with the derivative of the recurrence.
+    fn run(&self, x: &Float, prec: u32) -> (Float, Float, Float) {
+        let n = self.a.len();
         let mut pm = Float::with_val(prec, 0);
         let mut p = Float::with_val(prec, 1);
-        let mut dpm = Float::with_val(prec, 0);
-        let mut dp = Float::with_val(prec, 0);
-        let mut sum = Float::with_val(prec, 0);
         let mut xa = Float::with_val(prec, 0);
         let mut t = Float::with_val(prec, 0);
-        let mut dt = Float::with_val(prec, 0);
         for k in 0..n {
-            if want_sum {
-                sum += Float::with_val(prec, p.square_ref());
-            }
             xa.assign(x - &self.a[k]);
             t.assign(&xa * &p - &self.b[k] * &pm);
             t *= &self.ib[k + 1];
-            dt.assign(&xa * &dp - &self.b[k] * &dpm);
-            dt += &p;
-            dt *= &self.ib[k + 1];
             std::mem::swap(&mut pm, &mut p);
             std::mem::swap(&mut p, &mut t);
-            std::mem::swap(&mut dpm, &mut dp);
-            std::mem::swap(&mut dp, &mut dt);
         }
-        (p, dp, pm, sum)
+        let c1 = Float::with_val(prec, &self.shift - x) * n as u32;
+        let num = Float::with_val(prec, &c1 * &p) + Float::with_val(prec, &self.c2 * &pm);
+        let one_minus = Float::with_val(prec, 1u32 - x);
+        let one_plus = Float::with_val(prec, x + 1u32);
+        let dp = num / Float::with_val(prec, one_minus * one_plus);
+        (p, dp, pm)
+    }
+}
+
+/// A double-double number hi + lo (|lo| <= ulp(hi)/2): about 106 bits with `f64` operations, for
+/// the first Newton pass of [`newton_rule`] (Dekker's products, no fused multiply-add needed).
+#[derive(Debug, Clone, Copy)]
+struct Dd(f64, f64);
+
+impl Dd {
+    fn of(x: &Float) -> Dd {
+        let hi = x.to_f64();
+        let lo = Float::with_val(x.prec(), x - hi).to_f64();
+        Dd(hi, lo)
+    }
+    fn two_sum(a: f64, b: f64) -> Dd {
+        let s = a + b;
+        let bb = s - a;
+        Dd(s, (a - (s - bb)) + (b - bb))
+    }
+    fn split(a: f64) -> (f64, f64) {
+        let t = 134217729.0 * a; // 2^27 + 1
+        let hi = t - (t - a);
+        (hi, a - hi)
+    }
+    fn two_prod(a: f64, b: f64) -> Dd {
+        let p = a * b;
+        let (ah, al) = Dd::split(a);
+        let (bh, bl) = Dd::split(b);
+        Dd(p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+    }
+    fn add(self, o: Dd) -> Dd {
+        let s = Dd::two_sum(self.0, o.0);
+        let t = Dd::two_sum(self.1, o.1);
+        let s = Dd::two_sum(s.0, s.1 + t.0);
+        Dd::two_sum(s.0, s.1 + t.1)
+    }
+    fn neg(self) -> Dd {
+        Dd(-self.0, -self.1)
+    }
+    fn sub(self, o: Dd) -> Dd {
+        self.add(o.neg())
+    }
+    fn mul(self, o: Dd) -> Dd {
+        let p = Dd::two_prod(self.0, o.0);
+        Dd::two_sum(p.0, p.1 + (self.0 * o.1 + self.1 * o.0))
+    }
+    fn div(self, o: Dd) -> Dd {
+        let q1 = self.0 / o.0;
+        let r = self.sub(o.mul(Dd(q1, 0.0)));
+        let q2 = r.0 / o.0;
+        let r = r.sub(o.mul(Dd(q2, 0.0)));
+        let q3 = r.0 / o.0;
+        Dd::two_sum(q1, q2).add(Dd(q3, 0.0))
+    }
+}
+
+/// [`Eval`] in double-double: the first Newton pass (module doc), where ~100 bits suffice.
+struct EvalDd {
+    a: Vec<Dd>,
+    b: Vec<Dd>,
+    ib: Vec<Dd>,
+    shift: Dd,
+    c2: Dd,
+}
+
+impl EvalDd {
+    fn new(e: &Eval) -> Self {
+        let v = |x: &[Float]| x.iter().map(Dd::of).collect();
+        EvalDd { a: v(&e.a), b: v(&e.b), ib: v(&e.ib), shift: Dd::of(&e.shift), c2: Dd::of(&e.c2) }
+    }
+
+    /// The Newton step p_n(x)/p_n'(x), as [`Eval::run`] computes it.
+    fn step(&self, x: Dd) -> Dd {
+        let n = self.a.len();
+        let (mut pm, mut p) = (Dd(0.0, 0.0), Dd(1.0, 0.0));
+        for k in 0..n {
+            let t = x.sub(self.a[k]).mul(p).sub(self.b[k].mul(pm)).mul(self.ib[k + 1]);
+            pm = p;
+            p = t;
+        }
+        let c1 = self.shift.sub(x).mul(Dd(n as f64, 0.0));
+        let num = c1.mul(p).add(self.c2.mul(pm));
+        let den = Dd(1.0, 0.0).sub(x).mul(x.add(Dd(1.0, 0.0)));
+        p.mul(den).div(num)
     }
 }
 
@@ -291,7 +395,8 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
         why: "f64 eigenvalues (implicit QL) did not converge".into(),
     })?;
 
-    // Precision ladder for Newton: each step roughly doubles the correct bits from ~50.
+    // Precision ladder for Newton: each step roughly doubles the correct bits from ~50. A first
+    // rung of at most DD_BITS bits is a double-double pass.
     let mut ladder = vec![];
     let mut bits = 100u32;
     while bits < wp {
@@ -300,16 +405,18 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
     }
     ladder.push(wp);
     ladder.push(wp);
+    let dd_first = ladder[0] <= DD_BITS && ladder.len() > 2;
     let evals: Vec<(u32, Eval)> = {
         let mut v: Vec<(u32, Eval)> = vec![];
-        for &pb in &ladder {
-            if !v.iter().any(|(q, _)| *q == pb) {
-                v.push((pb, Eval::new(&a, &b, pb)));
+        for (step, &pb) in ladder.iter().enumerate() {
+            if !(dd_first && step == 0) && !v.iter().any(|(q, _)| *q == pb) {
+                v.push((pb, Eval::new(alpha, beta, &a, &b, pb)));
             }
         }
         v
     };
     let get = |pb: u32| &evals.iter().find(|(q, _)| *q == pb).expect("ladder precision present").1;
+    let dd = dd_first.then(|| EvalDd::new(get(wp)));
     let mu0 = jacobi_mu0(alpha, beta, wp);
     let tol = Float::with_val(53, Float::i_exp(1, -(wp as i32) + 4));
 
@@ -321,8 +428,19 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
         // p_n' and p_{n-1} from the last full-precision pass, for the weight.
         let mut last: Option<(Float, Float)> = None;
         for (step, &pb) in ladder.iter().enumerate() {
+            if let (Some(dd), 0) = (&dd, step) {
+                let xd = Dd(x0, 0.0);
+                let dx = dd.step(xd);
+                if !(dx.0.is_finite() && dx.1.is_finite()) {
+                    return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
+                }
+                let next = xd.sub(dx);
+                x.assign(next.0);
+                x += next.1;
+                continue;
+            }
             let xe = Float::with_val(pb, &x);
-            let (p, dp, pm, _) = get(pb).run(&xe, n, pb, false);
+            let (p, dp, pm) = get(pb).run(&xe, pb);
             if dp.is_zero() || !dp.is_finite() {
                 return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
             }
@@ -336,7 +454,7 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
         // More steps at full precision if the last correction was not yet negligible.
         let mut extra = 0;
         while !converged && extra < 6 {
-            let (p, dp, pm, _) = get(wp).run(&x, n, wp, false);
+            let (p, dp, pm) = get(wp).run(&x, wp);
             let dx = Float::with_val(wp, &p / &dp);
             x -= &dx;
             converged = dx.abs() <= tol;
@@ -497,6 +615,58 @@ mod tests {
                     let err = Float::with_val(prec, &s - &expect).abs();
                     assert!(err <= tol(prec) * 4u32, "prec {prec} j {j} k {k} err {err}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn structure_relation_derivative() {
+        // p_n' of Eval::run (structure relation) against the derivative of the recurrence,
+        // d/dx: b_{k+1} p_{k+1}' = (x - a_k) p_k' + p_k - b_k p_{k-1}', at 256 bits.
+        let prec = 256;
+        for (al, be) in [(-0.9f64, -0.1f64), (0.1, 0.9), (0.0, 0.0), (2.5, -0.75), (-0.5, 0.5)] {
+            let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
+            for n in [1usize, 2, 7, 40] {
+                let (a, b) = recurrence(&alpha, &beta, n, prec);
+                let e = Eval::new(&alpha, &beta, &a, &b, prec);
+                for xv in [-0.999f64, -0.6, 0.0, 0.31, 0.97] {
+                    let x = Float::with_val(prec, xv);
+                    let (p, dp, pm) = e.run(&x, prec);
+                    let (mut q, mut dq) = (Float::with_val(prec, 1), Float::with_val(prec, 0));
+                    let (mut qm, mut dqm) = (Float::with_val(prec, 0), Float::with_val(prec, 0));
+                    for k in 0..n {
+                        let xa = Float::with_val(prec, &x - &a[k]);
+                        let next = (Float::with_val(prec, &xa * &q) - Float::with_val(prec, &b[k] * &qm)) / &b[k + 1];
+                        let dnext =
+                            (Float::with_val(prec, &xa * &dq) + &q - Float::with_val(prec, &b[k] * &dqm)) / &b[k + 1];
+                        (qm, q, dqm, dq) = (q, next, dq, dnext);
+                    }
+                    let close = |u: &Float, v: &Float| {
+                        let scale = Float::with_val(prec, u.abs_ref()).max(&Float::with_val(prec, 1));
+                        Float::with_val(prec, u - v).abs() <= Float::with_val(prec, Float::i_exp(1, -230)) * scale
+                    };
+                    assert!(close(&p, &q) && close(&pm, &qm), "values: {al} {be} n {n} x {xv}");
+                    assert!(close(&dp, &dq), "derivative: {al} {be} n {n} x {xv}: {dp} vs {dq}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn double_double_start_gives_the_rule_of_a_higher_precision() {
+        // Rules whose Newton ladder is the double-double pass and two passes at the working
+        // precision (wp <= 200 bits) against the same rule at 96 more bits (a longer ladder, whose
+        // MPFR passes correct any error of the start): every node and weight within 2 ulps.
+        for (al, be, n, prec) in [(-0.9f64, -0.1f64, 300usize, 132u32), (0.7, 0.3, 64, 64), (0.25, -0.6, 97, 164)] {
+            let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
+            let r = gauss_jacobi_uncached(&alpha, &beta, n, prec).unwrap();
+            let hi = gauss_jacobi_uncached(&alpha, &beta, n, prec + 96).unwrap();
+            let ulp = |x: &Float| Float::with_val(prec, Float::i_exp(1, x.get_exp().unwrap_or(0) - prec as i32));
+            for i in 0..n {
+                let dx = Float::with_val(prec + 96, &r.nodes[i] - &hi.nodes[i]).abs();
+                assert!(dx <= Float::with_val(prec, ulp(&r.nodes[i]) * 2u32), "{al} {be} {n} {prec} node {i}");
+                let dw = Float::with_val(prec + 96, &r.weights[i] - &hi.weights[i]).abs();
+                assert!(dw <= Float::with_val(prec, ulp(&r.weights[i]) * 2u32), "{al} {be} {n} {prec} weight {i}");
             }
         }
     }

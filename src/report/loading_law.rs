@@ -201,12 +201,20 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
         xh.len()
     );
     let _ = writeln!(s.timings, "### Loading law\n\n| scene | convention | seconds |\n|---|---|---:|");
+    // One job per scene on the report's thread pool (results in the scenes' order).
+    let solved = super::parallel::map(
+        &problems,
+        |_| 1.0,
+        |(name, p)| {
+            ctx.step(format!("loading law: {name} ({})", p.convention().name()));
+            let t0 = Instant::now();
+            let solution = solve_law_sampled(p, &[], &xh, digits).map_err(|e| e.to_string());
+            (solution, t0.elapsed().as_secs_f64())
+        },
+    );
     let mut rows = Vec::new();
-    for (name, p) in problems {
-        ctx.step(format!("loading law: {name} ({})", p.convention().name()));
-        let t0 = Instant::now();
-        let solution = solve_law_sampled(&p, &[], &xh, digits).map_err(|e| e.to_string());
-        let _ = writeln!(s.timings, "| `{name}` | {} | {:.2} |", p.convention().name(), t0.elapsed().as_secs_f64());
+    for ((name, p), (solution, secs)) in problems.into_iter().zip(solved) {
+        let _ = writeln!(s.timings, "| `{name}` | {} | {secs:.2} |", p.convention().name());
         rows.push(Row { scene: name, problem: p, solution, second: None });
     }
     table(&mut s, &rows, digits);
@@ -250,16 +258,20 @@ fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
          | case | nu | n = N'(0) | mu* | digits |\n|---|---|---|---|---|"
     );
     ctx.step("loading law: homogeneous modes".to_string());
-    for (name, nu, n) in cases {
-        let row = match mode_exponent(&nu, &n, MODE_DIGITS) {
+    // One job per case on the report's thread pool (rows in the cases' order).
+    let found = super::parallel::map(
+        &cases,
+        |_| 1.0,
+        |(_, nu, n)| match mode_exponent(nu, n, MODE_DIGITS) {
             Ok(m) => match m.value_text() {
                 Some(v) => format!("{v} | {}", fmt_digits(Some(m.digits))),
                 None => format!("none below {MU_MAX} | -"),
             },
             Err(e) => format!("{e} | -"),
-        };
-        let _ =
-            writeln!(s.markdown, "| {name} | {} | {} | {row} |", exact_series::q_text(&nu), exact_series::q_text(&n));
+        },
+    );
+    for ((name, nu, n), row) in cases.iter().zip(found) {
+        let _ = writeln!(s.markdown, "| {name} | {} | {} | {row} |", exact_series::q_text(nu), exact_series::q_text(n));
     }
     let _ = writeln!(s.markdown);
 }

@@ -12,7 +12,9 @@
 
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::section::{Ctx, Profile, Section};
-use crate::verification::pade::{pade_rows, PadePlan, PadeRow, LAMBDAS};
+use crate::asymptotics::sliding::SlidingShape;
+use crate::model::Convention;
+use crate::verification::pade::{pade_objects, pade_rows_at, PadeObject, PadePlan, PadeRow, PadeSeries, LAMBDAS};
 use std::fmt::Write as _;
 
 /// The plan of a profile: orders, sizes, reference digits (module doc).
@@ -27,12 +29,40 @@ fn cell(d: Option<f64>) -> String {
     d.map_or("-".into(), |x| format!("{x:.1}"))
 }
 
+/// Every row of the chart, in its order ([`crate::verification::pade::pade_rows`]'s): each
+/// (object, lambda) is one job on the report's thread pool ([`super::parallel::map`]), the dearest
+/// first (the references near full contact: Problem 2's verified Volterra runs, then the friction
+/// rows' verified reductions), from the expansions of the report's cache (the parabola's and the
+/// sinusoid's are those of the other sections) and Problem 2's derived once.
+fn rows(ctx: &Ctx, plan: &PadePlan) -> Result<Vec<PadeRow>, String> {
+    let parabola = ctx.cache.expansion(SlidingShape::Parabolic, Convention::Paper, plan.parabola)?;
+    let sinusoid = ctx.cache.expansion(SlidingShape::Sinusoidal, Convention::Paper, plan.sinusoid)?;
+    let adhesion = crate::asymptotics::adhesion::adhesion_expansion_with(plan.adhesion, false)
+        .map_err(|e| format!("the Problem 2 expansion: {e}"))?;
+    let series = PadeSeries { parabola: &parabola, sinusoid: &sinusoid, adhesion: &adhesion };
+    let jobs: Vec<(PadeObject, f64)> =
+        pade_objects().into_iter().flat_map(|o| plan.lambdas.iter().map(move |&l| (o.clone(), l))).collect();
+    let cost = |(o, l): &(PadeObject, f64)| match o {
+        PadeObject::Adhesion(_) => 2.0 + l,
+        PadeObject::Friction => 1.0 + l,
+        _ => 0.0,
+    };
+    let done = super::parallel::map(&jobs, cost, |(o, l)| pade_rows_at(plan, &series, o, *l));
+    Ok(done.into_iter().flatten().collect())
+}
+
 /// Builds the section.
 pub fn section(ctx: &Ctx) -> Section {
     ctx.step("Pade resummation");
     let plan = plan(ctx.profile);
-    let rows = pade_rows(&plan);
     let mut s = Section::default();
+    let rows = match rows(ctx, &plan) {
+        Ok(r) => r,
+        Err(why) => {
+            let _ = writeln!(s.markdown, "## Pade resummation\n\nNot computed: {why}.\n");
+            return s;
+        }
+    };
     let md = &mut s.markdown;
     let _ = writeln!(
         md,

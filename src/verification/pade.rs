@@ -26,7 +26,7 @@
 //! reference's own digits.
 
 use crate::adhesion;
-use crate::asymptotics::adhesion::{adhesion_expansion_with, adhesion_values};
+use crate::asymptotics::adhesion::{adhesion_expansion_with, adhesion_values, AdhesionExpansion};
 use crate::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, SlidingShape};
 use crate::model::{AdhesionProblem, AdhesionSize, Convention, Exact, Material, Period, PunchShape, SlidingProblem};
 use crate::numerics::accuracy::verified_digits_mpfr;
@@ -228,14 +228,13 @@ fn friction_rows(e: &SlidingExpansion, order: usize, lambdas: &[f64], digits: u3
     rows
 }
 
-/// The Problem 2 rows (`P2 nu=...`).
-fn adhesion_rows(nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
+/// The Problem 2 rows (`P2 nu=...`) from the load expansion `e` through order `order`.
+fn adhesion_rows(e: &AdhesionExpansion, nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
     let prec = crate::numerics::precision::precision_for(digits);
     let cap = digits as f64;
     let name = format!("P2 nu={}", exact_series::q_text(nu));
-    let e = adhesion_expansion_with(order, false).expect("the adhesion expansion derives");
-    let values = adhesion_values(&e, nu, prec).expect("nu in [0, 1/2]");
-    let cw: Vec<Float> = values.load.iter().step_by(2).cloned().collect();
+    let values = adhesion_values(e, nu, prec).expect("nu in [0, 1/2]");
+    let cw: Vec<Float> = values.load.iter().take(order + 1).step_by(2).cloned().collect();
     let material = Material::from_contact_modulus(nu.clone(), q(1, 1)).expect("valid material");
     let pi = Float::with_val(prec, rug::float::Constant::Pi);
     lambdas
@@ -308,21 +307,69 @@ pub struct PadePlan {
     pub digits: u32,
 }
 
-/// Every row of the chart at `plan`: Kuznetsov, sinusoid, friction l and c, P2 at nu = 0, 3/10.
+/// The objects of the chart, in its order (each gives one row, or two for friction, per lambda).
+#[derive(Debug, Clone, PartialEq)]
+pub enum PadeObject {
+    /// `Kuznetsov l` (closed form).
+    Kuznetsov,
+    /// `sinusoid a` (closed form).
+    Sinusoid,
+    /// `friction l` and `friction c` (the verified MPFR reduction).
+    Friction,
+    /// `P2 nu=...` at this nu (the verified MPFR Volterra solver).
+    Adhesion(Q),
+}
+
+/// Every object of the chart, in the chart's order.
+pub fn pade_objects() -> Vec<PadeObject> {
+    vec![
+        PadeObject::Kuznetsov,
+        PadeObject::Sinusoid,
+        PadeObject::Friction,
+        PadeObject::Adhesion(q(0, 1)),
+        PadeObject::Adhesion(q(3, 10)),
+    ]
+}
+
+/// The exact expansions the rows are built from: the `paper` parabola through (at least)
+/// `plan.parabola`, the sinusoid through `plan.sinusoid`, Problem 2's load through `plan.adhesion`
+/// (an expansion derived through a higher order gives the same rows: each row takes the terms
+/// through its own order).
+pub struct PadeSeries<'a> {
+    /// The parabola's (Kuznetsov, friction).
+    pub parabola: &'a SlidingExpansion,
+    /// The sinusoid's.
+    pub sinusoid: &'a SlidingExpansion,
+    /// Problem 2's.
+    pub adhesion: &'a AdhesionExpansion,
+}
+
+/// The rows of `object` at the one size `lambda` (independent of the other rows, so that a caller
+/// may compute them in any order or in parallel; [`pade_rows`] in the chart's order).
+pub fn pade_rows_at(plan: &PadePlan, series: &PadeSeries, object: &PadeObject, lambda: f64) -> Vec<PadeRow> {
+    let l = [lambda];
+    match object {
+        PadeObject::Kuznetsov => closed_form_rows(series.parabola, plan.parabola, &l, plan.digits),
+        PadeObject::Sinusoid => closed_form_rows(series.sinusoid, plan.sinusoid, &l, plan.digits),
+        PadeObject::Friction => friction_rows(series.parabola, plan.parabola, &l, plan.digits),
+        PadeObject::Adhesion(nu) => adhesion_rows(series.adhesion, nu, plan.adhesion, &l, plan.digits),
+    }
+}
+
+/// Every row of the chart at `plan`: Kuznetsov, sinusoid, friction l and c, P2 at nu = 0, 3/10
+/// (per object, by lambda).
 pub fn pade_rows(plan: &PadePlan) -> Vec<PadeRow> {
     let paper =
         |shape, order| sliding_expansion_with(shape, order, Convention::Paper).expect("the paper expansion derives");
     let parabola = paper(SlidingShape::Parabolic, plan.parabola);
-    let mut rows = closed_form_rows(&parabola, plan.parabola, &plan.lambdas, plan.digits);
-    rows.extend(closed_form_rows(
-        &paper(SlidingShape::Sinusoidal, plan.sinusoid),
-        plan.sinusoid,
-        &plan.lambdas,
-        plan.digits,
-    ));
-    rows.extend(friction_rows(&parabola, plan.parabola, &plan.lambdas, plan.digits));
-    for nu in [q(0, 1), q(3, 10)] {
-        rows.extend(adhesion_rows(&nu, plan.adhesion, &plan.lambdas, plan.digits));
+    let sinusoid = paper(SlidingShape::Sinusoidal, plan.sinusoid);
+    let adhesion = adhesion_expansion_with(plan.adhesion, false).expect("the adhesion expansion derives");
+    let series = PadeSeries { parabola: &parabola, sinusoid: &sinusoid, adhesion: &adhesion };
+    let mut rows = vec![];
+    for object in pade_objects() {
+        for &lambda in &plan.lambdas {
+            rows.extend(pade_rows_at(plan, &series, &object, lambda));
+        }
     }
     rows
 }

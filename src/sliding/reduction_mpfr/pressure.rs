@@ -23,6 +23,12 @@ pub struct Pressure<'a> {
     contact: &'a Contact,
     rule: &'a GaussJacobiRule,
     f_nodes: Vec<Float>,
+    /// The nodes rounded to `f64` (the distances that choose the working precision of [`Pressure::d`]).
+    nodes_f64: Vec<f64>,
+    /// F at the nodes at the raised precisions [`Pressure::d`] used so far (the same values as
+    /// computed afresh; a point near a node raises the precision, and the points of one
+    /// quadrature near the ends of the contact share a few precisions).
+    f_raised: std::sync::Mutex<Vec<(u32, std::sync::Arc<Vec<Float>>)>>,
     /// cos^2(pi theta)/pi.
     factor: Float,
 }
@@ -32,8 +38,9 @@ impl<'a> Pressure<'a> {
     pub fn new(params: &'a SlidingParamsMpfr, contact: &'a Contact, rule: &'a GaussJacobiRule) -> Self {
         let p = params.prec;
         let f_nodes = rule.nodes.iter().map(|u| contact.f(params, u, p)).collect();
+        let nodes_f64 = rule.nodes.iter().map(Float::to_f64).collect();
         let factor = Float::with_val(p, params.cos_pi_theta.square_ref()) / &params.pi;
-        Pressure { params, contact, rule, f_nodes, factor }
+        Pressure { params, contact, rule, f_nodes, nodes_f64, f_raised: Default::default(), factor }
     }
 
     /// D(u) = sum_j w_j [F(u_j) - F(u)]/(u_j - u), for any real u (inside or outside [-1, 1]).
@@ -43,9 +50,10 @@ impl<'a> Pressure<'a> {
     /// the difference quotient would lose.
     pub fn d(&self, u: &Float) -> Float {
         let p = self.params.prec;
+        let uf = u.to_f64();
         let mut min_gap = f64::INFINITY;
-        for x in &self.rule.nodes {
-            let g = (x.to_f64() - u.to_f64()).abs();
+        for &x in &self.nodes_f64 {
+            let g = (x - uf).abs();
             if g < min_gap {
                 min_gap = g;
             }
@@ -54,17 +62,25 @@ impl<'a> Pressure<'a> {
         let wp = p + lost;
         let fu = self.contact.f(self.params, u, wp);
         let near = Float::with_val(53, Float::i_exp(1, -(p as i32) / 2));
+        // A node whose f64 distance exceeds `far` is not near (|x - u| > 2^(-p/2) whatever the
+        // roundings of x, u and their f64 difference, each within 2^-52 of max(|x|, |u|)); only
+        // the others are tested exactly (the test below), so that the common case allocates nothing.
+        let near_f64 = near.to_f64();
+        let far = if near_f64 > 0.0 { 2.0 * near_f64 } else { f64::INFINITY };
+        let f_raised = (lost > 0).then(|| self.f_at_nodes(wp));
         let mut acc = Float::with_val(wp, 0);
         let mut t1 = Float::new(wp);
         let mut t2 = Float::new(wp);
         for (j, (x, w)) in self.rule.nodes.iter().zip(&self.rule.weights).enumerate() {
             t2.assign(x - u);
-            if Float::with_val(53, t2.abs_ref()) < near {
+            let xf = self.nodes_f64[j];
+            let surely_far = (xf - uf).abs() > far + (xf.abs() + uf.abs()) * f64::EPSILON;
+            if !surely_far && Float::with_val(53, t2.abs_ref()) < near {
                 let mid = Float::with_val(wp, x + u) / 2u32;
                 t1 = self.contact.f_prime(self.params, &mid, wp);
             } else {
-                if lost > 0 {
-                    t1 = self.contact.f(self.params, x, wp);
+                if let Some(f) = &f_raised {
+                    t1.assign(&f[j]);
                     t1 -= &fu;
                 } else {
                     t1.assign(&self.f_nodes[j] - &fu);
@@ -75,6 +91,17 @@ impl<'a> Pressure<'a> {
             acc += &t1;
         }
         Float::with_val(p, acc)
+    }
+
+    /// F at every node at precision `wp`, computed once per precision.
+    fn f_at_nodes(&self, wp: u32) -> std::sync::Arc<Vec<Float>> {
+        let mut have = self.f_raised.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some((_, f)) = have.iter().find(|(q, _)| *q == wp) {
+            return f.clone();
+        }
+        let f = std::sync::Arc::new(self.rule.nodes.iter().map(|x| self.contact.f(self.params, x, wp)).collect());
+        have.push((wp, std::sync::Arc::clone(&f)));
+        f
     }
 
     /// omega(u) = (1 + u)^{1/2 + theta} (1 - u)^{1/2 - theta}, u in [-1, 1].

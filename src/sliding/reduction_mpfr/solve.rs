@@ -254,7 +254,7 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
 /// The size parameter's scan range for [`admissible_range`]: lambda up to [`LAMBDA_SCAN_MAX`] for
 /// a period; for a single punch l up to 4 times the requested size (or the single-punch
 /// half-length at the load).
-fn scan_max(params: &SlidingParamsMpfr) -> f64 {
+pub(super) fn scan_max(params: &SlidingParamsMpfr) -> f64 {
     match (&params.period, &params.target) {
         (Some(_), _) => LAMBDA_SCAN_MAX,
         (None, TargetMpfr::HalfLength(l)) => 4.0 * l.to_f64(),
@@ -263,9 +263,53 @@ fn scan_max(params: &SlidingParamsMpfr) -> f64 {
 }
 
 /// The admissible sizes and loads (P2/E*) by the direct problem at `params`' precision (the
-/// locating stage's), judged by the shared criterion.
-fn admissible_range(params: &SlidingParamsMpfr) -> Result<Admissible, SlidingError> {
-    admissible(scan_max(params), |s| -> Result<SizeContacts, SlidingError> {
+/// locating stage's), judged by the shared criterion; once per process for each (parameters
+/// without their target, scan range), since the scan solves the direct problem only (issue 14:
+/// the report's stability maps refuse several loads of one problem, each quoting the same range,
+/// and the scan takes about 0.5 s).
+pub(super) fn admissible_range(params: &SlidingParamsMpfr) -> Result<Admissible, SlidingError> {
+    let s_max = scan_max(params);
+    admissible_memo().get_or(admissible_key(params, s_max), || admissible_scan(params, s_max))
+}
+
+/// The key of [`admissible_range`]: `params` with the target blanked (the scan never reads it;
+/// [`scan_max`] does, for a single punch, and is keyed apart), every value printed exactly
+/// (MPFR's shortest round-trip text, and the precision).
+pub(super) fn admissible_key(params: &SlidingParamsMpfr, s_max: f64) -> String {
+    let mut p = params.clone();
+    p.target = TargetMpfr::HalfLength(Float::new(params.prec));
+    format!("{p:?} scan to {s_max:e}")
+}
+
+/// Most entries the memo of [`admissible_range`] keeps (it is emptied when full: a long sweep over
+/// friction or wear makes a new entry per value).
+const ADMISSIBLE_MEMO_CAP: usize = 4096;
+
+/// A memo of one value per key, computed once (a second thread asking the same key waits for the
+/// first one's value).
+struct Memo<V>(std::sync::Mutex<std::collections::HashMap<String, Arc<std::sync::OnceLock<V>>>>);
+
+impl<V: Clone> Memo<V> {
+    fn get_or(&self, key: String, f: impl FnOnce() -> V) -> V {
+        let slot = {
+            let mut map = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+            if map.len() >= ADMISSIBLE_MEMO_CAP && !map.contains_key(&key) {
+                map.clear();
+            }
+            map.entry(key).or_default().clone()
+        };
+        slot.get_or_init(f).clone()
+    }
+}
+
+fn admissible_memo() -> &'static Memo<Result<Admissible, SlidingError>> {
+    static MEMO: std::sync::OnceLock<Memo<Result<Admissible, SlidingError>>> = std::sync::OnceLock::new();
+    MEMO.get_or_init(|| Memo(Default::default()))
+}
+
+/// The scan of [`admissible_range`] up to `s_max`, computed afresh.
+pub(super) fn admissible_scan(params: &SlidingParamsMpfr, s_max: f64) -> Result<Admissible, SlidingError> {
+    admissible(s_max, |s| -> Result<SizeContacts, SlidingError> {
         let n = bucket(nodes_for(lambda_of(params, s), LOCATE_DIGITS));
         let sf = Float::with_val(params.prec, s);
         let mut out = vec![];

@@ -274,6 +274,57 @@ fn load_is_the_integral_of_the_pressure() {
     }
 }
 
+/// Issue 14: D(u) of [`Pressure::d`] (its f64 screen of the nodes near u, its values of F at a raised
+/// precision kept per precision) is bit for bit the plain sum of its doc: every node tested exactly
+/// for nearness, F at the nodes recomputed at the raised precision for each point; at points far
+/// from the nodes, within 2^-16 of one (raised precision, asked twice) and within 2^(-prec/2)
+/// (the midpoint derivative), inside and outside [-1, 1].
+#[test]
+fn pressure_sum_is_the_plain_sum() {
+    use rug::Assign;
+    let (params, sols) = run(&MIXED.load("1/10"), 30);
+    let s = &sols[0];
+    let r = rebuild(&params, s);
+    let pr = Pressure::new(&params, &r.contact, &r.rule);
+    let p = params.prec;
+    let plain = |u: &Float| -> Float {
+        let min_gap = r.rule.nodes.iter().map(|x| (x.to_f64() - u.to_f64()).abs()).fold(f64::INFINITY, f64::min);
+        let lost = if min_gap < 1.0 / 65536.0 { ((-min_gap.max(1e-300).log2()).ceil() as u32).min(p) } else { 0 };
+        let wp = p + lost;
+        let fu = r.contact.f(&params, u, wp);
+        let near = Float::with_val(53, Float::i_exp(1, -(p as i32) / 2));
+        let mut acc = Float::with_val(wp, 0);
+        for (x, w) in r.rule.nodes.iter().zip(&r.rule.weights) {
+            let d = Float::with_val(wp, x - u);
+            let mut t = if Float::with_val(53, d.abs_ref()) < near {
+                let mid = Float::with_val(wp, x + u) / 2u32;
+                r.contact.f_prime(&params, &mid, wp)
+            } else {
+                let mut t = Float::new(wp);
+                t.assign(&r.contact.f(&params, x, wp) - &fu);
+                t / &d
+            };
+            t *= w;
+            acc += &t;
+        }
+        Float::with_val(p, acc)
+    };
+    let node = &r.rule.nodes[r.rule.len() - 2];
+    let points = [
+        Float::with_val(p, 0.3),
+        Float::with_val(p, 1.7),
+        Float::with_val(p, -3.5),
+        Float::with_val(p, node + 1e-7),
+        Float::with_val(p, node - 3e-7),
+        Float::with_val(p, node + 1e-7),
+        Float::with_val(p, node + Float::with_val(p, Float::i_exp(1, -(p as i32) / 2 - 3))),
+    ];
+    for u in &points {
+        let (got, want) = (pr.d(u), plain(u));
+        assert!(got == want && got.is_finite(), "u = {u}: {got} vs {want}");
+    }
+}
+
 #[test]
 fn direct_and_inverse_problems_agree() {
     let cases = [
@@ -415,6 +466,33 @@ fn refusal_is_in_the_problems_units() {
         ),
         "{text}"
     );
+}
+
+/// Issue 14: the admissible range is scanned once per problem without its load. The memo's key
+/// ignores the load (the scan solves the direct problem only) but not friction, the memoized range
+/// equals a fresh scan, and two loads of one problem refused for the same reason quote the same
+/// range (theta = -0.4 by friction on the periodic parabola: physical loads up to about 0.0432,
+/// the report's stability map).
+#[test]
+fn admissible_range_is_memoized_per_problem_without_its_load() {
+    let base = Case { nu: "3/10", mu: "10771892/1000000", tau0: "0", cw: "0", ..BASE };
+    let (p1, p2) = (base.load("1/5"), base.load("1/4"));
+    let lo = |p: &SlidingProblem| Setup::new(p).unwrap().locate;
+    let (l1, l2) = (lo(&p1), lo(&p2));
+    assert_ne!(l1.target, l2.target);
+    assert_eq!(super::solve::admissible_key(&l1, 1.5), super::solve::admissible_key(&l2, 1.5));
+    let other = lo(&Case { mu: "10771893/1000000", ..base }.load("1/5"));
+    assert_ne!(super::solve::admissible_key(&l1, 1.5), super::solve::admissible_key(&other, 1.5));
+    assert_ne!(super::solve::admissible_key(&l1, 1.5), super::solve::admissible_key(&l1, 1.4));
+    let s_max = super::solve::scan_max(&l1);
+    let fresh = super::solve::admissible_scan(&l1, s_max).unwrap();
+    assert_eq!(super::solve::admissible_range(&l2).unwrap(), fresh);
+    assert_eq!(super::solve::admissible_range(&l1).unwrap(), fresh);
+    let max = fresh.max_load().expect("a physical run").0;
+    assert!(max > 0.0431 && max < 0.0433, "{fresh:?}");
+    let text = |p: &SlidingProblem| crate::error::Error::from(solve_verified(p, &[], 20).unwrap_err()).to_string();
+    let (t1, t2) = (text(&p1), text(&p2));
+    assert_eq!(largest_admissible_load(&t1), largest_admissible_load(&t2), "{t1}\n{t2}");
 }
 
 /// Independent check of the reduction [2.13]-[2.14] for theta != 0, tau0 > 0 on a periodic row:
