@@ -1,10 +1,12 @@
 //! Criterion benchmarks of the exact engine: the peer job (sinc power with a symbolic exponent and
-//! the reversion of x times it), z cot z, and the weight-series building blocks.
+//! the reversion of x times it), z cot z, the weight-series building blocks, and the
+//! fraction-field job of `examples/frac_series.rs` (inverse and log of a series over Q(a, b) whose
+//! denominators share factors; its peer side is `bench/peers/series`).
 //!
 //! Run: `cargo bench -p exact-series`
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
-use exact_series::{Poly, Ring, Series, Q};
+use exact_series::{Frac, Poly, Ring, Series, Q};
 
 fn alpha() -> Poly {
     Poly::var("theta").unwrap().add(&Poly::from_q(&Q::new(1.into(), 2.into())))
@@ -41,5 +43,29 @@ fn rational(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, sinc_power, rational);
+/// f = 1 + x/(a + b) + a x^2/(a - b) + (1 + a b) x^3/(a^2 + b) + O(x^N) (the frac job).
+fn frac_input(n: usize) -> Series<Frac> {
+    let a = Poly::var("a").unwrap();
+    let b = Poly::var("b").unwrap();
+    let coeffs = vec![
+        Frac::one(),
+        Frac::new(Poly::one(), a.add(&b)).unwrap(),
+        Frac::new(a.clone(), a.sub(&b)).unwrap(),
+        Frac::new(Poly::one().add(&a.mul(&b)), a.mul(&a).add(&b)).unwrap(),
+    ];
+    Series::new(coeffs, n)
+}
+
+fn fraction_field(c: &mut Criterion) {
+    let mut g = c.benchmark_group("frac_job");
+    g.sample_size(10);
+    for n in [8usize, 12] {
+        let f = frac_input(n);
+        g.bench_with_input(BenchmarkId::new("inv", n), &n, |b, _| b.iter(|| black_box(&f).inv().unwrap()));
+        g.bench_with_input(BenchmarkId::new("log", n), &n, |b, _| b.iter(|| black_box(&f).log().unwrap()));
+    }
+    g.finish();
+}
+
+criterion_group!(benches, sinc_power, rational, fraction_field);
 criterion_main!(benches);
