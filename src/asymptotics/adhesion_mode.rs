@@ -139,10 +139,17 @@ pub fn symmetric_mode_exponent_refined(eps: f64, b: f64, s: f64, m_max: usize) -
     Some(x1)
 }
 
+/// m* printed to 13 significant digits (the refined value agrees with mpmath to 13-14:
+/// `refined_mode_exponent_against_mpmath`).
+pub fn mode_text(m: f64) -> String {
+    let int_digits = (m.abs().log10().floor() as i32 + 1).max(1);
+    format!("{m:.*}", (13 - int_digits).max(0) as usize)
+}
+
 /// The sentence the solvers add where their runs disagree at nu < 1/2 (module doc), naming m*.
 pub fn mode_sentence(eps: f64, b: f64, s: f64) -> String {
     let m = match symmetric_mode_exponent_refined(eps, b, s, 2_000_000) {
-        Some(m) => format!("m* = {m:.10}"),
+        Some(m) => format!("m* = {}", mode_text(m)),
         None => "m* > 2e6".into(),
     };
     format!(

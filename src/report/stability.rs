@@ -488,5 +488,36 @@ pub fn section(ctx: &Ctx) -> Section {
     }
     let _ = writeln!(s.markdown, "Problem 2 exact series: {}\n", super::sweeps::adhesion_series_note());
     map_section(&mut s, "stability_p2", "Problem 2, parabola (k = 1, L = 1)", "nu", &adhesion_knobs, &p2.0);
+    let _ = writeln!(s.markdown, "{}\n", mode_table(&p2.0));
     s
+}
+
+/// The homogeneous solution's exponent m*(nu) at the map's nu (docs/theory.md section 11,
+/// [`crate::asymptotics::adhesion_mode`]): where the Problem 2 map fails below nu = 1/2, the
+/// problem fixes P' only up to C eta^m*.
+fn mode_table(cells: &[Cell]) -> String {
+    let mut nus: Vec<f64> = cells.iter().map(|c| c.x).collect();
+    nus.sort_by(f64::total_cmp);
+    nus.dedup();
+    let mut out = String::from(
+        "Below nu = 1/2 the incremental problem of Problem 2 is not unique: P' + C H(eta) solves it for every C, \
+         H ~ eta^m* with Re M_m* = 0 (docs/theory.md section 11, `src/asymptotics/adhesion_mode.rs`); the \
+         failures above are where the two runs pick different C. m*(nu) at the map's nu (secant on Re M_x, \
+         13 significant digits, checked against mpmath to 13-14):\n\n| nu | m* |\n|---:|---:|",
+    );
+    for nu in nus {
+        let text = match Material::from_contact_modulus(rational(nu), q(1, 1)) {
+            Ok(m) => {
+                let c = crate::params::adhesion::AdhesionParamsF64::new(&m);
+                match crate::asymptotics::adhesion_mode::symmetric_mode_exponent_refined(c.eps, c.b, c.s, 2_000_000) {
+                    Some(v) => crate::asymptotics::adhesion_mode::mode_text(v),
+                    None if c.eps == 0.0 => "none (eps = 0: Re M_m > 0)".into(),
+                    None => "> 2e6".into(),
+                }
+            }
+            Err(_) => "-".into(),
+        };
+        out.push_str(&format!("\n| {nu:.3} | {text} |"));
+    }
+    out
 }
