@@ -362,6 +362,28 @@ mod tests {
         vec![q(0, 1), q(1, 2), q(9, 10), q(99, 100)]
     }
 
+    /// |method 1 - this method| of (psi, phi, q1, q2) per point over their scales k a, k a^2,
+    /// E* k a (`ka`, `eka`).
+    fn field_errors(
+        m: &crate::adhesion::AdhesionSolution,
+        f: &AdhesionSolutionF64,
+        ka: f64,
+        eka: f64,
+    ) -> Vec<[f64; 4]> {
+        m.points
+            .iter()
+            .zip(&f.points)
+            .map(|(u, w)| {
+                [
+                    (u.psi.to_f64() - w.psi).abs() / ka,
+                    (u.phi.to_f64() - w.phi).abs() / (ka * f.half_width),
+                    (u.q1.to_f64() - w.q1).abs() / eka,
+                    (u.q2.to_f64() - w.q2).abs() / eka,
+                ]
+            })
+            .collect()
+    }
+
     /// The two issue-13 points where the series either refuses (nu = 0.3, lambda = 1.2) or is
     /// the other f64 method (nu = 0, lambda = 0.7): method 1 at 20 digits (verified >= 20) and
     /// this method agree to 1e-12 in the load and the fields (scales k a, k a^2, E* k a), and
@@ -383,13 +405,7 @@ mod tests {
                 f.lambda, f.terms, f.digits_estimated
             );
             assert!(rel < 1e-12, "nu {nu}: {} vs {}", m.normal_load, f.normal_load);
-            for (u, w) in m.points.iter().zip(&f.points) {
-                let e = [
-                    (u.psi.to_f64() - w.psi).abs() / ka,
-                    (u.phi.to_f64() - w.phi).abs() / (ka * f.half_width),
-                    (u.q1.to_f64() - w.q1).abs() / eka,
-                    (u.q2.to_f64() - w.q2).abs() / eka,
-                ];
+            for (w, e) in f.points.iter().zip(field_errors(m, &f, ka, eka)) {
                 println!("  x/a {}: {:.1e} {:.1e} {:.1e} {:.1e}", w.x_over_a, e[0], e[1], e[2], e[3]);
                 assert!(e.iter().all(|e| *e < 1e-12), "nu {nu} x/a {}: {e:?}", w.x_over_a);
             }
@@ -422,13 +438,7 @@ mod tests {
         println!("quartic: load rel {rel:.1e}, estimated {:?}", f.digits_estimated);
         assert!(rel < 1e-12, "{} vs {}", v.normal_load, f.normal_load);
         let (ka, eka) = (0.25 * f.half_width, 0.5 * f.half_width);
-        for (u, w) in v.points.iter().zip(&f.points) {
-            let e = [
-                (u.psi.to_f64() - w.psi).abs() / ka,
-                (u.phi.to_f64() - w.phi).abs() / (ka * f.half_width),
-                (u.q1.to_f64() - w.q1).abs() / eka,
-                (u.q2.to_f64() - w.q2).abs() / eka,
-            ];
+        for (w, e) in f.points.iter().zip(field_errors(&v, &f, ka, eka)) {
             assert!(e.iter().all(|e| *e < 1e-12), "x/a {}: {e:?}", w.x_over_a);
         }
     }
