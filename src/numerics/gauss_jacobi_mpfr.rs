@@ -14,9 +14,9 @@
 //! 2. f64 eigenvalues of the Jacobi matrix (implicit QL) as initial guesses;
 //! 3. Newton on $p_n$ evaluated by the recurrence (values only) at `prec + GUARD_BITS` bits, with
 //!    precision doubling from the f64 start: a first pass in double-double arithmetic (about 100
-//!    bits, [`Dd`]), then MPFR; the derivative from $p_n$ and $p_{n-1}$ by the structure relation
+//!    bits, `Dd`), then MPFR; the derivative from $p_n$ and $p_{n-1}$ by the structure relation
 //!    $(1-x^2) p_n'(x) = n\,((\alpha-\beta)/(2n+\alpha+\beta) - x)\, p_n(x) + (2n+\alpha+\beta+1)\, b_n\, p_{n-1}(x)$
-//!    (derived in [`Eval::run`]; half the operations of differentiating the recurrence, issue 14);
+//!    (derived in `Eval::run`; half the operations of differentiating the recurrence, issue 14);
 //! 4. Christoffel weights $w_i = \mu_0 / \sum_{k<n} p_k(u_i)^2$ ($p_0 = 1$), the sum taken from the
 //!    last Newton pass by Christoffel–Darboux, $\sum_{k<n} p_k^2 = b_n p_n'(u_i) p_{n-1}(u_i)$ (DLMF 18.2.12),
 //!    $\mu_0 = 2^{\alpha+\beta+1}\Gamma(\alpha+1)\Gamma(\beta+1)/\Gamma(\alpha+\beta+2)$.
@@ -33,7 +33,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 /// Extra bits carried while the nodes and weights are computed.
 pub const GUARD_BITS: u32 = 32;
 
-/// Largest first rung of the Newton ladder done in double-double arithmetic ([`Dd`], 106 bits, of
+/// Largest first rung of the Newton ladder done in double-double arithmetic (`Dd`, 106 bits, of
 /// which the recurrence's rounding leaves about 100).
 const DD_BITS: u32 = 116;
 
@@ -322,7 +322,7 @@ impl EvalDd {
         EvalDd { a: v(&e.a), b: v(&e.b), ib: v(&e.ib), shift: Dd::of(&e.shift), c2: Dd::of(&e.c2) }
     }
 
-    /// The Newton step p_n(x)/p_n'(x), as [`Eval::run`] computes it.
+    /// The Newton step p_n(x)/p_n'(x), as `Eval::run` computes it.
     fn step(&self, x: Dd) -> Dd {
         let n = self.a.len();
         let (mut pm, mut p) = (Dd(0.0, 0.0), Dd(1.0, 0.0));
