@@ -15,7 +15,7 @@
 
 use super::partial::Partial;
 use super::point::SeriesPoint;
-use super::solve::{check_order, derive_expansion, expansion_shape, solution, SeriesAccuracy, SeriesSolution};
+use super::solve::{check_expansion, check_order, derive_expansion, solution, SeriesAccuracy, SeriesSolution};
 use crate::asymptotics::sliding::SlidingExpansion;
 use crate::error::Error;
 use crate::model::{Exact, SlidingProblem};
@@ -249,10 +249,7 @@ pub fn solve_pade_with(
     order: usize,
     digits: u32,
 ) -> Result<PadeSolution, Error> {
-    check_order(order, PADE_ORDER)?;
-    assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
-    assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
-    assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
+    check_expansion(e, problem, order, PADE_ORDER)?;
     let prec = precision_for(digits);
     let (first, params, sp, xh) = run(e, problem, points, order, digits, prec)?;
     let (second, ..) = run(e, problem, points, order, digits, prec + VERIFY_EXTRA_BITS)?;

@@ -117,6 +117,25 @@ pub(super) fn check_order(order: usize, expected: &str) -> Result<(), Error> {
     Ok(())
 }
 
+/// The preconditions of a solve from a derived expansion `e` (the series and the pade method):
+/// an order >= 2 (else an input error saying `expected`), and `e` of the problem's shape and
+/// convention through at least Lambda^order.
+///
+/// # Panics
+/// When `e` has another shape or convention than the problem or is shorter than `order`.
+pub(super) fn check_expansion(
+    e: &SlidingExpansion,
+    problem: &SlidingProblem,
+    order: usize,
+    expected: &str,
+) -> Result<(), Error> {
+    check_order(order, expected)?;
+    assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
+    assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
+    assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
+    Ok(())
+}
+
 /// The problem's expansion through Lambda^order (its shape and convention); an engine failure is
 /// no convergence.
 pub(super) fn derive_expansion(problem: &SlidingProblem, order: usize) -> Result<SlidingExpansion, Error> {
@@ -139,10 +158,7 @@ pub fn solve_series_with(
     order: usize,
     digits: u32,
 ) -> Result<SeriesSolution, Error> {
-    check_order(order, SERIES_ORDER)?;
-    assert_eq!(e.shape, expansion_shape(problem)?, "the expansion is of another shape");
-    assert_eq!(e.convention, problem.convention(), "the expansion is of another convention");
-    assert!(e.l_over_ls.prec() > order, "the expansion is shorter than Lambda^{order}");
+    check_expansion(e, problem, order, SERIES_ORDER)?;
     let prec = precision_for(digits);
     let params = SlidingParamsMpfr::new(problem, prec)?;
     let sp = SeriesPoint::new(&params)?;
