@@ -51,6 +51,7 @@ use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, Punch
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
 use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
+use crate::numerics::roots::increasing_root;
 use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use crate::params::adhesion::AdhesionParamsF64;
 use std::f64::consts::PI;
@@ -218,40 +219,29 @@ impl Setup {
     }
 
     /// The size lambda carrying P2 = `target` (run `which`): Newton's method on P(lambda), which
-    /// increases with dP/dlambda = P'(lambda), safeguarded by bisection in (0, `lambda_max`).
+    /// increases with dP/dlambda = P'(lambda), safeguarded by bisection in (0, `lambda_max`)
+    /// ([`increasing_root`]).
     fn lambda_for_load(&self, target: f64, lambda_max: f64, which: usize) -> Result<March, AdhesionError> {
         let p = target / self.setting.p2_per_p;
         // First guess: Kuznetsov's parabola with C_P (P = 2 C_P ln sec lambda).
         let guess = (-p / self.setting.start).exp().acos();
-        let (mut lo, mut hi) = (0.0f64, lambda_max);
-        let mut lam = if guess.is_finite() && guess > 0.0 && guess < hi { guess } else { 0.5 * hi };
-        let mut last: Option<AdhesionError> = None;
-        for _ in 0..100 {
-            match self.solve_at(lam, which) {
-                Ok(mar) => {
-                    let (pl, dp) = (mar.load(lam), mar.p_prime(lam));
-                    if pl < p {
-                        lo = lam;
-                    } else {
-                        hi = lam;
-                    }
-                    let newton = lam - (pl - p) / dp;
-                    if (newton - lam).abs() <= 8.0 * f64::EPSILON * lam {
-                        return Ok(mar);
-                    }
-                    lam = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-                }
-                Err(e) => {
-                    hi = lam;
-                    lam = 0.5 * (lo + hi);
-                    last = Some(e);
-                }
-            }
-            if hi - lo <= 8.0 * f64::EPSILON * hi {
-                break;
-            }
+        let root = increasing_root(
+            |lam| {
+                self.solve_at(lam, which).map(|mar| {
+                    let (value, slope) = (mar.load(lam), mar.p_prime(lam));
+                    (mar, value, slope)
+                })
+            },
+            p,
+            (0.0, lambda_max),
+            guess,
+            8.0 * f64::EPSILON,
+            100,
+        );
+        if let Some((_, mar)) = root.found {
+            return Ok(mar);
         }
-        Err(last.unwrap_or(AdhesionError::IllConditioned {
+        Err(root.last_error.unwrap_or(AdhesionError::IllConditioned {
             method: "f64-collocation",
             parameter: "normal_load",
             value: readable_f64(target),

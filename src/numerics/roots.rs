@@ -1,5 +1,8 @@
-//! Root finding on a sign-changing bracket in `f64`: Brent's method, the one root finder of the
-//! project's f64 stages (the f64 collocation and the MPFR solvers' low-precision locate stage).
+//! Root finding in `f64`: Brent's method on a sign-changing bracket, the root finder of the
+//! project's f64 stages (the f64 collocation and the MPFR solvers' low-precision locate stage);
+//! and [`increasing_root`], Newton's method safeguarded by bisection for an increasing function
+//! known with its slope whose evaluation may fail toward the bracket's upper end (Problem 2's
+//! half-width for a given load, both f64 methods).
 
 /// Why a root was not found.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -138,5 +141,80 @@ mod tests {
         ));
         let g = |_x: f64| -> Result<f64, &'static str> { Err("boom") };
         assert_eq!(brent(g, Bracket { a: 0.0, b: 1.0, fa: -1.0, fb: 1.0 }, 1e-12), Err(RootError::Function("boom")));
+    }
+}
+
+/// What [`increasing_root`] found.
+#[derive(Debug)]
+pub struct IncreasingRoot<S, E> {
+    /// The point and `f`'s output there, when Newton's step fell below the tolerance.
+    pub found: Option<(f64, S)>,
+    /// The bracket's upper end when the search stopped (lowered to every point where `f` failed).
+    pub hi: f64,
+    /// The last failure of `f`, if any.
+    pub last_error: Option<E>,
+}
+
+/// x with value(x) = `target`, for an increasing function given with its slope:
+/// f(x) = (output, value, slope). Newton's method from `guess` (the midpoint when the guess is
+/// not finite or outside the bracket), safeguarded by bisection on the bracket (lo, hi), which
+/// every evaluation narrows; a point where `f` fails becomes the new hi. Found when the Newton
+/// step is at most `rel_tol` x; stops without a point when the bracket is narrower than
+/// `rel_tol` hi or after `max_steps` evaluations.
+pub fn increasing_root<S, E>(
+    mut f: impl FnMut(f64) -> Result<(S, f64, f64), E>,
+    target: f64,
+    bracket: (f64, f64),
+    guess: f64,
+    rel_tol: f64,
+    max_steps: usize,
+) -> IncreasingRoot<S, E> {
+    let (mut lo, mut hi) = bracket;
+    let mut x = if guess.is_finite() && guess > lo && guess < hi { guess } else { 0.5 * (lo + hi) };
+    let mut last_error = None;
+    for _ in 0..max_steps {
+        match f(x) {
+            Ok((out, value, slope)) => {
+                if value < target {
+                    lo = x;
+                } else {
+                    hi = x;
+                }
+                let newton = x - (value - target) / slope;
+                // Converged on the Newton step itself (a bisection step near the bracket's end
+                // would also be small where the target is out of reach).
+                if (newton - x).abs() <= rel_tol * x {
+                    return IncreasingRoot { found: Some((x, out)), hi, last_error };
+                }
+                x = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+            }
+            Err(e) => {
+                hi = x;
+                last_error = Some(e);
+                x = 0.5 * (lo + hi);
+            }
+        }
+        if hi - lo <= rel_tol * hi {
+            break;
+        }
+    }
+    IncreasingRoot { found: None, hi, last_error }
+}
+
+#[cfg(test)]
+mod increasing_tests {
+    use super::*;
+
+    /// x^3 = 2 on (0, 4) from a guess outside the bracket, failing beyond x = 3: the cube root to
+    /// 1e-15 with its output; a target beyond the failures is not found, hi ends at the first failure above 3 (within 1e-14)
+    /// and the last failure is kept.
+    #[test]
+    fn newton_with_failures_above() {
+        let f = |x: f64| if x > 3.0 { Err(x) } else { Ok((x * 10.0, x * x * x, 3.0 * x * x)) };
+        let r = increasing_root(f, 2.0, (0.0, 4.0), 7.0, 4.0 * f64::EPSILON, 200);
+        let (x, out) = r.found.unwrap();
+        assert!((x - 2f64.cbrt()).abs() < 1e-15 && out == x * 10.0, "{x}");
+        let r = increasing_root(f, 100.0, (0.0, 4.0), 3.5, 4.0 * f64::EPSILON, 200);
+        assert!(r.found.is_none() && r.hi <= 3.0 * (1.0 + 1e-14) && r.last_error.is_some(), "{r:?}");
     }
 }

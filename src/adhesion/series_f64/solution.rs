@@ -9,6 +9,7 @@ use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half
 use crate::adhesion::scales::Digits;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::exact::to_f64;
+use crate::numerics::roots::increasing_root;
 
 /// f64 values at one point (method 2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -173,38 +174,23 @@ fn half_width_for_load(
         }
         None => (target / (cp * ek)).sqrt(),
     };
-    let (mut lo, mut hi) = (0.0f64, a_max);
-    let mut a = if guess.is_finite() && guess > 0.0 && guess < a_max { guess } else { 0.5 * a_max };
-    let mut last_err: Option<AdhesionError> = None;
-    for _ in 0..200 {
-        match at(a) {
-            Ok(sol) => {
-                let p = ek * a * a * sol.load_ratio();
-                let d = ek * a * sol.f_at(1.0);
-                if p < target {
-                    lo = a;
-                } else {
-                    hi = a;
-                }
-                let newton = a - (p - target) / d;
-                // Converged on the Newton step itself (a bisection step near the bracket's end
-                // would also be small where the load is out of reach).
-                if (newton - a).abs() <= 4.0 * f64::EPSILON * a {
-                    return Ok((a, sol));
-                }
-                let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-                if hi - lo <= 4.0 * f64::EPSILON * hi {
-                    break;
-                }
-                a = next;
-            }
-            Err(e) => {
-                hi = a;
-                last_err = Some(e);
-                a = 0.5 * (lo + hi);
-            }
-        }
+    let root = increasing_root(
+        |a| {
+            at(a).map(|sol| {
+                let (p, d) = (ek * a * a * sol.load_ratio(), ek * a * sol.f_at(1.0));
+                (sol, p, d)
+            })
+        },
+        target,
+        (0.0, a_max),
+        guess,
+        4.0 * f64::EPSILON,
+        200,
+    );
+    if let Some(found) = root.found {
+        return Ok(found);
     }
+    let (hi, last_err) = (root.hi, root.last_error);
     if hi < a_max * (1.0 - 1e-12) {
         if let Some(e) = last_err {
             return Err(e);
