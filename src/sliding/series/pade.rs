@@ -15,7 +15,9 @@
 
 use super::partial::Partial;
 use super::point::SeriesPoint;
-use super::solve::{check_expansion, check_order, derive_expansion, solution, SeriesAccuracy, SeriesSolution};
+use super::solve::{
+    assess_physicality, check_expansion, check_order, derive_expansion, solution, SeriesAccuracy, SeriesSolution,
+};
 use crate::asymptotics::sliding::SlidingExpansion;
 use crate::error::Error;
 use crate::model::{Exact, SlidingProblem};
@@ -25,7 +27,6 @@ use crate::numerics::exact::to_float;
 use crate::numerics::pade::{complex_text, resum_mpfr, Resummation};
 use crate::numerics::precision::{precision_for, VERIFY_EXTRA_BITS};
 use crate::params::sliding::SlidingParamsMpfr;
-use crate::sliding::reduction_mpfr::{physicality_at_contact, refusal_for};
 use exact_series::{Poly, Series};
 use rug::ops::Pow;
 use rug::Float;
@@ -277,14 +278,6 @@ pub fn solve_pade_with(
         });
     }
     let mut s = solution(&params, &sp, a, &xh, max_p, order, acc);
-    let rel_error = 10f64.powf(-s.accuracy.contact);
-    match physicality_at_contact(problem, (&s.l, &s.c), &s.p2, rel_error, prec)? {
-        Ok(assessment) => s.physicality = assessment,
-        Err(r) if r.is_physical() => {
-            let reason = format!("the Pade contact at lambda = {}: {}", readable_mpfr(&s.lambda), r.why());
-            return Err(refusal_for(problem, &[reason]));
-        }
-        Err(r) => return Err(Error::NoConvergence { what: r.why() }),
-    }
+    assess_physicality(problem, &mut s, prec, "the Pade contact")?;
     Ok(PadeSolution { solution: s, w_is_square: first.w_is_square, chosen: first.chosen })
 }

@@ -206,17 +206,29 @@ pub fn solve_series_with(
     }
     let accuracy = SeriesAccuracy { contact, f_def, pressure, headline, rate: rho };
     let mut s = solution(&params, &sp, hi, &xh, max_p, order, accuracy);
-    // The shared physicality criterion at the series' contact (pressure [2.13] and gap there).
+    assess_physicality(problem, &mut s, prec, "the series' contact")?;
+    Ok(s)
+}
+
+/// The shared physicality criterion at the contact of `s` (pressure [2.13] and gap there, with
+/// the contact's estimated relative error), stored in `s`; a contact that is not physical is
+/// refused as `whose` contact (the series' or the Pade one) at its lambda.
+pub(super) fn assess_physicality(
+    problem: &SlidingProblem,
+    s: &mut SeriesSolution,
+    prec: u32,
+    whose: &str,
+) -> Result<(), Error> {
     let rel_error = 10f64.powf(-s.accuracy.contact);
     match physicality_at_contact(problem, (&s.l, &s.c), &s.p2, rel_error, prec)? {
         Ok(a) => s.physicality = a,
         Err(r) if r.is_physical() => {
-            let reason = format!("the series' contact at lambda = {}: {}", readable_mpfr(&s.lambda), r.why());
+            let reason = format!("{whose} at lambda = {}: {}", readable_mpfr(&s.lambda), r.why());
             return Err(refusal_for(problem, &[reason]));
         }
         Err(r) => return Err(Error::NoConvergence { what: r.why() }),
     }
-    Ok(s)
+    Ok(())
 }
 
 /// The solution in the units of the problem from the values through Lambda^order (or their Pade
