@@ -6,7 +6,12 @@
 //!   of max p (both runs); collocation operators cached per thread as in `solve`;
 //! - `series_eval`: one evaluation of the derived l/l_s of the same problem through Lambda^16 at
 //!   Lambda (coefficients prepared once, `numerics::evaluate::PreparedSeries`), in f64 and in MPFR at
-//!   30 digits (103 bits).
+//!   30 digits (103 bits);
+//! - `mpfr_solve`: one verified MPFR solve of Problem 1 at 30 digits
+//!   (`sliding::reduction_mpfr::solve_verified`, the two runs at 103 and 135 bits, the
+//!   physicality criterion on the first): the scene `scenes/sinusoid_friction.toml` (sinusoid,
+//!   mu = 0.5, theta != 0, P2 = 0.005, p at its three points), as `solve SCENE --method mpfr
+//!   --digits 30` computes it without the process start, the scene parse and the printing.
 //!
 //! Run: `cargo bench --bench solve`
 
@@ -18,6 +23,7 @@ use periodic_contact::numerics::precision::precision_for;
 use periodic_contact::scene::parse::parse_scene;
 use periodic_contact::scene::SceneProblem;
 use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, SolverOptions};
+use periodic_contact::sliding::reduction_mpfr::solve_verified;
 use periodic_contact::sliding::series::{expansion_shape, series_point};
 use rug::Float;
 
@@ -54,5 +60,17 @@ fn series_eval(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, f64_solve, series_eval);
+fn mpfr_solve(c: &mut Criterion) {
+    let scene = parse_scene(include_str!("../scenes/sinusoid_friction.toml")).expect("the shipped scene parses");
+    let SceneProblem::Sliding(p) = scene.problem else { unreachable!("sinusoid_friction.toml is a sliding scene") };
+    let points = scene.output.points.clone();
+    let s = solve_verified(&p, &points, 30).expect("the scene solves");
+    assert!(s.iter().all(|v| v.accuracy.digits_verified >= 30.0), "digits {:?}", s[0].accuracy);
+    let mut g = c.benchmark_group("mpfr_solve");
+    g.sample_size(20);
+    g.bench_function("sinusoid_friction_30", |b| b.iter(|| solve_verified(black_box(&p), &points, 30)));
+    g.finish();
+}
+
+criterion_group!(benches, f64_solve, series_eval, mpfr_solve);
 criterion_main!(benches);
