@@ -5,7 +5,9 @@
 use periodic_contact::params::sliding::SlidingParamsF64;
 use periodic_contact::scene::parse::parse_scene;
 use periodic_contact::scene::SceneProblem;
-use periodic_contact::sliding::collocation_f64::{candidate_roots, solve_sliding_f64, SolverOptions};
+use periodic_contact::sliding::collocation_f64::{
+    candidate_roots, solve_sliding_f64, solve_sliding_f64_with, SolverOptions,
+};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -47,5 +49,9 @@ fn main() {
     });
     time("solve_sliding_f64", reps, || {
         black_box(solve_sliding_f64(black_box(&p), &[], &opts).unwrap());
+    });
+    let prm = SlidingParamsF64::new(&p).expect("parameters");
+    time("solve_sliding_f64_with (parameters derived once)", reps, || {
+        black_box(solve_sliding_f64_with(black_box(&p), &prm, &[], &opts).unwrap());
     });
 }
