@@ -132,3 +132,26 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
     }
     num / den
 }
+
+/// G(u) of [`g_at`] for u off the contact (|u| >= 1, never a node) together with the node sum
+/// of the Cauchy transform there, S(u) = sum_k W_k (G(u) - G_k)/(u - t_k), from one reciprocal
+/// 1/(u - t_k) per node (the gap's slope, `physical::hilbert_outside`): S = G(u) sum_k W_k/(u -
+/// t_k) - sum_k W_k G_k/(u - t_k), all terms of one sign off the contact.
+pub(super) fn g_and_cauchy_sum(col: &Collocation, st: &State, u: f64) -> (f64, f64) {
+    let xs = &col.colloc;
+    let n = col.rule.nodes.len();
+    let r = if u < 0.0 { 0 } else { xs.len() - 1 };
+    let row = &col.kernel[r * n..(r + 1) * n];
+    let (mut num, mut den) = (st.rhs.divided_difference(&st.map, u, xs[r]), col.sec_pi_theta);
+    let (mut sw, mut swg) = (0.0, 0.0);
+    for (((t, w), g), k) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g).zip(row) {
+        let inv = 1.0 / (u - t);
+        let q = k * inv;
+        num += q * g;
+        den += q;
+        sw += w * inv;
+        swg += w * g * inv;
+    }
+    let gu = num / den;
+    (gu, gu * sw - swg)
+}

@@ -376,7 +376,8 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
         _ => {}
     }
     // 2. p >= 0.
-    let us = pressure_points();
+    static US: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
+    let us = US.get_or_init(pressure_points);
     let vals: Vec<f64> = us.iter().map(|&u| f.pressure_factor(u)).collect();
     let max_pressure_factor = vals.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     if let Some((u, v)) = us.iter().zip(&vals).find(|(_, v)| **v < -setting.pressure_tol * max_pressure_factor) {
