@@ -117,9 +117,6 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
     let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
     let r = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { i - 1 } else { i };
     let nodes = &col.rule.nodes[..n];
-    if let Some(k) = nodes.iter().position(|t| *t == u) {
-        return st.g[k];
-    }
     // W_k/(pi (x_r - t_k)) from the collocation matrix, so the loop has one division per node.
     let row = &col.kernel[r * n..(r + 1) * n];
     let g = &st.g[..n];
@@ -130,7 +127,15 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
         num += q * g[k];
         den += q;
     }
-    num / den
+    let v = num / den;
+    if v.is_finite() {
+        return v;
+    }
+    // u on a node: a division by zero above (inf/inf); the node's value.
+    match nodes.iter().position(|t| *t == u) {
+        Some(k) => st.g[k],
+        None => v,
+    }
 }
 
 /// G(u) of [`g_at`] for u off the contact (|u| >= 1, never a node) together with the node sum

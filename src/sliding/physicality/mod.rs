@@ -331,9 +331,9 @@ fn gap_rule() -> &'static GapRule {
 /// w the surface slope ([`ContactFunctions::surface_slope`], smooth off the contact) integrated
 /// in s (dx/ds = 4 R s^3, so w ~ d^(1/2 -+ theta) next to the end becomes s^(5 -+ 4 theta) or
 /// smoother) by 16-point Gauss–Legendre on the 4 dyadic panels [`GAP_PANELS`] (64 slopes per
-/// side, where 32 panels of 6 points took 192), the integral up to a sample inside a panel by the node values' interpolant
-/// ([`GapRule`]); the profile's own height taken exactly (so its steps at the cell edges and a
-/// slope singular at the edge of a circle need no quadrature).
+/// side, where 32 panels of 6 points took 192), the integral up to a sample inside a panel by
+/// the node values' interpolant ([`GapRule`]); the profile's own height taken exactly (so its
+/// steps at the cell edges and a slope singular at the edge of a circle need no quadrature).
 fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64) -> Vec<(f64, f64)> {
     let gr = gap_rule();
     let g_end = f.profile_height(c + start);
