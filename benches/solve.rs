@@ -9,12 +9,14 @@
 //!   rational arithmetic, every input rounded once);
 //! - `series_eval`: one evaluation of the derived l/l_s of the same problem through Lambda^16 at
 //!   Lambda (coefficients prepared once, `numerics::evaluate::PreparedSeries`), in f64 and in MPFR at
-//!   30 digits (103 bits);
+//!   30 digits (`precision_for(30)` = 132 bits);
 //! - `mpfr_solve`: one verified MPFR solve of Problem 1 at 30 digits
-//!   (`sliding::reduction_mpfr::solve_verified`, the two runs at 103 and 135 bits, the
+//!   (`sliding::reduction_mpfr::solve_verified`, the two runs at 132 and 164 bits, the
 //!   physicality criterion on the first): the scene `scenes/sinusoid_friction.toml` (sinusoid,
 //!   mu = 0.5, theta != 0, P2 = 0.005, p at its three points), as `solve SCENE --method mpfr
-//!   --digits 30` computes it without the process start, the scene parse and the printing.
+//!   --digits 30` computes it without the process start, the scene parse and the printing. The
+//!   Gauss–Jacobi rules are cached (MPFR rules per process, the scan's f64 rules per thread), so
+//!   the repeated solve measures a warm one; the README states the whole process (cold) beside it.
 //!
 //! Run: `cargo bench --bench solve`
 
