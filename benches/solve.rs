@@ -3,10 +3,20 @@
 //!   `scenes/sliding_friction.toml`, periodic parabola, mu = 0.3, P2 = 1/100, lambda = 0.2497,
 //!   automatic nodes (16) for >= 13 digits), which includes its check run with n + 8 nodes, the
 //!   p >= 0 samples, the gap integration of the physicality criterion and p on the 201-point grid
-//!   of max p (both runs); collocation operators cached per thread as in `solve`;
+//!   of max p (both runs); collocation operators cached per thread as in `solve`; `_prepared`:
+//!   the same with the f64 parameters derived once (`solve_sliding_f64_with`), and
+//!   `parameters_only` what that leaves out (`SlidingParamsF64::new`: kappa and beta in exact
+//!   rational arithmetic, every input rounded once);
 //! - `series_eval`: one evaluation of the derived l/l_s of the same problem through Lambda^16 at
 //!   Lambda (coefficients prepared once, `numerics::evaluate::PreparedSeries`), in f64 and in MPFR at
-//!   30 digits (103 bits).
+//!   30 digits (`precision_for(30)` = 132 bits);
+//! - `mpfr_solve`: one verified MPFR solve of Problem 1 at 30 digits
+//!   (`sliding::reduction_mpfr::solve_verified`, the two runs at 132 and 164 bits, the
+//!   physicality criterion on the first): the scene `scenes/sinusoid_friction.toml` (sinusoid,
+//!   mu = 0.5, theta != 0, P2 = 0.005, p at its three points), as `solve SCENE --method mpfr
+//!   --digits 30` computes it without the process start, the scene parse and the printing. The
+//!   Gauss–Jacobi rules are cached (MPFR rules per process, the scan's f64 rules per thread), so
+//!   the repeated solve measures a warm one; the README states the whole process (cold) beside it.
 //!
 //! Run: `cargo bench --bench solve`
 
@@ -15,9 +25,11 @@ use periodic_contact::asymptotics::sliding::sliding_expansion_with;
 use periodic_contact::model::SlidingProblem;
 use periodic_contact::numerics::evaluate::PreparedSeries;
 use periodic_contact::numerics::precision::precision_for;
+use periodic_contact::params::sliding::SlidingParamsF64;
 use periodic_contact::scene::parse::parse_scene;
 use periodic_contact::scene::SceneProblem;
-use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, SolverOptions};
+use periodic_contact::sliding::collocation_f64::{solve_sliding_f64, solve_sliding_f64_with, SolverOptions};
+use periodic_contact::sliding::reduction_mpfr::solve_verified;
 use periodic_contact::sliding::series::{expansion_shape, series_point};
 use rug::Float;
 
@@ -36,6 +48,12 @@ fn f64_solve(c: &mut Criterion) {
     let sol = &s.solutions[0];
     assert!(sol.digits().0.iter().all(|d| *d >= 13.0), "digits {:?}", sol.digits());
     c.bench_function("f64_solve/sliding_friction", |b| b.iter(|| solve_sliding_f64(black_box(&p), &[], &opts)));
+    // The same with the f64 parameters derived once (kappa and beta in exact rationals).
+    let prm = SlidingParamsF64::new(&p).expect("parameters");
+    c.bench_function("f64_solve/sliding_friction_prepared", |b| {
+        b.iter(|| solve_sliding_f64_with(black_box(&p), &prm, &[], &opts))
+    });
+    c.bench_function("f64_solve/parameters_only", |b| b.iter(|| SlidingParamsF64::new(black_box(&p))));
 }
 
 fn series_eval(c: &mut Criterion) {
@@ -54,5 +72,17 @@ fn series_eval(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, f64_solve, series_eval);
+fn mpfr_solve(c: &mut Criterion) {
+    let scene = parse_scene(include_str!("../scenes/sinusoid_friction.toml")).expect("the shipped scene parses");
+    let SceneProblem::Sliding(p) = scene.problem else { unreachable!("sinusoid_friction.toml is a sliding scene") };
+    let points = scene.output.points.clone();
+    let s = solve_verified(&p, &points, 30).expect("the scene solves");
+    assert!(s.iter().all(|v| v.accuracy.digits_verified >= 30.0), "digits {:?}", s[0].accuracy);
+    let mut g = c.benchmark_group("mpfr_solve");
+    g.sample_size(20);
+    g.bench_function("sinusoid_friction_30", |b| b.iter(|| solve_verified(black_box(&p), &points, 30)));
+    g.finish();
+}
+
+criterion_group!(benches, f64_solve, series_eval, mpfr_solve);
 criterion_main!(benches);

@@ -329,6 +329,21 @@ pub fn omega(u: f64, theta: f64) -> f64 {
     }
 }
 
+/// [`omega_cauchy_exterior`] with sec(pi theta) given and X(u) = sqrt((u - 1)(u + 1))
+/// ((u + 1)/(u - 1))^theta for u > 1, -sqrt((u - 1)(u + 1)) ((-1 - u)/(1 - u))^theta for u < -1,
+/// the logarithms of the ratios as ln1p(2/(u - 1)) and -ln1p(2/(-1 - u)) (the differences exact
+/// near the ends, no cancellation in 1 + x): one square root, logarithm and exponential instead
+/// of two powers and a cosine (test `omega_forms_agree`).
+pub fn omega_cauchy_exterior_sec(u: f64, theta: f64, sec_pi_theta: f64) -> f64 {
+    let root = ((u - 1.0) * (u + 1.0)).sqrt();
+    let x = if u > 0.0 {
+        root * (theta * (2.0 / (u - 1.0)).ln_1p()).exp()
+    } else {
+        -root * (-theta * (2.0 / (-1.0 - u)).ln_1p()).exp()
+    };
+    (u + 2.0 * theta - x) * sec_pi_theta
+}
+
 /// Barycentric weights for interpolation in the nodes of a Gauss–Jacobi rule:
 /// v_k = (-1)^k sqrt((1 - u_k^2) W_k) (Wang, Huybrechs & Vandewalle, Math. Comp. 83 (2014),
 /// Theorem 3.1), nodes ascending; any common factor cancels in the second barycentric form.
@@ -400,6 +415,22 @@ mod tests {
         }
         let f = PI / (PI * theta).cos();
         j.iter().take(count).map(|v| v * f).collect()
+    }
+
+    #[test]
+    fn omega_forms_agree() {
+        for theta in [-0.49, -0.3, -0.027, 0.0, 0.1, 0.45] {
+            let sec = 1.0 / (PI * theta).cos();
+            for k in 0..=400 {
+                for v in [1.0 + k as f64 / 200.0 + 1e-13, -(1.0 + k as f64 / 200.0 + 1e-13)] {
+                    let (c, d) = (omega_cauchy_exterior(v, theta), omega_cauchy_exterior_sec(v, theta, sec));
+                    // Both forms cancel u + 2 theta against X(u) alike; compare on the scale of
+                    // the terms, (|u| + 1) sec(pi theta).
+                    let scale = (v.abs() + 1.0) * sec;
+                    assert!((c - d).abs() <= 16.0 * f64::EPSILON * scale, "exterior theta {theta} u {v}: {c} vs {d}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -117,9 +117,6 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
     let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
     let r = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { i - 1 } else { i };
     let nodes = &col.rule.nodes[..n];
-    if let Some(k) = nodes.iter().position(|t| *t == u) {
-        return st.g[k];
-    }
     // W_k/(pi (x_r - t_k)) from the collocation matrix, so the loop has one division per node.
     let row = &col.kernel[r * n..(r + 1) * n];
     let g = &st.g[..n];
@@ -130,5 +127,36 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
         num += q * g[k];
         den += q;
     }
-    num / den
+    let v = num / den;
+    if v.is_finite() {
+        return v;
+    }
+    // u on a node: a division by zero above (inf/inf); the node's value.
+    match nodes.iter().position(|t| *t == u) {
+        Some(k) => st.g[k],
+        None => v,
+    }
+}
+
+/// G(u) of [`g_at`] for u off the contact (|u| >= 1, never a node) together with the node sum
+/// of the Cauchy transform there, S(u) = sum_k W_k (G(u) - G_k)/(u - t_k), from one reciprocal
+/// 1/(u - t_k) per node (the gap's slope, `physical::hilbert_outside`): S = G(u) sum_k W_k/(u -
+/// t_k) - sum_k W_k G_k/(u - t_k), all terms of one sign off the contact.
+pub(super) fn g_and_cauchy_sum(col: &Collocation, st: &State, u: f64) -> (f64, f64) {
+    let xs = &col.colloc;
+    let n = col.rule.nodes.len();
+    let r = if u < 0.0 { 0 } else { xs.len() - 1 };
+    let row = &col.kernel[r * n..(r + 1) * n];
+    let (mut num, mut den) = (st.rhs.divided_difference(&st.map, u, xs[r]), col.sec_pi_theta);
+    let (mut sw, mut swg) = (0.0, 0.0);
+    for (((t, w), g), k) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g).zip(row) {
+        let inv = 1.0 / (u - t);
+        let q = k * inv;
+        num += q * g;
+        den += q;
+        sw += w * inv;
+        swg += w * g * inv;
+    }
+    let gu = num / den;
+    (gu, gu * sw - swg)
 }

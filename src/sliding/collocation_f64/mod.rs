@@ -128,7 +128,7 @@ pub use solution::{
     AccuracyEstimate, PerQuantity, PressurePoint, Quantity, Scales, SlidingSolutionF64, SlidingSolutionsF64,
     SolverOptions,
 };
-pub use solve::{candidate_roots, solve_sliding_f64, CandidateRoot};
+pub use solve::{candidate_roots, solve_sliding_f64, solve_sliding_f64_with, CandidateRoot};
 
 #[cfg(test)]
 mod tests;

@@ -5,12 +5,12 @@
 //! `closure.rs`); the profile's height from [`row_height_f64`].
 
 use super::closure::k_constant;
-use super::interpolant::{g_at, State};
+use super::interpolant::{g_and_cauchy_sum, g_at, State};
 use super::operator::Collocation;
 use super::outputs::Outputs;
 use super::tangent_map::Map;
 use crate::model::Convention;
-use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior;
+use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior_sec;
 use crate::params::sliding::SlidingParamsF64;
 use crate::params::sliding::{row_height_f64, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
@@ -18,7 +18,8 @@ use std::f64::consts::PI;
 
 /// H[p](x) for x outside the contact (docs/theory.md section 2). Near the contact (|u| <= 3) the
 /// Cauchy part is G(u) (1/pi) int omega/(u - t) - (1/pi) sum W_k (G(u) - G_k)/(u - t_k)
-/// (exact for the polynomial G), with the closed form of [`omega_cauchy_exterior`]; farther out
+/// (exact for the polynomial G; both sums from one reciprocal per node, [`g_and_cauchy_sum`]),
+/// with the closed form of [`omega_cauchy_exterior_sec`]; farther out
 /// the plain rule in the cot (or 1/(x - xi)) form, through the node terms of [`FarField`].
 /// `c0` is C0[p] of the state ([`c0_of`]).
 fn hilbert_outside(col: &Collocation, st: &State, far: &FarField, theta: f64, c0: f64, x: f64) -> f64 {
@@ -26,12 +27,8 @@ fn hilbert_outside(col: &Collocation, st: &State, far: &FarField, theta: f64, c0
     if u.is_finite() && u.abs() <= 3.0 {
         // Off the contact |u| >= 1; rounding at the very edge could give |u| slightly below 1.
         let u = u.signum() * u.abs().max(1.0);
-        let gu = g_at(col, st, u);
-        let mut s = 0.0;
-        for ((t, w), g) in col.rule.nodes.iter().zip(&col.rule.weights).zip(&st.g) {
-            s += w * (gu - g) / (u - t);
-        }
-        gu * omega_cauchy_exterior(u, theta) - s / PI + c0
+        let (gu, s) = g_and_cauchy_sum(col, st, u);
+        gu * omega_cauchy_exterior_sec(u, theta, col.sec_pi_theta) - s / PI + c0
     } else {
         far.at(st, x)
     }

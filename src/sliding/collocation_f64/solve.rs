@@ -41,18 +41,34 @@ pub fn solve_sliding_f64(
     if let Some(&p) = points.iter().find(|p| !(p.abs() < 1.0)) {
         return Err(SlidingF64Error::InvalidPoint { value: p });
     }
-    let prm = SlidingParamsF64::new(problem)?;
+    solve_sliding_f64_with(problem, &SlidingParamsF64::new(problem)?, points, options)
+}
+
+/// [`solve_sliding_f64`] with the problem's f64 parameters already derived (`prm` must be
+/// `SlidingParamsF64::new(problem)`): for a caller that solves one problem several times (at
+/// other points, node counts or tolerances, e.g. timing runs), since deriving them from the exact
+/// inputs (kappa and beta in exact rational arithmetic, each input rounded once) costs about as
+/// much as the rest of a small solve. Same errors, except the parameters' own.
+pub fn solve_sliding_f64_with(
+    problem: &SlidingProblem,
+    prm: &SlidingParamsF64,
+    points: &[f64],
+    options: &SolverOptions,
+) -> Result<SlidingSolutionsF64> {
+    if let Some(&p) = points.iter().find(|p| !(p.abs() < 1.0)) {
+        return Err(SlidingF64Error::InvalidPoint { value: p });
+    }
     let target = prm.target;
-    let cands = all_candidates(&prm, options)?;
+    let cands = all_candidates(prm, options)?;
     let mut solutions = Vec::new();
     let mut reasons = Vec::new();
     for (cand, n) in cands {
         let col = collocation(prm.theta, n)?;
-        let st = state_of(&prm, target, cand, n, false)?;
-        let out = outputs(&col, &prm, &st, points);
+        let st = state_of(prm, target, cand, n, false)?;
+        let out = outputs(&col, prm, &st, points);
         // Polynomial and circle: the contact inside |x| < R, convex, with a small slope.
         check_profile_on_contact(problem, -out.a, out.b)?;
-        let gap = match physicality(&col, &prm, &st, &out) {
+        let gap = match physicality(&col, prm, &st, &out) {
             Ok(g) => g,
             Err(r) if r.is_physical() => {
                 reasons.push(format!("lambda = {}: {}", readable_f64(out.lambda), r.why()));
@@ -60,7 +76,7 @@ pub fn solve_sliding_f64(
             }
             Err(r) => return Err(SlidingF64Error::NoConvergence { reason: r.why() }),
         };
-        let accuracy = check_run(&prm, target, cand, &out, n, points)?;
+        let accuracy = check_run(prm, target, cand, &out, n, points)?;
         let all = [out.lambda, out.l, out.a, out.b, out.c, out.p1, out.p2, out.f_def, out.max_p];
         if all.iter().any(|v| !v.is_finite()) || out.pressure.iter().any(|p| !p.p.is_finite()) {
             return Err(SlidingF64Error::NoConvergence { reason: format!("non-finite result at n = {n}") });
@@ -101,8 +117,8 @@ pub fn solve_sliding_f64(
         });
     }
     if solutions.is_empty() {
-        let adm = admissible_range(&prm, options)?;
-        let ranges = ranges_text(&prm, &adm);
+        let adm = admissible_range(prm, options)?;
+        let ranges = ranges_text(prm, &adm);
         return Err(SlidingF64Error::Refused(refusal_in_reach(problem, &adm, 1.0, &reasons, &ranges)));
     }
     solutions.sort_by(|x, y| x.l.total_cmp(&y.l));

@@ -109,12 +109,45 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
 /// precision. The MPFR rule at the locating precision costs O(n^2) MPFR operations per Newton pass,
 /// and the scan up to the node cap needs rules of several hundred nodes (about 0.2 s in all, the
 /// solver's former floor); brackets are then refined with MPFR rules ([`load_lo`]).
-fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<GaussJacobiRule, SlidingError> {
+///
+/// The rules are cached per thread by (alpha, beta, n, precision) (at most [`SCAN_RULES_CAP`]
+/// entries): the f64 rules of several hundred nodes are O(n^2) each and were 40% of a repeated
+/// solve of the same problem (`cargo bench --bench solve -- mpfr_solve`, perf), e.g. the report's
+/// sweeps and maps, which scan one (alpha, beta) at several loads.
+fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
     let (a, b) = params.inverse_weight_exponents();
-    let r = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, a.to_f64(), b.to_f64())
+    let (af, bf) = (a.to_f64(), b.to_f64());
+    let key = (af.to_bits(), bf.to_bits(), n, params.prec);
+    if let Some(r) = SCAN_RULES.with(|c| c.borrow().get(&key).cloned()) {
+        return Ok(r);
+    }
+    let r = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, af, bf)
         .map_err(|e| SlidingError::NoConvergence(format!("the scan's f64 rule: {e}")))?;
     let lift = |v: &[f64]| v.iter().map(|x| Float::with_val(params.prec, *x)).collect();
-    Ok(GaussJacobiRule { alpha: a, beta: b, nodes: lift(&r.nodes), weights: lift(&r.weights), prec: params.prec })
+    let rule = Arc::new(GaussJacobiRule {
+        alpha: a,
+        beta: b,
+        nodes: lift(&r.nodes),
+        weights: lift(&r.weights),
+        prec: params.prec,
+    });
+    SCAN_RULES.with(|c| {
+        let mut c = c.borrow_mut();
+        if c.len() >= SCAN_RULES_CAP {
+            c.clear();
+        }
+        c.insert(key, rule.clone());
+    });
+    Ok(rule)
+}
+
+/// Most entries of the per-thread cache of [`scan_rule`] (emptied when full).
+const SCAN_RULES_CAP: usize = 64;
+
+type ScanRules = std::collections::HashMap<(u64, u64, usize, u32), Arc<GaussJacobiRule>>;
+
+thread_local! {
+    static SCAN_RULES: std::cell::RefCell<ScanRules> = std::cell::RefCell::new(ScanRules::new());
 }
 
 /// Centre solutions (all branches) at size s with n nodes.
@@ -216,7 +249,7 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
             // Both centre branches come from the same two integrals: evaluate them once per point.
             let grid = 48;
             let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
-            let mut rules: std::collections::HashMap<usize, GaussJacobiRule> = Default::default();
+            let mut rules: std::collections::HashMap<usize, Arc<GaussJacobiRule>> = Default::default();
             for i in 1..=grid {
                 let s = cap * i as f64 / grid as f64;
                 // The scan only needs signs: SCAN_DIGITS; brackets are refined with LOCATE_DIGITS.
