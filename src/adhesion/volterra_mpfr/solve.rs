@@ -4,7 +4,7 @@
 
 use super::kernel;
 use super::right_side::RightSide;
-use super::volterra::VolterraSolution;
+use super::volterra::{JSource, VolterraSolution};
 use crate::adhesion::error::AdhesionError;
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::chebyshev;
@@ -12,6 +12,7 @@ use crate::numerics::precision::{bits_for_digits, SOLVER_GUARD_BITS};
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsMpfr;
 use rug::{Assign, Float};
+use std::sync::{Arc, OnceLock};
 
 /// Largest collocation size accepted; beyond it lambda is too close to pi/2.
 pub const MAX_NODES: usize = 320;
@@ -194,27 +195,14 @@ pub fn solve_with_nodes_rhs(
     }
     let b: Vec<Float> = tau.iter().map(|t| rhs.at(t, prec)).collect();
     let (f_coeffs, pivot_ratio) = gauss_solve(a, b, prec)?;
-    let mut clenshaw = chebyshev::Clenshaw::new(prec);
-    let j_values: Vec<Float> = keep
-        .iter()
-        .map(|row| {
-            let mut acc = Float::with_val(prec, 0);
-            for (im, x) in row {
-                clenshaw.evaluate_into(&f_coeffs, x, &mut t);
-                t *= im;
-                acc += &t;
-            }
-            acc
-        })
-        .collect();
-    let j_coeffs = chebyshev::coefficients(&j_values, prec);
     let mut sol = VolterraSolution {
         prec,
         lambda: Float::with_val(prec, lambda),
         eps,
         cosh_pi_eps,
         f_coeffs,
-        j_coeffs,
+        j_source: JSource::Rows(Arc::new(keep)),
+        j_coeffs: OnceLock::new(),
         residual: 0.0,
         pivot_ratio,
         rule,
@@ -242,12 +230,14 @@ fn chebyshev_values(x: &Float, out: &mut [Float], prec: u32) {
     if n > 1 {
         out[1] = x.clone();
     }
-    // T_j = 2 x T_{j-1} - T_{j-2}, in place (the caller's `out` holds `prec` bits).
+    // T_j = 2 x T_{j-1} - T_{j-2}, in place (the caller's `out` holds `prec` bits). 2 x is exact
+    // and rounding commutes with doubling, so round((2 x) T) = 2 round(x T): the bits of the
+    // product rounded and then doubled, with one operation fewer.
+    let two_x = Float::with_val(prec, x * 2u32);
     for j in 2..n {
         let (done, rest) = out.split_at_mut(j);
         let t = &mut rest[0];
-        t.assign(x * &done[j - 1]);
-        *t *= 2u32;
+        t.assign(&two_x * &done[j - 1]);
         *t -= &done[j - 2];
     }
 }
@@ -309,6 +299,43 @@ mod tests {
 
     fn material(nu: (i64, i64)) -> Material {
         Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
+    }
+
+    #[test]
+    fn adhesion_j_on_demand_is_im_i_and_follows_restrict_and_reduced() {
+        // J(tau) = Im I(sqrt tau): the coefficients computed on demand from the solve's rows,
+        // against Im I by the quadrature of `integral_i` (another evaluation order), at nu = 0.3.
+        let params = VolterraParams::for_digits(20);
+        let prec = params.prec;
+        let constants = AdhesionParamsMpfr::new(&material((3, 10)), prec);
+        let lam = Float::with_val(prec, 0.9);
+        let sol = solve(&constants, &lam, params).unwrap();
+        let j_at = |s: &VolterraSolution, tau: f64| {
+            let x = Float::with_val(s.prec, tau * 2.0 - 1.0);
+            chebyshev::evaluate(s.j_coeffs(), &x, s.prec).to_f64()
+        };
+        for t in [0.05, 0.3, 0.77, 1.0] {
+            let sigma = Float::with_val(prec, t).sqrt();
+            let im = sol.integral_i(&sigma).1.to_f64();
+            assert!((j_at(&sol, t) - im).abs() < 1e-20 * im.abs().max(1.0), "tau {t}: {} vs {im}", j_at(&sol, t));
+        }
+        // Restricted to lambda' = 0.6: J'(tau) = J(tau (lambda'/lambda)^2), before and after the
+        // parent's own J is computed (the parent above already has it; a fresh solve has not).
+        let fresh = solve(&constants, &lam, params).unwrap();
+        let small = Float::with_val(prec, 0.6);
+        for parent in [&sol, &fresh] {
+            let r = parent.restrict(&small);
+            for t in [0.1, 0.5, 0.9] {
+                let want = j_at(&sol, t * 0.36 / 0.81);
+                assert!((j_at(&r, t) - want).abs() < 1e-20, "restricted tau {t}");
+            }
+        }
+        // Rounded to 64 bits: the same coefficients rounded.
+        let low = fresh.reduced(64);
+        assert_eq!(low.j_coeffs().len(), sol.j_coeffs().len());
+        for (a, b) in low.j_coeffs().iter().zip(sol.j_coeffs()) {
+            assert_eq!(*a, Float::with_val(64, b));
+        }
     }
 
     #[test]
