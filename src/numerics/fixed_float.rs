@@ -72,7 +72,7 @@ impl<const L: usize> Fixed<L> {
 
     /// -self.
     #[inline(always)]
-    pub fn neg(mut self) -> Self {
+    pub fn negated(mut self) -> Self {
         self.neg = !self.neg;
         self
     }
@@ -150,7 +150,7 @@ impl<const L: usize> Fixed<L> {
     /// self - b rounded to `p` bits.
     #[inline(always)]
     pub fn sub(&self, b: &Self, p: u32) -> Self {
-        add_signed(self, &b.neg(), p)
+        add_signed(self, &b.negated(), p)
     }
 }
 
@@ -459,6 +459,6 @@ mod tests {
         let x = Fixed::<2>::from_float(&Float::with_val(100, -2.5)).unwrap();
         assert_eq!(x.to_float(100), -2.5);
         assert_eq!(x.mul_2exp(3).to_float(100), -20.0);
-        assert_eq!(x.neg().to_float(100), 2.5);
+        assert_eq!(x.negated().to_float(100), 2.5);
     }
 }
