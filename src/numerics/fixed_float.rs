@@ -228,23 +228,37 @@ fn add_signed<const L: usize>(a: &Fixed<L>, b: &Fixed<L>, p: u32) -> Fixed<L> {
     let y_at = |k: usize| -> u64 { limb(&y.m, 0, k) };
     let mut ym = [0u64; L];
     let mut yg = 0u64;
-    for k in 0..=L {
-        let src = k + dq;
-        let lo = if src <= L { y_at(src) >> dr } else { 0 };
-        let hi = if dr > 0 && src < L { y_at(src + 1) << (64 - dr) } else { 0 };
-        if k == 0 {
-            yg = lo | hi;
-        } else {
-            ym[k - 1] = lo | hi;
-        }
-    }
-    // Bits shifted out below the guard limb: limbs below dq (of y's window) and dr bits of limb dq.
     let mut sticky = false;
-    for k in 0..dq.min(L + 1) {
-        sticky |= y_at(k) != 0;
-    }
-    if dr > 0 && dq <= L {
-        sticky |= (y_at(dq) << (64 - dr)) != 0;
+    if dq == 0 {
+        // The usual case: a gap of less than a limb, nothing falls below the guard limb.
+        if dr == 0 {
+            ym = y.m;
+        } else {
+            yg = y.m[0] << (64 - dr);
+            for k in 0..L {
+                let hi = if k + 1 < L { y.m[k + 1] << (64 - dr) } else { 0 };
+                ym[k] = (y.m[k] >> dr) | hi;
+            }
+        }
+    } else {
+        for k in 0..=L {
+            let src = k + dq;
+            let lo = if src <= L { y_at(src) >> dr } else { 0 };
+            let hi = if dr > 0 && src < L { y_at(src + 1) << (64 - dr) } else { 0 };
+            if k == 0 {
+                yg = lo | hi;
+            } else {
+                ym[k - 1] = lo | hi;
+            }
+        }
+        // Bits shifted out below the guard limb: limbs below dq (of y's window) and dr bits of
+        // limb dq.
+        for k in 0..dq.min(L + 1) {
+            sticky |= y_at(k) != 0;
+        }
+        if dr > 0 && dq <= L {
+            sticky |= (y_at(dq) << (64 - dr)) != 0;
+        }
     }
     let mut m = x.m;
     let mut guard = 0u64;
@@ -297,7 +311,16 @@ fn add_signed<const L: usize>(a: &Fixed<L>, b: &Fixed<L>, p: u32) -> Fixed<L> {
         if !found {
             return Fixed::zero(false);
         }
-        if lz > 0 {
+        if lz > 0 && lz < 64 {
+            // The usual case: a shift of less than a limb.
+            let r = lz as u32;
+            for k in (1..L).rev() {
+                m[k] = (m[k] << r) | (m[k - 1] >> (64 - r));
+            }
+            m[0] = (m[0] << r) | (guard >> (64 - r));
+            guard <<= r;
+            exp -= lz as i64;
+        } else if lz > 0 {
             let (q, r) = (lz / 64, (lz % 64) as u32);
             let mut out = [0u64; L];
             let mut og = 0u64;
