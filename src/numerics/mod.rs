@@ -6,6 +6,7 @@ pub mod chebyshev;
 pub mod complex_series;
 pub mod evaluate;
 pub mod exact;
+pub mod fixed_float;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
 pub mod pade;

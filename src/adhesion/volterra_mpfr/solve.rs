@@ -4,14 +4,16 @@
 
 use super::kernel;
 use super::right_side::RightSide;
-use super::volterra::VolterraSolution;
+use super::volterra::{JSource, VolterraSolution};
 use crate::adhesion::error::AdhesionError;
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::chebyshev;
+use crate::numerics::fixed_float::Fixed;
 use crate::numerics::precision::{bits_for_digits, SOLVER_GUARD_BITS};
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsMpfr;
 use rug::{Assign, Float};
+use std::sync::{Arc, OnceLock};
 
 /// Largest collocation size accepted; beyond it lambda is too close to pi/2.
 pub const MAX_NODES: usize = 320;
@@ -167,54 +169,17 @@ pub fn solve_with_nodes_rhs(
     let rule = TanhSinh::new(params.target_bits + 8, params.refine, prec);
     let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
     let tau = chebyshev::nodes(n, prec);
-    // Rows: A_ij = sum_q Re z_iq T_j(x_iq), x_iq = 2 tau_i s_q^2 - 1; keep Im z_iq, x_iq for J.
-    let mut a = vec![vec![Float::with_val(prec, 0); n]; n];
-    let mut keep: Vec<Vec<(Float, Float)>> = Vec::with_capacity(n);
-    let mut tj = vec![Float::with_val(prec, 0); n];
-    // Scratch for the products (in place: the same roundings as a fresh Float per product).
-    let mut t = Float::new(prec);
-    for i in 0..n {
-        let sigma = Float::with_val(prec, tau[i].sqrt_ref());
-        let chi = Float::with_val(prec, lambda * &sigma);
-        let sc_chi = chi.clone().sin_cos(Float::new(prec));
-        let mut row_keep = Vec::with_capacity(rule.len());
-        for q in 0..rule.len() {
-            let (re, im) = pre.integrand(q, &rule.s[q], &rule.c[q], &chi, &sc_chi, &eps, prec);
-            let re = re * &rule.w[q];
-            let im = im * &rule.w[q];
-            let x = Float::with_val(prec, &tau[i] * &pre.s2[q]) * 2u32 - 1u32;
-            chebyshev_values(&x, &mut tj, prec);
-            for (aij, tj) in a[i].iter_mut().zip(&tj) {
-                t.assign(&re * tj);
-                *aij += &t;
-            }
-            row_keep.push((im, x));
-        }
-        keep.push(row_keep);
-    }
+    let (res, keep) = collocation_rows(&tau, lambda, &eps, &rule, &pre, prec);
     let b: Vec<Float> = tau.iter().map(|t| rhs.at(t, prec)).collect();
-    let (f_coeffs, pivot_ratio) = gauss_solve(a, b, prec)?;
-    let mut clenshaw = chebyshev::Clenshaw::new(prec);
-    let j_values: Vec<Float> = keep
-        .iter()
-        .map(|row| {
-            let mut acc = Float::with_val(prec, 0);
-            for (im, x) in row {
-                clenshaw.evaluate_into(&f_coeffs, x, &mut t);
-                t *= im;
-                acc += &t;
-            }
-            acc
-        })
-        .collect();
-    let j_coeffs = chebyshev::coefficients(&j_values, prec);
+    let (f_coeffs, pivot_ratio) = collocation_solve(&res, &keep, b, prec)?;
     let mut sol = VolterraSolution {
         prec,
         lambda: Float::with_val(prec, lambda),
         eps,
         cosh_pi_eps,
         f_coeffs,
-        j_coeffs,
+        j_source: JSource::Rows(Arc::new(keep)),
+        j_coeffs: OnceLock::new(),
         residual: 0.0,
         pivot_ratio,
         rule,
@@ -232,6 +197,116 @@ pub fn solve_with_nodes_rhs(
     Ok(sol)
 }
 
+/// The data of the collocation rows at the nodes `tau`: per row i, re_iq = w_q Re z_iq and the
+/// pairs (w_q Im z_iq, x_iq), x_iq = 2 tau_i s_q^2 - 1 (the second kept for J).
+#[allow(clippy::type_complexity)]
+fn collocation_rows(
+    tau: &[Float],
+    lambda: &Float,
+    eps: &Float,
+    rule: &TanhSinh,
+    pre: &kernel::VolterraNodes,
+    prec: u32,
+) -> (Vec<Vec<Float>>, Vec<Vec<(Float, Float)>>) {
+    let n = tau.len();
+    // Rows: A_ij = sum_q Re z_iq T_j(x_iq), x_iq = 2 tau_i s_q^2 - 1; keep Im z_iq, x_iq for J.
+    let mut res: Vec<Vec<Float>> = Vec::with_capacity(n);
+    let mut keep: Vec<Vec<(Float, Float)>> = Vec::with_capacity(n);
+    for tau_i in tau {
+        let sigma = Float::with_val(prec, tau_i.sqrt_ref());
+        let chi = Float::with_val(prec, lambda * &sigma);
+        let sc_chi = chi.clone().sin_cos(Float::new(prec));
+        let mut row_res = Vec::with_capacity(rule.len());
+        let mut row_keep = Vec::with_capacity(rule.len());
+        for q in 0..rule.len() {
+            let (re, im) = pre.integrand(q, &rule.s[q], &rule.c[q], &chi, &sc_chi, eps, prec);
+            let re = re * &rule.w[q];
+            let im = im * &rule.w[q];
+            let x = Float::with_val(prec, tau_i * &pre.s2[q]) * 2u32 - 1u32;
+            row_res.push(re);
+            row_keep.push((im, x));
+        }
+        res.push(row_res);
+        keep.push(row_keep);
+    }
+    (res, keep)
+}
+
+/// The collocation system from the rows' data (per row i: re_iq = w_q Re z_iq and the pairs
+/// (_, x_iq)): A_ij = sum_q re_iq T_j(x_iq) (q outer, j inner, each product and sum rounded to
+/// `prec` bits), then A f = b by Gaussian elimination with partial pivoting. Up to 256 bits in
+/// [`Fixed`] arithmetic, whose roundings are MPFR's (the same bits as [`row_sums_mpfr`] and
+/// [`gauss_solve`], operation by operation, about twice as fast); beyond, in MPFR.
+fn collocation_solve(
+    res: &[Vec<Float>],
+    xs: &[Vec<(Float, Float)>],
+    b: Vec<Float>,
+    prec: u32,
+) -> Result<(Vec<Float>, f64), AdhesionError> {
+    let n = b.len();
+    match prec.div_ceil(64) {
+        1 => gauss_solve_fixed::<1>(rows_fixed(res, xs, n, prec), b, prec),
+        2 => gauss_solve_fixed::<2>(rows_fixed(res, xs, n, prec), b, prec),
+        3 => gauss_solve_fixed::<3>(rows_fixed(res, xs, n, prec), b, prec),
+        4 => gauss_solve_fixed::<4>(rows_fixed(res, xs, n, prec), b, prec),
+        _ => gauss_solve(res.iter().zip(xs).map(|(r, x)| row_sums_mpfr(r, x, n, prec)).collect(), b, prec),
+    }
+}
+
+/// The rows of [`collocation_solve`] by [`row_sums_fixed`].
+fn rows_fixed<const L: usize>(
+    res: &[Vec<Float>],
+    xs: &[Vec<(Float, Float)>],
+    n: usize,
+    prec: u32,
+) -> Vec<Vec<Fixed<L>>> {
+    res.iter().zip(xs).map(|(r, x)| row_sums_fixed::<L>(r, x, n, prec)).collect()
+}
+
+/// One row of the collocation matrix in MPFR: sum_q re_q T_j(x_q) for j < n, `xs` holding
+/// (_, x_q).
+fn row_sums_mpfr(res: &[Float], xs: &[(Float, Float)], n: usize, prec: u32) -> Vec<Float> {
+    let mut row = vec![Float::with_val(prec, 0); n];
+    let mut tj = vec![Float::with_val(prec, 0); n];
+    // Scratch for the products (in place: the same roundings as a fresh Float per product).
+    let mut t = Float::new(prec);
+    for (re, (_, x)) in res.iter().zip(xs) {
+        chebyshev_values(x, &mut tj, prec);
+        for (aij, tj) in row.iter_mut().zip(&tj) {
+            t.assign(re * tj);
+            *aij += &t;
+        }
+    }
+    row
+}
+
+/// [`row_sums_mpfr`] in [`Fixed`] arithmetic of L limbs (64 (L - 1) < prec <= 64 L): the
+/// recurrence of [`chebyshev_values`] and the sums, operation by operation.
+fn row_sums_fixed<const L: usize>(res: &[Float], xs: &[(Float, Float)], n: usize, prec: u32) -> Vec<Fixed<L>> {
+    let fixed = |x: &Float| Fixed::<L>::from_float(x).expect("a finite number of at most 64 L bits");
+    let mut row = vec![Fixed::<L>::zero(false); n];
+    let one = fixed(&Float::with_val(prec, 1u32));
+    for (re, (_, x)) in res.iter().zip(xs) {
+        let (re, x) = (fixed(re), fixed(x));
+        let two_x = x.mul_2exp(1);
+        let (mut t_prev, mut t) = (one, x);
+        for (j, aij) in row.iter_mut().enumerate() {
+            let tj = match j {
+                0 => one,
+                1 => x,
+                _ => {
+                    let next = two_x.mul(&t, prec).sub(&t_prev, prec);
+                    t_prev = t;
+                    t = next;
+                    next
+                }
+            };
+            *aij = aij.add(&re.mul(&tj, prec), prec);
+        }
+    }
+    row
+}
+
 /// T_0..T_{n-1} at x.
 fn chebyshev_values(x: &Float, out: &mut [Float], prec: u32) {
     let n = out.len();
@@ -242,14 +317,70 @@ fn chebyshev_values(x: &Float, out: &mut [Float], prec: u32) {
     if n > 1 {
         out[1] = x.clone();
     }
-    // T_j = 2 x T_{j-1} - T_{j-2}, in place (the caller's `out` holds `prec` bits).
+    // T_j = 2 x T_{j-1} - T_{j-2}, in place (the caller's `out` holds `prec` bits). 2 x is exact
+    // and rounding commutes with doubling, so round((2 x) T) = 2 round(x T): the bits of the
+    // product rounded and then doubled, with one operation fewer.
+    let two_x = Float::with_val(prec, x * 2u32);
     for j in 2..n {
         let (done, rest) = out.split_at_mut(j);
         let t = &mut rest[0];
-        t.assign(x * &done[j - 1]);
-        *t *= 2u32;
+        t.assign(&two_x * &done[j - 1]);
         *t -= &done[j - 2];
     }
+}
+
+/// [`gauss_solve`] with the matrix in [`Fixed`] arithmetic (the row operations; the divisions,
+/// the right side and the pivots' magnitudes in MPFR): the same operations, the same bits.
+fn gauss_solve_fixed<const L: usize>(
+    mut a: Vec<Vec<Fixed<L>>>,
+    mut b: Vec<Float>,
+    prec: u32,
+) -> Result<(Vec<Float>, f64), AdhesionError> {
+    let n = b.len();
+    let fixed = |x: &Float| Fixed::<L>::from_float(x).expect("a finite number of at most 64 L bits");
+    let mut t = Float::new(prec);
+    let (mut pmax, mut pmin) = (0f64, f64::INFINITY);
+    for k in 0..n {
+        let p = (k..n).max_by(|&i, &j| a[i][k].cmp_abs(&a[j][k])).unwrap_or(k);
+        a.swap(k, p);
+        b.swap(k, p);
+        let piv = a[k][k].to_float(prec);
+        let pa = piv.clone().abs().to_f64();
+        if !(pa > 0.0) || !pa.is_finite() {
+            return Err(AdhesionError::NotConverged {
+                what: "collocation solve",
+                reason: format!("zero or non-finite pivot at column {k}"),
+            });
+        }
+        pmax = pmax.max(pa);
+        pmin = pmin.min(pa);
+        let (top, below) = a.split_at_mut(k + 1);
+        let (bk, b_below) = b.split_at_mut(k + 1);
+        let (row_k, bk) = (&top[k], &bk[k]);
+        for (row_i, bi) in below.iter_mut().zip(b_below.iter_mut()) {
+            let m = Float::with_val(prec, row_i[k].to_float(prec) / &piv);
+            if m.is_zero() {
+                continue;
+            }
+            let mf = fixed(&m);
+            for (aij, akj) in row_i[k..].iter_mut().zip(&row_k[k..]) {
+                *aij = aij.sub(&mf.mul(akj, prec), prec);
+            }
+            t.assign(&m * bk);
+            *bi -= &t;
+        }
+    }
+    let mut x = vec![Fixed::<L>::zero(false); n];
+    let mut out = vec![Float::with_val(prec, 0); n];
+    for k in (0..n).rev() {
+        let mut acc = fixed(&b[k]);
+        for j in k + 1..n {
+            acc = acc.sub(&a[k][j].mul(&x[j], prec), prec);
+        }
+        out[k] = acc.to_float(prec) / a[k][k].to_float(prec);
+        x[k] = fixed(&out[k]);
+    }
+    Ok((out, pmax / pmin))
 }
 
 /// Gaussian elimination with partial pivoting; returns the solution and max/min |pivot|.
@@ -309,6 +440,65 @@ mod tests {
 
     fn material(nu: (i64, i64)) -> Material {
         Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
+    }
+
+    #[test]
+    fn adhesion_j_on_demand_is_im_i_and_follows_restrict_and_reduced() {
+        // J(tau) = Im I(sqrt tau): the coefficients computed on demand from the solve's rows,
+        // against Im I by the quadrature of `integral_i` (another evaluation order), at nu = 0.3.
+        let params = VolterraParams::for_digits(20);
+        let prec = params.prec;
+        let constants = AdhesionParamsMpfr::new(&material((3, 10)), prec);
+        let lam = Float::with_val(prec, 0.9);
+        let sol = solve(&constants, &lam, params).unwrap();
+        let j_at = |s: &VolterraSolution, tau: f64| {
+            let x = Float::with_val(s.prec, tau * 2.0 - 1.0);
+            chebyshev::evaluate(s.j_coeffs(), &x, s.prec).to_f64()
+        };
+        for t in [0.05, 0.3, 0.77, 1.0] {
+            let sigma = Float::with_val(prec, t).sqrt();
+            let im = sol.integral_i(&sigma).1.to_f64();
+            assert!((j_at(&sol, t) - im).abs() < 1e-20 * im.abs().max(1.0), "tau {t}: {} vs {im}", j_at(&sol, t));
+        }
+        // Restricted to lambda' = 0.6: J'(tau) = J(tau (lambda'/lambda)^2), before and after the
+        // parent's own J is computed (the parent above already has it; a fresh solve has not).
+        let fresh = solve(&constants, &lam, params).unwrap();
+        let small = Float::with_val(prec, 0.6);
+        for parent in [&sol, &fresh] {
+            let r = parent.restrict(&small);
+            for t in [0.1, 0.5, 0.9] {
+                let want = j_at(&sol, t * 0.36 / 0.81);
+                assert!((j_at(&r, t) - want).abs() < 1e-20, "restricted tau {t}");
+            }
+        }
+        // Rounded to 64 bits: the same coefficients rounded.
+        let low = fresh.reduced(64);
+        assert_eq!(low.j_coeffs().len(), sol.j_coeffs().len());
+        for (a, b) in low.j_coeffs().iter().zip(sol.j_coeffs()) {
+            assert_eq!(*a, Float::with_val(64, b));
+        }
+    }
+
+    #[test]
+    fn adhesion_fixed_collocation_is_bit_identical_to_mpfr() {
+        // The assembly and elimination in Fixed arithmetic give the bits of the MPFR loops, at
+        // one to four limbs and at limb boundaries (nu = 0.3, lambda = 1.2, 40 nodes).
+        let constants_at = |prec| AdhesionParamsMpfr::new(&material((3, 10)), prec);
+        for prec in [64u32, 65, 107, 128, 131, 164, 192, 200, 256] {
+            let constants = constants_at(prec);
+            let eps = Float::with_val(prec, &constants.eps);
+            let rule = TanhSinh::new(prec - 24, 1.0, prec);
+            let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
+            let tau = chebyshev::nodes(40, prec);
+            let lambda = Float::with_val(prec, 1.2);
+            let (res, keep) = collocation_rows(&tau, &lambda, &eps, &rule, &pre, prec);
+            let b: Vec<Float> = tau.iter().map(|t| RightSide::Parabola.at(t, prec)).collect();
+            let (fixed, ratio_fixed) = collocation_solve(&res, &keep, b.clone(), prec).unwrap();
+            let rows = res.iter().zip(&keep).map(|(r, x)| row_sums_mpfr(r, x, 40, prec)).collect();
+            let (mpfr, ratio_mpfr) = gauss_solve(rows, b, prec).unwrap();
+            assert_eq!(fixed, mpfr, "prec {prec}");
+            assert_eq!(ratio_fixed.to_bits(), ratio_mpfr.to_bits(), "prec {prec}");
+        }
     }
 
     #[test]

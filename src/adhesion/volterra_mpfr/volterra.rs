@@ -10,6 +10,36 @@ use crate::numerics::tanh_sinh::TanhSinh;
 use rug::float::Constant;
 use rug::ops::Pow;
 use rug::{Complex, Float};
+use std::sync::Arc;
+use std::sync::OnceLock;
+
+/// How the coefficients of J(tau) = Im I(sqrt tau) are computed when first asked: J costs as much
+/// as the collocation matrix (a Clenshaw sum of n terms per pair (i, q)) and only phi uses it, so
+/// a solve keeps what J needs and computes it once, on demand, with the same operations (the same
+/// bits) as when it was computed in the solve.
+#[derive(Debug, Clone)]
+pub(super) enum JSource {
+    /// From the collocation rows: per Chebyshev node tau_i, the pairs (w_q Im z_iq, x_iq)
+    /// ([`super::solve`]); J(tau_i) = sum_q w_q Im z_iq F(x_iq).
+    Rows(Arc<Vec<Vec<(Float, Float)>>>),
+    /// J of a solution at a larger lambda, re-interpolated at tau (lambda'/lambda)^2 (the ratio).
+    Restricted(Box<VolterraSolution>, Float),
+    /// J of a solution rounded to this one's precision.
+    Reduced(Box<VolterraSolution>),
+}
+
+/// The Chebyshev coefficients of c(tau ratio) at the n Chebyshev nodes of tau in [0, 1].
+fn resample(c: &[Float], ratio: &Float, n: usize, prec: u32) -> Vec<Float> {
+    let tau = chebyshev::nodes(n, prec);
+    let vals: Vec<Float> = tau
+        .iter()
+        .map(|t| {
+            let x = Float::with_val(prec, t * ratio) * 2u32 - 1u32;
+            chebyshev::evaluate(c, &x, prec)
+        })
+        .collect();
+    chebyshev::coefficients(&vals, prec)
+}
 
 /// The dimensionless solution at one lambda.
 #[derive(Debug, Clone)]
@@ -24,8 +54,10 @@ pub struct VolterraSolution {
     pub cosh_pi_eps: Float,
     /// Chebyshev coefficients of F(tau) = f(lambda^2 tau).
     pub f_coeffs: Vec<Float>,
-    /// Chebyshev coefficients of J(tau) = Im I(sqrt tau).
-    pub j_coeffs: Vec<Float>,
+    /// Where the Chebyshev coefficients of J(tau) = Im I(sqrt tau) come from ([`Self::j_coeffs`]).
+    pub(super) j_source: JSource,
+    /// Those coefficients, computed when first asked (only phi needs them).
+    pub(super) j_coeffs: OnceLock<Vec<Float>>,
     /// Largest |Re I(sigma) - pi| found at off-collocation check points (a residual).
     pub residual: f64,
     /// Ratio of largest to smallest pivot of the collocation matrix (conditioning indicator).
@@ -46,24 +78,14 @@ impl VolterraSolution {
         } else {
             Float::with_val(prec, lambda_new / &self.lambda).square()
         };
-        let tau = chebyshev::nodes(n, prec);
-        let resample = |c: &[Float]| {
-            let vals: Vec<Float> = tau
-                .iter()
-                .map(|t| {
-                    let x = Float::with_val(prec, t * &ratio) * 2u32 - 1u32;
-                    chebyshev::evaluate(c, &x, prec)
-                })
-                .collect();
-            chebyshev::coefficients(&vals, prec)
-        };
         VolterraSolution {
             prec,
             lambda: Float::with_val(prec, lambda_new),
             eps: self.eps.clone(),
             cosh_pi_eps: self.cosh_pi_eps.clone(),
-            f_coeffs: resample(&self.f_coeffs),
-            j_coeffs: resample(&self.j_coeffs),
+            f_coeffs: resample(&self.f_coeffs, &ratio, n, prec),
+            j_source: JSource::Restricted(Box::new(self.clone()), ratio),
+            j_coeffs: OnceLock::new(),
             residual: self.residual,
             pivot_ratio: self.pivot_ratio,
             rule: self.rule.clone(),
@@ -84,12 +106,40 @@ impl VolterraSolution {
             eps: Float::with_val(prec, &self.eps),
             cosh_pi_eps: Float::with_val(prec, &self.cosh_pi_eps),
             f_coeffs: r(&self.f_coeffs),
-            j_coeffs: r(&self.j_coeffs),
+            j_source: JSource::Reduced(Box::new(self.clone())),
+            j_coeffs: OnceLock::new(),
             residual: self.residual,
             pivot_ratio: self.pivot_ratio,
             rule,
             pre,
         }
+    }
+
+    /// Chebyshev coefficients of J(tau) = Im I(sqrt tau), computed on the first call (J is
+    /// needed by phi only; the solve keeps what it takes, see `JSource`).
+    pub fn j_coeffs(&self) -> &[Float] {
+        self.j_coeffs.get_or_init(|| match &self.j_source {
+            JSource::Rows(rows) => {
+                let prec = self.prec;
+                let mut clenshaw = chebyshev::Clenshaw::new(prec);
+                let mut t = Float::new(prec);
+                let j_values: Vec<Float> = rows
+                    .iter()
+                    .map(|row| {
+                        let mut acc = Float::with_val(prec, 0);
+                        for (im, x) in row {
+                            clenshaw.evaluate_into(&self.f_coeffs, x, &mut t);
+                            t *= im;
+                            acc += &t;
+                        }
+                        acc
+                    })
+                    .collect();
+                chebyshev::coefficients(&j_values, prec)
+            }
+            JSource::Restricted(parent, ratio) => resample(parent.j_coeffs(), ratio, parent.f_coeffs.len(), self.prec),
+            JSource::Reduced(parent) => parent.j_coeffs().iter().map(|x| Float::with_val(self.prec, x)).collect(),
+        })
     }
 
     /// I(sigma) = int_0^1 s w(s) G(lambda sigma, s) F(sigma^2 s^2) ds as (re, im); Re I = pi.
@@ -132,7 +182,7 @@ impl VolterraSolution {
     pub fn phi_ratio(&self, sigma: &Float) -> Float {
         let t = Float::with_val(self.prec, sigma * sigma);
         let pi = Float::with_val(self.prec, Constant::Pi);
-        -chebyshev::integral(&self.j_coeffs, &t, self.prec) / pi
+        -chebyshev::integral(self.j_coeffs(), &t, self.prec) / pi
     }
 
     /// (q2, q1)/(E* k a) at the exact point sigma = x/a in [0, 1] (1 - sigma^2 rounded once).
