@@ -115,7 +115,7 @@ impl Setting {
     }
 }
 
-/// Relative tolerance of the gap test: the f64 quadrature of the gap ([`gap_side`]) is accurate
+/// Relative tolerance of the gap test: the f64 quadrature of the gap (`gap_side`) is accurate
 /// to ~1e-11 of max |h| (test `the_gap_quadrature_matches_a_fine_reference`); 1e-8 leaves a margin.
 pub const GAP_TOL: f64 = 1e-8;
 /// Relative tolerance on the closure check: |measured - expected| <= this times max |h| + |M|.
