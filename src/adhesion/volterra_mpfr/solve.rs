@@ -329,6 +329,18 @@ fn chebyshev_values(x: &Float, out: &mut [Float], prec: u32) {
     }
 }
 
+/// |pivot| of column `k` as f64 for the pivot ratio; a zero or non-finite pivot is an error.
+fn pivot_magnitude(piv: &Float, k: usize) -> Result<f64, AdhesionError> {
+    let pa = piv.clone().abs().to_f64();
+    if !(pa > 0.0) || !pa.is_finite() {
+        return Err(AdhesionError::NotConverged {
+            what: "collocation solve",
+            reason: format!("zero or non-finite pivot at column {k}"),
+        });
+    }
+    Ok(pa)
+}
+
 /// [`gauss_solve`] with the matrix in [`Fixed`] arithmetic (the row operations; the divisions,
 /// the right side and the pivots' magnitudes in MPFR): the same operations, the same bits.
 fn gauss_solve_fixed<const L: usize>(
@@ -345,13 +357,7 @@ fn gauss_solve_fixed<const L: usize>(
         a.swap(k, p);
         b.swap(k, p);
         let piv = a[k][k].to_float(prec);
-        let pa = piv.clone().abs().to_f64();
-        if !(pa > 0.0) || !pa.is_finite() {
-            return Err(AdhesionError::NotConverged {
-                what: "collocation solve",
-                reason: format!("zero or non-finite pivot at column {k}"),
-            });
-        }
+        let pa = pivot_magnitude(&piv, k)?;
         pmax = pmax.max(pa);
         pmin = pmin.min(pa);
         let (top, below) = a.split_at_mut(k + 1);
@@ -393,13 +399,7 @@ fn gauss_solve(mut a: Vec<Vec<Float>>, mut b: Vec<Float>, prec: u32) -> Result<(
         a.swap(k, p);
         b.swap(k, p);
         let piv = a[k][k].clone();
-        let pa = piv.clone().abs().to_f64();
-        if !(pa > 0.0) || !pa.is_finite() {
-            return Err(AdhesionError::NotConverged {
-                what: "collocation solve",
-                reason: format!("zero or non-finite pivot at column {k}"),
-            });
-        }
+        let pa = pivot_magnitude(&piv, k)?;
         pmax = pmax.max(pa);
         pmin = pmin.min(pa);
         // Row operations in place (a scratch product: the same roundings as a fresh Float each).
