@@ -39,7 +39,12 @@ fn rows(ctx: &Ctx, plan: &PadePlan) -> Result<Vec<PadeRow>, String> {
     let sinusoid = ctx.cache.expansion(SlidingShape::Sinusoidal, Convention::Paper, plan.sinusoid)?;
     let adhesion = crate::asymptotics::adhesion::adhesion_expansion_with(plan.adhesion, false)
         .map_err(|e| format!("the Problem 2 expansion: {e}"))?;
-    let series = PadeSeries { parabola: &parabola, sinusoid: &sinusoid, adhesion: &adhesion };
+    // Problem 2's references through the report's memo: the stability map solves the same
+    // problems (lambda = 0.8 and 1.4 at nu = 0 and 3/10) at the same digits.
+    let reference =
+        |p: &crate::model::AdhesionProblem, digits: u32| super::runner::verified_adhesion(&ctx.cache, p, digits);
+    let series =
+        PadeSeries { parabola: &parabola, sinusoid: &sinusoid, adhesion: &adhesion, adhesion_reference: &reference };
     let jobs: Vec<(PadeObject, f64)> =
         pade_objects().into_iter().flat_map(|o| plan.lambdas.iter().map(move |&l| (o.clone(), l))).collect();
     let cost = |(o, l): &(PadeObject, f64)| match o {

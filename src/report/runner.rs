@@ -88,7 +88,10 @@ pub struct RunCache {
     expansions: Mutex<HashMap<(bool, bool), ExpansionSlot>>,
     runs: Memo<(String, Knob), Result<Outcome, String>>,
     verified: Memo<(String, u32), Result<VerifiedRun, String>>,
+    adhesion_verified: Memo<(String, u32), (AdhesionVerifiedResult, f64)>,
 }
+
+type AdhesionVerifiedResult = Result<Arc<adhesion::VerifiedSolution>, adhesion::AdhesionError>;
 
 type ExpansionSlot = Arc<Mutex<Option<(usize, Arc<SlidingExpansion>)>>>;
 
@@ -134,6 +137,22 @@ pub fn verified_sliding(cache: &RunCache, p: &SlidingProblem, digits: u32) -> Re
         let v = sols.into_iter().next().ok_or("no physical solution")?;
         Ok(VerifiedRun { solution: Arc::new(v), seconds })
     })
+}
+
+/// [`adhesion::solve_verified`] at `digits`, once per (problem, digits) in `cache`, with the wall
+/// time of the solve: the stability map's cells and the Pade section's Problem 2 references share
+/// it. The error is the solver's own (each caller words it as before).
+pub fn verified_adhesion_timed(cache: &RunCache, p: &AdhesionProblem, digits: u32) -> (AdhesionVerifiedResult, f64) {
+    cache.adhesion_verified.get_or((problem_key(p), digits), || {
+        let start = Instant::now();
+        let r = adhesion::solve_verified(p, &[], digits).map(Arc::new);
+        (r, start.elapsed().as_secs_f64())
+    })
+}
+
+/// [`verified_adhesion_timed`] without the time.
+pub fn verified_adhesion(cache: &RunCache, p: &AdhesionProblem, digits: u32) -> AdhesionVerifiedResult {
+    verified_adhesion_timed(cache, p, digits).0
 }
 
 impl RunCache {
@@ -190,7 +209,7 @@ pub fn run(problem: &SceneProblem, knob: Knob, cache: &RunCache) -> Result<Outco
 fn run_uncached(problem: &SceneProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {
     match problem {
         SceneProblem::Sliding(p) => run_sliding(p, knob, cache),
-        SceneProblem::Adhesion(p) => run_adhesion(p, knob),
+        SceneProblem::Adhesion(p) => run_adhesion(p, knob, cache),
         SceneProblem::LoadingLaw(_) => Err(LOADING_LAW_NOT_IN_REPORT.into()),
     }
 }
@@ -358,7 +377,7 @@ fn adhesion_series(p: &AdhesionProblem, n: usize) -> Result<Outcome, String> {
     })
 }
 
-fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
+fn run_adhesion(p: &AdhesionProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {
     let zero = Float::with_val(COMPARE_BITS, 0);
     match knob {
         Knob::Series(n) => adhesion_series(p, n),
@@ -391,9 +410,8 @@ fn run_adhesion(p: &AdhesionProblem, knob: Knob) -> Result<Outcome, String> {
             })
         }
         Knob::MpfrVerified(d) => {
-            let start = Instant::now();
-            let v = adhesion::solve_verified(p, &[], d.clamp(5, 300)).map_err(why)?;
-            let seconds = start.elapsed().as_secs_f64();
+            let (v, seconds) = verified_adhesion_timed(cache, p, d.clamp(5, 300));
+            let v = v.map_err(why)?;
             let s = &v.solution;
             Ok(Outcome {
                 size: Float::with_val(COMPARE_BITS, &s.half_width),

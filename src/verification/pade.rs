@@ -69,6 +69,26 @@ pub struct PadeRow {
 /// The chart's contact sizes.
 pub const LAMBDAS: [f64; 5] = [0.4, 0.8, 1.0, 1.2, 1.4];
 
+/// The verified MPFR solution of a Problem 2 problem at the given digits
+/// ([`adhesion::solve_verified`], or a caller's memo of it: the report shares these runs with its
+/// stability map).
+pub type AdhesionReference<'a> = &'a (dyn Fn(&AdhesionProblem, u32) -> Result<std::sync::Arc<adhesion::VerifiedSolution>, adhesion::AdhesionError>
+         + Sync);
+
+/// [`adhesion::solve_verified`] as an [`AdhesionReference`] without a memo.
+pub fn solve_adhesion_reference(
+    p: &AdhesionProblem,
+    digits: u32,
+) -> Result<std::sync::Arc<adhesion::VerifiedSolution>, adhesion::AdhesionError> {
+    adhesion::solve_verified(p, &[], digits).map(std::sync::Arc::new)
+}
+
+/// a/L = lambda/pi rounded to 6 decimals for the Problem 2 rows: the rounding of the report's
+/// stability map (`report::calibration::rational`), so that the two compute one problem once.
+fn near6(x: f64) -> Exact {
+    Q::new(((x * 1e6).round() as i64).into(), 1_000_000i64.into())
+}
+
 fn q(n: i64, d: i64) -> Q {
     Q::new(n.into(), d.into())
 }
@@ -229,7 +249,14 @@ fn friction_rows(e: &SlidingExpansion, order: usize, lambdas: &[f64], digits: u3
 }
 
 /// The Problem 2 rows (`P2 nu=...`) from the load expansion `e` through order `order`.
-fn adhesion_rows(e: &AdhesionExpansion, nu: &Q, order: usize, lambdas: &[f64], digits: u32) -> Vec<PadeRow> {
+fn adhesion_rows(
+    e: &AdhesionExpansion,
+    nu: &Q,
+    order: usize,
+    lambdas: &[f64],
+    digits: u32,
+    reference: AdhesionReference,
+) -> Vec<PadeRow> {
     let prec = crate::numerics::precision::precision_for(digits);
     let cap = digits as f64;
     let name = format!("P2 nu={}", exact_series::q_text(nu));
@@ -240,7 +267,7 @@ fn adhesion_rows(e: &AdhesionExpansion, nu: &Q, order: usize, lambdas: &[f64], d
     lambdas
         .iter()
         .map(|&lam| {
-            let a = near(lam / std::f64::consts::PI);
+            let a = near6(lam / std::f64::consts::PI);
             let a_f = to_float(&a, prec);
             let lambda = Float::with_val(prec, &pi * &a_f);
             let w = Float::with_val(prec, lambda.clone().square());
@@ -264,7 +291,7 @@ fn adhesion_rows(e: &AdhesionExpansion, nu: &Q, order: usize, lambdas: &[f64], d
                 AdhesionSize::HalfWidth(a.clone()),
             )
             .expect("a valid problem");
-            let v = match adhesion::solve_verified(&problem, &[], digits) {
+            let v = match reference(&problem, digits) {
                 Ok(v) => v,
                 Err(why) => {
                     row.refusal = Some(format!("reference: {why}"));
@@ -342,6 +369,8 @@ pub struct PadeSeries<'a> {
     pub sinusoid: &'a SlidingExpansion,
     /// Problem 2's.
     pub adhesion: &'a AdhesionExpansion,
+    /// The verified MPFR references of Problem 2's rows.
+    pub adhesion_reference: AdhesionReference<'a>,
 }
 
 /// The rows of `object` at the one size `lambda` (independent of the other rows, so that a caller
@@ -352,7 +381,9 @@ pub fn pade_rows_at(plan: &PadePlan, series: &PadeSeries, object: &PadeObject, l
         PadeObject::Kuznetsov => closed_form_rows(series.parabola, plan.parabola, &l, plan.digits),
         PadeObject::Sinusoid => closed_form_rows(series.sinusoid, plan.sinusoid, &l, plan.digits),
         PadeObject::Friction => friction_rows(series.parabola, plan.parabola, &l, plan.digits),
-        PadeObject::Adhesion(nu) => adhesion_rows(series.adhesion, nu, plan.adhesion, &l, plan.digits),
+        PadeObject::Adhesion(nu) => {
+            adhesion_rows(series.adhesion, nu, plan.adhesion, &l, plan.digits, series.adhesion_reference)
+        }
     }
 }
 
@@ -364,7 +395,12 @@ pub fn pade_rows(plan: &PadePlan) -> Vec<PadeRow> {
     let parabola = paper(SlidingShape::Parabolic, plan.parabola);
     let sinusoid = paper(SlidingShape::Sinusoidal, plan.sinusoid);
     let adhesion = adhesion_expansion_with(plan.adhesion, false).expect("the adhesion expansion derives");
-    let series = PadeSeries { parabola: &parabola, sinusoid: &sinusoid, adhesion: &adhesion };
+    let series = PadeSeries {
+        parabola: &parabola,
+        sinusoid: &sinusoid,
+        adhesion: &adhesion,
+        adhesion_reference: &solve_adhesion_reference,
+    };
     let mut rows = vec![];
     for object in pade_objects() {
         for &lambda in &plan.lambdas {
