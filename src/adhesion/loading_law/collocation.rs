@@ -211,6 +211,23 @@ pub(super) fn edge_integrals(
     t: &Float,
     prec: u32,
 ) -> Result<(Complex, Complex), AdhesionError> {
+    edge_integrals_at(rule, inc, lambda_max, phi_c, gam_c, t, prec, None)
+}
+
+/// [`edge_integrals`] with the kernels of one end only when `only` names it (the other end's
+/// integral is then zero; its advance factor is still checked, so the errors are the same): the
+/// fields need one end per point ([`super::fields`]' psi_hat), and the kernels are the cost.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn edge_integrals_at(
+    rule: &TanhSinh,
+    inc: &Increment,
+    lambda_max: &Float,
+    phi_c: &[Float],
+    gam_c: &[Float],
+    t: &Float,
+    prec: u32,
+    only: Option<Side>,
+) -> Result<(Complex, Complex), AdhesionError> {
     let at = |c: &[Float], t: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
     let lambda = Float::with_val(prec, lambda_max * t);
     let gam_t = at(gam_c, t);
@@ -241,6 +258,9 @@ pub(super) fn edge_integrals(
         let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
             let factor = advance_factor(&e, sign, &lambda)?;
+            if only.is_some_and(|o| o != side) {
+                continue;
+            }
             let d = Float::with_val(prec, &base * &factor);
             let mut k = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec) * &one_in;
             if let Some(tilt) = &tilt {

@@ -78,8 +78,17 @@ impl LawCollocation {
             return Float::with_val(p, 0);
         }
         let t = Float::with_val(p, &eta_x / &self.lambda_max);
-        let (b, a) = super::collocation::edge_integrals(rule, &self.inc, &self.lambda_max, &self.phi, &self.gam, &t, p)
-            .unwrap_or_else(|_| (Complex::with_val(p, f64::NAN), Complex::with_val(p, f64::NAN)));
+        let (b, a) = super::collocation::edge_integrals_at(
+            rule,
+            &self.inc,
+            &self.lambda_max,
+            &self.phi,
+            &self.gam,
+            &t,
+            p,
+            Some(side),
+        )
+        .unwrap_or_else(|_| (Complex::with_val(p, f64::NAN), Complex::with_val(p, f64::NAN)));
         let acc = if side == Side::Right { b } else { a };
         acc.imag().clone()
     }
