@@ -258,11 +258,18 @@ fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
          | case | nu | n = N'(0) | mu* | digits |\n|---|---|---|---|---|"
     );
     ctx.step("loading law: homogeneous modes".to_string());
-    // One job per case on the report's thread pool (rows in the cases' order).
+    // One job per distinct (nu, n) on the report's thread pool (the scenes' cases may repeat each
+    // other and the grid's); rows in the cases' order.
+    let mut distinct: Vec<(Exact, Exact)> = vec![];
+    for (_, nu, n) in &cases {
+        if !distinct.iter().any(|(a, b)| a == nu && b == n) {
+            distinct.push((nu.clone(), n.clone()));
+        }
+    }
     let found = super::parallel::map(
-        &cases,
+        &distinct,
         |_| 1.0,
-        |(_, nu, n)| match mode_exponent(nu, n, MODE_DIGITS) {
+        |(nu, n)| match mode_exponent(nu, n, MODE_DIGITS) {
             Ok(m) => match m.value_text() {
                 Some(v) => format!("{v} | {}", fmt_digits(Some(m.digits))),
                 None => format!("none below {MU_MAX} | -"),
@@ -270,7 +277,12 @@ fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
             Err(e) => format!("{e} | -"),
         },
     );
-    for ((name, nu, n), row) in cases.iter().zip(found) {
+    let row_of = |nu: &Exact, n: &Exact| {
+        let k = distinct.iter().position(|(a, b)| a == nu && b == n).expect("every case has its distinct entry");
+        found[k].clone()
+    };
+    for (name, nu, n) in &cases {
+        let row = row_of(nu, n);
         let _ = writeln!(s.markdown, "| {name} | {} | {} | {row} |", exact_series::q_text(nu), exact_series::q_text(n));
     }
     let _ = writeln!(s.markdown);
