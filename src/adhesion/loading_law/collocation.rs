@@ -202,23 +202,12 @@ pub(super) fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -
 /// `rule`; R = Z(t)(A + B t)/cosh(pi eps) is the tilted punch's slope outside
 /// ([`super::kernel::TiltedPunch::outside`], `periodic` only; its constant f = 1 cancels against
 /// the -beta P1/L of the edge condition).
-pub(super) fn edge_integrals(
-    rule: &TanhSinh,
-    inc: &Increment,
-    lambda_max: &Float,
-    phi_c: &[Float],
-    gam_c: &[Float],
-    t: &Float,
-    prec: u32,
-) -> Result<(Complex, Complex), AdhesionError> {
-    edge_integrals_at(rule, inc, lambda_max, phi_c, gam_c, t, prec, None)
-}
-
-/// [`edge_integrals`] with the kernels of one end only when `only` names it (the other end's
-/// integral is then zero; its advance factor is still checked, so the errors are the same): the
-/// fields need one end per point ([`super::fields`]' psi_hat), and the kernels are the cost.
+///
+/// Both ends when `only` is `None`; with `Some(side)` the kernels of that end only (the other
+/// end's integral is then zero; its advance factor is still checked, so the errors are the same):
+/// the fields need one end per point ([`super::fields`]' psi_hat), and the kernels are the cost.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn edge_integrals_at(
+pub(super) fn edge_integrals(
     rule: &TanhSinh,
     inc: &Increment,
     lambda_max: &Float,
@@ -303,7 +292,7 @@ fn residual(ctx: &Ctx, state: &[Float]) -> Result<Vec<Float>, AdhesionError> {
     for t in &ctx.nodes {
         let lambda = Float::with_val(prec, &ctx.lambda_max * t);
         let gam_t = chebyshev::evaluate(&gam_c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
-        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.inc, &ctx.lambda_max, &phi_c, &gam_c, t, prec)?;
+        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.inc, &ctx.lambda_max, &phi_c, &gam_c, t, prec, None)?;
         for (acc, sign) in [(acc_b, 1i32), (acc_a, -1)] {
             let v = acc.real().clone() / &lambda;
             // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.

@@ -78,7 +78,7 @@ impl LawCollocation {
             return Float::with_val(p, 0);
         }
         let t = Float::with_val(p, &eta_x / &self.lambda_max);
-        let (b, a) = super::collocation::edge_integrals_at(
+        let (b, a) = super::collocation::edge_integrals(
             rule,
             &self.inc,
             &self.lambda_max,
