@@ -15,7 +15,7 @@
 //!   physicality criterion on the first): the scene `scenes/sinusoid_friction.toml` (sinusoid,
 //!   mu = 0.5, theta != 0, P2 = 0.005, p at its three points), as `solve SCENE --method mpfr
 //!   --digits 30` computes it without the process start, the scene parse and the printing. The
-//!   Gauss–Jacobi rules are cached (MPFR rules per process, the scan's f64 rules per thread), so
+//!   Gauss–Jacobi rules are cached (per process, the scan's lifted f64 rules with the MPFR ones), so
 //!   the repeated solve measures a warm one; the README states the whole process (cold) beside it.
 //!
 //! Run: `cargo bench --bench solve`

@@ -96,7 +96,9 @@ impl GaussJacobiRule {
     }
 }
 
-type Key = (Option<(Integer, i32)>, Option<(Integer, i32)>, usize, u32);
+/// (alpha, beta) by their exact binary values, n, prec, and whether the rule is the f64 one lifted
+/// ([`gauss_jacobi_f64_lifted`]) rather than computed at `prec` ([`gauss_jacobi`]).
+type Key = (Option<(Integer, i32)>, Option<(Integer, i32)>, usize, u32, bool);
 
 fn cache() -> &'static Mutex<HashMap<Key, Arc<GaussJacobiRule>>> {
     static CACHE: OnceLock<Mutex<HashMap<Key, Arc<GaussJacobiRule>>>> = OnceLock::new();
@@ -107,19 +109,49 @@ fn cache() -> &'static Mutex<HashMap<Key, Arc<GaussJacobiRule>>> {
 /// cache when the same (alpha, beta, n, prec) was asked before (alpha and beta compared by their
 /// exact binary values).
 pub fn gauss_jacobi(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Arc<GaussJacobiRule>, QuadratureError> {
-    let key: Key = (alpha.to_integer_exp(), beta.to_integer_exp(), n, prec);
+    cached((alpha.to_integer_exp(), beta.to_integer_exp(), n, prec, false), || {
+        gauss_jacobi_uncached(alpha, beta, n, prec)
+    })
+}
+
+/// The n-point rule of [`crate::numerics::gauss_jacobi_f64::gauss_jacobi`] (alpha and beta rounded
+/// to f64; about 15 correct digits) with its nodes and weights rounded to `prec` bits, from the
+/// same process cache as [`gauss_jacobi`] (so [`clear_cache`] empties both): for computations
+/// that need only signs, where the MPFR rule's O(n^2) Newton passes would dominate (the sinusoid's
+/// load-curve scan, `sliding::reduction_mpfr`).
+pub fn gauss_jacobi_f64_lifted(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+) -> Result<Arc<GaussJacobiRule>, crate::numerics::gauss_jacobi_f64::QuadratureError> {
+    cached((alpha.to_integer_exp(), beta.to_integer_exp(), n, prec, true), || {
+        let r = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, alpha.to_f64(), beta.to_f64())?;
+        let lift = |v: &[f64]| v.iter().map(|x| Float::with_val(prec, *x)).collect();
+        Ok(GaussJacobiRule {
+            alpha: alpha.clone(),
+            beta: beta.clone(),
+            nodes: lift(&r.nodes),
+            weights: lift(&r.weights),
+            prec,
+        })
+    })
+}
+
+/// The rule of `key` from the process cache, built by `build` (and kept) the first time.
+fn cached<E>(key: Key, build: impl FnOnce() -> Result<GaussJacobiRule, E>) -> Result<Arc<GaussJacobiRule>, E> {
     if let Some(r) = cache().lock().ok().and_then(|c| c.get(&key).cloned()) {
         return Ok(r);
     }
-    let rule = Arc::new(gauss_jacobi_uncached(alpha, beta, n, prec)?);
+    let rule = Arc::new(build()?);
     if let Ok(mut c) = cache().lock() {
         c.insert(key, rule.clone());
     }
     Ok(rule)
 }
 
-/// Empties the process cache of [`gauss_jacobi`] (it grows by one rule per distinct
-/// (alpha, beta, n, prec), e.g. along a sweep in theta).
+/// Empties the process cache of [`gauss_jacobi`] and [`gauss_jacobi_f64_lifted`] (it grows by one
+/// rule per distinct (alpha, beta, n, prec), e.g. along a sweep in theta).
 pub fn clear_cache() {
     if let Ok(mut c) = cache().lock() {
         c.clear();
@@ -685,5 +717,21 @@ mod tests {
         let r1 = gauss_jacobi(&a, &a, 9, 128).unwrap();
         let r2 = gauss_jacobi(&a, &a, 9, 128).unwrap();
         assert!(Arc::ptr_eq(&r1, &r2));
+    }
+
+    #[test]
+    fn lifted_f64_rule_is_the_f64_rule_cached_apart_from_the_mpfr_one() {
+        let (a, b) = (Float::with_val(96, -0.527f64), Float::with_val(96, -0.473f64));
+        let lifted = gauss_jacobi_f64_lifted(&a, &b, 11, 96).unwrap();
+        let f = crate::numerics::gauss_jacobi_f64::gauss_jacobi(11, -0.527, -0.473).unwrap();
+        for (x, y) in lifted.nodes.iter().zip(&f.nodes).chain(lifted.weights.iter().zip(&f.weights)) {
+            assert_eq!(x.to_f64(), *y);
+        }
+        assert!(Arc::ptr_eq(&lifted, &gauss_jacobi_f64_lifted(&a, &b, 11, 96).unwrap()));
+        let mpfr = gauss_jacobi(&a, &b, 11, 96).unwrap();
+        assert!(!Arc::ptr_eq(&lifted, &mpfr));
+        // The MPFR rule is the more accurate one: the two differ at f64's last digits, not beyond.
+        let gap = lifted.nodes.iter().zip(&mpfr.nodes).map(|(x, y)| Float::with_val(96, x - y).abs().to_f64());
+        assert!(gap.fold(0.0, f64::max) < 1e-13);
     }
 }

@@ -104,50 +104,19 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
 }
 
 /// The rule for 1/omega with n nodes for the sinusoid's load-curve scan, which needs only the
-/// signs of P2 - target (SCAN_DIGITS): the f64 Gauss–Jacobi rule
-/// ([`crate::numerics::gauss_jacobi_f64`], about 15 correct digits) rounded to the parameters'
-/// precision. The MPFR rule at the locating precision costs O(n^2) MPFR operations per Newton pass,
+/// signs of P2 - target (SCAN_DIGITS): the f64 Gauss–Jacobi rule rounded to the parameters'
+/// precision ([`crate::numerics::gauss_jacobi_mpfr::gauss_jacobi_f64_lifted`], about 15 correct
+/// digits). The MPFR rule at the locating precision costs O(n^2) MPFR operations per Newton pass,
 /// and the scan up to the node cap needs rules of several hundred nodes (about 0.2 s in all, the
-/// solver's former floor); brackets are then refined with MPFR rules ([`load_lo`]).
-///
-/// The rules are cached per thread by (alpha, beta, n, precision) (at most [`SCAN_RULES_CAP`]
-/// entries): the f64 rules of several hundred nodes are O(n^2) each and were 40% of a repeated
-/// solve of the same problem (`cargo bench --bench solve -- mpfr_solve`, perf), e.g. the report's
-/// sweeps and maps, which scan one (alpha, beta) at several loads.
+/// solver's former floor); brackets are then refined with MPFR rules ([`load_lo`]). The rules come
+/// from the process cache of the MPFR rules: the f64 rules of several hundred nodes are O(n^2)
+/// each and were 40% of a repeated solve of the same problem (`cargo bench --bench solve --
+/// mpfr_solve`, perf), e.g. the report's sweeps and maps, which scan one (alpha, beta) at several
+/// loads.
 fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
     let (a, b) = params.inverse_weight_exponents();
-    let (af, bf) = (a.to_f64(), b.to_f64());
-    let key = (af.to_bits(), bf.to_bits(), n, params.prec);
-    if let Some(r) = SCAN_RULES.with(|c| c.borrow().get(&key).cloned()) {
-        return Ok(r);
-    }
-    let r = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, af, bf)
-        .map_err(|e| SlidingError::NoConvergence(format!("the scan's f64 rule: {e}")))?;
-    let lift = |v: &[f64]| v.iter().map(|x| Float::with_val(params.prec, *x)).collect();
-    let rule = Arc::new(GaussJacobiRule {
-        alpha: a,
-        beta: b,
-        nodes: lift(&r.nodes),
-        weights: lift(&r.weights),
-        prec: params.prec,
-    });
-    SCAN_RULES.with(|c| {
-        let mut c = c.borrow_mut();
-        if c.len() >= SCAN_RULES_CAP {
-            c.clear();
-        }
-        c.insert(key, rule.clone());
-    });
-    Ok(rule)
-}
-
-/// Most entries of the per-thread cache of [`scan_rule`] (emptied when full).
-const SCAN_RULES_CAP: usize = 64;
-
-type ScanRules = std::collections::HashMap<(u64, u64, usize, u32), Arc<GaussJacobiRule>>;
-
-thread_local! {
-    static SCAN_RULES: std::cell::RefCell<ScanRules> = std::cell::RefCell::new(ScanRules::new());
+    crate::numerics::gauss_jacobi_mpfr::gauss_jacobi_f64_lifted(&a, &b, n, params.prec)
+        .map_err(|e| SlidingError::NoConvergence(format!("the scan's f64 rule: {e}")))
 }
 
 /// Centre solutions (all branches) at size s with n nodes.
