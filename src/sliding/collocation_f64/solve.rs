@@ -38,10 +38,16 @@ pub fn solve_sliding_f64(
     points: &[f64],
     options: &SolverOptions,
 ) -> Result<SlidingSolutionsF64> {
-    if let Some(&p) = points.iter().find(|p| !(p.abs() < 1.0)) {
-        return Err(SlidingF64Error::InvalidPoint { value: p });
-    }
+    check_points(points)?;
     solve_sliding_f64_with(problem, &SlidingParamsF64::new(problem)?, points, options)
+}
+
+/// The requested points xh = (x - c)/l must lie in (-1, 1).
+fn check_points(points: &[f64]) -> Result<()> {
+    match points.iter().find(|p| !(p.abs() < 1.0)) {
+        Some(&p) => Err(SlidingF64Error::InvalidPoint { value: p }),
+        None => Ok(()),
+    }
 }
 
 /// [`solve_sliding_f64`] with the problem's f64 parameters already derived (`prm` must be
@@ -55,9 +61,7 @@ pub fn solve_sliding_f64_with(
     points: &[f64],
     options: &SolverOptions,
 ) -> Result<SlidingSolutionsF64> {
-    if let Some(&p) = points.iter().find(|p| !(p.abs() < 1.0)) {
-        return Err(SlidingF64Error::InvalidPoint { value: p });
-    }
+    check_points(points)?;
     let target = prm.target;
     let cands = all_candidates(prm, options)?;
     let mut solutions = Vec::new();
