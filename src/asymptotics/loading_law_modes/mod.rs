@@ -78,6 +78,11 @@ use crate::params::adhesion::AdhesionParamsMpfr;
 use num_traits::Signed;
 use rug::float::Constant;
 use rug::{Complex, Float};
+use scan::Scan;
+use screen::Screen;
+
+mod scan;
+mod screen;
 
 type Q = num_rational::BigRational;
 
@@ -94,9 +99,24 @@ pub struct Symbol {
     /// g_0 = c/l of the single punch.
     pub g0: Float,
     pi: Float,
-    /// (ln s, 1 - s, [wf_+, wg_+], [wf_-, wg_-]): wf = Re (1 + i n) w s k_sigma,
+    nodes: Vec<Node>,
+    /// det M in f64 with an error bound, to decide the scan's signs without MPFR where it can
+    /// (`None` below [`screen::MIN_PREC`] bits).
+    screen: Option<Screen>,
+}
+
+/// One quadrature node of the symbol.
+#[derive(Debug, Clone)]
+struct Node {
+    /// ln s (from the complement near s = 1).
+    ln_s: Float,
+    /// exp(ln s) rounded once (s^mu = exp((mu + 1) ln s)/exp(ln s) in [`Symbol::matrix`]).
+    exp_ln_s: Float,
+    /// 1 - s.
+    c: Float,
+    /// [wf_+, wg_+], [wf_-, wg_-]: wf = Re (1 + i n) w s k_sigma,
     /// wg = Re (1 + i n) f_0 w s k_sigma sigma (a1/N_0 + a2 (1 - s)/D_0).
-    nodes: Vec<(Float, Float, [[Float; 2]; 2])>,
+    sides: [[Float; 2]; 2],
 }
 
 impl Symbol {
@@ -139,9 +159,11 @@ impl Symbol {
             } else {
                 Float::with_val(prec, s.ln_ref())
             };
-            nodes.push((ln_s, c, sides));
+            let exp_ln_s = Float::with_val(prec, ln_s.exp_ref());
+            nodes.push(Node { ln_s, exp_ln_s, c, sides });
         }
-        Ok(Symbol { prec, f0, g0, pi: Float::with_val(prec, Constant::Pi), nodes })
+        let screen = (prec >= screen::MIN_PREC).then(|| Screen::new(&nodes));
+        Ok(Symbol { prec, f0, g0, pi: Float::with_val(prec, Constant::Pi), nodes, screen })
     }
 
     /// M(mu) (rows leading, trailing; columns f, g; module doc).
@@ -149,11 +171,11 @@ impl Symbol {
         let p = self.prec;
         let mut m: [[Float; 2]; 2] = [[Float::new(p), Float::new(p)], [Float::new(p), Float::new(p)]];
         let mu1 = Float::with_val(p, mu + 1u32);
-        for (ln_s, c, sides) in &self.nodes {
+        for Node { ln_s, exp_ln_s, c, sides } in &self.nodes {
             // s^mu and e_mu = (1 - s^(mu+1))/(1 - s), the latter from expm1 (accurate as s -> 1).
             let x = Float::with_val(p, ln_s * &mu1);
             let s_mu1 = Float::with_val(p, x.exp_ref());
-            let s_mu = Float::with_val(p, &s_mu1 / Float::with_val(p, ln_s.exp_ref()));
+            let s_mu = Float::with_val(p, &s_mu1 / exp_ln_s);
             let e = -Float::with_val(p, x.exp_m1_ref()) / c;
             for k in 0..2 {
                 m[k][0] += Float::with_val(p, &sides[k][0] * &s_mu);
@@ -173,7 +195,7 @@ impl Symbol {
         let mut m = [[zero(), zero()], [zero(), zero()]];
         let mu1 = Complex::with_val(p, mu + 1u32);
         let small = Float::with_val(p, Float::i_exp(1, -8));
-        for (ln_s, c, sides) in &self.nodes {
+        for Node { ln_s, c, sides, .. } in &self.nodes {
             let x = Complex::with_val(p, &mu1 * ln_s);
             let s_mu = Complex::with_val(p, Complex::with_val(p, mu * ln_s).exp_ref());
             // expm1(x): its Taylor series where |x| is small (exp(x) - 1 cancels there).
@@ -250,28 +272,23 @@ impl Symbol {
         self.zero_on(&grid, 2)
     }
 
+    /// The first sign change of det M on `grid` (values computed as the scan reaches them: the
+    /// f64 screen where its bound decides, MPFR where it does not; the same decisions as MPFR at
+    /// every point, see [`Scan`]), refined; else the finer rescans at local minima of |det M|.
     fn zero_on(&self, grid: &[f64], depth: u32) -> Option<Float> {
-        let p = self.prec;
-        let values: Vec<Float> = grid.iter().map(|&m| self.det(&Float::with_val(p, m))).collect();
+        let mut scan = Scan::new(self, grid);
         for k in 1..grid.len() {
-            let (lo, hi) = (&values[k - 1], &values[k]);
-            if lo.is_sign_negative() != hi.is_sign_negative() {
-                return Some(self.refine(
-                    Float::with_val(p, grid[k - 1]),
-                    lo.clone(),
-                    Float::with_val(p, grid[k]),
-                    hi.clone(),
-                ));
+            if scan.negative(k - 1) != scan.negative(k) {
+                let p = self.prec;
+                let (lo, hi) = (scan.exact(k - 1), scan.exact(k));
+                return Some(self.refine(Float::with_val(p, grid[k - 1]), lo, Float::with_val(p, grid[k]), hi));
             }
             // |det| smallest at grid[k] among its neighbours: a close pair may hide there.
-            if depth > 0 && k + 1 < grid.len() {
-                let a = |v: &Float| v.to_f64().abs();
-                if a(hi) < a(lo) && a(hi) < a(&values[k + 1]) {
-                    let (x0, x1) = (grid[k - 1], grid[k + 1]);
-                    let fine: Vec<f64> = (0..=128).map(|j| x0 + (x1 - x0) * j as f64 / 128.0).collect();
-                    if let Some(z) = self.zero_on(&fine, depth - 1) {
-                        return Some(z);
-                    }
+            if depth > 0 && k + 1 < grid.len() && scan.abs_less(k, k - 1) && scan.abs_less(k, k + 1) {
+                let (x0, x1) = (grid[k - 1], grid[k + 1]);
+                let fine: Vec<f64> = (0..=128).map(|j| x0 + (x1 - x0) * j as f64 / 128.0).collect();
+                if let Some(z) = self.zero_on(&fine, depth - 1) {
+                    return Some(z);
                 }
             }
         }
@@ -487,6 +504,51 @@ mod tests {
         let params = AdhesionParamsMpfr::new(&material, prec);
         let sym = Symbol::new(&params, &Float::with_val(prec, 0.5), &rule, prec).unwrap();
         assert_eq!(sym.zeros_in((-0.9, 300.0), (-40.0, 40.0)), 0);
+    }
+
+    /// The f64 screen (module `screen`): its bound holds against the MPFR determinant at every
+    /// point of the scan grid and decides the sign at almost all of them; the scan with the screen
+    /// finds bit for bit the zero the all-MPFR scan finds (the screen switched off), including the
+    /// close pair at n = 0 that only the finer rescan finds, and none where there is none.
+    #[test]
+    fn the_screen_decides_as_mpfr_does() {
+        let prec = bits_for_digits(12) + SOLVER_GUARD_BITS;
+        for (nu, n) in [(q(0, 1), 0.5), (q(0, 1), 0.0), (q(0, 1), 0.2), (q(3, 10), 0.2), (q(1, 10), 1.0)] {
+            let material = Material::from_contact_modulus(nu.clone(), q(1, 1)).unwrap();
+            let params = AdhesionParamsMpfr::new(&material, prec);
+            let rule = TanhSinh::new(prec - SOLVER_GUARD_BITS, 1.0, prec);
+            let sym = Symbol::new(&params, &Float::with_val(prec, n), &rule, prec).unwrap();
+            let screen = sym.screen.clone().expect("screened at this precision");
+            let (mut decided, mut total) = (0, 0);
+            for mu in [0.0, 0.5, 1.0, 2.5, 7.0, 31.0, 99.0, 178.0, 250.0, 603.5, 1000.0, 1999.0] {
+                let a = screen.det(mu);
+                let exact = sym.det(&Float::with_val(prec, mu)).to_f64();
+                assert!((a.value - exact).abs() <= a.bound, "nu = {nu}, n = {n}, mu = {mu}: {a:?} vs {exact}");
+                assert!(a.bound < 1e-9 * (1.0 + exact.abs()), "{a:?}");
+                total += 1;
+                if let Some(neg) = a.negative() {
+                    assert_eq!(neg, exact < 0.0);
+                    decided += 1;
+                }
+            }
+            assert!(decided + 1 >= total, "nu = {nu}, n = {n}: {decided} of {total} decided");
+            let mut plain = sym.clone();
+            plain.screen = None;
+            let (with, without) = (sym.first_zero(MU_MAX), plain.first_zero(MU_MAX));
+            match (&with, &without) {
+                (Some(a), Some(b)) => assert!(a == b && a.prec() == b.prec(), "nu = {nu}, n = {n}: {a} vs {b}"),
+                (None, None) => {}
+                _ => panic!("nu = {nu}, n = {n}: {with:?} vs {without:?}"),
+            }
+        }
+        let low = Symbol::new(
+            &AdhesionParamsMpfr::new(&Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap(), 60),
+            &Float::with_val(60, 0.5),
+            &TanhSinh::new(40, 1.0, 60),
+            60,
+        )
+        .unwrap();
+        assert!(low.screen.is_none(), "below MIN_PREC the scan is all MPFR");
     }
 
     /// Bad input names the parameter.
