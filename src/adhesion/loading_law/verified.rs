@@ -18,7 +18,7 @@
 //!   phi(x) = int_0^x psi = -(2 k L^2/pi^3) int_0^chi psi_hat (tanh-sinh; the point x = 0 entered
 //!   first, where the fields are not smooth, is an end of the interval).
 
-use super::collocation::{solve, LawCollocation, LawSetting};
+use super::collocation::{solve, solve_from, LawCollocation, LawSetting};
 use super::ends::EndStress;
 use super::kernel::{Row, Side};
 use crate::adhesion::error::AdhesionError;
@@ -294,6 +294,8 @@ fn size_for_load(
     })
 }
 
+/// One collocation run with `extra_nodes` over the nominal count, its Newton iteration started
+/// from `start` where given ([`solve_from`]; the second run starts from the first run's solution).
 fn run(
     problem: &LoadingLawProblem,
     xh: &[Exact],
@@ -301,6 +303,7 @@ fn run(
     extra_nodes: usize,
     target_bits: u32,
     prec: u32,
+    start: Option<&LawCollocation>,
 ) -> Result<(LawValues, LawCollocation), AdhesionError> {
     let (unit, over) = match (problem.size(), problem.period()) {
         (LawSize::HalfLength(l), Period::Finite(big_l)) => (Unit::Period(big_l.clone()), l / big_l),
@@ -309,7 +312,7 @@ fn run(
     };
     let lambda = to_f64(&over).unwrap_or(f64::NAN) * std::f64::consts::PI;
     let s = setting(problem, &unit, over);
-    let sol = solve(&s, nodes_at(&unit, target_bits, lambda) + extra_nodes, target_bits, prec)?;
+    let sol = solve_from(&s, nodes_at(&unit, target_bits, lambda) + extra_nodes, target_bits, prec, start)?;
     // N' >= 0 along the loading (the requirement: P1 must not decrease as P2 grows).
     for i in 0..=32u32 {
         let p = sol.load_at(&(Float::with_val(prec, i) / 32u32));
@@ -475,8 +478,10 @@ pub fn solve_law_collocation(
         }
     }
     let bits = bits_for_digits(digits) + 8;
-    let (first, collocation) = run(problem, xh, stress_xh, 0, bits, bits + 32).map_err(|e| with_mode(problem, e))?;
-    let (second, _) = run(problem, xh, stress_xh, 8, bits + 16, bits + 56).map_err(|e| with_mode(problem, e))?;
+    let (first, collocation) =
+        run(problem, xh, stress_xh, 0, bits, bits + 32, None).map_err(|e| with_mode(problem, e))?;
+    let (second, _) =
+        run(problem, xh, stress_xh, 8, bits + 16, bits + 56, Some(&collocation)).map_err(|e| with_mode(problem, e))?;
     let cap = digits as f64 + 8.0;
     let dig = |u: &Float, v: &Float, scale: &Float| {
         let d = Float::with_val(u.prec().max(v.prec()), u - v);
