@@ -259,6 +259,9 @@ pub fn resum(f: &Series<Q>, w: &Float, scale: &Float, cap: f64, prec: u32) -> Re
         (1..=n).map(|m| (n - m, m)).filter(|(l, m)| l.abs_diff(*m) <= SPREAD).collect();
     pairs.sort_by_key(|(l, m)| (l.abs_diff(*m), std::cmp::Reverse(*l)));
     let mut candidates = vec![];
+    // The neighbours' values, each computed once (adjacent candidates share one): None where the
+    // approximant does not exist or its value is not finite. Only the value is used.
+    let mut neighbours: std::collections::HashMap<(usize, usize), Option<Float>> = std::collections::HashMap::new();
     for (l, m) in pairs {
         let (_, mut v) = candidate(f, l, m, w, prec);
         if v.refusal.is_none() {
@@ -268,11 +271,12 @@ pub fn resum(f: &Series<Q>, w: &Float, scale: &Float, cap: f64, prec: u32) -> Re
                 if nl == usize::MAX {
                     continue;
                 }
-                let (np, nv) = candidate(&f.truncate(nl + nm + 1), nl, nm, w, prec);
-                if np.is_none() || !nv.value.is_finite() {
-                    continue;
-                }
-                let d = verified_digits_mpfr(&Float::with_val(prec, &v.value - &nv.value), scale, cap);
+                let value = neighbours.entry((nl, nm)).or_insert_with(|| {
+                    let p = Pade::new(&f.truncate(nl + nm + 1), nl, nm).ok()?;
+                    Some(value_of(&p, w, prec)).filter(|v| v.is_finite())
+                });
+                let Some(value) = value else { continue };
+                let d = verified_digits_mpfr(&Float::with_val(prec, &v.value - &*value), scale, cap);
                 seen.push(format!("[{nl}/{nm}]"));
                 agreement = Some(agreement.map_or(d, |a: f64| a.min(d)));
             }
