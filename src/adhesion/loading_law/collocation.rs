@@ -359,32 +359,39 @@ pub fn solve_from(
     prec: u32,
     start: Option<&LawCollocation>,
 ) -> Result<LawCollocation, AdhesionError> {
-    // Newton at 64 bits on a coarse rule to a first solution, from the start or the symmetric
-    // single punch (Phi = 2 C_P, Gam = 0), with the closed-form Jacobian ([`super::jacobian`])
-    // refreshed at every step while the correction exceeds 1e-8, then kept (chord).
+    // From the single punch (Phi = 2 C_P, Gam = 0): Newton at 64 bits on a coarse rule to a first
+    // solution, with the closed-form Jacobian ([`super::jacobian`]) refreshed at every step while
+    // the correction exceeds 1e-8, then kept (chord) at `prec`. From `start`: its Phi and Gam at
+    // these nodes at `prec` bits, the Jacobian there, and the chord iteration at once (the 64-bit
+    // Newton would move a start closer than its coarse rule's accuracy away from the solution).
     let low = Ctx::new(setting, nodes, 50, 64);
-    let state64: Vec<Float> = match start {
-        Some(s) => {
-            let at = |c: &[Float], tau: &Float| chebyshev::evaluate(c, &(Float::with_val(64, tau * 2u32) - 1u32), 64);
-            let phi = low.nodes.iter().map(|t| at(&s.phi, t));
-            phi.chain(low.nodes.iter().map(|t| at(&s.gam, t))).collect()
-        }
+    let warm: Option<Vec<Float>> = start.map(|s| {
+        let taus = chebyshev::nodes(nodes, prec);
+        let at = |c: &[Float], tau: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, tau * 2u32) - 1u32), prec);
+        let phi: Vec<Float> = taus.iter().map(|t| at(&s.phi, t)).collect();
+        phi.into_iter().chain(taus.iter().map(|t| at(&s.gam, t))).collect()
+    });
+    let state64: Vec<Float> = match &warm {
+        Some(w) => w.iter().map(|v| Float::with_val(64, v)).collect(),
         None => {
             let load_constant = AdhesionParamsF64::new(&setting.material).load_constant;
             (0..2 * nodes).map(|i| Float::with_val(64, if i < nodes { 2.0 * load_constant } else { 0.0 })).collect()
         }
     };
-    match solve_with(setting, &low, state64, nodes, target_bits, prec) {
-        Err(_) if start.is_some() => solve_from(setting, nodes, target_bits, prec, None),
+    let warm_start = warm.is_some();
+    match solve_with(setting, &low, state64, warm, nodes, target_bits, prec) {
+        Err(_) if warm_start => solve_from(setting, nodes, target_bits, prec, None),
         r => r,
     }
 }
 
-/// The iteration of [`solve_from`] from `state64`.
+/// The iteration of [`solve_from`] from `state64` (and `warm` at `prec`, if given: no 64-bit
+/// Newton then).
 fn solve_with(
     setting: &LawSetting,
     low: &Ctx,
     mut state64: Vec<Float>,
+    warm: Option<Vec<Float>>,
     nodes: usize,
     target_bits: u32,
     prec: u32,
@@ -394,7 +401,7 @@ fn solve_with(
     };
     let mut jac = closed_form(low, &state64)?;
     let mut previous = f64::INFINITY;
-    for _ in 0..30 {
+    for _ in 0..if warm.is_some() { 0 } else { 30 } {
         let r = residual(low, &state64)?;
         let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
         let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
@@ -410,7 +417,7 @@ fn solve_with(
         previous = size;
     }
     let ctx = Ctx::new(setting, nodes, target_bits + 8, prec);
-    let mut state: Vec<Float> = state64.iter().map(|v| Float::with_val(prec, v)).collect();
+    let mut state: Vec<Float> = warm.unwrap_or_else(|| state64.iter().map(|v| Float::with_val(prec, v)).collect());
     let goal = 2f64.powi(-(target_bits as i32));
     let mut steps = 0;
     let mut last = f64::INFINITY;
