@@ -3,7 +3,7 @@
 //! interpolant G(u) between the nodes and off the contact.
 
 use super::error::Result;
-use super::operator::Collocation;
+use super::operator::{nearest_collocation_point, Collocation, GridPoint};
 use super::profile::slope_divided_difference;
 use super::tangent_map::Map;
 use crate::params::sliding::ShapeF64;
@@ -114,8 +114,7 @@ impl Rhs {
 pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
     let xs = &col.colloc;
     let n = col.rule.nodes.len();
-    let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
-    let r = if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() { i - 1 } else { i };
+    let r = nearest_collocation_point(xs, u);
     let nodes = &col.rule.nodes[..n];
     // W_k/(pi (x_r - t_k)) from the collocation matrix, so the loop has one division per node.
     let row = &col.kernel[r * n..(r + 1) * n];
@@ -136,6 +135,29 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
         Some(k) => st.g[k],
         None => v,
     }
+}
+
+/// G at the points of the operator's [`super::operator::SampleGrid`] (in its order): the same
+/// values as [`g_at`] there, to the bit, from the precomputed weights (n multiply-adds and one
+/// divided difference of F per point, no division per node).
+pub(super) fn g_on_grid(col: &Collocation, st: &State) -> Vec<f64> {
+    let grid = &col.grid;
+    let n = col.rule.nodes.len();
+    let g = &st.g[..n];
+    grid.at
+        .iter()
+        .enumerate()
+        .map(|(i, at)| match *at {
+            GridPoint::Node(k) => g[k],
+            GridPoint::Row(r) => {
+                let mut num = st.rhs.divided_difference(&st.map, grid.u[i], col.colloc[r]);
+                for (q, gk) in grid.q[i * n..(i + 1) * n].iter().zip(g) {
+                    num += q * gk;
+                }
+                num / grid.den[i]
+            }
+        })
+        .collect()
 }
 
 /// G(u) of [`g_at`] for u off the contact (|u| >= 1, never a node) together with the node sum

@@ -5,7 +5,8 @@
 use super::error::{Result, SlidingF64Error};
 use super::solution::SolverOptions;
 use crate::numerics::accuracy::readable_f64;
-use crate::numerics::gauss_jacobi_f64::{sliding_rules, GaussRule};
+use crate::numerics::gauss_jacobi_f64::{self, sliding_rules, GaussRule};
+use crate::sliding::physicality::pressure_points;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -24,7 +25,79 @@ pub struct Collocation {
     pub(super) kernel: Vec<f64>,
     /// 1/cos(pi theta).
     pub(super) sec_pi_theta: f64,
+    /// The samples of p at fixed u ([`SampleGrid`]).
+    pub(super) grid: SampleGrid,
     lu: LU<f64, Dyn, Dyn>,
+}
+
+/// The fixed samples of p in the tangent variable: the physicality criterion's pressure points
+/// ([`pressure_points`]: 68 Chebyshev–Lobatto points and 18 next to the ends, in that order),
+/// where the outputs take max p and the check run's pressure difference and the criterion tests
+/// p >= 0. At a fixed u the Nyström interpolant ([`super::interpolant::g_at`]) is
+/// G(u) = (F[u, x_r] + sum_k q_k G_k)/(sec(pi theta) + sum_k q_k), q_k = W_k/(pi (x_r - t_k)
+/// (u - t_k)), whose weights q_k and denominator depend on (theta, n) only: they are computed
+/// here once per operator (as in `g_at`, term by term in the same order, so G on the grid is
+/// the same to the bit as `g_at`), and a state's G there costs n multiply-adds and one F[u, x_r]
+/// per point (`interpolant::g_on_grid`), omega(u) none.
+pub(super) struct SampleGrid {
+    /// The points u, in the order of [`pressure_points`].
+    pub(super) u: Vec<f64>,
+    /// omega(u) = (1 + u)^(1/2 + theta) (1 - u)^(1/2 - theta).
+    pub(super) omega: Vec<f64>,
+    /// Per point: the collocation point x_r of the interpolant, or the node u falls on.
+    pub(super) at: Vec<GridPoint>,
+    /// q_k per point, n each (zeros for a point on a node).
+    pub(super) q: Vec<f64>,
+    /// sec(pi theta) + sum_k q_k per point.
+    pub(super) den: Vec<f64>,
+}
+
+/// How G is obtained at a point of the [`SampleGrid`].
+#[derive(Debug, Clone, Copy)]
+pub(super) enum GridPoint {
+    /// By the interpolant with the collocation point x_r, r = this index.
+    Row(usize),
+    /// u is the node t_k, k = this index: G = G_k.
+    Node(usize),
+}
+
+impl SampleGrid {
+    fn new(rule: &GaussRule, colloc: &[f64], kernel: &[f64], sec_pi_theta: f64, theta: f64) -> Self {
+        let n = rule.nodes.len();
+        let u = pressure_points();
+        let omega = u.iter().map(|&v| gauss_jacobi_f64::omega(v, theta)).collect();
+        let (mut at, mut q, mut den) = (Vec::with_capacity(u.len()), Vec::with_capacity(u.len() * n), Vec::new());
+        for &v in &u {
+            if let Some(k) = rule.nodes.iter().position(|t| *t == v) {
+                at.push(GridPoint::Node(k));
+                q.extend(std::iter::repeat_n(0.0, n));
+                den.push(1.0);
+                continue;
+            }
+            let r = nearest_collocation_point(colloc, v);
+            let row = &kernel[r * n..(r + 1) * n];
+            let mut d = sec_pi_theta;
+            for (w, t) in row.iter().zip(&rule.nodes) {
+                let qk = w / (v - t);
+                q.push(qk);
+                d += qk;
+            }
+            at.push(GridPoint::Row(r));
+            den.push(d);
+        }
+        SampleGrid { u, omega, at, q, den }
+    }
+}
+
+/// The index r of the collocation point x_r nearest to u (`xs` ascending; the lower one on a
+/// tie), as the Nyström interpolant uses it.
+pub(super) fn nearest_collocation_point(xs: &[f64], u: f64) -> usize {
+    let i = xs.partition_point(|x| *x < u).min(xs.len() - 1);
+    if i > 0 && (u - xs[i - 1]).abs() < (xs[i] - u).abs() {
+        i - 1
+    } else {
+        i
+    }
 }
 
 impl Collocation {
@@ -43,7 +116,8 @@ impl Collocation {
             m[(r, n)] = 1.0;
         }
         let sec_pi_theta = 1.0 / (PI * theta).cos();
-        Ok(Collocation { theta, rule, colloc, kernel, sec_pi_theta, lu: m.lu() })
+        let grid = SampleGrid::new(&rule, &colloc, &kernel, sec_pi_theta, theta);
+        Ok(Collocation { theta, rule, colloc, kernel, sec_pi_theta, grid, lu: m.lu() })
     }
 
     /// Number of nodes n.
