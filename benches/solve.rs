@@ -6,7 +6,7 @@
 //!   in u of max p and the pressure difference (both runs); collocation operators cached per thread as in `solve`; `_prepared`:
 //!   the same with the f64 parameters derived once (`solve_sliding_f64_with`), and
 //!   `parameters_only` what that leaves out (`SlidingParamsF64::new`: kappa and beta in exact
-//!   rational arithmetic, every input rounded once);
+//!   rational arithmetic, in i128 parts for the scene's small decimals, every input rounded once);
 //! - `series_eval`: one evaluation of the derived l/l_s of the same problem through Lambda^16 at
 //!   Lambda (coefficients prepared once, `numerics::evaluate::PreparedSeries`), in f64 and in MPFR at
 //!   30 digits (`precision_for(30)` = 132 bits);

@@ -52,9 +52,9 @@ fn check_points(points: &[f64]) -> Result<()> {
 
 /// [`solve_sliding_f64`] with the problem's f64 parameters already derived (`prm` must be
 /// `SlidingParamsF64::new(problem)`): for a caller that solves one problem several times (at
-/// other points, node counts or tolerances, e.g. timing runs), since deriving them from the exact
-/// inputs (kappa and beta in exact rational arithmetic, each input rounded once) costs about as
-/// much as the rest of a small solve. Same errors, except the parameters' own.
+/// other points, node counts or tolerances, e.g. timing runs), which then derives them from the
+/// exact inputs (kappa and beta in exact rational arithmetic, each input rounded once) only once.
+/// Same errors, except the parameters' own.
 pub fn solve_sliding_f64_with(
     problem: &SlidingProblem,
     prm: &SlidingParamsF64,
