@@ -7,7 +7,6 @@ use super::operator::{nearest_collocation_point, Collocation, GridPoint};
 use super::profile::slope_divided_difference;
 use super::tangent_map::Map;
 use crate::params::sliding::ShapeF64;
-use nalgebra::DVector;
 use std::f64::consts::PI;
 
 /// Discrete solution for one right-hand side shape F(u) (unit amplitude): G, K and the two
@@ -21,8 +20,8 @@ pub(super) struct Basis {
 /// Solves the collocation system for the right-hand side `f` and evaluates the two side
 /// functionals (module doc of `collocation_f64`).
 pub(super) fn basis(col: &Collocation, map: &Map, f: impl Fn(f64) -> f64) -> Result<Basis> {
-    let rhs = DVector::from_iterator(col.colloc.len(), col.colloc.iter().map(|&u| f(u)));
-    let (g, k) = col.solve(rhs)?;
+    let rhs: Vec<f64> = col.colloc.iter().map(|&u| f(u)).collect();
+    let (g, k) = col.solve(&rhs)?;
     let c0 = col.sum(&g, |t| map.c0_weight(t));
     let p2 = col.sum(&g, |t| map.jac(t));
     Ok(Basis { g, cond: c0 - k, p2 })
@@ -30,6 +29,7 @@ pub(super) fn basis(col: &Collocation, map: &Map, f: impl Fn(f64) -> f64) -> Res
 
 /// A discrete state: the map, the centre c, G in physical units at the nodes
 /// (p(u) = omega(u) G(u)) and the shape part of the right-hand side (for the Nyström interpolant).
+#[derive(Clone)]
 pub(super) struct State {
     pub(super) map: Map,
     pub(super) c: f64,

@@ -7,7 +7,7 @@ use super::solution::SolverOptions;
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::gauss_jacobi_f64::{self, sliding_rules, GaussRule};
 use crate::sliding::physicality::pressure_points;
-use nalgebra::{DMatrix, DVector, Dyn, LU};
+use nalgebra::{DMatrix, DVector};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::f64::consts::PI;
@@ -27,7 +27,11 @@ pub struct Collocation {
     pub(super) sec_pi_theta: f64,
     /// The samples of p at fixed u ([`SampleGrid`]).
     pub(super) grid: SampleGrid,
-    lu: LU<f64, Dyn, Dyn>,
+    /// nalgebra's LU factors of the (n+1) x (n+1) matrix, column-major (unit lower L below the
+    /// diagonal, U on and above), and its row permutation as a gather (`perm[i]` = the row of the
+    /// right-hand side that lands in row i), for [`Self::solve`].
+    factors: Vec<f64>,
+    perm: Vec<usize>,
 }
 
 /// The fixed samples of p in the tangent variable: the physicality criterion's pressure points
@@ -117,7 +121,13 @@ impl Collocation {
         }
         let sec_pi_theta = 1.0 / (PI * theta).cos();
         let grid = SampleGrid::new(&rule, &colloc, &kernel, sec_pi_theta, theta);
-        Ok(Collocation { theta, rule, colloc, kernel, sec_pi_theta, grid, lu: m.lu() })
+        let lu = m.lu();
+        // The permutation applied to the row indices gives the gather.
+        let mut rows = DVector::<f64>::from_fn(n + 1, |i, _| i as f64);
+        lu.p().permute_rows(&mut rows);
+        let perm = rows.iter().map(|&i| i as usize).collect();
+        let factors = lu.lu_internal().as_slice().to_vec();
+        Ok(Collocation { theta, rule, colloc, kernel, sec_pi_theta, grid, factors, perm })
     }
 
     /// Number of nodes n.
@@ -125,13 +135,37 @@ impl Collocation {
         self.rule.nodes.len()
     }
 
-    /// Solves sum_k W_k G_k/(pi (x_r - t_k)) + K = rhs_r; returns (G, K).
-    pub(super) fn solve(&self, rhs: DVector<f64>) -> Result<(Vec<f64>, f64)> {
-        let n = self.n();
-        let sol = self.lu.solve(&rhs).ok_or_else(|| SlidingF64Error::NoConvergence {
-            reason: format!("singular collocation matrix (theta = {}, n = {n})", readable_f64(self.theta)),
-        })?;
-        Ok((sol.as_slice()[..n].to_vec(), sol[n]))
+    /// Solves sum_k W_k G_k/(pi (x_r - t_k)) + K = rhs_r; returns (G, K). The substitutions
+    /// of nalgebra's `LU::solve` written out on the stored factors, operation for operation
+    /// (the permutation; b_j -= b_i L_ji column by column; then from the last row b_i /= U_ii,
+    /// b_j -= b_i U_ji), so the same bits without its copies and generic indexing (test
+    /// `the_substitutions_are_nalgebras_to_the_bit`).
+    pub(super) fn solve(&self, rhs: &[f64]) -> Result<(Vec<f64>, f64)> {
+        let (n, dim) = (self.n(), self.n() + 1);
+        let f = &self.factors;
+        let mut b: Vec<f64> = self.perm.iter().map(|&i| rhs[i]).collect();
+        for i in 0..dim - 1 {
+            let c = b[i];
+            for (bj, l) in b[i + 1..].iter_mut().zip(&f[i * dim + i + 1..(i + 1) * dim]) {
+                *bj -= c * l;
+            }
+        }
+        for i in (0..dim).rev() {
+            let d = f[i * dim + i];
+            if d == 0.0 {
+                return Err(SlidingF64Error::NoConvergence {
+                    reason: format!("singular collocation matrix (theta = {}, n = {n})", readable_f64(self.theta)),
+                });
+            }
+            let c = b[i] / d;
+            b[i] = c;
+            for (bj, u) in b[..i].iter_mut().zip(&f[i * dim..i * dim + i]) {
+                *bj -= c * u;
+            }
+        }
+        let k = b[n];
+        b.truncate(n);
+        Ok((b, k))
     }
 
     /// sum_k W_k G_k h(t_k) over the rule of omega (a functional of p = omega G).

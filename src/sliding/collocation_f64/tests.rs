@@ -475,3 +475,31 @@ fn g_on_the_fixed_samples_is_g_at_to_the_bit() {
     // samples' interior Chebyshev–Lobatto points to the bit: the node path is exercised.
     assert_eq!(on_node, 66);
 }
+
+/// `Collocation::solve` (the substitutions on the stored factors) gives nalgebra's `LU::solve`
+/// of the same matrix to the bit, for both signs of theta, theta = 0 and several sizes.
+#[test]
+fn the_substitutions_are_nalgebras_to_the_bit() {
+    use super::operator::Collocation;
+    use nalgebra::{DMatrix, DVector};
+    for (theta, n) in [(-0.0272, 16), (-0.0272, 24), (0.0, 9), (0.148, 40), (0.4, 67)] {
+        let col = Collocation::new(theta, n).unwrap();
+        let (rule, xs) = (&col.rule, &col.colloc);
+        let m = DMatrix::<f64>::from_fn(n + 1, n + 1, |r, k| {
+            if k == n {
+                1.0
+            } else {
+                rule.weights[k] / (PI * (xs[r] - rule.nodes[k]))
+            }
+        });
+        let lu = m.lu();
+        for seed in 0..5 {
+            let rhs: Vec<f64> = (0..=n).map(|i| ((i * 7 + seed * 13) as f64 * 0.37).sin() + 0.1 * i as f64).collect();
+            let want = lu.solve(&DVector::from_vec(rhs.clone())).unwrap();
+            let (g, k) = col.solve(&rhs).unwrap();
+            for (a, b) in g.iter().chain([&k]).zip(want.iter()) {
+                assert_eq!(a.to_bits(), b.to_bits(), "theta = {theta}, n = {n}: {a} vs {b}");
+            }
+        }
+    }
+}
