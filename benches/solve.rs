@@ -2,11 +2,11 @@
 //! - `f64_solve`: one verified f64 solve of Problem 1 (`solve_sliding_f64`: the scene
 //!   `scenes/sliding_friction.toml`, periodic parabola, mu = 0.3, P2 = 1/100, lambda = 0.2497,
 //!   automatic nodes (16) for >= 13 digits), which includes its check run with n + 8 nodes, the
-//!   p >= 0 samples, the gap integration of the physicality criterion and p on the 201-point grid
-//!   of max p (both runs); collocation operators cached per thread as in `solve`; `_prepared`:
+//!   p >= 0 samples, the gap integration of the physicality criterion and p at the 86 fixed samples
+//!   in u of max p and the pressure difference (both runs); collocation operators cached per thread as in `solve`; `_prepared`:
 //!   the same with the f64 parameters derived once (`solve_sliding_f64_with`), and
 //!   `parameters_only` what that leaves out (`SlidingParamsF64::new`: kappa and beta in exact
-//!   rational arithmetic, every input rounded once);
+//!   rational arithmetic, in i128 parts for the scene's small decimals, every input rounded once);
 //! - `series_eval`: one evaluation of the derived l/l_s of the same problem through Lambda^16 at
 //!   Lambda (coefficients prepared once, `numerics::evaluate::PreparedSeries`), in f64 and in MPFR at
 //!   30 digits (`precision_for(30)` = 132 bits);

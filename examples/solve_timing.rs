@@ -1,6 +1,7 @@
 //! In-process timing of one f64 solve of Problem 1 and its parts (issue 14):
-//! `cargo run --release --example solve_timing [-- REPEATS [params|mpfr|dense]]` (default: the
-//! f64 solve of `scenes/sliding_friction.toml`, its parameters and its candidate search apart;
+//! `cargo run --release --example solve_timing [-- REPEATS [params|prepared|mpfr|dense]]` (default:
+//! the f64 solve of `scenes/sliding_friction.toml`, its parameters and its candidate search apart;
+//! `prepared`: only the solve with the parameters derived once;
 //! `mpfr`: the verified MPFR solve of `scenes/sinusoid_friction.toml` at 30 digits; `dense`: the
 //! machine's flop rate and the LU steps at the f64 solve's sizes, its lower bound). For `perf
 //! record`.
@@ -14,13 +15,22 @@ use periodic_contact::sliding::collocation_f64::{
 use std::hint::black_box;
 use std::time::Instant;
 
+/// Times `reps` calls in 100 batches and prints the fastest batch's and the median batch's time
+/// per call (on a shared machine the fastest batch is the least disturbed one).
 fn time(name: &str, reps: usize, mut f: impl FnMut()) {
     f();
-    let t = Instant::now();
-    for _ in 0..reps {
-        f();
-    }
-    println!("{name}: {:.2} us", t.elapsed().as_secs_f64() * 1e6 / reps as f64);
+    let per = (reps / 100).max(1);
+    let mut batches: Vec<f64> = (0..100)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..per {
+                f();
+            }
+            t.elapsed().as_secs_f64() * 1e6 / per as f64
+        })
+        .collect();
+    batches.sort_by(f64::total_cmp);
+    println!("{name}: {:.2} us (fastest of 100 batches of {per}; median {:.2} us)", batches[0], batches[50]);
 }
 
 fn main() {
@@ -65,6 +75,14 @@ fn main() {
                 black_box(black_box(&mat).clone().lu());
             });
         }
+        return;
+    }
+    if only == "prepared" {
+        // Only the solve with the parameters derived once (for `perf record`).
+        let prm = SlidingParamsF64::new(&p).expect("parameters");
+        time("solve_sliding_f64_with (parameters derived once)", reps, || {
+            black_box(solve_sliding_f64_with(black_box(&p), &prm, &[], &opts).unwrap());
+        });
         return;
     }
     if only == "params" {

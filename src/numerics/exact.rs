@@ -28,9 +28,99 @@ pub fn to_float(q: &BigRational, prec: u32) -> Float {
 
 /// Rounds an exact rational once to the nearest `f64` (correctly rounded through MPFR).
 /// Returns `None` when the value is outside the finite `f64` range.
+///
+/// Numerator and denominator of at most 53 bits (every decimal input of a scene with up to 15
+/// digits) take the fast path [`ratio_to_f64`]: both are exact `f64`, and IEEE division rounds
+/// their quotient correctly to nearest-even, as MPFR does, so the result is the same (test
+/// `the_fast_path_rounds_as_mpfr`).
 pub fn to_f64(q: &BigRational) -> Option<f64> {
+    use num_traits::ToPrimitive;
+    if let (Some(n), Some(d)) = (q.numer().to_i128(), q.denom().to_i128()) {
+        if let Some(v) = ratio_to_f64(n, d) {
+            return Some(v);
+        }
+    }
     let v = Float::with_val(53, to_rational(q)).to_f64();
     v.is_finite().then_some(v)
+}
+
+/// n/d correctly rounded to the nearest `f64` when |n| and d (d > 0) are at most 2^53, so both
+/// are exact doubles and one IEEE division rounds once (the quotient's magnitude is then 0 or at
+/// least 2^-53, far from the subnormal range); `None` otherwise.
+pub fn ratio_to_f64(n: i128, d: i128) -> Option<f64> {
+    const EXACT: i128 = 1 << 53;
+    (d > 0 && d <= EXACT && n.abs() <= EXACT).then(|| n as f64 / d as f64)
+}
+
+/// An exact rational n/d (d > 0, reduced) in i128 parts: exact arithmetic that returns `None`
+/// where a part would overflow, for inputs with small numerators and denominators (a scene's
+/// decimals), where [`BigRational`]'s operations cost about 0.5 us each. Any result is the same
+/// reduced rational the big-rational arithmetic gives (test `small_rationals_match_big_ones`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SmallRational {
+    num: i128,
+    den: i128,
+}
+
+fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+impl SmallRational {
+    /// n/d reduced (d != 0; `None` for d = 0 or an overflow of the sign change).
+    pub fn new(n: i128, d: i128) -> Option<Self> {
+        if d == 0 {
+            return None;
+        }
+        let g = gcd_u128(n.unsigned_abs(), d.unsigned_abs()) as i128;
+        let (n, d) = if d < 0 { (n.checked_neg()?, d.checked_neg()?) } else { (n, d) };
+        Some(SmallRational { num: n / g, den: d / g })
+    }
+
+    /// The integer n.
+    pub fn integer(n: i128) -> Self {
+        SmallRational { num: n, den: 1 }
+    }
+
+    /// `q` when its numerator and denominator fit in i128.
+    pub fn of(q: &BigRational) -> Option<Self> {
+        use num_traits::ToPrimitive;
+        Some(SmallRational { num: q.numer().to_i128()?, den: q.denom().to_i128()? })
+    }
+
+    /// self + o.
+    pub fn add(self, o: Self) -> Option<Self> {
+        let n = self.num.checked_mul(o.den)?.checked_add(o.num.checked_mul(self.den)?)?;
+        Self::new(n, self.den.checked_mul(o.den)?)
+    }
+
+    /// self - o.
+    pub fn sub(self, o: Self) -> Option<Self> {
+        self.add(SmallRational { num: o.num.checked_neg()?, den: o.den })
+    }
+
+    /// self * o.
+    pub fn mul(self, o: Self) -> Option<Self> {
+        Self::new(self.num.checked_mul(o.num)?, self.den.checked_mul(o.den)?)
+    }
+
+    /// self / o (`None` for o = 0).
+    pub fn div(self, o: Self) -> Option<Self> {
+        Self::new(self.num.checked_mul(o.den)?, self.den.checked_mul(o.num)?)
+    }
+
+    /// The same value as a [`BigRational`].
+    pub fn to_big(self) -> BigRational {
+        BigRational::new_raw(self.num.into(), self.den.into())
+    }
+
+    /// Rounded once to the nearest `f64` ([`to_f64`]).
+    pub fn to_f64(self) -> Option<f64> {
+        ratio_to_f64(self.num, self.den).or_else(|| to_f64(&self.to_big()))
+    }
 }
 
 #[cfg(test)]
@@ -47,6 +137,66 @@ mod tests {
         // Round to nearest: |err| <= ulp/2 = 2^(-2-200) for a value in [1/4, 1/2).
         assert!(err <= Float::with_val(53, Float::i_exp(1, -202)));
         assert_eq!(to_f64(&q), Some(1.0 / 3.0));
+    }
+
+    /// MPFR's rounding of n/d, the reference of the fast path.
+    fn mpfr_f64(n: i128, d: i128) -> f64 {
+        let q = Rational::from((Integer::from(n), Integer::from(d)));
+        Float::with_val(53, q).to_f64()
+    }
+
+    #[test]
+    fn the_fast_path_rounds_as_mpfr() {
+        // Decimals, ties and near-ties of the last bit, and the largest exact parts.
+        let e = 1i128 << 53;
+        let mut cases = vec![(3, 10), (-1, 3), (0, 7), (1, 1), (e, 3), (-e, e - 1), (e - 1, e), (1, e), (e, 1)];
+        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+        for _ in 0..20000 {
+            // xorshift: numerators and denominators of every size up to 2^53.
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let bits_n = 1 + (x % 53) as u32;
+            let bits_d = 1 + ((x >> 8) % 53) as u32;
+            let n = ((x >> 11) as i128) & ((1i128 << bits_n) - 1);
+            let d = (((x >> 3) as i128) & ((1i128 << bits_d) - 1)).max(1);
+            cases.push((if x & 1 == 1 { -n } else { n }, d));
+        }
+        for (n, d) in cases {
+            let fast = ratio_to_f64(n, d).expect("parts of at most 53 bits");
+            assert_eq!(fast.to_bits(), mpfr_f64(n, d).to_bits(), "{n}/{d}");
+            let q = BigRational::new(BigInt::from(n), BigInt::from(d));
+            assert_eq!(to_f64(&q).map(f64::to_bits), Some(mpfr_f64(n, d).to_bits()), "{n}/{d}");
+        }
+        // Beyond 53 bits the fast path declines and to_f64 goes through MPFR.
+        assert_eq!(ratio_to_f64(e + 1, 3), None);
+        let q = BigRational::new(BigInt::from(e + 1), BigInt::from(3));
+        assert_eq!(to_f64(&q), Some(mpfr_f64(e + 1, 3)));
+    }
+
+    #[test]
+    fn small_rationals_match_big_ones() {
+        let vals = [(3, 10), (-7, 4), (0, 1), (1, 3), (22, 7), (-1, 1000000007), (123456789, 1000000)];
+        let big = |(n, d): (i128, i128)| BigRational::new(BigInt::from(n), BigInt::from(d));
+        for &a in &vals {
+            for &b in &vals {
+                let (sa, sb) = (SmallRational::new(a.0, a.1).unwrap(), SmallRational::new(b.0, b.1).unwrap());
+                assert_eq!(sa.add(sb).unwrap().to_big(), big(a) + big(b));
+                assert_eq!(sa.sub(sb).unwrap().to_big(), big(a) - big(b));
+                assert_eq!(sa.mul(sb).unwrap().to_big(), big(a) * big(b));
+                if b.0 != 0 {
+                    assert_eq!(sa.div(sb).unwrap().to_big(), big(a) / big(b));
+                } else {
+                    assert_eq!(sa.div(sb), None);
+                }
+                assert_eq!(SmallRational::of(&big(a)), Some(sa));
+                assert_eq!(sa.to_f64(), to_f64(&big(a)));
+            }
+        }
+        // Overflow is None, not a wrong value.
+        let huge = SmallRational::integer(i128::MAX / 2);
+        assert_eq!(huge.mul(huge), None);
+        assert_eq!(SmallRational::new(1, 0), None);
     }
 
     #[test]

@@ -22,7 +22,7 @@ pub use super::profile::{
 };
 use crate::error::Error;
 use crate::model::{Convention, Exact, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem};
-use crate::numerics::exact::{to_f64, to_float};
+use crate::numerics::exact::{to_f64, to_float, SmallRational};
 use rug::float::Constant;
 use rug::Float;
 use std::f64::consts::PI;
@@ -327,13 +327,34 @@ fn check_theta(theta_abs: f64, theta_text: String, problem: &SlidingProblem) -> 
     Ok(())
 }
 
+/// beta = (1 - 2 nu)/(2 (1 - nu)) and kappa = E* cW/2 - beta mu rounded once to f64 from their
+/// exact values ([`crate::model::Material::beta`], [`SlidingProblem::kappa`]), computed in i128
+/// rationals ([`SmallRational`]) when the inputs' parts are small enough (every shipped scene):
+/// the same exact values, so the same f64, at a tenth of the big-rational cost. `None` (an
+/// overflow, or a value outside f64) leaves it to the big-rational path and its errors.
+fn small_beta_kappa(problem: &SlidingProblem) -> Option<(f64, f64)> {
+    let m = problem.material();
+    let (one, two) = (SmallRational::integer(1), SmallRational::integer(2));
+    let nu = SmallRational::of(m.poisson_ratio())?;
+    let beta = one.sub(two.mul(nu)?)?.div(two.mul(one.sub(nu)?)?)?;
+    let e_star = SmallRational::of(m.contact_modulus())?;
+    let kappa = e_star
+        .mul(SmallRational::of(problem.wear())?)?
+        .div(two)?
+        .sub(beta.mul(SmallRational::of(problem.friction())?)?)?;
+    Some((beta.to_f64()?, kappa.to_f64()?))
+}
+
 impl SlidingParamsF64 {
     /// Rounds the exact inputs once to `f64` and derives kappa, theta and k. Errors when an input
     /// is outside the `f64` range or |theta| is within [`THETA_MARGIN`] of 1/2.
     pub fn new(problem: &SlidingProblem) -> Result<Self, Error> {
         let m = problem.material();
         let e_star = f64_of(m.contact_modulus(), "contact_modulus", false)?;
-        let beta = f64_of(&m.beta(), "beta", true)?;
+        let (beta, kappa) = match small_beta_kappa(problem) {
+            Some(v) => v,
+            None => (f64_of(&m.beta(), "beta", true)?, f64_of(&problem.kappa(), "kappa", true)?),
+        };
         let mu = f64_of(problem.friction(), "friction", true)?;
         let tau0 = f64_of(problem.adhesive_friction(), "adhesive_friction", true)?;
         let wear = f64_of(problem.wear(), "wear", true)?;
@@ -355,7 +376,6 @@ impl SlidingParamsF64 {
             }
             PunchShape::Circular { radius } => ShapeF64::Circular { r: f64_of(radius, "radius", false)? },
         };
-        let kappa = f64_of(&problem.kappa(), "kappa", true)?;
         let theta = theta_f64(kappa);
         check_theta(theta.abs(), crate::numerics::accuracy::readable_f64(theta), problem)?;
         let target = match problem.load() {
@@ -601,6 +621,29 @@ mod tests {
             .normal_load(q("0.05"))
             .build()
             .unwrap()
+    }
+
+    /// The i128 path of beta and kappa gives the big-rational path's values to the bit, and
+    /// declines (`None`) where a part overflows, leaving the same values to the big path.
+    #[test]
+    fn small_beta_and_kappa_are_the_exact_ones_rounded() {
+        let big = |p: &SlidingProblem| (to_f64(&p.material().beta()).unwrap(), to_f64(&p.kappa()).unwrap());
+        let bits = |(a, b): (f64, f64)| (a.to_bits(), b.to_bits());
+        for (mu, tau0, cw, e) in [
+            ("0.4", "0.01", "0.02", "2"),
+            ("0.3", "0", "0", "1"),
+            ("0", "0", "0.1234567890123", "210000"),
+            ("1.23456789012345", "0", "7e-13", "3.3e11"),
+            ("1/3", "0", "2/7", "22/7"),
+        ] {
+            let p = problem(mu, tau0, cw, e);
+            assert_eq!(small_beta_kappa(&p).map(bits), Some(bits(big(&p))), "{mu} {cw} {e}");
+        }
+        // Parts beyond i128 (a 50-digit wear): the big-rational path, same parameters.
+        let p = problem("0.3", "0", "0.00000000000000000000000000000000000000000000000001", "1");
+        assert_eq!(small_beta_kappa(&p), None);
+        let f = SlidingParamsF64::new(&p).unwrap();
+        assert_eq!(bits((f.beta, f.kappa)), bits(big(&p)));
     }
 
     #[test]

@@ -7,7 +7,7 @@ use super::error::{Result, SlidingF64Error};
 use super::general::{map_of, profile_nodes, profile_size, profile_state, size_guess, size_of_half_length};
 use super::interpolant::State;
 use super::operator::{collocation, collocation_nodes};
-use super::parabola::{kuznetsov_guess, parabola_lambda, parabola_state};
+use super::parabola::{kuznetsov_guess, parabola_lambda, parabola_state, periodic_parabola_state};
 use super::sinusoid::{
     line_circle, refine_sinusoid_lambda, sinusoid_bases, sinusoid_scan, sinusoid_state, sinusoid_xy_at,
 };
@@ -72,7 +72,7 @@ pub(super) fn state_of(
                 TargetF64::NormalLoad(p2) if resolve => parabola_lambda(prm, big_l, p2, n, Some(lam0))?,
                 TargetF64::NormalLoad(_) => lam0,
             };
-            parabola_state(&col, prm, Map::periodic(big_l, lam))
+            periodic_parabola_state(&col, prm, big_l, lam)
         }
         (Candidate::Sinusoid { lambda, branch }, ShapeF64::Sinusoidal { d }) => {
             let big_l = period(prm);

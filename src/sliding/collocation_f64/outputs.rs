@@ -1,7 +1,8 @@
 //! The outputs of a discrete state: lambda, l, a, b, c, P1 = mu P2 + 2 l tau0, P2,
-//! F_def = int p g' dx, p at the requested points and on a grid (for max p and the checks).
+//! F_def = int p g' dx, p at the requested points and at the operator's fixed samples in u (for
+//! max p, the check run's pressure difference and the physicality criterion's p >= 0).
 
-use super::interpolant::{g_at, State};
+use super::interpolant::{g_at, g_on_grid, State};
 use super::operator::Collocation;
 use super::profile::slope;
 use super::solution::PressurePoint;
@@ -20,14 +21,19 @@ pub(super) struct Outputs {
     pub(super) f_def: f64,
     pub(super) max_p: f64,
     pub(super) pressure: Vec<PressurePoint>,
-    /// p at the GRID midpoints xh = -1 + (2i + 1)/GRID.
+    /// G = p/omega at the samples of the operator's [`super::operator::SampleGrid`] (the
+    /// physicality criterion's pressure points, fixed in u).
+    pub(super) grid_g: Vec<f64>,
+    /// p = omega G there.
     pub(super) grid_p: Vec<f64>,
 }
 
-/// Points of the interior grid of p.
-const GRID: usize = 201;
-
-/// Evaluates the outputs of the state `st` at the requested points xh = (x - c)/l.
+/// Evaluates the outputs of the state `st` at the requested points xh = (x - c)/l. max p is the
+/// largest p over the fixed samples in u and the requested points: the samples are the ones
+/// the MPFR method takes its max p over
+/// ([`crate::sliding::reduction_mpfr::physical::max_pressure`]), 68 Chebyshev–Lobatto points
+/// (spacing at most pi/67 in the angle) and 18 next to the ends, so it is the sampled maximum
+/// (the scale of p's accuracy), not the interpolant's maximum to full accuracy.
 pub(super) fn outputs(col: &Collocation, prm: &SlidingParamsF64, st: &State, points: &[f64]) -> Outputs {
     let l = st.map.half_length();
     let c = st.c;
@@ -35,7 +41,8 @@ pub(super) fn outputs(col: &Collocation, prm: &SlidingParamsF64, st: &State, poi
         let u = st.map.u_of_xh(xh);
         omega(u, prm.theta) * g_at(col, st, u)
     };
-    let grid_p: Vec<f64> = (0..GRID).map(|i| p_at(-1.0 + 2.0 * (i as f64 + 0.5) / GRID as f64)).collect();
+    let grid_g = g_on_grid(col, st);
+    let grid_p: Vec<f64> = col.grid.omega.iter().zip(&grid_g).map(|(w, g)| w * g).collect();
     let pressure: Vec<PressurePoint> =
         points.iter().map(|&xh| PressurePoint { xh, x: c + l * xh, p: p_at(xh) }).collect();
     let max_p = grid_p.iter().chain(pressure.iter().map(|p| &p.p)).fold(0.0f64, |m, v| m.max(*v));
@@ -54,6 +61,7 @@ pub(super) fn outputs(col: &Collocation, prm: &SlidingParamsF64, st: &State, poi
         f_def,
         max_p,
         pressure,
+        grid_g,
         grid_p,
     }
 }

@@ -9,6 +9,7 @@ use super::tangent_map::{Map, LAMBDA_MAX};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::roots::{brent, Bracket};
 use crate::params::sliding::SlidingParamsF64;
+use std::cell::RefCell;
 use std::f64::consts::PI;
 
 /// Parabola at fixed lambda (or l): RHS E* k (x(u) - c); the constant E* k c is absorbed in K,
@@ -39,10 +40,72 @@ pub(super) fn kuznetsov_guess(prm: &SlidingParamsF64, big_l: f64, p2: f64) -> f6
 /// around it (a few Brent steps instead of a dozen).
 pub(super) fn parabola_lambda(prm: &SlidingParamsF64, big_l: f64, p2: f64, n: usize, near: Option<f64>) -> Result<f64> {
     let col = collocation(prm.theta, n)?;
+    // Every state evaluated, by lambda: Brent returns one of them (`remember_root`).
+    let seen = RefCell::new(Vec::new());
     let f = |lam: f64| -> Result<f64> {
         let st = parabola_state(&col, prm, Map::periodic(big_l, lam))?;
-        Ok((st.p2 / p2).ln())
+        let v = (st.p2 / p2).ln();
+        seen.borrow_mut().push((lam.to_bits(), st));
+        Ok(v)
     };
+    let lam = bracket_and_solve(prm, big_l, p2, n, near, f)?;
+    remember_root(prm, n, big_l, lam, seen.into_inner());
+    Ok(lam)
+}
+
+/// The state at the root of the last [`parabola_lambda`] on this thread, with everything it
+/// depends on (the parameters, n, L, lambda), so that [`periodic_parabola_state`] returns it
+/// instead of solving the same system again.
+struct RootState {
+    prm: SlidingParamsF64,
+    n: usize,
+    big_l: u64,
+    lambda: u64,
+    state: State,
+}
+
+thread_local! {
+    static ROOT: RefCell<Option<RootState>> = const { RefCell::new(None) };
+}
+
+fn remember_root(prm: &SlidingParamsF64, n: usize, big_l: f64, lam: f64, seen: Vec<(u64, State)>) {
+    let state = seen.into_iter().rev().find(|(bits, _)| *bits == lam.to_bits()).map(|(_, st)| st);
+    ROOT.with(|r| {
+        *r.borrow_mut() =
+            state.map(|state| RootState { prm: prm.clone(), n, big_l: big_l.to_bits(), lambda: lam.to_bits(), state })
+    });
+}
+
+/// [`parabola_state`] of the periodic parabola at lambda with `col` = the operator of
+/// (prm.theta, n): the remembered root state when it is this one (the same numbers: the same
+/// function of the same inputs), else computed.
+pub(super) fn periodic_parabola_state(
+    col: &Collocation,
+    prm: &SlidingParamsF64,
+    big_l: f64,
+    lam: f64,
+) -> Result<State> {
+    let hit = ROOT.with(|r| {
+        r.borrow().as_ref().and_then(|m| {
+            (m.n == col.n() && m.big_l == big_l.to_bits() && m.lambda == lam.to_bits() && m.prm == *prm)
+                .then(|| m.state.clone())
+        })
+    });
+    match hit {
+        Some(st) => Ok(st),
+        None => parabola_state(col, prm, Map::periodic(big_l, lam)),
+    }
+}
+
+/// The bracket and Brent's method of [`parabola_lambda`] on f = ln(P2(lambda)/P2).
+fn bracket_and_solve(
+    prm: &SlidingParamsF64,
+    big_l: f64,
+    p2: f64,
+    n: usize,
+    near: Option<f64>,
+    f: impl Fn(f64) -> Result<f64>,
+) -> Result<f64> {
     let (guess, width) = match near {
         Some(l) => (l, 1e-7),
         None => (kuznetsov_guess(prm, big_l, p2), 0.05),
@@ -64,13 +127,14 @@ pub(super) fn parabola_lambda(prm: &SlidingParamsF64, big_l: f64, p2: f64, n: us
             return Err(SlidingF64Error::NoConvergence { reason: "could not bracket lambda from below".into() });
         }
     }
-    let fraction = readable_f64(2.0 * LAMBDA_MAX / PI);
+    let fraction = || readable_f64(2.0 * LAMBDA_MAX / PI);
     while fhi < 0.0 {
         if hi >= LAMBDA_MAX * (1.0 - 1e-12) {
             return Err(SlidingF64Error::NoConvergence {
                 reason: format!(
-                    "the load P2 = {} needs a contact fraction above {fraction} (or more than {n} nodes; for theta != 0 the contact may also leave the cell (-L/2, L/2))",
-                    readable_f64(p2)
+                    "the load P2 = {} needs a contact fraction above {} (or more than {n} nodes; for theta != 0 the contact may also leave the cell (-L/2, L/2))",
+                    readable_f64(p2),
+                    fraction()
                 ),
             });
         }
@@ -81,8 +145,9 @@ pub(super) fn parabola_lambda(prm: &SlidingParamsF64, big_l: f64, p2: f64, n: us
         if next <= hi {
             return Err(SlidingF64Error::NoConvergence {
                 reason: format!(
-                    "could not bracket lambda for P2 = {} below the contact fraction {fraction}",
-                    readable_f64(p2)
+                    "could not bracket lambda for P2 = {} below the contact fraction {}",
+                    readable_f64(p2),
+                    fraction()
                 ),
             });
         }

@@ -42,7 +42,8 @@ pub struct PressurePoint {
 pub struct AccuracyEstimate {
     /// max(|da|, |db|, |dc|)/l.
     pub geometry: f64,
-    /// max |dp| / max p over the requested points and an interior grid.
+    /// max |dp| / max p over the requested points and the 86 fixed samples in u of the
+    /// physicality criterion's p >= 0 (`outputs.rs`).
     pub pressure: f64,
     /// max(|dP1|, |dP2|)/P2.
     pub load: f64,
@@ -84,7 +85,8 @@ pub enum Quantity {
     P2,
     /// F_def.
     FDef,
-    /// p(x): the largest difference over the requested points and an interior grid.
+    /// p(x): the largest difference over the requested points and the 86 fixed samples in u
+    /// (`outputs.rs`).
     Pressure,
 }
 
@@ -170,7 +172,8 @@ pub struct SlidingSolutionF64 {
     pub wear_per_distance: Option<f64>,
     /// Mean wear rate cW V P2/L when the speed V is given (and L finite).
     pub wear_rate: Option<f64>,
-    /// Largest pressure on the contact (sampled).
+    /// Largest pressure over the requested points and the 86 fixed samples in u of the
+    /// physicality criterion's p >= 0, the MPFR method's samples of max p (`outputs.rs`).
     pub max_pressure: f64,
     /// What the shared physicality criterion reports beside the solution: the most negative gap
     /// (0 when none), the closure defect, the edge step and a warning in `paper`

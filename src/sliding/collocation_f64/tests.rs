@@ -435,3 +435,71 @@ fn digits_per_quantity_follow_the_accuracy_rule() {
     assert_eq!(s.accuracy.geometry, geometry);
     assert!(d.min() >= 12.0 && d.min() <= 15.0, "{d:?}");
 }
+
+/// G at the operator's fixed samples from the precomputed weights (`interpolant::g_on_grid`) is
+/// `g_at` there to the bit, for every kind of right-hand side (parabola periodic and single,
+/// sinusoid, polynomial) and a node count whose Chebyshev-2 nodes (theta = 0, n + 1 = 67) fall on
+/// the samples' Chebyshev–Lobatto points; and omega there is `omega(u, theta)`.
+#[test]
+fn g_on_the_fixed_samples_is_g_at_to_the_bit() {
+    use super::candidates::state_of;
+    use super::interpolant::{g_at, g_on_grid};
+    use super::operator::{collocation, GridPoint};
+    let cases = [
+        problem(r(3, 10), Some(r(1, 1)), parabola(r(1, 1)), r(3, 10), r(0, 1), r(0, 1), load(r(1, 100))),
+        problem(r(1, 4), None, parabola(r(1, 1)), r(1, 5), r(1, 50), r(1, 10), load(r(1, 100))),
+        problem(r(3, 10), Some(r(1, 1)), sinusoid(r(1, 20)), r(1, 2), r(0, 1), r(0, 1), load(r(1, 200))),
+        problem(r(0, 1), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), load(r(1, 100))),
+    ];
+    let opts = SolverOptions::default();
+    let mut on_node = 0;
+    for (i, pb) in cases.iter().enumerate() {
+        let prm = SlidingParamsF64::new(pb).unwrap();
+        for (cand, n) in candidates(&prm, prm.target, &opts).unwrap() {
+            // The last case (theta = 0) at 66 nodes: its nodes are -cos(pi k/67) up to rounding.
+            for n in [n, if i == 3 { 66 } else { n + 5 }] {
+                let col = collocation(prm.theta, n).unwrap();
+                let st = state_of(&prm, prm.target, cand, n, false).unwrap();
+                let g = g_on_grid(&col, &st);
+                assert_eq!(g.len(), 86);
+                for (j, &u) in col.grid.u.iter().enumerate() {
+                    let direct = g_at(&col, &st, u);
+                    assert_eq!(g[j].to_bits(), direct.to_bits(), "case {i}, n = {n}, u = {u}: {} vs {direct}", g[j]);
+                    assert_eq!(col.grid.omega[j].to_bits(), omega(u, prm.theta).to_bits());
+                    on_node += matches!(col.grid.at[j], GridPoint::Node(_)) as usize;
+                }
+            }
+        }
+    }
+    // At theta = 0 the rule is the closed-form Gauss–Chebyshev one, whose 66 nodes are the
+    // samples' interior Chebyshev–Lobatto points to the bit: the node path is exercised.
+    assert_eq!(on_node, 66);
+}
+
+/// `Collocation::solve` (the substitutions on the stored factors) gives nalgebra's `LU::solve`
+/// of the same matrix to the bit, for both signs of theta, theta = 0 and several sizes.
+#[test]
+fn the_substitutions_are_nalgebras_to_the_bit() {
+    use super::operator::Collocation;
+    use nalgebra::{DMatrix, DVector};
+    for (theta, n) in [(-0.0272, 16), (-0.0272, 24), (0.0, 9), (0.148, 40), (0.4, 67)] {
+        let col = Collocation::new(theta, n).unwrap();
+        let (rule, xs) = (&col.rule, &col.colloc);
+        let m = DMatrix::<f64>::from_fn(n + 1, n + 1, |r, k| {
+            if k == n {
+                1.0
+            } else {
+                rule.weights[k] / (PI * (xs[r] - rule.nodes[k]))
+            }
+        });
+        let lu = m.lu();
+        for seed in 0..5 {
+            let rhs: Vec<f64> = (0..=n).map(|i| ((i * 7 + seed * 13) as f64 * 0.37).sin() + 0.1 * i as f64).collect();
+            let want = lu.solve(&DVector::from_vec(rhs.clone())).unwrap();
+            let (g, k) = col.solve(&rhs).unwrap();
+            for (a, b) in g.iter().chain([&k]).zip(want.iter()) {
+                assert_eq!(a.to_bits(), b.to_bits(), "theta = {theta}, n = {n}: {a} vs {b}");
+            }
+        }
+    }
+}

@@ -42,6 +42,12 @@ use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, GaussRule};
 pub trait ContactFunctions {
     /// p(u)/omega(u) at the tangent variable u in [-1, 1] (its sign is the sign of p).
     fn pressure_factor(&self, u: f64) -> f64;
+    /// p/omega at each of `us` (the criterion passes its samples, [`pressure_points`]): by
+    /// default [`Self::pressure_factor`] at each; a method that already has the values at these
+    /// points (the f64 method evaluates its outputs there) returns them, the same numbers.
+    fn pressure_factors(&self, us: &[f64]) -> Vec<f64> {
+        us.iter().map(|&u| self.pressure_factor(u)).collect()
+    }
     /// The slope of the (worn) surface that the gap is measured to, w = g'_row(x) - h'(x), at
     /// x - c = `xi` off the contact (|xi| > l, up to the middle of the free arc): smooth there
     /// (it is the elastic response plus constants), with the surface convention's constant K
@@ -378,7 +384,7 @@ pub fn assess(f: &impl ContactFunctions, setting: &Setting) -> Result<Assessment
     // 2. p >= 0.
     static US: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
     let us = US.get_or_init(pressure_points);
-    let vals: Vec<f64> = us.iter().map(|&u| f.pressure_factor(u)).collect();
+    let vals = f.pressure_factors(us);
     let max_pressure_factor = vals.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     if let Some((u, v)) = us.iter().zip(&vals).find(|(_, v)| **v < -setting.pressure_tol * max_pressure_factor) {
         return Err(Refusal::NegativePressure { u: *u, relative: v / max_pressure_factor });
