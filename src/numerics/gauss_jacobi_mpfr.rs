@@ -37,6 +37,10 @@ pub const GUARD_BITS: u32 = 32;
 /// which the recurrence's rounding leaves about 100).
 const DD_BITS: u32 = 116;
 
+/// Largest precision whose rules are computed wholly in double-double ([`dd_rule`]); the
+/// locating stage of `sliding::reduction_mpfr` works at 64 bits.
+const DD_ONLY_PREC: u32 = 64;
+
 /// Largest number of nodes a rule may have (the f64 start and the O(n^2) Newton phase are
 /// the limits; beyond this the caller should change method).
 pub const MAX_NODES: usize = 4000;
@@ -354,6 +358,21 @@ impl EvalDd {
         EvalDd { a: v(&e.a), b: v(&e.b), ib: v(&e.ib), shift: Dd::of(&e.shift), c2: Dd::of(&e.c2) }
     }
 
+    /// p_n(x), p_n'(x), p_{n-1}(x) as `Eval::run` computes them, in double-double.
+    fn run(&self, x: Dd) -> (Dd, Dd, Dd) {
+        let n = self.a.len();
+        let (mut pm, mut p) = (Dd(0.0, 0.0), Dd(1.0, 0.0));
+        for k in 0..n {
+            let t = x.sub(self.a[k]).mul(p).sub(self.b[k].mul(pm)).mul(self.ib[k + 1]);
+            pm = p;
+            p = t;
+        }
+        let c1 = self.shift.sub(x).mul(Dd(n as f64, 0.0));
+        let num = c1.mul(p).add(self.c2.mul(pm));
+        let den = Dd(1.0, 0.0).sub(x).mul(x.add(Dd(1.0, 0.0)));
+        (p, num.div(den), pm)
+    }
+
     /// The Newton step p_n(x)/p_n'(x), as `Eval::run` computes it.
     fn step(&self, x: Dd) -> Dd {
         let n = self.a.len();
@@ -418,6 +437,19 @@ fn chebyshev_rule(alpha: &Float, n: usize, prec: u32) -> GaussJacobiRule {
 
 /// The rule by Newton's method from the f64 eigenvalues (module doc), for any exponents.
 fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<GaussJacobiRule, QuadratureError> {
+    newton_rule_route(alpha, beta, n, prec, prec <= DD_ONLY_PREC)
+}
+
+/// [`newton_rule`] with the route chosen: `dd_only`, every pass in double-double ([`dd_rule`]);
+/// otherwise the precision ladder (a double-double first rung, MPFR passes up to the working
+/// precision).
+fn newton_rule_route(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+    dd_only: bool,
+) -> Result<GaussJacobiRule, QuadratureError> {
     let wp = prec + GUARD_BITS + (usize::BITS - n.leading_zeros());
     let (a, b) = recurrence(alpha, beta, n, wp);
     let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
@@ -426,6 +458,11 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
         n,
         why: "f64 eigenvalues (implicit QL) did not converge".into(),
     })?;
+
+    let mu0 = jacobi_mu0(alpha, beta, wp);
+    if dd_only {
+        return dd_rule(alpha, beta, (&a, &b), &start, &mu0, prec, wp);
+    }
 
     // Precision ladder for Newton: each step roughly doubles the correct bits from ~50. A first
     // rung of at most DD_BITS bits is a double-double pass.
@@ -449,7 +486,6 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
     };
     let get = |pb: u32| &evals.iter().find(|(q, _)| *q == pb).expect("ladder precision present").1;
     let dd = dd_first.then(|| EvalDd::new(get(wp)));
-    let mu0 = jacobi_mu0(alpha, beta, wp);
     let tol = Float::with_val(53, Float::i_exp(1, -(wp as i32) + 4));
 
     let mut nodes = Vec::with_capacity(n);
@@ -512,6 +548,80 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
         let w = Float::with_val(wp, &mu0 / &sum);
         nodes.push(Float::with_val(prec, &x));
         weights.push(Float::with_val(prec, &w));
+    }
+    for i in 1..n {
+        if nodes[i] <= nodes[i - 1] {
+            return Err(QuadratureError::NoConvergence { n, why: format!("nodes {} and {i} not increasing", i - 1) });
+        }
+    }
+    if nodes[0] <= -1i32 || nodes[n - 1] >= 1u32 {
+        return Err(QuadratureError::NoConvergence { n, why: "a node left (-1, 1)".into() });
+    }
+    Ok(GaussJacobiRule { alpha: alpha.clone(), beta: beta.clone(), nodes, weights, prec })
+}
+
+/// The rule of [`newton_rule`] for `prec` <= [`DD_ONLY_PREC`], every Newton pass in double-double
+/// (about 100 correct bits, `wp` ~ 100-108 here) instead of the MPFR passes at `wp` bits: from the f64
+/// start `start`, passes until the correction is below 2^-(prec + 28) (two, as the ladder at `wp`:
+/// one to ~100 bits, one whose negligible correction yields p_n' and p_{n-1} for the weight), the
+/// weight mu0 / (b_n p_n' p_{n-1}) as in the MPFR route; then each node and weight rounded to
+/// `prec` bits. Both routes carry more than 30 bits beyond `prec`, so both round to the same
+/// `prec`-bit numbers except when a value lies within about 2^-95 of a rounding boundary (test
+/// `double_double_route_rounds_as_the_mpfr_route`: bit for bit, the locating stage's rules of
+/// `sliding::reduction_mpfr` among them). A Newton pass in double-double costs about a quarter
+/// of one in MPFR at 104 bits: the 192-node rule of the sinusoid's bracket refinement took 8.7 ms
+/// of a 30 ms cold solve (`GJ` timing of each built rule, a temporary trace).
+fn dd_rule(
+    alpha: &Float,
+    beta: &Float,
+    (a, b): (&[Float], &[Float]),
+    start: &[f64],
+    mu0: &Float,
+    prec: u32,
+    wp: u32,
+) -> Result<GaussJacobiRule, QuadratureError> {
+    let n = start.len();
+    let dd = EvalDd::new(&Eval::new(alpha, beta, a, b, wp));
+    let (mu0, bn) = (Dd::of(mu0), Dd::of(&b[n]));
+    let tol = 2f64.powi(-(prec as i32) - 28);
+    // hi + lo rounded once to `prec` bits (hi + lo is exact at 2 x 64 + 64 bits for |lo| <= ulp(hi)).
+    let round = |v: Dd| {
+        let mut f = Float::with_val(192, v.0);
+        f += v.1;
+        Float::with_val(prec, &f)
+    };
+    let mut nodes = Vec::with_capacity(n);
+    let mut weights = Vec::with_capacity(n);
+    for (i, &x0) in start.iter().enumerate() {
+        let mut x = Dd(x0, 0.0);
+        let mut last = None;
+        for pass in 0..8 {
+            let (p, dp, pm) = dd.run(x);
+            let dx = p.div(dp);
+            if !(dx.0.is_finite() && dx.1.is_finite()) || dp.0 == 0.0 {
+                return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
+            }
+            x = x.sub(dx);
+            if pass >= 1 && dx.0.abs() <= tol {
+                last = Some((dp, pm));
+                break;
+            }
+        }
+        let Some((dp, pm)) = last else {
+            return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
+        };
+        if (x.0 - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
+            return Err(QuadratureError::NoConvergence {
+                n,
+                why: format!("Newton drifted from its start at node {i}"),
+            });
+        }
+        let sum = dp.mul(pm).mul(bn);
+        if !(sum.0 > 0.0) {
+            return Err(QuadratureError::NoConvergence { n, why: format!("non-positive Christoffel sum at node {i}") });
+        }
+        nodes.push(round(x));
+        weights.push(round(mu0.div(sum)));
     }
     for i in 1..n {
         if nodes[i] <= nodes[i - 1] {
@@ -701,6 +811,42 @@ mod tests {
                 assert!(dw <= Float::with_val(prec, ulp(&r.weights[i]) * 2u32), "{al} {be} {n} {prec} weight {i}");
             }
         }
+    }
+
+    #[test]
+    fn double_double_route_rounds_as_the_mpfr_route() {
+        // Bit for bit at 64 bits (and below): the locating stage's exponents of the shipped
+        // sinusoid scenes (theta = -0.04517 for sinusoid_friction, 0 handled in closed form),
+        // both weights 1/omega and omega, generic and extreme exponents, n up to 1024.
+        let theta = -0.045_167_235_300_866_55_f64;
+        let cases = [
+            (theta - 0.5, -theta - 0.5),
+            (0.5 - theta, 0.5 + theta),
+            (-0.9, -0.1),
+            (0.7, 0.3),
+            (2.5, -0.75),
+            (-0.99, 0.4),
+            (0.123, 0.456),
+        ];
+        let mut checked = 0;
+        for (al, be) in cases {
+            for (n, prec) in
+                [(1usize, 64u32), (2, 64), (8, 64), (16, 64), (40, 53), (97, 64), (192, 64), (384, 64), (1024, 64)]
+            {
+                if n == 1024 && al != theta - 0.5 {
+                    continue;
+                }
+                let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
+                let dd = newton_rule_route(&alpha, &beta, n, prec, true).unwrap();
+                let mp = newton_rule_route(&alpha, &beta, n, prec, false).unwrap();
+                for i in 0..n {
+                    assert_eq!(dd.nodes[i], mp.nodes[i], "{al} {be} n {n} node {i}");
+                    assert_eq!(dd.weights[i], mp.weights[i], "{al} {be} n {n} weight {i}");
+                    checked += 2;
+                }
+            }
+        }
+        assert!(checked > 10_000, "{checked}");
     }
 
     #[test]
