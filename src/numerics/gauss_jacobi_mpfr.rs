@@ -37,6 +37,9 @@ pub const GUARD_BITS: u32 = 32;
 /// which the recurrence's rounding leaves about 100).
 const DD_BITS: u32 = 116;
 
+/// Nodes whose Newton passes in double-double run side by side ([`EvalDd::run_lanes`]).
+const LANES: usize = 4;
+
 /// Largest precision whose rules are computed wholly in double-double ([`dd_rule`]); the
 /// locating stage of `sliding::reduction_mpfr` works at 64 bits.
 const DD_ONLY_PREC: u32 = 64;
@@ -329,6 +332,29 @@ impl Dd {
     fn sub(self, o: Dd) -> Dd {
         self.add(o.neg())
     }
+    /// The exact product of two `f64` as a double-double by a fused multiply-add (the same value
+    /// as [`Dd::two_prod`], which is exact too; only with the `fma` target feature enabled).
+    #[inline(always)]
+    fn two_prod_fma(a: f64, b: f64) -> Dd {
+        let p = a * b;
+        Dd(p, a.mul_add(b, -p))
+    }
+    /// [`Dd::mul`], with the exact product by [`Dd::two_prod_fma`] when `FMA` (the same bits).
+    #[inline(always)]
+    fn mul_g<const FMA: bool>(self, o: Dd) -> Dd {
+        let p = if FMA { Dd::two_prod_fma(self.0, o.0) } else { Dd::two_prod(self.0, o.0) };
+        Dd::two_sum(p.0, p.1 + (self.0 * o.1 + self.1 * o.0))
+    }
+    /// [`Dd::div`] with [`Dd::mul_g`].
+    #[inline(always)]
+    fn div_g<const FMA: bool>(self, o: Dd) -> Dd {
+        let q1 = self.0 / o.0;
+        let r = self.sub(o.mul_g::<FMA>(Dd(q1, 0.0)));
+        let q2 = r.0 / o.0;
+        let r = r.sub(o.mul_g::<FMA>(Dd(q2, 0.0)));
+        let q3 = r.0 / o.0;
+        Dd::two_sum(q1, q2).add(Dd(q3, 0.0))
+    }
     fn mul(self, o: Dd) -> Dd {
         let p = Dd::two_prod(self.0, o.0);
         Dd::two_sum(p.0, p.1 + (self.0 * o.1 + self.1 * o.0))
@@ -358,19 +384,44 @@ impl EvalDd {
         EvalDd { a: v(&e.a), b: v(&e.b), ib: v(&e.ib), shift: Dd::of(&e.shift), c2: Dd::of(&e.c2) }
     }
 
-    /// p_n(x), p_n'(x), p_{n-1}(x) as `Eval::run` computes them, in double-double.
-    fn run(&self, x: Dd) -> (Dd, Dd, Dd) {
-        let n = self.a.len();
-        let (mut pm, mut p) = (Dd(0.0, 0.0), Dd(1.0, 0.0));
-        for k in 0..n {
-            let t = x.sub(self.a[k]).mul(p).sub(self.b[k].mul(pm)).mul(self.ib[k + 1]);
-            pm = p;
-            p = t;
+    /// p_n(x), p_n'(x), p_{n-1}(x) as `Eval::run` computes them, in double-double, at [`LANES`]
+    /// points at once (independent chains that the core overlaps; each lane's operations and
+    /// bits are those of one point alone), with fused multiply-adds where the processor has them
+    /// (the same bits: the exact products agree).
+    fn run_lanes(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("fma") {
+            // SAFETY: the processor has the `fma` feature (checked above).
+            return unsafe { self.run_lanes_fma(x) };
         }
-        let c1 = self.shift.sub(x).mul(Dd(n as f64, 0.0));
-        let num = c1.mul(p).add(self.c2.mul(pm));
-        let den = Dd(1.0, 0.0).sub(x).mul(x.add(Dd(1.0, 0.0)));
-        (p, num.div(den), pm)
+        self.run_lanes_with::<false>(x)
+    }
+
+    /// [`EvalDd::run_lanes_with`] compiled with fused multiply-adds.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "fma")]
+    unsafe fn run_lanes_fma(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        self.run_lanes_with::<true>(x)
+    }
+
+    #[inline(always)]
+    fn run_lanes_with<const FMA: bool>(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        let n = self.a.len();
+        let (mut pm, mut p) = ([Dd(0.0, 0.0); LANES], [Dd(1.0, 0.0); LANES]);
+        for k in 0..n {
+            let (a, b, ib) = (self.a[k], self.b[k], self.ib[k + 1]);
+            for l in 0..LANES {
+                let t = x[l].sub(a).mul_g::<FMA>(p[l]).sub(b.mul_g::<FMA>(pm[l])).mul_g::<FMA>(ib);
+                pm[l] = p[l];
+                p[l] = t;
+            }
+        }
+        std::array::from_fn(|l| {
+            let c1 = self.shift.sub(x[l]).mul_g::<FMA>(Dd(n as f64, 0.0));
+            let num = c1.mul_g::<FMA>(p[l]).add(self.c2.mul_g::<FMA>(pm[l]));
+            let den = Dd(1.0, 0.0).sub(x[l]).mul_g::<FMA>(x[l].add(Dd(1.0, 0.0)));
+            (p[l], num.div_g::<FMA>(den), pm[l])
+        })
     }
 
     /// The Newton step p_n(x)/p_n'(x), as `Eval::run` computes it.
@@ -592,24 +643,44 @@ fn dd_rule(
     };
     let mut nodes = Vec::with_capacity(n);
     let mut weights = Vec::with_capacity(n);
-    for (i, &x0) in start.iter().enumerate() {
-        let mut x = Dd(x0, 0.0);
-        let mut last = None;
+    // Newton in chunks of LANES nodes (the last chunk padded with its last node); a converged
+    // node keeps its x and its (p_n', p_{n-1}).
+    let mut found: Vec<(Dd, Dd, Dd)> = Vec::with_capacity(n);
+    for chunk in start.chunks(LANES) {
+        let at = |l: usize| chunk[l.min(chunk.len() - 1)];
+        let mut x: [Dd; LANES] = std::array::from_fn(|l| Dd(at(l), 0.0));
+        let mut last: [Option<(Dd, Dd)>; LANES] = [None; LANES];
         for pass in 0..8 {
-            let (p, dp, pm) = dd.run(x);
-            let dx = p.div(dp);
-            if !(dx.0.is_finite() && dx.1.is_finite()) || dp.0 == 0.0 {
-                return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
+            let values = dd.run_lanes(&x);
+            for l in 0..LANES {
+                if last[l].is_some() {
+                    continue;
+                }
+                let (p, dp, pm) = values[l];
+                let dx = p.div(dp);
+                if !(dx.0.is_finite() && dx.1.is_finite()) || dp.0 == 0.0 {
+                    let i = found.len() + l.min(chunk.len() - 1);
+                    return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
+                }
+                x[l] = x[l].sub(dx);
+                if pass >= 1 && dx.0.abs() <= tol {
+                    last[l] = Some((dp, pm));
+                }
             }
-            x = x.sub(dx);
-            if pass >= 1 && dx.0.abs() <= tol {
-                last = Some((dp, pm));
+            if last.iter().all(Option::is_some) {
                 break;
             }
         }
-        let Some((dp, pm)) = last else {
-            return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
-        };
+        let base = found.len();
+        for l in 0..chunk.len() {
+            let Some((dp, pm)) = last[l] else {
+                let i = base + l;
+                return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
+            };
+            found.push((x[l], dp, pm));
+        }
+    }
+    for (i, (&x0, &(x, dp, pm))) in start.iter().zip(&found).enumerate() {
         if (x.0 - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
             return Err(QuadratureError::NoConvergence {
                 n,
@@ -847,6 +918,28 @@ mod tests {
             }
         }
         assert!(checked > 10_000, "{checked}");
+    }
+
+    #[test]
+    fn double_double_lanes_are_bit_identical_with_and_without_fma() {
+        // Dekker's and the fused exact products are both exact: every lane's (p_n, p_n', p_{n-1})
+        // the same bits either way (on a processor without `fma` both sides take Dekker's).
+        let prec = 104;
+        let (alpha, beta) =
+            (Float::with_val(prec, -0.545_167_235_300_866_5_f64), Float::with_val(prec, -0.454_832_764_7_f64));
+        let (a, b) = recurrence(&alpha, &beta, 192, prec);
+        let dd = EvalDd::new(&Eval::new(&alpha, &beta, &a, &b, prec));
+        for j in 0..50 {
+            let x: [Dd; LANES] = std::array::from_fn(|l| {
+                let v = -0.999 + 1.998 * ((j * LANES + l) as f64 / (50 * LANES) as f64);
+                Dd(v, v * 1e-17)
+            });
+            let (plain, fast) = (dd.run_lanes_with::<false>(&x), dd.run_lanes(&x));
+            for l in 0..LANES {
+                let bits = |t: (Dd, Dd, Dd)| [t.0 .0, t.0 .1, t.1 .0, t.1 .1, t.2 .0, t.2 .1].map(f64::to_bits);
+                assert_eq!(bits(plain[l]), bits(fast[l]), "x = {:?}", x[l]);
+            }
+        }
     }
 
     #[test]
