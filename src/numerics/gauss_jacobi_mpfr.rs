@@ -115,9 +115,18 @@ fn cache() -> &'static Mutex<HashMap<Key, Arc<GaussJacobiRule>>> {
 /// The n-point Gauss–Jacobi rule for $(1-u)^\alpha(1+u)^\beta$ at `prec` bits, from the process
 /// cache when the same (alpha, beta, n, prec) was asked before (alpha and beta compared by their
 /// exact binary values).
+///
+/// When the cache holds the lifted f64 rule of the same key ([`gauss_jacobi_f64_lifted`], e.g. the
+/// sinusoid's load scan at the locating precision), its nodes start Newton's method instead of the
+/// QL eigenvalues (both about 16 digits; the same rule, bit for bit: test
+/// `f64_rule_start_gives_the_same_rule`); this saves the 192-node QL of a cold solve of
+/// `scenes/sinusoid_friction.toml`.
 pub fn gauss_jacobi(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Arc<GaussJacobiRule>, QuadratureError> {
-    cached((alpha.to_integer_exp(), beta.to_integer_exp(), n, prec, false), || {
-        gauss_jacobi_uncached(alpha, beta, n, prec)
+    let (ka, kb) = (alpha.to_integer_exp(), beta.to_integer_exp());
+    let lifted = (ka.clone(), kb.clone(), n, prec, true);
+    cached((ka, kb, n, prec, false), || {
+        let start = cache().lock().ok().and_then(|c| c.get(&lifted).cloned());
+        uncached_from(alpha, beta, n, prec, start.map(|r| r.nodes.iter().map(Float::to_f64).collect()))
     })
 }
 
@@ -447,6 +456,18 @@ pub fn gauss_jacobi_uncached(
     n: usize,
     prec: u32,
 ) -> Result<GaussJacobiRule, QuadratureError> {
+    uncached_from(alpha, beta, n, prec, None)
+}
+
+/// [`gauss_jacobi_uncached`] with Newton's method started from `start` (n increasing f64 nodes)
+/// when given, from the QL eigenvalues otherwise.
+fn uncached_from(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+    start: Option<Vec<f64>>,
+) -> Result<GaussJacobiRule, QuadratureError> {
     for (name, v) in [("alpha", alpha), ("beta", beta)] {
         if !v.is_finite() || *v <= -1i32 {
             return Err(QuadratureError::Exponent { name, value: v.to_string() });
@@ -458,7 +479,7 @@ pub fn gauss_jacobi_uncached(
     if alpha == beta && (*alpha == 0.5f64 || *alpha == -0.5f64) {
         return Ok(chebyshev_rule(alpha, n, prec));
     }
-    newton_rule(alpha, beta, n, prec)
+    newton_rule(alpha, beta, n, prec, start.filter(|v| v.len() == n))
 }
 
 /// The Gauss–Chebyshev rules in closed form (theta = 0: the weights 1/omega and omega of
@@ -487,11 +508,18 @@ fn chebyshev_rule(alpha: &Float, n: usize, prec: u32) -> GaussJacobiRule {
 }
 
 /// The rule by Newton's method from the f64 eigenvalues (module doc), for any exponents.
-fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<GaussJacobiRule, QuadratureError> {
-    newton_rule_route(alpha, beta, n, prec, prec <= DD_ONLY_PREC)
+/// `start`: the f64 nodes Newton's method starts from (None: the QL eigenvalues).
+fn newton_rule(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+    start: Option<Vec<f64>>,
+) -> Result<GaussJacobiRule, QuadratureError> {
+    newton_rule_route(alpha, beta, n, prec, prec <= DD_ONLY_PREC, start)
 }
 
-/// [`newton_rule`] with the route chosen: `dd_only`, every pass in double-double ([`dd_rule`]);
+/// [`newton_rule`] with the route chosen (and `start` as there): `dd_only`, every pass in double-double ([`dd_rule`]);
 /// otherwise the precision ladder (a double-double first rung, MPFR passes up to the working
 /// precision).
 fn newton_rule_route(
@@ -500,15 +528,21 @@ fn newton_rule_route(
     n: usize,
     prec: u32,
     dd_only: bool,
+    start: Option<Vec<f64>>,
 ) -> Result<GaussJacobiRule, QuadratureError> {
     let wp = prec + GUARD_BITS + (usize::BITS - n.leading_zeros());
     let (a, b) = recurrence(alpha, beta, n, wp);
-    let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
-    let e64: Vec<f64> = b[1..].iter().map(|x| x.to_f64()).collect();
-    let start = tridiagonal_eigenvalues(d64, &e64).ok_or_else(|| QuadratureError::NoConvergence {
-        n,
-        why: "f64 eigenvalues (implicit QL) did not converge".into(),
-    })?;
+    let start = match start {
+        Some(v) => v,
+        None => {
+            let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
+            let e64: Vec<f64> = b[1..].iter().map(|x| x.to_f64()).collect();
+            tridiagonal_eigenvalues(d64, &e64).ok_or_else(|| QuadratureError::NoConvergence {
+                n,
+                why: "f64 eigenvalues (implicit QL) did not converge".into(),
+            })?
+        }
+    };
 
     let mu0 = jacobi_mu0(alpha, beta, wp);
     if dd_only {
@@ -764,7 +798,7 @@ mod tests {
             for (a, n) in [(-0.5f64, 1usize), (-0.5, 33), (0.5, 33), (0.5, 128)] {
                 let h = Float::with_val(prec, a);
                 let fast = gauss_jacobi_uncached(&h, &h, n, prec).unwrap();
-                let newton = newton_rule(&h, &h, n, prec).unwrap();
+                let newton = newton_rule(&h, &h, n, prec, None).unwrap();
                 for i in 0..n {
                     assert!(Float::with_val(prec, &fast.nodes[i] - &newton.nodes[i]).abs() <= tol(prec), "{a} {n} {i}");
                     let dw = Float::with_val(prec, &fast.weights[i] - &newton.weights[i]).abs();
@@ -908,8 +942,8 @@ mod tests {
                     continue;
                 }
                 let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
-                let dd = newton_rule_route(&alpha, &beta, n, prec, true).unwrap();
-                let mp = newton_rule_route(&alpha, &beta, n, prec, false).unwrap();
+                let dd = newton_rule_route(&alpha, &beta, n, prec, true, None).unwrap();
+                let mp = newton_rule_route(&alpha, &beta, n, prec, false, None).unwrap();
                 for i in 0..n {
                     assert_eq!(dd.nodes[i], mp.nodes[i], "{al} {be} n {n} node {i}");
                     assert_eq!(dd.weights[i], mp.weights[i], "{al} {be} n {n} weight {i}");
@@ -938,6 +972,24 @@ mod tests {
             for l in 0..LANES {
                 let bits = |t: (Dd, Dd, Dd)| [t.0 .0, t.0 .1, t.1 .0, t.1 .1, t.2 .0, t.2 .1].map(f64::to_bits);
                 assert_eq!(bits(plain[l]), bits(fast[l]), "x = {:?}", x[l]);
+            }
+        }
+    }
+
+    #[test]
+    fn f64_rule_start_gives_the_same_rule() {
+        // Newton from the f64 rule's nodes (the lifted rule of the sinusoid's scan) against Newton
+        // from the QL eigenvalues: the same bits, at the locating precision (double-double route)
+        // and at working precisions (MPFR ladder).
+        let theta = -0.045_167_235_300_866_55_f64;
+        for (al, be) in [(theta - 0.5, -theta - 0.5), (0.7, 0.3), (-0.9, -0.1)] {
+            for (n, prec) in [(16usize, 64u32), (96, 64), (192, 64), (384, 64), (28, 132), (40, 164)] {
+                let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
+                let f = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, alpha.to_f64(), beta.to_f64()).unwrap();
+                let from_f64 = uncached_from(&alpha, &beta, n, prec, Some(f.nodes)).unwrap();
+                let from_ql = gauss_jacobi_uncached(&alpha, &beta, n, prec).unwrap();
+                assert_eq!(from_f64.nodes, from_ql.nodes, "{al} {be} n {n} prec {prec}");
+                assert_eq!(from_f64.weights, from_ql.weights, "{al} {be} n {n} prec {prec}");
             }
         }
     }
