@@ -16,14 +16,17 @@
 //!   mu = 0.5, theta != 0, P2 = 0.005, p at its three points), as `solve SCENE --method mpfr
 //!   --digits 30` computes it without the process start, the scene parse and the printing. The
 //!   Gauss–Jacobi rules are cached (per process, the scan's lifted f64 rules with the MPFR ones), so
-//!   the repeated solve measures a warm one; the README states the whole process (cold) beside it.
+//!   the repeated solve measures a warm one; `_cold` empties that cache before each solve
+//!   (`gauss_jacobi_mpfr::clear_cache`, outside the timing), as one solve in a fresh process
+//!   computes it; the README states the whole process beside both.
 //!
 //! Run: `cargo bench --bench solve`
 
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
 use periodic_contact::asymptotics::sliding::sliding_expansion_with;
 use periodic_contact::model::SlidingProblem;
 use periodic_contact::numerics::evaluate::PreparedSeries;
+use periodic_contact::numerics::gauss_jacobi_mpfr::clear_cache;
 use periodic_contact::numerics::precision::precision_for;
 use periodic_contact::params::sliding::SlidingParamsF64;
 use periodic_contact::scene::parse::parse_scene;
@@ -81,6 +84,9 @@ fn mpfr_solve(c: &mut Criterion) {
     let mut g = c.benchmark_group("mpfr_solve");
     g.sample_size(20);
     g.bench_function("sinusoid_friction_30", |b| b.iter(|| solve_verified(black_box(&p), &points, 30)));
+    g.bench_function("sinusoid_friction_30_cold", |b| {
+        b.iter_batched(clear_cache, |()| solve_verified(black_box(&p), &points, 30), BatchSize::PerIteration)
+    });
     g.finish();
 }
 

@@ -37,6 +37,13 @@ pub const GUARD_BITS: u32 = 32;
 /// which the recurrence's rounding leaves about 100).
 const DD_BITS: u32 = 116;
 
+/// Nodes whose Newton passes in double-double run side by side ([`EvalDd::run_lanes`]).
+const LANES: usize = 4;
+
+/// Largest precision whose rules are computed wholly in double-double ([`dd_rule`]); the
+/// locating stage of `sliding::reduction_mpfr` works at 64 bits.
+const DD_ONLY_PREC: u32 = 64;
+
 /// Largest number of nodes a rule may have (the f64 start and the O(n^2) Newton phase are
 /// the limits; beyond this the caller should change method).
 pub const MAX_NODES: usize = 4000;
@@ -108,9 +115,18 @@ fn cache() -> &'static Mutex<HashMap<Key, Arc<GaussJacobiRule>>> {
 /// The n-point Gauss–Jacobi rule for $(1-u)^\alpha(1+u)^\beta$ at `prec` bits, from the process
 /// cache when the same (alpha, beta, n, prec) was asked before (alpha and beta compared by their
 /// exact binary values).
+///
+/// When the cache holds the lifted f64 rule of the same key ([`gauss_jacobi_f64_lifted`], e.g. the
+/// sinusoid's load scan at the locating precision), its nodes start Newton's method instead of the
+/// QL eigenvalues (both about 16 digits; the same rule, bit for bit: test
+/// `f64_rule_start_gives_the_same_rule`); this saves the 192-node QL of a cold solve of
+/// `scenes/sinusoid_friction.toml`.
 pub fn gauss_jacobi(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Arc<GaussJacobiRule>, QuadratureError> {
-    cached((alpha.to_integer_exp(), beta.to_integer_exp(), n, prec, false), || {
-        gauss_jacobi_uncached(alpha, beta, n, prec)
+    let (ka, kb) = (alpha.to_integer_exp(), beta.to_integer_exp());
+    let lifted = (ka.clone(), kb.clone(), n, prec, true);
+    cached((ka, kb, n, prec, false), || {
+        let start = cache().lock().ok().and_then(|c| c.get(&lifted).cloned());
+        uncached_from(alpha, beta, n, prec, start.map(|r| r.nodes.iter().map(Float::to_f64).collect()))
     })
 }
 
@@ -325,6 +341,29 @@ impl Dd {
     fn sub(self, o: Dd) -> Dd {
         self.add(o.neg())
     }
+    /// The exact product of two `f64` as a double-double by a fused multiply-add (the same value
+    /// as [`Dd::two_prod`], which is exact too; only with the `fma` target feature enabled).
+    #[inline(always)]
+    fn two_prod_fma(a: f64, b: f64) -> Dd {
+        let p = a * b;
+        Dd(p, a.mul_add(b, -p))
+    }
+    /// [`Dd::mul`], with the exact product by [`Dd::two_prod_fma`] when `FMA` (the same bits).
+    #[inline(always)]
+    fn mul_g<const FMA: bool>(self, o: Dd) -> Dd {
+        let p = if FMA { Dd::two_prod_fma(self.0, o.0) } else { Dd::two_prod(self.0, o.0) };
+        Dd::two_sum(p.0, p.1 + (self.0 * o.1 + self.1 * o.0))
+    }
+    /// [`Dd::div`] with [`Dd::mul_g`].
+    #[inline(always)]
+    fn div_g<const FMA: bool>(self, o: Dd) -> Dd {
+        let q1 = self.0 / o.0;
+        let r = self.sub(o.mul_g::<FMA>(Dd(q1, 0.0)));
+        let q2 = r.0 / o.0;
+        let r = r.sub(o.mul_g::<FMA>(Dd(q2, 0.0)));
+        let q3 = r.0 / o.0;
+        Dd::two_sum(q1, q2).add(Dd(q3, 0.0))
+    }
     fn mul(self, o: Dd) -> Dd {
         let p = Dd::two_prod(self.0, o.0);
         Dd::two_sum(p.0, p.1 + (self.0 * o.1 + self.1 * o.0))
@@ -354,6 +393,46 @@ impl EvalDd {
         EvalDd { a: v(&e.a), b: v(&e.b), ib: v(&e.ib), shift: Dd::of(&e.shift), c2: Dd::of(&e.c2) }
     }
 
+    /// p_n(x), p_n'(x), p_{n-1}(x) as `Eval::run` computes them, in double-double, at [`LANES`]
+    /// points at once (independent chains that the core overlaps; each lane's operations and
+    /// bits are those of one point alone), with fused multiply-adds where the processor has them
+    /// (the same bits: the exact products agree).
+    fn run_lanes(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("fma") {
+            // SAFETY: the processor has the `fma` feature (checked above).
+            return unsafe { self.run_lanes_fma(x) };
+        }
+        self.run_lanes_with::<false>(x)
+    }
+
+    /// [`EvalDd::run_lanes_with`] compiled with fused multiply-adds.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "fma")]
+    unsafe fn run_lanes_fma(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        self.run_lanes_with::<true>(x)
+    }
+
+    #[inline(always)]
+    fn run_lanes_with<const FMA: bool>(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        let n = self.a.len();
+        let (mut pm, mut p) = ([Dd(0.0, 0.0); LANES], [Dd(1.0, 0.0); LANES]);
+        for k in 0..n {
+            let (a, b, ib) = (self.a[k], self.b[k], self.ib[k + 1]);
+            for l in 0..LANES {
+                let t = x[l].sub(a).mul_g::<FMA>(p[l]).sub(b.mul_g::<FMA>(pm[l])).mul_g::<FMA>(ib);
+                pm[l] = p[l];
+                p[l] = t;
+            }
+        }
+        std::array::from_fn(|l| {
+            let c1 = self.shift.sub(x[l]).mul_g::<FMA>(Dd(n as f64, 0.0));
+            let num = c1.mul_g::<FMA>(p[l]).add(self.c2.mul_g::<FMA>(pm[l]));
+            let den = Dd(1.0, 0.0).sub(x[l]).mul_g::<FMA>(x[l].add(Dd(1.0, 0.0)));
+            (p[l], num.div_g::<FMA>(den), pm[l])
+        })
+    }
+
     /// The Newton step p_n(x)/p_n'(x), as `Eval::run` computes it.
     fn step(&self, x: Dd) -> Dd {
         let n = self.a.len();
@@ -377,6 +456,18 @@ pub fn gauss_jacobi_uncached(
     n: usize,
     prec: u32,
 ) -> Result<GaussJacobiRule, QuadratureError> {
+    uncached_from(alpha, beta, n, prec, None)
+}
+
+/// [`gauss_jacobi_uncached`] with Newton's method started from `start` (n increasing f64 nodes)
+/// when given, from the QL eigenvalues otherwise.
+fn uncached_from(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+    start: Option<Vec<f64>>,
+) -> Result<GaussJacobiRule, QuadratureError> {
     for (name, v) in [("alpha", alpha), ("beta", beta)] {
         if !v.is_finite() || *v <= -1i32 {
             return Err(QuadratureError::Exponent { name, value: v.to_string() });
@@ -388,7 +479,7 @@ pub fn gauss_jacobi_uncached(
     if alpha == beta && (*alpha == 0.5f64 || *alpha == -0.5f64) {
         return Ok(chebyshev_rule(alpha, n, prec));
     }
-    newton_rule(alpha, beta, n, prec)
+    newton_rule(alpha, beta, n, prec, start.filter(|v| v.len() == n))
 }
 
 /// The Gauss–Chebyshev rules in closed form (theta = 0: the weights 1/omega and omega of
@@ -417,15 +508,46 @@ fn chebyshev_rule(alpha: &Float, n: usize, prec: u32) -> GaussJacobiRule {
 }
 
 /// The rule by Newton's method from the f64 eigenvalues (module doc), for any exponents.
-fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<GaussJacobiRule, QuadratureError> {
+/// `start`: the f64 nodes Newton's method starts from (None: the QL eigenvalues).
+fn newton_rule(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+    start: Option<Vec<f64>>,
+) -> Result<GaussJacobiRule, QuadratureError> {
+    newton_rule_route(alpha, beta, n, prec, prec <= DD_ONLY_PREC, start)
+}
+
+/// [`newton_rule`] with the route chosen (and `start` as there): `dd_only`, every pass in double-double ([`dd_rule`]);
+/// otherwise the precision ladder (a double-double first rung, MPFR passes up to the working
+/// precision).
+fn newton_rule_route(
+    alpha: &Float,
+    beta: &Float,
+    n: usize,
+    prec: u32,
+    dd_only: bool,
+    start: Option<Vec<f64>>,
+) -> Result<GaussJacobiRule, QuadratureError> {
     let wp = prec + GUARD_BITS + (usize::BITS - n.leading_zeros());
     let (a, b) = recurrence(alpha, beta, n, wp);
-    let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
-    let e64: Vec<f64> = b[1..].iter().map(|x| x.to_f64()).collect();
-    let start = tridiagonal_eigenvalues(d64, &e64).ok_or_else(|| QuadratureError::NoConvergence {
-        n,
-        why: "f64 eigenvalues (implicit QL) did not converge".into(),
-    })?;
+    let start = match start {
+        Some(v) => v,
+        None => {
+            let d64: Vec<f64> = a.iter().map(|x| x.to_f64()).collect();
+            let e64: Vec<f64> = b[1..].iter().map(|x| x.to_f64()).collect();
+            tridiagonal_eigenvalues(d64, &e64).ok_or_else(|| QuadratureError::NoConvergence {
+                n,
+                why: "f64 eigenvalues (implicit QL) did not converge".into(),
+            })?
+        }
+    };
+
+    let mu0 = jacobi_mu0(alpha, beta, wp);
+    if dd_only {
+        return dd_rule(alpha, beta, (&a, &b), &start, &mu0, prec, wp);
+    }
 
     // Precision ladder for Newton: each step roughly doubles the correct bits from ~50. A first
     // rung of at most DD_BITS bits is a double-double pass.
@@ -449,7 +571,6 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
     };
     let get = |pb: u32| &evals.iter().find(|(q, _)| *q == pb).expect("ladder precision present").1;
     let dd = dd_first.then(|| EvalDd::new(get(wp)));
-    let mu0 = jacobi_mu0(alpha, beta, wp);
     let tol = Float::with_val(53, Float::i_exp(1, -(wp as i32) + 4));
 
     let mut nodes = Vec::with_capacity(n);
@@ -524,6 +645,100 @@ fn newton_rule(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<Gauss
     Ok(GaussJacobiRule { alpha: alpha.clone(), beta: beta.clone(), nodes, weights, prec })
 }
 
+/// The rule of [`newton_rule`] for `prec` <= [`DD_ONLY_PREC`], every Newton pass in double-double
+/// (about 100 correct bits, `wp` ~ 100-108 here) instead of the MPFR passes at `wp` bits: from the f64
+/// start `start`, passes until the correction is below 2^-(prec + 28) (two, as the ladder at `wp`:
+/// one to ~100 bits, one whose negligible correction yields p_n' and p_{n-1} for the weight), the
+/// weight mu0 / (b_n p_n' p_{n-1}) as in the MPFR route; then each node and weight rounded to
+/// `prec` bits. Both routes carry more than 30 bits beyond `prec`, so both round to the same
+/// `prec`-bit numbers except when a value lies within about 2^-95 of a rounding boundary (test
+/// `double_double_route_rounds_as_the_mpfr_route`: bit for bit, the locating stage's rules of
+/// `sliding::reduction_mpfr` among them). A Newton pass in double-double costs about a quarter
+/// of one in MPFR at 104 bits: the 192-node rule of the sinusoid's bracket refinement took 8.7 ms
+/// of a 30 ms cold solve (`GJ` timing of each built rule, a temporary trace).
+fn dd_rule(
+    alpha: &Float,
+    beta: &Float,
+    (a, b): (&[Float], &[Float]),
+    start: &[f64],
+    mu0: &Float,
+    prec: u32,
+    wp: u32,
+) -> Result<GaussJacobiRule, QuadratureError> {
+    let n = start.len();
+    let dd = EvalDd::new(&Eval::new(alpha, beta, a, b, wp));
+    let (mu0, bn) = (Dd::of(mu0), Dd::of(&b[n]));
+    let tol = 2f64.powi(-(prec as i32) - 28);
+    // hi + lo rounded once to `prec` bits (hi + lo is exact at 2 x 64 + 64 bits for |lo| <= ulp(hi)).
+    let round = |v: Dd| {
+        let mut f = Float::with_val(192, v.0);
+        f += v.1;
+        Float::with_val(prec, &f)
+    };
+    let mut nodes = Vec::with_capacity(n);
+    let mut weights = Vec::with_capacity(n);
+    // Newton in chunks of LANES nodes (the last chunk padded with its last node); a converged
+    // node keeps its x and its (p_n', p_{n-1}).
+    let mut found: Vec<(Dd, Dd, Dd)> = Vec::with_capacity(n);
+    for chunk in start.chunks(LANES) {
+        let at = |l: usize| chunk[l.min(chunk.len() - 1)];
+        let mut x: [Dd; LANES] = std::array::from_fn(|l| Dd(at(l), 0.0));
+        let mut last: [Option<(Dd, Dd)>; LANES] = [None; LANES];
+        for pass in 0..8 {
+            let values = dd.run_lanes(&x);
+            for l in 0..LANES {
+                if last[l].is_some() {
+                    continue;
+                }
+                let (p, dp, pm) = values[l];
+                let dx = p.div(dp);
+                if !(dx.0.is_finite() && dx.1.is_finite()) || dp.0 == 0.0 {
+                    let i = found.len() + l.min(chunk.len() - 1);
+                    return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
+                }
+                x[l] = x[l].sub(dx);
+                if pass >= 1 && dx.0.abs() <= tol {
+                    last[l] = Some((dp, pm));
+                }
+            }
+            if last.iter().all(Option::is_some) {
+                break;
+            }
+        }
+        let base = found.len();
+        for l in 0..chunk.len() {
+            let Some((dp, pm)) = last[l] else {
+                let i = base + l;
+                return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
+            };
+            found.push((x[l], dp, pm));
+        }
+    }
+    for (i, (&x0, &(x, dp, pm))) in start.iter().zip(&found).enumerate() {
+        if (x.0 - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
+            return Err(QuadratureError::NoConvergence {
+                n,
+                why: format!("Newton drifted from its start at node {i}"),
+            });
+        }
+        let sum = dp.mul(pm).mul(bn);
+        if !(sum.0 > 0.0) {
+            return Err(QuadratureError::NoConvergence { n, why: format!("non-positive Christoffel sum at node {i}") });
+        }
+        nodes.push(round(x));
+        weights.push(round(mu0.div(sum)));
+    }
+    for i in 1..n {
+        if nodes[i] <= nodes[i - 1] {
+            return Err(QuadratureError::NoConvergence { n, why: format!("nodes {} and {i} not increasing", i - 1) });
+        }
+    }
+    if nodes[0] <= -1i32 || nodes[n - 1] >= 1u32 {
+        return Err(QuadratureError::NoConvergence { n, why: "a node left (-1, 1)".into() });
+    }
+    Ok(GaussJacobiRule { alpha: alpha.clone(), beta: beta.clone(), nodes, weights, prec })
+}
+
 /// pi at `prec` bits.
 pub fn pi(prec: u32) -> Float {
     Float::with_val(prec, Constant::Pi)
@@ -583,7 +798,7 @@ mod tests {
             for (a, n) in [(-0.5f64, 1usize), (-0.5, 33), (0.5, 33), (0.5, 128)] {
                 let h = Float::with_val(prec, a);
                 let fast = gauss_jacobi_uncached(&h, &h, n, prec).unwrap();
-                let newton = newton_rule(&h, &h, n, prec).unwrap();
+                let newton = newton_rule(&h, &h, n, prec, None).unwrap();
                 for i in 0..n {
                     assert!(Float::with_val(prec, &fast.nodes[i] - &newton.nodes[i]).abs() <= tol(prec), "{a} {n} {i}");
                     let dw = Float::with_val(prec, &fast.weights[i] - &newton.weights[i]).abs();
@@ -699,6 +914,82 @@ mod tests {
                 assert!(dx <= Float::with_val(prec, ulp(&r.nodes[i]) * 2u32), "{al} {be} {n} {prec} node {i}");
                 let dw = Float::with_val(prec + 96, &r.weights[i] - &hi.weights[i]).abs();
                 assert!(dw <= Float::with_val(prec, ulp(&r.weights[i]) * 2u32), "{al} {be} {n} {prec} weight {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn double_double_route_rounds_as_the_mpfr_route() {
+        // Bit for bit at 64 bits (and below): the locating stage's exponents of the shipped
+        // sinusoid scenes (theta = -0.04517 for sinusoid_friction, 0 handled in closed form),
+        // both weights 1/omega and omega, generic and extreme exponents, n up to 1024.
+        let theta = -0.045_167_235_300_866_55_f64;
+        let cases = [
+            (theta - 0.5, -theta - 0.5),
+            (0.5 - theta, 0.5 + theta),
+            (-0.9, -0.1),
+            (0.7, 0.3),
+            (2.5, -0.75),
+            (-0.99, 0.4),
+            (0.123, 0.456),
+        ];
+        let mut checked = 0;
+        for (al, be) in cases {
+            for (n, prec) in
+                [(1usize, 64u32), (2, 64), (8, 64), (16, 64), (40, 53), (97, 64), (192, 64), (384, 64), (1024, 64)]
+            {
+                if n == 1024 && al != theta - 0.5 {
+                    continue;
+                }
+                let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
+                let dd = newton_rule_route(&alpha, &beta, n, prec, true, None).unwrap();
+                let mp = newton_rule_route(&alpha, &beta, n, prec, false, None).unwrap();
+                for i in 0..n {
+                    assert_eq!(dd.nodes[i], mp.nodes[i], "{al} {be} n {n} node {i}");
+                    assert_eq!(dd.weights[i], mp.weights[i], "{al} {be} n {n} weight {i}");
+                    checked += 2;
+                }
+            }
+        }
+        assert!(checked > 10_000, "{checked}");
+    }
+
+    #[test]
+    fn double_double_lanes_are_bit_identical_with_and_without_fma() {
+        // Dekker's and the fused exact products are both exact: every lane's (p_n, p_n', p_{n-1})
+        // the same bits either way (on a processor without `fma` both sides take Dekker's).
+        let prec = 104;
+        let (alpha, beta) =
+            (Float::with_val(prec, -0.545_167_235_300_866_5_f64), Float::with_val(prec, -0.454_832_764_7_f64));
+        let (a, b) = recurrence(&alpha, &beta, 192, prec);
+        let dd = EvalDd::new(&Eval::new(&alpha, &beta, &a, &b, prec));
+        for j in 0..50 {
+            let x: [Dd; LANES] = std::array::from_fn(|l| {
+                let v = -0.999 + 1.998 * ((j * LANES + l) as f64 / (50 * LANES) as f64);
+                Dd(v, v * 1e-17)
+            });
+            let (plain, fast) = (dd.run_lanes_with::<false>(&x), dd.run_lanes(&x));
+            for l in 0..LANES {
+                let bits = |t: (Dd, Dd, Dd)| [t.0 .0, t.0 .1, t.1 .0, t.1 .1, t.2 .0, t.2 .1].map(f64::to_bits);
+                assert_eq!(bits(plain[l]), bits(fast[l]), "x = {:?}", x[l]);
+            }
+        }
+    }
+
+    #[test]
+    fn f64_rule_start_gives_the_same_rule() {
+        // Newton from the f64 rule's nodes (the lifted rule of the sinusoid's scan) against Newton
+        // from the QL eigenvalues: the same bits, at the locating precision (double-double route)
+        // and at working precisions (MPFR ladder).
+        let theta = -0.045_167_235_300_866_55_f64;
+        for (al, be) in [(theta - 0.5, -theta - 0.5), (0.7, 0.3), (-0.9, -0.1)] {
+            for (n, prec) in [(16usize, 64u32), (96, 64), (192, 64), (384, 64), (28, 132), (40, 164)] {
+                let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
+                let f = crate::numerics::gauss_jacobi_f64::gauss_jacobi(n, alpha.to_f64(), beta.to_f64()).unwrap();
+                let from_f64 = uncached_from(&alpha, &beta, n, prec, Some(f.nodes)).unwrap();
+                let from_ql = gauss_jacobi_uncached(&alpha, &beta, n, prec).unwrap();
+                assert_eq!(from_f64.nodes, from_ql.nodes, "{al} {be} n {n} prec {prec}");
+                assert_eq!(from_f64.weights, from_ql.weights, "{al} {be} n {n} prec {prec}");
             }
         }
     }

@@ -29,7 +29,7 @@ use super::contact::Size;
 use crate::model::Convention;
 use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
 use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
-use rug::Float;
+use rug::{Assign, Float};
 
 /// The equation split over the slope basis: P2 = sum_j q_j re_j and the solvability residual
 /// S = sum_j q_j im_j + beta tau0 (S = 0 at a solution), q from [`super::contact::Contact`].
@@ -61,15 +61,23 @@ pub fn kernel_sums(
     let mut si = [Float::with_val(p, 0), Float::with_val(p, 0)];
     match (&size.m, &size.lambda, &params.period) {
         (Some(m), Some(lambda), Some(big_l)) => {
+            // In place, each operation rounded to p as before (one allocation per temporary, not
+            // per node).
+            let (mut s, mut inv, mut wi, mut wr, mut t) =
+                (Float::new(p), Float::new(p), Float::new(p), Float::new(p), Float::new(p));
             for (u, w) in rule.nodes.iter().zip(&rule.weights) {
                 let b = values(u, p);
-                let s = Float::with_val(p, m * u);
-                let inv = Float::with_val(p, 1u32) / (Float::with_val(p, s.square_ref()) + 1u32);
-                let wi = Float::with_val(p, w * &inv);
-                let wr = Float::with_val(p, &wi * &s);
+                s.assign(m * u);
+                t.assign(s.square_ref());
+                t += 1u32;
+                inv.assign(1u32 / &t);
+                wi.assign(w * &inv);
+                wr.assign(&wi * &s);
                 for j in 0..2 {
-                    sr[j] += Float::with_val(p, &wr * &b[j]);
-                    si[j] += Float::with_val(p, &wi * &b[j]);
+                    t.assign(&wr * &b[j]);
+                    sr[j] += &t;
+                    t.assign(&wi * &b[j]);
+                    si[j] += &t;
                 }
             }
             let kmag = Float::with_val(p, &params.cos_pi_theta)

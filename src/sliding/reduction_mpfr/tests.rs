@@ -762,3 +762,44 @@ fn general_profiles_satisfy_the_cot_kernel_equation() {
         assert!(worst < 1e-30, "{:?}: residual of [2.8] relative to E* k l: {worst:e}", pb.shape());
     }
 }
+
+#[test]
+fn sign_scan_locates_the_same_sizes() {
+    use super::bracket::{LOCATE_DIGITS, LOCATE_NODES};
+    use super::solve::{lambda_cap, locate_with, nodes_for, scan_signs, scan_values};
+    // The sinusoid's scan with and without scan_signs: the same sizes bit for bit (the brackets'
+    // ends, which Brent's method receives, carry the full scan rule's values in both), over loads
+    // with one, two (non-monotone) and no roots, both conventions, with and without friction.
+    let scene = Case { nu: "3/10", shape: Shape::Sinusoid("1/100"), mu: "1/2", tau0: "0", cw: "0", ..BASE };
+    let steep = Case { shape: Shape::Sinusoid("1/10"), mu: "1", tau0: "0", cw: "0", ..BASE };
+    let periodic = Case { convention: Convention::PeriodicSurface, ..scene };
+    let frictionless = Case { shape: Shape::Sinusoid("1/100"), ..FRICTIONLESS };
+    let mut roots = 0;
+    for (case, loads) in [
+        (scene, &["1/2000", "1/200", "1/100", "1/50", "3/100"][..]),
+        (steep, &["1/100", "1/10", "3/20", "1/5"][..]),
+        (periodic, &["1/200", "1/50", "1/20"][..]),
+        (frictionless, &["1/1000", "1/50"][..]),
+    ] {
+        for load in loads {
+            let setup = Setup::new(&case.load(load)).unwrap();
+            let (a, b) = (locate_with(&setup, true), locate_with(&setup, false));
+            assert_eq!(format!("{a:?}"), format!("{b:?}"), "{case:?} P2 = {load}");
+            roots += a.map_or(0, |v| v.len());
+        }
+    }
+    assert!(roots >= 8, "{roots}");
+    // At the cap of the scene's scan (lambda = 1.5258, where the scan's own rule has 384 nodes)
+    // the signs come from the pair (128, 192) and agree with that rule's.
+    let params = Setup::new(&scene.load("1/200")).unwrap().locate;
+    let target = 0.005;
+    let rel = |v: &equation::ShiftSolution| (v.p2.to_f64() - target) / target;
+    let cap = lambda_cap(LOCATE_DIGITS, LOCATE_NODES);
+    assert!(nodes_for(cap, 8.0) > 256, "{}", nodes_for(cap, 8.0));
+    let signs = scan_signs(&params, cap, 384, &rel).unwrap().expect("settled");
+    let full = scan_values(&params, cap, 384, &rel).unwrap();
+    for (x, y) in signs.iter().zip(&full) {
+        let (x, y) = (x.unwrap(), y.unwrap());
+        assert!(x * y > 0.0 && (x - y).abs() < 1e-4 * y.abs(), "{x} vs {y}");
+    }
+}
