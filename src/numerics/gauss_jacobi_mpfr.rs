@@ -634,15 +634,7 @@ fn newton_rule_route(
         nodes.push(Float::with_val(prec, &x));
         weights.push(Float::with_val(prec, &w));
     }
-    for i in 1..n {
-        if nodes[i] <= nodes[i - 1] {
-            return Err(QuadratureError::NoConvergence { n, why: format!("nodes {} and {i} not increasing", i - 1) });
-        }
-    }
-    if nodes[0] <= -1i32 || nodes[n - 1] >= 1u32 {
-        return Err(QuadratureError::NoConvergence { n, why: "a node left (-1, 1)".into() });
-    }
-    Ok(GaussJacobiRule { alpha: alpha.clone(), beta: beta.clone(), nodes, weights, prec })
+    checked_rule(alpha, beta, nodes, weights, prec)
 }
 
 /// The rule of [`newton_rule`] for `prec` <= [`DD_ONLY_PREC`], every Newton pass in double-double
@@ -728,6 +720,19 @@ fn dd_rule(
         nodes.push(round(x));
         weights.push(round(mu0.div(sum)));
     }
+    checked_rule(alpha, beta, nodes, weights, prec)
+}
+
+/// The rule from its nodes and weights, after the checks both Newton routes end with: nodes
+/// strictly increasing inside (-1, 1).
+fn checked_rule(
+    alpha: &Float,
+    beta: &Float,
+    nodes: Vec<Float>,
+    weights: Vec<Float>,
+    prec: u32,
+) -> Result<GaussJacobiRule, QuadratureError> {
+    let n = nodes.len();
     for i in 1..n {
         if nodes[i] <= nodes[i - 1] {
             return Err(QuadratureError::NoConvergence { n, why: format!("nodes {} and {i} not increasing", i - 1) });
