@@ -364,17 +364,13 @@ impl Dd {
         let q3 = r.0 / o.0;
         Dd::two_sum(q1, q2).add(Dd(q3, 0.0))
     }
+    /// The product with Dekker's exact product.
     fn mul(self, o: Dd) -> Dd {
-        let p = Dd::two_prod(self.0, o.0);
-        Dd::two_sum(p.0, p.1 + (self.0 * o.1 + self.1 * o.0))
+        self.mul_g::<false>(o)
     }
+    /// The quotient with Dekker's exact product.
     fn div(self, o: Dd) -> Dd {
-        let q1 = self.0 / o.0;
-        let r = self.sub(o.mul(Dd(q1, 0.0)));
-        let q2 = r.0 / o.0;
-        let r = r.sub(o.mul(Dd(q2, 0.0)));
-        let q3 = r.0 / o.0;
-        Dd::two_sum(q1, q2).add(Dd(q3, 0.0))
+        self.div_g::<false>(o)
     }
 }
 
@@ -415,11 +411,19 @@ impl EvalDd {
 
     #[inline(always)]
     fn run_lanes_with<const FMA: bool>(&self, x: &[Dd; LANES]) -> [(Dd, Dd, Dd); LANES] {
+        self.recurrence::<LANES, FMA>(x).map(|(p, num, den, pm)| (p, num.div_g::<FMA>(den), pm))
+    }
+
+    /// The three-term recurrence of `Eval::run` at K points side by side (each lane with the
+    /// operations of one point alone): per point p_n, the numerator and the denominator of
+    /// p_n' = num/den, and p_{n-1}.
+    #[inline(always)]
+    fn recurrence<const K: usize, const FMA: bool>(&self, x: &[Dd; K]) -> [(Dd, Dd, Dd, Dd); K] {
         let n = self.a.len();
-        let (mut pm, mut p) = ([Dd(0.0, 0.0); LANES], [Dd(1.0, 0.0); LANES]);
+        let (mut pm, mut p) = ([Dd(0.0, 0.0); K], [Dd(1.0, 0.0); K]);
         for k in 0..n {
             let (a, b, ib) = (self.a[k], self.b[k], self.ib[k + 1]);
-            for l in 0..LANES {
+            for l in 0..K {
                 let t = x[l].sub(a).mul_g::<FMA>(p[l]).sub(b.mul_g::<FMA>(pm[l])).mul_g::<FMA>(ib);
                 pm[l] = p[l];
                 p[l] = t;
@@ -429,22 +433,13 @@ impl EvalDd {
             let c1 = self.shift.sub(x[l]).mul_g::<FMA>(Dd(n as f64, 0.0));
             let num = c1.mul_g::<FMA>(p[l]).add(self.c2.mul_g::<FMA>(pm[l]));
             let den = Dd(1.0, 0.0).sub(x[l]).mul_g::<FMA>(x[l].add(Dd(1.0, 0.0)));
-            (p[l], num.div_g::<FMA>(den), pm[l])
+            (p[l], num, den, pm[l])
         })
     }
 
-    /// The Newton step p_n(x)/p_n'(x), as `Eval::run` computes it.
+    /// The Newton step p_n(x)/p_n'(x) = p_n den/num, as `Eval::run` computes it.
     fn step(&self, x: Dd) -> Dd {
-        let n = self.a.len();
-        let (mut pm, mut p) = (Dd(0.0, 0.0), Dd(1.0, 0.0));
-        for k in 0..n {
-            let t = x.sub(self.a[k]).mul(p).sub(self.b[k].mul(pm)).mul(self.ib[k + 1]);
-            pm = p;
-            p = t;
-        }
-        let c1 = self.shift.sub(x).mul(Dd(n as f64, 0.0));
-        let num = c1.mul(p).add(self.c2.mul(pm));
-        let den = Dd(1.0, 0.0).sub(x).mul(x.add(Dd(1.0, 0.0)));
+        let [(p, num, den, _)] = self.recurrence::<1, false>(&[x]);
         p.mul(den).div(num)
     }
 }

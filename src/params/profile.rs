@@ -79,15 +79,23 @@ pub const CIRCLE_SIZE_CAP: f64 = 0.9;
 /// convex). The parabola and the sinusoid are not checked here. Each error names the parameter
 /// to change, its value and the valid range.
 pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64) -> Result<(), Error> {
-    let (size_name, size_value) = match problem.load() {
-        SlidingLoad::NormalLoad(p) => ("normal_load", crate::model::readable(p)),
-        SlidingLoad::HalfLength(l) => ("half_length", crate::model::readable(l)),
+    // The texts of the errors, formatted only when one is returned (the f64 solver calls this
+    // for every solve, most of them of the unchecked shapes).
+    let size_name = match problem.load() {
+        SlidingLoad::NormalLoad(_) => "normal_load",
+        SlidingLoad::HalfLength(_) => "half_length",
     };
-    let contact = format!(
-        "[-a, b] = [{}, {}]",
-        crate::numerics::accuracy::readable_f64(left),
-        crate::numerics::accuracy::readable_f64(right)
-    );
+    let size_value = || match problem.load() {
+        SlidingLoad::NormalLoad(p) => crate::model::readable(p),
+        SlidingLoad::HalfLength(l) => crate::model::readable(l),
+    };
+    let contact = || {
+        format!(
+            "[-a, b] = [{}, {}]",
+            crate::numerics::accuracy::readable_f64(left),
+            crate::numerics::accuracy::readable_f64(right)
+        )
+    };
     let (slope_at, curvature_at): (Box<dyn Fn(f64) -> f64>, Box<dyn Fn(f64) -> f64>) = match problem.shape() {
         PunchShape::Polynomial { coefficients } => {
             let to = |v: Vec<Exact>| v.iter().map(|c| to_f64(c).unwrap_or(f64::NAN)).collect::<Vec<f64>>();
@@ -101,9 +109,10 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
             if !(left.abs() < r && right.abs() < r) {
                 return Err(Error::Input(ModelError::new(
                     size_name,
-                    size_value,
+                    size_value(),
                     format!(
-                        "the contact {contact} of the circular punch reaches |x| = R = {} (radius): reduce {size_name} or enlarge the radius",
+                        "the contact {} of the circular punch reaches |x| = R = {} (radius): reduce {size_name} or enlarge the radius",
+                        contact(),
                         crate::model::readable(radius)
                     ),
                 )));
@@ -131,7 +140,8 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
             name,
             value,
             format!(
-                "the profile must be convex on the contact {contact} (g'' >= 0; docs/theory.md section 9), but g''({}) = {}",
+                "the profile must be convex on the contact {} (g'' >= 0; docs/theory.md section 9), but g''({}) = {}",
+                contact(),
                 crate::numerics::accuracy::readable_f64(*x),
                 crate::numerics::accuracy::readable_f64(*v)
             ),
@@ -142,9 +152,10 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
     if !(worst <= MAX_CONTACT_SLOPE) {
         return Err(Error::Input(ModelError::new(
             size_name,
-            size_value,
+            size_value(),
             format!(
-                "max |g'| on the contact {contact} is {} > {MAX_CONTACT_SLOPE}: the theory assumes a small slope |g'| << 1 [1.9] (neglected terms O(g'^2)); reduce {size_name}",
+                "max |g'| on the contact {} is {} > {MAX_CONTACT_SLOPE}: the theory assumes a small slope |g'| << 1 [1.9] (neglected terms O(g'^2)); reduce {size_name}",
+                contact(),
                 crate::numerics::accuracy::readable_f64(worst)
             ),
         )));

@@ -11,7 +11,7 @@ use super::solution::{SlidingSolutionF64, SlidingSolutionsF64, SolverOptions};
 use super::verify::check_run;
 use crate::model::SlidingProblem;
 use crate::numerics::accuracy::readable_f64;
-use crate::params::sliding::{check_profile_on_contact, ShapeF64, SlidingParamsF64};
+use crate::params::sliding::{check_profile_on_contact, SlidingParamsF64};
 use crate::sliding::physicality::refusal_in_reach;
 
 /// Every candidate root of the side conditions at the main run's nodes, before the physicality
@@ -70,11 +70,8 @@ pub fn solve_sliding_f64_with(
         let col = collocation(prm.theta, n)?;
         let st = state_of(prm, target, cand, n, false)?;
         let out = outputs(&col, prm, &st, points);
-        // Polynomial and circle: the contact inside |x| < R, convex, with a small slope (the
-        // check returns at once for the other shapes, but only after formatting its messages).
-        if matches!(prm.shape, ShapeF64::Polynomial { .. } | ShapeF64::Circular { .. }) {
-            check_profile_on_contact(problem, -out.a, out.b)?;
-        }
+        // Polynomial and circle: the contact inside |x| < R, convex, with a small slope.
+        check_profile_on_contact(problem, -out.a, out.b)?;
         let gap = match physicality(&col, prm, &st, &out) {
             Ok(g) => g,
             Err(r) if r.is_physical() => {
