@@ -17,7 +17,8 @@
 //!
 //! Files: `setup` (the parameters of one solve, once per precision), `contact` (the map x(u) and
 //! the slope basis), `equation` ([2.14] and the centre), `pressure` ([2.13], gap slope, integrals
-//! of p), `physical` (p >= 0, gap >= 0), `solve` (locating and refining the contact), `verify`
+//! of p), `physical` (p >= 0, gap >= 0), `solve` (locating and refining the contact), `scan`
+//! (the sinusoid's load-curve scan of the locating stage), `verify`
 //! (two runs), `solution`, `error`; for a polynomial or circular punch (docs/theory.md section 9)
 //! `profile` (g', g'' evaluated directly), `centre` (the centre by Newton's method) and
 //! `locate_profile`; `bracket` holds the locating stage's shared pieces.
@@ -52,6 +53,7 @@ pub mod locate_profile;
 pub mod physical;
 pub mod pressure;
 pub mod profile;
+pub mod scan;
 pub mod setup;
 pub mod solution;
 pub mod solve;

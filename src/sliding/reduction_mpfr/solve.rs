@@ -22,6 +22,7 @@ use super::locate_profile::{locate_profile, profile_nodes};
 use super::physical::{max_pressure, physicality, physicality_with};
 use super::pressure::Pressure;
 use super::profile::is_general;
+use super::scan::load_curves;
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
 use crate::model::{Exact, SlidingProblem};
@@ -38,8 +39,6 @@ use std::sync::Arc;
 /// Most nodes the solver will use for one rule.
 pub const NODE_CAP: usize = 3000;
 
-/// Digits of the sinusoid's load-curve scan (signs only).
-const SCAN_DIGITS: f64 = 8.0;
 /// How many nodes a run uses: `factor` times the error-model count for `digits`.
 #[derive(Debug, Clone, Copy)]
 pub struct NodeRule {
@@ -73,7 +72,7 @@ pub(super) fn lambda_cap(digits: f64, nmax: usize) -> f64 {
     2.0 * (-(digits + 4.0) * std::f64::consts::LN_10 / (2.0 * nmax as f64)).exp().atan()
 }
 
-fn bucket(n: usize) -> usize {
+pub(super) fn bucket(n: usize) -> usize {
     for b in [8usize, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512] {
         if n <= b {
             return b;
@@ -103,89 +102,13 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
     }
 }
 
-/// The rule for 1/omega with n nodes for the sinusoid's load-curve scan, which needs only the
-/// signs of P2 - target (SCAN_DIGITS): the f64 Gauss–Jacobi rule rounded to the parameters'
-/// precision ([`crate::numerics::gauss_jacobi_mpfr::gauss_jacobi_f64_lifted`], about 15 correct
-/// digits). The MPFR rule at the locating precision costs O(n^2) MPFR operations per Newton pass,
-/// and the scan up to the node cap needs rules of several hundred nodes (about 0.2 s in all, the
-/// solver's former floor); brackets are then refined with MPFR rules ([`load_lo`]). The rules come
-/// from the process cache of the MPFR rules: the f64 rules of several hundred nodes are O(n^2)
-/// each and were 40% of a repeated solve of the same problem (`cargo bench --bench solve --
-/// mpfr_solve`, perf), e.g. the report's sweeps and maps, which scan one (alpha, beta) at several
-/// loads.
-fn scan_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
-    let (a, b) = params.inverse_weight_exponents();
-    crate::numerics::gauss_jacobi_mpfr::gauss_jacobi_f64_lifted(&a, &b, n, params.prec)
-        .map_err(|e| SlidingError::NoConvergence(format!("the scan's f64 rule: {e}")))
-}
-
-/// The pairs of node counts of [`scan_signs`], tried in turn (lifted f64 rules; 96 and 128 are
-/// computed anyway for the grid's smaller sizes).
-pub(super) const SIGN_NODES: [(usize, usize); 2] = [(96, 128), (128, 192)];
-
-/// The relative load residuals `rel` on both centre branches at size `s` from two scan rules of
-/// fewer nodes than the scan's own `n_full` (a pair of [`SIGN_NODES`], n1 < n2 < n_full), when
-/// they settle every sign; None otherwise. The scan's rule at lambda near its cap has up to 384
-/// nodes, and its f64 rules are O(n^2) to build: the 192- and 384-node ones took 5.6 ms of a 25 ms
-/// cold solve of `scenes/sinusoid_friction.toml` (per-rule timing, a temporary trace), for two
-/// grid points whose residuals are far from 0.
-///
-/// The quadrature error decreases geometrically with n, like rho^(2n), rho = tan(lambda/2)
-/// (docs/theory.md section 3, [`nodes_for`]): from n1 to n2 by rho^(2 (n2 - n1)) <= 0.06 within the
-/// scan's range (rho <= 0.957 at its cap). Whenever it at least halves, the error of the n2-node
-/// value v2 is below |v2 - v1|, so |v2| > 16 |v2 - v1| + 1e-6 gives v2 the sign of the exact
-/// residual and of the full scan rule's value (itself within 1e-8 of it). Measured at the cap of
-/// `scenes/sinusoid_friction.toml` (lambda = 1.5258, the errors against 512 nodes): 1.55 at 64
-/// nodes (a wrong sign there), 0.135 at 96, 0.0101 at 128, 4.8e-5 at 192 (the pair (96, 128) does
-/// not settle it, (128, 192) does); at lambda = 1.4941: 5.0e-4, 5.0e-6, 4.0e-10 at 96, 128, 192.
-/// Only without the adhesive shear (beta tau0 = 0), where the sinusoid always has both branches
-/// ([`shift_solutions`]: none only if R < beta tau0); otherwise None (the caller uses the full rule).
-pub(super) fn scan_signs(
-    params: &SlidingParamsMpfr,
-    s: f64,
-    n_full: usize,
-    rel: &dyn Fn(&ShiftSolution) -> f64,
-) -> Result<Option<Vec<Option<f64>>>, SlidingError> {
-    if !params.tau0.is_zero() {
-        return Ok(None);
-    }
-    'pairs: for (n1, n2) in SIGN_NODES {
-        if n2 >= n_full {
-            break;
-        }
-        let (b1, b2) = (scan_values(params, s, n1, rel)?, scan_values(params, s, n2, rel)?);
-        let mut out = vec![];
-        for (x, y) in b1.into_iter().zip(b2) {
-            let (Some(v1), Some(v2)) = (x, y) else { return Ok(None) };
-            if !(v1.is_finite() && v2.is_finite() && v2.abs() > 16.0 * (v2 - v1).abs() + 1e-6) {
-                continue 'pairs;
-            }
-            out.push(Some(v2));
-        }
-        return Ok(Some(out));
-    }
-    Ok(None)
-}
-
-/// The residuals `rel` on both centre branches (None: no centre on the branch) at size `s` with
-/// the scan's n-node rule ([`scan_rule`]).
-pub(super) fn scan_values(
-    params: &SlidingParamsMpfr,
-    s: f64,
-    n: usize,
-    rel: &dyn Fn(&ShiftSolution) -> f64,
-) -> Result<Vec<Option<f64>>, SlidingError> {
-    let b = branches_with(params, &Float::with_val(params.prec, s), &*scan_rule(params, n)?)?;
-    Ok((0..2).map(|br| b.get(br).map(rel)).collect())
-}
-
 /// Centre solutions (all branches) at size s with n nodes.
 fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
     branches_with(params, s, &*inverse_rule(params, n)?)
 }
 
 /// Centre solutions (all branches) at size s with the rule `rule` for 1/omega.
-fn branches_with(
+pub(super) fn branches_with(
     params: &SlidingParamsMpfr,
     s: &Float,
     rule: &GaussJacobiRule,
@@ -213,7 +136,8 @@ fn locate(setup: &Setup) -> Result<Vec<Located>, SlidingError> {
     locate_with(setup, true)
 }
 
-/// [`locate`], the sinusoid's scan taking signs from rules of fewer nodes ([`scan_signs`]) when
+/// [`locate`], the sinusoid's scan taking signs from rules of fewer nodes
+/// ([`super::scan::scan_signs`]) when
 /// `sign_scan` (the same sizes, bit for bit: test `sign_scan_locates_the_same_sizes`).
 pub(super) fn locate_with(setup: &Setup, sign_scan: bool) -> Result<Vec<Located>, SlidingError> {
     let params = &setup.locate;
@@ -281,61 +205,9 @@ pub(super) fn locate_with(setup: &Setup, sign_scan: bool) -> Result<Vec<Located>
             Ok(vec![(root_in(|x| f(x, 0), (lo, flo), (hi, fhi))?, 0)])
         }
         (ShapeMpfr::Sinusoidal { .. }, _, TargetMpfr::NormalLoad(_)) => {
-            // Both centre branches come from the same two integrals: evaluate them once per point.
-            let grid = 48;
+            // Both centre branches come from the same two integrals: one scan gives both curves.
             let rel = |v: &ShiftSolution| (v.p2.to_f64() - target) / target;
-            // The values at a grid point with the scan's rule for SCAN_DIGITS (as the brackets
-            // below pass them on to Brent's method).
-            let exact = |s: f64| scan_values(params, s, bucket(nodes_for(s, SCAN_DIGITS)), &rel);
-            let mut curves: [Vec<(f64, Option<f64>)>; 2] = [vec![], vec![]];
-            let mut sign_only = vec![];
-            for i in 1..=grid {
-                let s = cap * i as f64 / grid as f64;
-                // The scan only needs signs: SCAN_DIGITS; brackets are refined with LOCATE_DIGITS.
-                let cheap = match sign_scan {
-                    true => scan_signs(params, s, bucket(nodes_for(s, SCAN_DIGITS)), &rel)?,
-                    false => None,
-                };
-                sign_only.push(cheap.is_some());
-                let values = match cheap {
-                    Some(v) => v,
-                    None => exact(s)?,
-                };
-                for (br, curve) in curves.iter_mut().enumerate() {
-                    curve.push((s, values[br]));
-                }
-            }
-            // A point whose values are signs only (scan_signs) gets the scan rule's values where
-            // they are used: next to a change of sign (a bracket's end) or a missing branch. If
-            // one of them disagreed in sign, every such point is recomputed (never observed; the
-            // scan is then as without scan_signs).
-            let differs = |i: usize, j: usize| {
-                curves.iter().any(|c| match (c[i].1, c[j].1) {
-                    (Some(x), Some(y)) => (x < 0.0) != (y < 0.0) || x == 0.0 || y == 0.0,
-                    _ => true,
-                })
-            };
-            let used: Vec<usize> = (0..grid)
-                .filter(|&i| sign_only[i] && ((i > 0 && differs(i - 1, i)) || (i + 1 < grid && differs(i, i + 1))))
-                .collect();
-            let mut disagreed = false;
-            for i in used {
-                let values = exact(curves[0][i].0)?;
-                for (br, curve) in curves.iter_mut().enumerate() {
-                    let sign = |v: Option<f64>| v.map(|v| v.partial_cmp(&0.0));
-                    disagreed |= sign(values[br]) != sign(curve[i].1);
-                    curve[i].1 = values[br];
-                }
-                sign_only[i] = false;
-            }
-            if disagreed {
-                for i in (0..grid).filter(|&i| sign_only[i]) {
-                    let values = exact(curves[0][i].0)?;
-                    for (br, curve) in curves.iter_mut().enumerate() {
-                        curve[i].1 = values[br];
-                    }
-                }
-            }
+            let curves = load_curves(params, cap, &rel, sign_scan)?;
             let mut found = vec![];
             for (br, curve) in curves.iter().enumerate() {
                 for w in curve.windows(2) {
