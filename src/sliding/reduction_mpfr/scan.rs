@@ -1,6 +1,6 @@
 //! The sinusoid's load-curve scan of the locating stage: the relative load residual on both
 //! centre branches at 48 sizes up to the stage's cap, whose changes of sign bracket the contact
-//! sizes that `solve::locate_with` then refines. Only signs matter here ([`SCAN_DIGITS`]); the
+//! sizes that `solve::locate_with` then refines. Only signs matter here (`SCAN_DIGITS`); the
 //! values at a bracket's ends are passed on to Brent's method, so they are always the scan rule's.
 
 use super::equation::ShiftSolution;
