@@ -368,19 +368,22 @@ pub fn omega(u: f64, theta: f64) -> f64 {
     }
 }
 
-/// [`omega_cauchy_exterior`] with sec(pi theta) given and X(u) = sqrt((u - 1)(u + 1))
-/// ((u + 1)/(u - 1))^theta for u > 1, -sqrt((u - 1)(u + 1)) ((-1 - u)/(1 - u))^theta for u < -1,
-/// the logarithms of the ratios as ln1p(2/(u - 1)) and -ln1p(2/(-1 - u)) (the differences exact
-/// near the ends, no cancellation in 1 + x): one square root, logarithm and exponential instead
-/// of two powers and a cosine (test `omega_forms_agree`).
-pub fn omega_cauchy_exterior_sec(u: f64, theta: f64, sec_pi_theta: f64) -> f64 {
+/// The exterior weight X(u) of [`omega_cauchy_exterior`] for real |u| >= 1: X(u) =
+/// sqrt((u - 1)(u + 1)) ((u + 1)/(u - 1))^theta = (u - 1)^{1/2-theta} (u + 1)^{1/2+theta} for
+/// u >= 1, and -sqrt((u - 1)(u + 1)) ((-1 - u)/(1 - u))^theta = -(1 - u)^{1/2-theta}
+/// (-1 - u)^{1/2+theta} for u <= -1 (omega's factors continued across each end, real on each
+/// side, with the sign of u). The logarithms of the ratios are ln1p(2/(u - 1)) and
+/// -ln1p(2/(-1 - u)) (the differences exact near the ends, no cancellation in 1 + x): one square
+/// root, logarithm and exponential instead of two powers (test `omega_forms_agree`). Off the
+/// contact of Problem 1 the gap's slope is this weight times the pressure factor's continuation
+/// (`sliding::collocation_f64`'s `physical.rs`).
+pub fn omega_exterior(u: f64, theta: f64) -> f64 {
     let root = ((u - 1.0) * (u + 1.0)).sqrt();
-    let x = if u > 0.0 {
+    if u > 0.0 {
         root * (theta * (2.0 / (u - 1.0)).ln_1p()).exp()
     } else {
         -root * (-theta * (2.0 / (-1.0 - u)).ln_1p()).exp()
-    };
-    (u + 2.0 * theta - x) * sec_pi_theta
+    }
 }
 
 /// Barycentric weights for interpolation in the nodes of a Gauss–Jacobi rule:
@@ -462,7 +465,8 @@ mod tests {
             let sec = 1.0 / (PI * theta).cos();
             for k in 0..=400 {
                 for v in [1.0 + k as f64 / 200.0 + 1e-13, -(1.0 + k as f64 / 200.0 + 1e-13)] {
-                    let (c, d) = (omega_cauchy_exterior(v, theta), omega_cauchy_exterior_sec(v, theta, sec));
+                    let d = (v + 2.0 * theta - omega_exterior(v, theta)) * sec;
+                    let c = omega_cauchy_exterior(v, theta);
                     // Both forms cancel u + 2 theta against X(u) alike; compare on the scale of
                     // the terms, (|u| + 1) sec(pi theta).
                     let scale = (v.abs() + 1.0) * sec;

@@ -17,8 +17,10 @@
 //! Off the contact the same K enters the slope of the gap: with the rotation of the Flamant sum
 //! removed ((E*/2) v' gains beta P1/L) and the steady wear slope cW P2/L of the worn surface,
 //! h' = g' - (2/E*) (H[p] - K) (the MPFR method's continuation of [2.8] contains it by
-//! construction); [`k_constant`] gives it to the gap check, and the two halves of the gap then
-//! meet over the free arc.
+//! construction). The f64 method's slope off the contact, the continued collocated equation
+//! (`physical.rs`), holds it through the solvability condition, and its plain rule where the
+//! profile has no continuation (beyond a circle's wall) takes it from [`k_constant`]; the two
+//! halves of the gap then meet over the free arc.
 
 use super::interpolant::Basis;
 use super::tangent_map::Map;

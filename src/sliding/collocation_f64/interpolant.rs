@@ -4,7 +4,7 @@
 
 use super::error::Result;
 use super::operator::{nearest_collocation_point, Collocation, GridPoint};
-use super::profile::slope_divided_difference;
+use super::profile::{analytic_slope, slope_divided_difference};
 use super::tangent_map::Map;
 use crate::params::sliding::ShapeF64;
 use std::f64::consts::PI;
@@ -98,6 +98,37 @@ impl Rhs {
     }
 }
 
+impl Rhs {
+    /// Off the contact, at u (|u| >= 1) and x = c + `xi` (xi = x(u) - c known, so no arctangent
+    /// of the tangent map is needed): the continuation of the full right side,
+    /// F(x) = (E*/2) g'(x) (the parabola's E* k c, which its state keeps in K, added back; the
+    /// analytic g', not reduced to the cell), and F[u, x_r] = (F(u) - F(x_r))/(u - x_r) at the
+    /// collocation point x_r with `xi_r` = x(x_r) - c. Since |x_r| < 1 <= |u|, u - x_r does not
+    /// vanish and the quotient of the offsets loses no more than ln(1/(1 - |x_r|)) bits of its
+    /// own (F's differences as in [`Self::divided_difference`], the map's from the offsets).
+    pub(super) fn off_contact(&self, map: &Map, c: f64, u: f64, xi: f64, xr: f64, xi_r: f64) -> (f64, f64) {
+        // x[u, x_r]: l, or (xi - xi_r)/(u - x_r).
+        let dx = || match *map {
+            Map::Single { l } => l,
+            Map::Periodic { .. } => (xi - xi_r) / (u - xr),
+        };
+        match (self, *map) {
+            (&Rhs::Offset { s }, _) => (s * (c + xi), s * dx()),
+            (&Rhs::Sinusoid { s, x, y }, Map::Periodic { m, .. }) => {
+                // sin 2phi, cos 2phi of tan phi = m u.
+                let t = m * u;
+                let q = 1.0 + t * t;
+                (s * (x * 2.0 * t / q + y * (1.0 - t * t) / q), self.divided_difference(map, u, xr))
+            }
+            (Rhs::Sinusoid { .. }, Map::Single { .. }) => unreachable!("sinusoid needs a period"),
+            (Rhs::Profile { half_e, c: cp, shape }, _) => (
+                half_e * analytic_slope(shape, cp + xi),
+                half_e * slope_divided_difference(shape, cp + xi, cp + xi_r) * dx(),
+            ),
+        }
+    }
+}
+
 /// G(u) by the Nyström interpolant of the collocation equation [reconstructed]: from
 /// G(u) D(u) = F(u) - K - (1/pi) sum_k W_k G_k/(u - t_k), D(u) = (u + 2 theta)/cos(pi theta)
 /// - (1/pi) sum_k W_k/(u - t_k) (the kappa-term plus the exact PV Cauchy transform of omega, see
@@ -139,58 +170,85 @@ pub(super) fn g_at(col: &Collocation, st: &State, u: f64) -> f64 {
 
 /// G at the points of the operator's [`super::operator::SampleGrid`] (in its order): the same
 /// values as [`g_at`] there, to the bit, from the precomputed weights (n multiply-adds and one
-/// divided difference of F per point, no division per node).
+/// divided difference of F per point, no division per node). Each point's sum runs over the
+/// nodes in order, as in [`g_at`]; the points run side by side (the node loop outside), so the
+/// sums do not wait for each other.
 pub(super) fn g_on_grid(col: &Collocation, st: &State) -> Vec<f64> {
     let grid = &col.grid;
-    let n = col.rule.nodes.len();
-    let g = &st.g[..n];
-    grid.at
+    let (n, points) = (col.rule.nodes.len(), grid.u.len());
+    let mut num: Vec<f64> = grid
+        .at
         .iter()
-        .enumerate()
-        .map(|(i, at)| match *at {
-            GridPoint::Node(k) => g[k],
-            GridPoint::Row(r) => {
-                let mut num = st.rhs.divided_difference(&st.map, grid.u[i], col.colloc[r]);
-                for (q, gk) in grid.q[i * n..(i + 1) * n].iter().zip(g) {
-                    num += q * gk;
-                }
-                num / grid.den[i]
-            }
+        .zip(&grid.u)
+        .map(|(at, &u)| match *at {
+            GridPoint::Node(_) => 0.0,
+            GridPoint::Row(r) => st.rhs.divided_difference(&st.map, u, col.colloc[r]),
         })
-        .collect()
-}
-
-/// Nodes per chunk of the reciprocals in [`g_and_cauchy_sum`].
-const CHUNK: usize = 32;
-
-/// G(u) of [`g_at`] for u off the contact (|u| >= 1, never a node) together with the node sum
-/// of the Cauchy transform there, S(u) = sum_k W_k (G(u) - G_k)/(u - t_k), from one reciprocal
-/// 1/(u - t_k) per node (the gap's slope, `physical::hilbert_outside`): S = G(u) sum_k W_k/(u -
-/// t_k) - sum_k W_k G_k/(u - t_k), all terms of one sign off the contact.
-pub(super) fn g_and_cauchy_sum(col: &Collocation, st: &State, u: f64) -> (f64, f64) {
-    let xs = &col.colloc;
-    let n = col.rule.nodes.len();
-    let r = if u < 0.0 { 0 } else { xs.len() - 1 };
-    let row = &col.kernel[r * n..(r + 1) * n];
-    let (mut num, mut den) = (st.rhs.divided_difference(&st.map, u, xs[r]), col.sec_pi_theta);
-    let (mut sw, mut swg) = (0.0, 0.0);
-    // The reciprocals a chunk at a time (a loop the compiler vectorises), then the sums in node
-    // order: the same operations as one loop, so the same bits.
-    let mut inv = [0.0; CHUNK];
-    for start in (0..n).step_by(CHUNK) {
-        let m = CHUNK.min(n - start);
-        for (v, t) in inv[..m].iter_mut().zip(&col.rule.nodes[start..start + m]) {
-            *v = 1.0 / (u - t);
-        }
-        let nodes = col.rule.weights[start..start + m].iter().zip(&st.g[start..start + m]).zip(&row[start..start + m]);
-        for (((w, g), k), inv) in nodes.zip(&inv[..m]) {
-            let q = k * inv;
-            num += q * g;
-            den += q;
-            sw += w * inv;
-            swg += w * g * inv;
+        .collect();
+    for (q, gk) in grid.q.chunks_exact(points).zip(&st.g[..n]) {
+        for (nu, qk) in num.iter_mut().zip(q) {
+            *nu += qk * gk;
         }
     }
-    let gu = num / den;
-    (gu, gu * sw - swg)
+    for ((nu, at), den) in num.iter_mut().zip(&grid.at).zip(&grid.den) {
+        *nu = match *at {
+            GridPoint::Node(k) => st.g[k],
+            GridPoint::Row(_) => *nu / den,
+        };
+    }
+    num
+}
+
+/// Points per batch of [`g_off_contact`].
+const LANES: usize = 8;
+
+/// G(u) of [`g_at`] at points `us` off the contact (|u| >= 1, never a node), all on one side
+/// (u >= 1 or u <= -1, so the nearest collocation point x_r is the last or the first), from the
+/// divided differences F[u, x_r] already known (`dds`, [`Rhs::off_contact`]): the points a batch
+/// of [`LANES`] at a time, each with the same operations in the same order as the others (the
+/// node loop outside, a loop over the batch inside that the compiler vectorises), so a point's
+/// value does not depend on the batch it is in.
+pub(super) fn g_off_contact(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor has the `avx2` feature (checked above).
+        return unsafe { g_off_contact_avx2(col, st, us, dds, out) };
+    }
+    g_off_contact_with(col, st, us, dds, out)
+}
+
+/// [`g_off_contact_with`] compiled for 256-bit vectors: four divisions per instruction instead of
+/// two; the same operations on each lane (no fused multiply-adds), so the same bits.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn g_off_contact_avx2(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
+    g_off_contact_with(col, st, us, dds, out)
+}
+
+#[inline(always)]
+fn g_off_contact_with(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
+    let n = col.n();
+    let (nodes, g) = (&col.rule.nodes[..n], &st.g[..n]);
+    for ((u, dd), out) in us.chunks(LANES).zip(dds.chunks(LANES)).zip(out.chunks_mut(LANES)) {
+        let m = u.len();
+        let r = if u[0] < 0.0 { 0 } else { col.colloc.len() - 1 };
+        debug_assert!(u.iter().all(|v| (*v < 0.0) == (u[0] < 0.0) && v.abs() >= 1.0), "one side, off the contact");
+        let row = &col.kernel[r * n..(r + 1) * n];
+        // Unused lanes at u = 2 (off every node), their results dropped.
+        let mut uu = [2.0; LANES];
+        uu[..m].copy_from_slice(u);
+        let mut num = [0.0; LANES];
+        num[..m].copy_from_slice(dd);
+        let mut den = [col.sec_pi_theta; LANES];
+        for ((w, t), gk) in row.iter().zip(nodes).zip(g) {
+            for ((v, nu), de) in uu.iter().zip(&mut num).zip(&mut den) {
+                let q = w / (v - t);
+                *nu += q * gk;
+                *de += q;
+            }
+        }
+        for ((o, nu), de) in out.iter_mut().zip(&num).zip(&den) {
+            *o = nu / de;
+        }
+    }
 }

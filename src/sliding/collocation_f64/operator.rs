@@ -50,7 +50,8 @@ pub(super) struct SampleGrid {
     pub(super) omega: Vec<f64>,
     /// Per point: the collocation point x_r of the interpolant, or the node u falls on.
     pub(super) at: Vec<GridPoint>,
-    /// q_k per point, n each (zeros for a point on a node).
+    /// q_k by node: row k holds q_k of every point in the points' order (zero for a point on
+    /// a node), so that a state's sums over k run for all points side by side.
     pub(super) q: Vec<f64>,
     /// sec(pi theta) + sum_k q_k per point.
     pub(super) den: Vec<f64>,
@@ -70,20 +71,20 @@ impl SampleGrid {
         let n = rule.nodes.len();
         let u = pressure_points();
         let omega = u.iter().map(|&v| gauss_jacobi_f64::omega(v, theta)).collect();
-        let (mut at, mut q, mut den) = (Vec::with_capacity(u.len()), Vec::with_capacity(u.len() * n), Vec::new());
-        for &v in &u {
+        let points = u.len();
+        let (mut at, mut q, mut den) = (Vec::with_capacity(points), vec![0.0; points * n], Vec::new());
+        for (i, &v) in u.iter().enumerate() {
             if let Some(k) = rule.nodes.iter().position(|t| *t == v) {
                 at.push(GridPoint::Node(k));
-                q.extend(std::iter::repeat_n(0.0, n));
                 den.push(1.0);
                 continue;
             }
             let r = nearest_collocation_point(colloc, v);
             let row = &kernel[r * n..(r + 1) * n];
             let mut d = sec_pi_theta;
-            for (w, t) in row.iter().zip(&rule.nodes) {
+            for (k, (w, t)) in row.iter().zip(&rule.nodes).enumerate() {
                 let qk = w / (v - t);
-                q.push(qk);
+                q[k * points + i] = qk;
                 d += qk;
             }
             at.push(GridPoint::Row(r));

@@ -1,98 +1,62 @@
 //! The f64 method's side of the shared physicality criterion ([`crate::sliding::physicality`]):
-//! p/omega = G(u) from the Nyström interpolant, and the surface slope off the contact from H[p]
-//! (docs/theory.md section 2): w = g' - h' = (2/E*) (H[p] - K) - 2 beta tau0/E* (the last term removes
-//! the adhesive shear's edge step, which the criterion leaves out; K of the `periodic` convention,
-//! `closure.rs`); the profile's height from [`row_height_f64`].
+//! p/omega = G(u) from the Nyström interpolant, and the surface slope off the contact from the
+//! continuation of the collocated equation; the profile's height from [`row_height_f64`].
+//!
+//! # The slope off the contact [derived here]
+//! Off the contact (|u| > 1) the Cauchy part of H[p] (docs/theory.md section 2) for p = omega G,
+//! with G continued by the Nyström interpolant G_N ([`super::interpolant::g_at`]), is
+//!
+//! ```text
+//! C(u) = G_N(u) Omega(u) - (1/pi) sum_k W_k (G_N(u) - G_k)/(u - t_k)
+//! ```
+//!
+//! (exact for a polynomial G; Omega = (1/pi) int omega/(u - t) = (u + 2 theta - X(u)) sec(pi theta),
+//! [`crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior`], X the exterior weight
+//! [`omega_exterior`]). G_N solves the collocation equation continued to u,
+//! G_N D = F - K_c - (1/pi) sum_k W_k G_k/(u - t_k), D(u) = (u + 2 theta) sec(pi theta) - (1/pi)
+//! sum_k W_k/(u - t_k) (`interpolant.rs`; K_c the constant of the collocated equation). Since
+//! Omega - (1/pi) sum_k W_k/(u - t_k) = D - sec(pi theta) X, the sums cancel:
+//!
+//! ```text
+//! C(u) = G_N (D - sec X) + (1/pi) sum_k W_k G_k/(u - t_k) = F(u) - K_c - sec(pi theta) G_N(u) X(u).
+//! ```
+//!
+//! With the solvability condition C0[p] - K_c = beta tau0 + K (K of the convention, `closure.rs`;
+//! for the parabola K_c also holds E* k c, put back into F by [`super::interpolant::Rhs::off_contact`])
+//! H[p] = C + C0[p] = (E*/2) g'(x) + beta tau0 + K - sec(pi theta) G_N X, and the criterion's slope
+//! w = (2/E*) (H[p] - K) - 2 beta tau0/E* ([`ContactFunctions::surface_slope`]) is
+//!
+//! ```text
+//! w(x) = g'(x) - (2/E*) sec(pi theta) G_N(u) X(u),   i.e.  h'(x) = (2/E*) sec(pi theta) X(u) G_N(u):
+//! ```
+//!
+//! off the contact the gap's slope is the pressure factor continued with the exterior weight, as
+//! p = omega G on it (g' the analytic profile, not reduced to the cell: the criterion takes the
+//! row's height exactly). Per point: the tangent map's tangent, X (a logarithm and an
+//! exponential) and the n terms of G_N, without the arctangent of F and the n-term Cauchy sum of
+//! the form above, and with no separate far-field rule (it holds for every |u| >= 1). Only where
+//! the profile has no continuation (beyond a circle's wall, where the row has no punch) the plain
+//! rule of H[p] takes over. The n terms of G_N run for a batch of points side by side
+//! ([`g_off_contact`]). The test `the_continued_slope_is_the_cauchy_transform` compares the slope
+//! with the Cauchy form near the contact and with the plain rule far from it.
 
 use super::closure::k_constant;
-use super::interpolant::{g_and_cauchy_sum, g_at, State};
+use super::interpolant::{g_at, g_off_contact, State};
 use super::operator::Collocation;
 use super::outputs::Outputs;
-use super::tangent_map::Map;
 use crate::model::Convention;
-use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior_sec;
+use crate::numerics::gauss_jacobi_f64::omega_exterior;
 use crate::params::sliding::SlidingParamsF64;
 use crate::params::sliding::{row_height_f64, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
-/// H[p](x) for x outside the contact (docs/theory.md section 2). Near the contact (|u| <= 3) the
-/// Cauchy part is G(u) (1/pi) int omega/(u - t) - (1/pi) sum W_k (G(u) - G_k)/(u - t_k)
-/// (exact for the polynomial G; both sums from one reciprocal per node, [`g_and_cauchy_sum`]),
-/// with the closed form of [`omega_cauchy_exterior_sec`]; farther out
-/// the plain rule in the cot (or 1/(x - xi)) form, through the node terms of [`FarField`].
-/// `c0` is C0[p] of the state ([`c0_of`]).
-fn hilbert_outside(col: &Collocation, st: &State, far: &FarField, theta: f64, c0: f64, x: f64) -> f64 {
-    let u = st.map.u_of_x(x, st.c);
-    if u.is_finite() && u.abs() <= 3.0 {
-        // Off the contact |u| >= 1; rounding at the very edge could give |u| slightly below 1.
-        let u = u.signum() * u.abs().max(1.0);
-        let (gu, s) = g_and_cauchy_sum(col, st, u);
-        gu * omega_cauchy_exterior_sec(u, theta, col.sec_pi_theta) - s / PI + c0
-    } else {
-        far.at(st, x)
-    }
-}
-
-/// The plain rule for H[p] far from the contact, its node factors computed once per state:
-/// periodic, with phi_x = pi (x - c)/L and phi_k = atan(m t_k) = pi (xi_k - c)/L (the tangent
-/// map), the node term W_k G_k x'(t_k)/(L tan(phi_x - phi_k)) is
-///
-/// ```text
-/// a_k (cos phi_x + b_k sin phi_x)/(sin phi_x - b_k cos phi_x),
-/// a_k = W_k G_k m/(pi (1 + m^2 t_k^2)),   b_k = m t_k = tan phi_k
-/// ```
-///
-/// (cot(phi_x - phi_k) with cos phi_k, sin phi_k = (1, b_k)/sqrt(1 + b_k^2)): one sine and cosine
-/// per point instead of a tangent per node; single punch: W_k G_k l/(pi (x - xi_k)),
-/// xi_k = c + l t_k.
-struct FarField {
-    /// (a_k, b_k) periodic, or (W_k G_k l/pi, xi_k) single.
-    nodes: Vec<(f64, f64)>,
-}
-
-impl FarField {
-    fn new(col: &Collocation, st: &State) -> Self {
-        let nodes = col
-            .rule
-            .nodes
-            .iter()
-            .zip(&col.rule.weights)
-            .zip(&st.g)
-            .map(|((t, w), g)| match st.map {
-                Map::Periodic { m, .. } => (w * g * m / (PI * (1.0 + m * m * t * t)), m * t),
-                Map::Single { l } => (w * g * l / PI, st.c + l * t),
-            })
-            .collect();
-        FarField { nodes }
-    }
-    fn at(&self, st: &State, x: f64) -> f64 {
-        match st.map {
-            Map::Periodic { big_l, .. } => {
-                let (s, c) = (PI * (x - st.c) / big_l).sin_cos();
-                // The terms a chunk at a time (a loop with a division per node that the compiler
-                // vectorises), then summed in node order from the same start as `sum`: the
-                // same bits as one `map(..).sum()`.
-                let mut terms = [0.0; 32];
-                let mut total = -0.0;
-                for chunk in self.nodes.chunks(32) {
-                    for (v, (a, b)) in terms.iter_mut().zip(chunk) {
-                        *v = a * (c + b * s) / (s - b * c);
-                    }
-                    for v in &terms[..chunk.len()] {
-                        total += v;
-                    }
-                }
-                total
-            }
-            Map::Single { .. } => self.nodes.iter().map(|(a, xi)| a / (x - xi)).sum(),
-        }
-    }
-}
-
-/// C0[p] = sum_k W_k G_k (1/pi) m^2 t_k/(1 + m^2 t_k^2) (docs/theory.md section 2); 0 for a single punch.
-fn c0_of(col: &Collocation, st: &State) -> f64 {
-    col.sum(&st.g, |t| st.map.c0_weight(t))
+/// The collocation points next to each end, x_0 and x_n, with their offsets x(x_r) - c: the
+/// Nyström interpolant's point for u <= -1 and u >= 1.
+#[derive(Clone, Copy)]
+struct End {
+    xr: f64,
+    xi_r: f64,
 }
 
 /// The f64 solution seen by the criterion.
@@ -100,11 +64,72 @@ struct Functions<'a> {
     col: &'a Collocation,
     prm: &'a SlidingParamsF64,
     st: &'a State,
-    far: FarField,
-    c0: f64,
-    k_const: f64,
+    /// The trailing and the leading end's collocation points.
+    ends: [End; 2],
+    /// C0[p] - K (K of the convention, `closure.rs`), for [`Self::plain_rule`].
+    c0_minus_k: f64,
     /// G at the operator's samples ([`Outputs::grid_g`]).
     grid_g: &'a [f64],
+}
+
+impl<'a> Functions<'a> {
+    fn new(col: &'a Collocation, prm: &'a SlidingParamsF64, st: &'a State, out: &'a Outputs) -> Self {
+        let end = |xr: f64| End { xr, xi_r: st.map.offset(xr) };
+        let ends = [end(col.colloc[0]), end(col.colloc[col.colloc.len() - 1])];
+        let c0 = col.sum(&st.g, |t| st.map.c0_weight(t));
+        Functions { col, prm, st, ends, c0_minus_k: c0 - k_constant(prm, out.p2, out.l), grid_g: &out.grid_g }
+    }
+
+    /// w at u from the plain rule, H[p] = (1/pi) sum_k W_k G_k/(u - t_k) + C0[p] (docs/theory.md
+    /// section 2; its error, the rule's for the Cauchy transform of omega times G_N, falls like
+    /// (|u| + sqrt(u^2 - 1))^(-2n)): where the profile has no continuation to continue the
+    /// equation with (beyond a circle's wall, where the row has no punch and the gap is
+    /// +infinity whatever its slope).
+    fn plain_rule(&self, u: f64) -> f64 {
+        let (col, prm) = (self.col, self.prm);
+        let cauchy: f64 =
+            col.rule.nodes.iter().zip(&col.rule.weights).zip(&self.st.g).map(|((t, w), g)| w * g / (u - t)).sum();
+        2.0 / prm.e_star * (cauchy / PI + self.c0_minus_k) - 2.0 * prm.beta * prm.tau0 / prm.e_star
+    }
+
+    /// u of x = c + xi off the contact (|u| >= 1: rounding at the very edge could give |u|
+    /// slightly below 1).
+    fn u_off_contact(&self, xi: f64) -> f64 {
+        let u = self.st.map.u_of_offset(xi);
+        u.signum() * u.abs().max(1.0)
+    }
+
+    /// w at points of one side of the contact (module doc), by batches of the same side.
+    fn slopes_one_side(&self, xis: &[f64], out: &mut [f64]) {
+        const BATCH: usize = 16;
+        let (prm, st) = (self.prm, self.st);
+        let (mut us, mut fs, mut dds, mut gs) = ([0.0; BATCH], [0.0; BATCH], [0.0; BATCH], [0.0; BATCH]);
+        for (xis, out) in xis.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
+            let m = xis.len();
+            for (i, &xi) in xis.iter().enumerate() {
+                let u = self.u_off_contact(xi);
+                let end = self.ends[usize::from(u > 0.0)];
+                (fs[i], dds[i]) = st.rhs.off_contact(&st.map, st.c, u, xi, end.xr, end.xi_r);
+                us[i] = u;
+            }
+            // Beyond a circle's wall F has no value: those points by the plain rule.
+            let mut continued = [true; BATCH];
+            for ((c, f), dd) in continued.iter_mut().zip(&fs).zip(&mut dds[..m]) {
+                if !(f.is_finite() && dd.is_finite()) {
+                    (*c, *dd) = (false, 0.0);
+                }
+            }
+            g_off_contact(self.col, st, &us[..m], &dds[..m], &mut gs[..m]);
+            let h = 2.0 / prm.e_star;
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = if continued[i] {
+                    h * (fs[i] - self.col.sec_pi_theta * gs[i] * omega_exterior(us[i], prm.theta))
+                } else {
+                    self.plain_rule(us[i])
+                };
+            }
+        }
+    }
 }
 
 impl ContactFunctions for Functions<'_> {
@@ -120,10 +145,23 @@ impl ContactFunctions for Functions<'_> {
             us.iter().map(|&u| self.pressure_factor(u)).collect()
         }
     }
+    /// w(x) = g'(x) - (2/E*) sec(pi theta) G_N(u) X(u) (module doc).
     fn surface_slope(&self, xi: f64) -> f64 {
-        let (prm, x) = (self.prm, self.st.c + xi);
-        2.0 / prm.e_star * (hilbert_outside(self.col, self.st, &self.far, prm.theta, self.c0, x) - self.k_const)
-            - 2.0 * prm.beta * prm.tau0 / prm.e_star
+        let mut w = [0.0];
+        self.surface_slopes(&[xi], &mut w);
+        w[0]
+    }
+    /// The same at many points, the terms of G_N for a batch of points at a time (the same
+    /// numbers as one at a time).
+    fn surface_slopes(&self, xis: &[f64], out: &mut [f64]) {
+        // Runs of points on one side of the contact (the gap's panels are): u has the sign of xi.
+        let mut start = 0;
+        while start < xis.len() {
+            let side = xis[start] > 0.0;
+            let len = xis[start..].iter().take_while(|xi| (**xi > 0.0) == side).count();
+            self.slopes_one_side(&xis[start..start + len], &mut out[start..start + len]);
+            start += len;
+        }
     }
     fn profile_height(&self, x: f64) -> f64 {
         row_height_f64(&self.prm.shape, self.prm.period, x)
@@ -167,14 +205,150 @@ pub(super) fn physicality(
     st: &State,
     out: &Outputs,
 ) -> Result<Assessment, Refusal> {
-    let f = Functions {
-        col,
-        prm,
-        st,
-        far: FarField::new(col, st),
-        c0: c0_of(col, st),
-        k_const: k_constant(prm, out.p2, out.l),
-        grid_g: &out.grid_g,
-    };
-    assess(&f, &setting(prm, out))
+    assess(&Functions::new(col, prm, st, out), &setting(prm, out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::candidates::{candidates, state_of};
+    use super::super::operator::collocation;
+    use super::super::outputs::outputs;
+    use super::super::solution::SolverOptions;
+    use super::super::tangent_map::Map;
+    use super::*;
+    use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
+    use crate::numerics::gauss_jacobi_f64::omega_cauchy_exterior;
+    use num_bigint::BigInt;
+    use std::f64::consts::PI;
+
+    fn q(n: i64, d: i64) -> Exact {
+        Exact::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    /// The sliding scenes' problems (`scenes/`, E* = 1, L = 1): (nu, shape, mu, tau0, cW, P2).
+    fn scene_problems() -> Vec<SlidingProblem> {
+        let parabola = || PunchShape::parabolic(q(1, 1)).unwrap();
+        let sinusoid = || PunchShape::sinusoidal(q(1, 100)).unwrap();
+        let cases = [
+            (q(3, 10), parabola(), q(3, 10), q(0, 1), q(0, 1), q(1, 100)),
+            (q(1, 4), parabola(), q(0, 1), q(0, 1), q(2, 5), q(1, 100)),
+            (q(3, 10), parabola(), q(1, 5), q(1, 100), q(0, 1), q(1, 100)),
+            (q(3, 10), sinusoid(), q(1, 2), q(0, 1), q(0, 1), q(1, 200)),
+            (q(3, 10), sinusoid(), q(0, 1), q(0, 1), q(0, 1), q(1, 200)),
+            (
+                q(1, 4),
+                PunchShape::polynomial(vec![q(0, 1), q(1, 50), q(1, 1), q(1, 2)]).unwrap(),
+                q(1, 5),
+                q(1, 100),
+                q(1, 10),
+                q(1, 20),
+            ),
+            (
+                q(3, 10),
+                PunchShape::polynomial(vec![q(0, 1), q(0, 1), q(1, 4), q(0, 1), q(1, 2)]).unwrap(),
+                q(3, 10),
+                q(0, 1),
+                q(0, 1),
+                q(1, 50),
+            ),
+            (q(3, 10), PunchShape::circular(q(1, 2)).unwrap(), q(3, 10), q(0, 1), q(0, 1), q(1, 50)),
+        ];
+        cases
+            .into_iter()
+            .map(|(nu, shape, mu, tau0, cw, p2)| {
+                SlidingProblem::builder()
+                    .material(Material::from_contact_modulus(nu, q(1, 1)).unwrap())
+                    .period(Period::finite(q(1, 1)).unwrap())
+                    .shape(shape)
+                    .friction(mu)
+                    .adhesive_friction(tau0)
+                    .wear(cw)
+                    .load(SlidingLoad::NormalLoad(p2))
+                    .build()
+                    .unwrap()
+            })
+            .collect()
+    }
+
+    /// The criterion's slope w = (2/E*) (H[p] - K) - 2 beta tau0/E* with H[p] off the contact in
+    /// the Cauchy form of the module doc near the contact (|u| <= 3: G_N(u) Omega(u) - (1/pi)
+    /// sum_k W_k (G_N(u) - G_k)/(u - t_k) + C0[p], G_N from `g_at`, Omega by powers) and by the
+    /// plain rule farther out (the node terms W_k G_k x'(t_k) cot(pi (x - xi_k)/L)/L, or
+    /// W_k G_k l/(pi (x - xi_k)) for a single punch), K by its formula (docs/theory.md section 8).
+    fn cauchy_form(col: &Collocation, prm: &SlidingParamsF64, st: &State, out: &Outputs, xi: f64) -> f64 {
+        let (nodes, weights, g) = (&col.rule.nodes, &col.rule.weights, &st.g);
+        let c0: f64 = (0..col.n()).map(|k| weights[k] * g[k] * st.map.c0_weight(nodes[k])).sum();
+        let u = st.map.u_of_offset(xi);
+        let h = if u.abs() <= 3.0 {
+            let u = u.signum() * u.abs().max(1.0);
+            let gu = g_at(col, st, u);
+            let s: f64 = (0..col.n()).map(|k| weights[k] * (gu - g[k]) / (u - nodes[k])).sum();
+            gu * omega_cauchy_exterior(u, prm.theta) - s / PI + c0
+        } else {
+            (0..col.n())
+                .map(|k| {
+                    let d = xi - st.map.offset(nodes[k]);
+                    let a = weights[k] * g[k] * st.map.jac(nodes[k]);
+                    match st.map {
+                        Map::Periodic { big_l, .. } => a / ((PI * d / big_l).tan() * big_l),
+                        Map::Single { .. } => a / (PI * d),
+                    }
+                })
+                .sum()
+        };
+        let k_const = match (prm.convention, prm.period) {
+            (Convention::PeriodicSurface, Some(big_l)) => {
+                (prm.kappa * out.p2 - 2.0 * prm.beta * out.l * prm.tau0) / big_l
+            }
+            _ => 0.0,
+        };
+        2.0 / prm.e_star * (h - k_const) - 2.0 * prm.beta * prm.tau0 / prm.e_star
+    }
+
+    /// The continued slope (module doc) against the Cauchy form, off both ends of every root
+    /// of the sliding scenes' problems, in both conventions, and of their single-punch variants: within
+    /// 1e-13 of the largest |w| (observed 7.0e-14). Batches give the same bits as
+    /// single points.
+    #[test]
+    fn the_continued_slope_is_the_cauchy_transform() {
+        let (mut cases, mut worst, mut walls) = (0, 0.0f64, 0);
+        for p in scene_problems() {
+            let variants = [Convention::Paper, Convention::PeriodicSurface]
+                .map(|c| p.to_builder().convention(c).build().ok())
+                .into_iter()
+                .chain([p.to_builder().period(Period::Infinite).build().ok()]);
+            for p in variants.flatten() {
+                let prm = SlidingParamsF64::new(&p).unwrap();
+                for (cand, n) in candidates(&prm, prm.target, &SolverOptions::default()).unwrap() {
+                    if n > 60 {
+                        continue; // a root near lambda = pi/2 (the sinusoid's second, unphysical)
+                    }
+                    let col = collocation(prm.theta, n).unwrap();
+                    let st = state_of(&prm, prm.target, cand, n, false).unwrap();
+                    let out = outputs(&col, &prm, &st, &[]);
+                    let f = Functions::new(&col, &prm, &st, &out);
+                    let reach = prm.period.map_or(4.0 * out.l, |big_l| 0.5 * big_l - out.l);
+                    let xis: Vec<f64> = [1.0, -1.0]
+                        .iter()
+                        .flat_map(|dir| (1..=200).map(move |j| dir * (out.l + reach * (j as f64 / 200.0).powi(4))))
+                        .collect();
+                    let mut w = vec![0.0; xis.len()];
+                    f.surface_slopes(&xis, &mut w);
+                    let reference: Vec<f64> = xis.iter().map(|xi| cauchy_form(&col, &prm, &st, &out, *xi)).collect();
+                    let scale = reference.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                    for ((xi, w), r) in xis.iter().zip(&w).zip(&reference) {
+                        assert_eq!(w.to_bits(), f.surface_slope(*xi).to_bits(), "batch vs one point at {xi}");
+                        assert!((w - r).abs() <= 1e-13 * scale, "n {n} xi {xi}: {w} vs {r} (scale {scale})");
+                        worst = worst.max((w - r).abs() / scale);
+                        if let ShapeF64::Circular { r } = prm.shape {
+                            walls += usize::from((st.c + xi).abs() >= r);
+                        }
+                    }
+                    cases += 1;
+                }
+            }
+        }
+        eprintln!("{cases} roots, worst {worst:.2e} of the largest |w|, {walls} points beyond a circle's wall");
+        assert!(cases >= 20 && walls > 0, "{cases} roots, {walls} points beyond a wall");
+    }
 }

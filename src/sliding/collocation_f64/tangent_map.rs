@@ -45,11 +45,11 @@ impl Map {
             Map::Single { .. } => xh,
         }
     }
-    /// u of a point x given the centre c: tan(pi (x - c)/L)/m   (or (x - c)/l).
-    pub(super) fn u_of_x(&self, x: f64, c: f64) -> f64 {
+    /// u of the point x = c + xi: tan(pi xi/L)/m   (or xi/l).
+    pub(super) fn u_of_offset(&self, xi: f64) -> f64 {
         match *self {
-            Map::Periodic { big_l, m, .. } => (PI * (x - c) / big_l).tan() / m,
-            Map::Single { l } => (x - c) / l,
+            Map::Periodic { big_l, m, .. } => (PI * xi / big_l).tan() / m,
+            Map::Single { l } => xi / l,
         }
     }
     /// Half-length l = L lambda/pi   (or l).

@@ -53,6 +53,14 @@ pub trait ContactFunctions {
     /// (it is the elastic response plus constants), with the surface convention's constant K
     /// included and the adhesive shear's edge step 2 beta tau0/E* left out (module doc).
     fn surface_slope(&self, xi: f64) -> f64;
+    /// [`Self::surface_slope`] at each of `xis` into `out` (the criterion passes a panel's
+    /// points at once): by default one at a time; a method may evaluate them together, with the
+    /// same numbers as one at a time.
+    fn surface_slopes(&self, xis: &[f64], out: &mut [f64]) {
+        for (o, xi) in out.iter_mut().zip(xis) {
+            *o = self.surface_slope(*xi);
+        }
+    }
     /// g of the punch row at x (the profile repeated from its cell, steps and all; +infinity
     /// where there is no punch), e.g. [`crate::params::sliding::row_height_f64`].
     fn profile_height(&self, x: f64) -> f64;
@@ -345,24 +353,36 @@ fn gap_side(f: &impl ContactFunctions, c: f64, start: f64, reach: f64, dir: f64)
     let g_end = f.profile_height(c + start);
     let mut w_int = 0.0;
     let mut out = Vec::with_capacity(GAP_SAMPLES);
-    let mut vals = [0.0; GAP_NODES];
+    let (mut xis, mut vals) = ([0.0; GAP_NODES], [0.0; GAP_NODES]);
     for &(a, b) in &GAP_PANELS {
         let (s0, s1) = (a as f64 / GAP_SAMPLES as f64, b as f64 / GAP_SAMPLES as f64);
         let half = 0.5 * (s1 - s0);
-        for (v, z) in vals.iter_mut().zip(&gr.rule.nodes) {
-            let s = 0.5 * (s0 + s1) + half * z;
-            // x - c = start + dir R s^4, dx/ds = 4 R s^3 (times dir).
-            let xi = start + dir * reach * s.powi(4);
-            *v = f.surface_slope(xi) * 4.0 * reach * s.powi(3);
+        let ss = gr.rule.nodes.iter().map(|z| 0.5 * (s0 + s1) + half * z);
+        // x - c = start + dir R s^4, dx/ds = 4 R s^3 (times dir).
+        for (xi, s) in xis.iter_mut().zip(ss.clone()) {
+            *xi = start + dir * reach * s.powi(4);
+        }
+        f.surface_slopes(&xis, &mut vals);
+        for (v, s) in vals.iter_mut().zip(ss) {
+            *v = *v * 4.0 * reach * s.powi(3);
         }
         let rows = &gr.partial[&(b - a)];
-        for (k, row) in rows.iter().enumerate() {
-            let inc: f64 = row.iter().zip(&vals).map(|(m, v)| m * v).sum();
+        // Each row's dot product with the node values, summed in node order from -0.0 as
+        // `Iterator::sum` does, the rows side by side (node loop outside) so that the sums do
+        // not wait for each other.
+        let mut incs = [-0.0; GAP_SAMPLES];
+        let incs = &mut incs[..rows.len()];
+        for (k, v) in vals.iter().enumerate() {
+            for (inc, row) in incs.iter_mut().zip(rows) {
+                *inc += row[k] * v;
+            }
+        }
+        for (k, inc) in incs.iter().enumerate() {
             // int_end^x w = dir int |dx| w.
             let x = c + start + dir * reach * ((a + k + 1) as f64 / GAP_SAMPLES as f64).powi(4);
             out.push((x, f.profile_height(x) - g_end - (w_int + dir * inc * half)));
         }
-        w_int += dir * half * rows.last().map_or(0.0, |row| row.iter().zip(&vals).map(|(m, v)| m * v).sum::<f64>());
+        w_int += dir * half * incs.last().copied().unwrap_or(0.0);
     }
     out
 }
