@@ -214,19 +214,21 @@ pub(super) fn g_off_contact(col: &Collocation, st: &State, us: &[f64], dds: &[f6
         // SAFETY: the processor has the `avx2` feature (checked above).
         return unsafe { g_off_contact_avx2(col, st, us, dds, out) };
     }
-    g_off_contact_with(col, st, us, dds, out)
+    g_off_contact_portable(col, st, us, dds, out)
 }
 
-/// [`g_off_contact_with`] compiled for 256-bit vectors: four divisions per instruction instead of
+/// [`g_off_contact_portable`] compiled for 256-bit vectors: four divisions per instruction instead of
 /// two; the same operations on each lane (no fused multiply-adds), so the same bits.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn g_off_contact_avx2(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
-    g_off_contact_with(col, st, us, dds, out)
+    g_off_contact_portable(col, st, us, dds, out)
 }
 
+/// [`g_off_contact`] for any processor (the vectors the target allows without run-time
+/// detection).
 #[inline(always)]
-fn g_off_contact_with(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
+pub(super) fn g_off_contact_portable(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
     let n = col.n();
     let (nodes, g) = (&col.rule.nodes[..n], &st.g[..n]);
     for ((u, dd), out) in us.chunks(LANES).zip(dds.chunks(LANES)).zip(out.chunks_mut(LANES)) {

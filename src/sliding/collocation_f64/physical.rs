@@ -32,7 +32,8 @@
 //!
 //! off the contact the gap's slope is the pressure factor continued with the exterior weight, as
 //! p = omega G on it (g' the analytic profile, not reduced to the cell: the criterion takes the
-//! row's height exactly). Per point: the tangent map's tangent, X (a logarithm and an
+//! row's height exactly). It is the statement of docs/theory.md section 3 that the MPFR method's
+//! gap uses with its own G ([`crate::sliding::reduction_mpfr::pressure::Pressure::gap_slope`]). Per point: the tangent map's tangent, X (a logarithm and an
 //! exponential) and the n terms of G_N, without the arctangent of F and the n-term Cauchy sum of
 //! the form above, and with no separate far-field rule (it holds for every |u| >= 1). Only where
 //! the profile has no continuation (beyond a circle's wall, where the row has no punch) the plain

@@ -476,6 +476,46 @@ fn g_on_the_fixed_samples_is_g_at_to_the_bit() {
     assert_eq!(on_node, 66);
 }
 
+/// G off the contact from the known divided differences (`interpolant::g_off_contact`, by
+/// batches, 256-bit vectors where the processor has them) is the portable one-lane code to the
+/// bit and the Nyström interpolant `g_at` (its F[u, x_r] by the arctangent form) to round-off,
+/// on both sides of the contact, for the parabola (periodic and single) and the sinusoid.
+#[test]
+fn g_off_the_contact_is_g_at() {
+    use super::candidates::state_of;
+    use super::interpolant::{g_at, g_off_contact, g_off_contact_portable};
+    use super::operator::collocation;
+    let cases = [
+        problem(r(3, 10), Some(r(1, 1)), parabola(r(1, 1)), r(3, 10), r(0, 1), r(0, 1), load(r(1, 100))),
+        problem(r(1, 4), None, parabola(r(1, 1)), r(1, 5), r(1, 50), r(1, 10), load(r(1, 100))),
+        problem(r(3, 10), Some(r(1, 1)), sinusoid(r(1, 20)), r(1, 2), r(0, 1), r(0, 1), load(r(1, 200))),
+    ];
+    for pb in &cases {
+        let prm = SlidingParamsF64::new(pb).unwrap();
+        for (cand, n) in candidates(&prm, prm.target, &SolverOptions::default()).unwrap() {
+            let col = collocation(prm.theta, n).unwrap();
+            let st = state_of(&prm, prm.target, cand, n, false).unwrap();
+            for side in [1.0, -1.0] {
+                // 21 points (two full batches and one partial) from the end to |u| = 21.
+                let us: Vec<f64> = (0..21).map(|j| side * (1.0 + j as f64 + 1e-9)).collect();
+                let r = if side > 0.0 { col.colloc.len() - 1 } else { 0 };
+                let (xr, xi_r) = (col.colloc[r], st.map.offset(col.colloc[r]));
+                let dds: Vec<f64> =
+                    us.iter().map(|&u| st.rhs.off_contact(&st.map, st.c, u, st.map.offset(u), xr, xi_r).1).collect();
+                let (mut fast, mut portable) = (vec![0.0; us.len()], vec![0.0; us.len()]);
+                g_off_contact(&col, &st, &us, &dds, &mut fast);
+                g_off_contact_portable(&col, &st, &us, &dds, &mut portable);
+                let scale = st.g.iter().fold(0.0f64, |m, g| m.max(g.abs()));
+                for ((u, f), p) in us.iter().zip(&fast).zip(&portable) {
+                    assert_eq!(f.to_bits(), p.to_bits(), "u = {u}");
+                    let direct = g_at(&col, &st, *u);
+                    assert!((f - direct).abs() <= 1e-13 * scale, "u = {u}: {f} vs {direct} (scale {scale})");
+                }
+            }
+        }
+    }
+}
+
 /// `Collocation::solve` (the substitutions on the stored factors) gives nalgebra's `LU::solve`
 /// of the same matrix to the bit, for both signs of theta, theta = 0 and several sizes.
 #[test]
