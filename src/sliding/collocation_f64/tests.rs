@@ -436,6 +436,17 @@ fn digits_per_quantity_follow_the_accuracy_rule() {
     assert!(d.min() >= 12.0 && d.min() <= 15.0, "{d:?}");
 }
 
+/// One problem per kind of right-hand side of the collocation: the periodic parabola with
+/// friction, the single parabola with friction, adhesive friction and wear, the sinusoid with
+/// friction.
+fn right_side_kinds() -> [SlidingProblem; 3] {
+    [
+        problem(r(3, 10), Some(r(1, 1)), parabola(r(1, 1)), r(3, 10), r(0, 1), r(0, 1), load(r(1, 100))),
+        problem(r(1, 4), None, parabola(r(1, 1)), r(1, 5), r(1, 50), r(1, 10), load(r(1, 100))),
+        problem(r(3, 10), Some(r(1, 1)), sinusoid(r(1, 20)), r(1, 2), r(0, 1), r(0, 1), load(r(1, 200))),
+    ]
+}
+
 /// G at the operator's fixed samples from the precomputed weights (`interpolant::g_on_grid`) is
 /// `g_at` there to the bit, for every kind of right-hand side (parabola periodic and single,
 /// sinusoid, polynomial) and a node count whose Chebyshev-2 nodes (theta = 0, n + 1 = 67) fall on
@@ -445,17 +456,12 @@ fn g_on_the_fixed_samples_is_g_at_to_the_bit() {
     use super::candidates::state_of;
     use super::interpolant::{g_at, g_on_grid};
     use super::operator::{collocation, GridPoint};
-    let cases = [
-        problem(r(3, 10), Some(r(1, 1)), parabola(r(1, 1)), r(3, 10), r(0, 1), r(0, 1), load(r(1, 100))),
-        problem(r(1, 4), None, parabola(r(1, 1)), r(1, 5), r(1, 50), r(1, 10), load(r(1, 100))),
-        problem(r(3, 10), Some(r(1, 1)), sinusoid(r(1, 20)), r(1, 2), r(0, 1), r(0, 1), load(r(1, 200))),
-        problem(r(0, 1), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), load(r(1, 100))),
-    ];
-    let opts = SolverOptions::default();
+    let mut cases = right_side_kinds().to_vec();
+    cases.push(problem(r(0, 1), Some(r(1, 1)), parabola(r(1, 1)), r(0, 1), r(0, 1), r(0, 1), load(r(1, 100))));
     let mut on_node = 0;
     for (i, pb) in cases.iter().enumerate() {
         let prm = SlidingParamsF64::new(pb).unwrap();
-        for (cand, n) in candidates(&prm, prm.target, &opts).unwrap() {
+        for (cand, n) in candidates(&prm, prm.target, &SolverOptions::default()).unwrap() {
             // The last case (theta = 0) at 66 nodes: its nodes are -cos(pi k/67) up to rounding.
             for n in [n, if i == 3 { 66 } else { n + 5 }] {
                 let col = collocation(prm.theta, n).unwrap();
@@ -485,12 +491,7 @@ fn g_off_the_contact_is_g_at() {
     use super::candidates::state_of;
     use super::interpolant::{g_at, g_off_contact, g_off_contact_portable};
     use super::operator::collocation;
-    let cases = [
-        problem(r(3, 10), Some(r(1, 1)), parabola(r(1, 1)), r(3, 10), r(0, 1), r(0, 1), load(r(1, 100))),
-        problem(r(1, 4), None, parabola(r(1, 1)), r(1, 5), r(1, 50), r(1, 10), load(r(1, 100))),
-        problem(r(3, 10), Some(r(1, 1)), sinusoid(r(1, 20)), r(1, 2), r(0, 1), r(0, 1), load(r(1, 200))),
-    ];
-    for pb in &cases {
+    for pb in &right_side_kinds() {
         let prm = SlidingParamsF64::new(pb).unwrap();
         for (cand, n) in candidates(&prm, prm.target, &SolverOptions::default()).unwrap() {
             let col = collocation(prm.theta, n).unwrap();
