@@ -332,7 +332,7 @@ fn uncached_from(
     if alpha == beta && (*alpha == 0.5f64 || *alpha == -0.5f64) {
         return Ok(chebyshev_rule(alpha, n, prec));
     }
-    newton_rule(alpha, beta, n, prec, start.filter(|v| v.len() == n))
+    newton_rule(alpha, beta, n, prec, prec <= DD_ONLY_PREC, start.filter(|v| v.len() == n))
 }
 
 /// The Gauss–Chebyshev rules in closed form (theta = 0: the weights 1/omega and omega of
@@ -361,21 +361,11 @@ fn chebyshev_rule(alpha: &Float, n: usize, prec: u32) -> GaussJacobiRule {
 }
 
 /// The rule by Newton's method from the f64 eigenvalues (module doc), for any exponents.
-/// `start`: the f64 nodes Newton's method starts from (None: the QL eigenvalues).
+/// `start`: the f64 nodes Newton's method starts from (None: the QL eigenvalues). `dd_only`
+/// (chosen as `prec` <= [`DD_ONLY_PREC`] by [`uncached_from`]): every pass in
+/// double-double ([`dd_rule`]); otherwise the precision ladder (a double-double first rung, MPFR
+/// passes up to the working precision).
 fn newton_rule(
-    alpha: &Float,
-    beta: &Float,
-    n: usize,
-    prec: u32,
-    start: Option<Vec<f64>>,
-) -> Result<GaussJacobiRule, QuadratureError> {
-    newton_rule_route(alpha, beta, n, prec, prec <= DD_ONLY_PREC, start)
-}
-
-/// [`newton_rule`] with the route chosen (and `start` as there): `dd_only`, every pass in double-double ([`dd_rule`]);
-/// otherwise the precision ladder (a double-double first rung, MPFR passes up to the working
-/// precision).
-fn newton_rule_route(
     alpha: &Float,
     beta: &Float,
     n: usize,
@@ -571,7 +561,7 @@ mod tests {
             for (a, n) in [(-0.5f64, 1usize), (-0.5, 33), (0.5, 33), (0.5, 128)] {
                 let h = Float::with_val(prec, a);
                 let fast = gauss_jacobi_uncached(&h, &h, n, prec).unwrap();
-                let newton = newton_rule(&h, &h, n, prec, None).unwrap();
+                let newton = newton_rule(&h, &h, n, prec, prec <= DD_ONLY_PREC, None).unwrap();
                 for i in 0..n {
                     assert!(Float::with_val(prec, &fast.nodes[i] - &newton.nodes[i]).abs() <= tol(prec), "{a} {n} {i}");
                     let dw = Float::with_val(prec, &fast.weights[i] - &newton.weights[i]).abs();
@@ -715,8 +705,8 @@ mod tests {
                     continue;
                 }
                 let (alpha, beta) = (Float::with_val(prec, al), Float::with_val(prec, be));
-                let dd = newton_rule_route(&alpha, &beta, n, prec, true, None).unwrap();
-                let mp = newton_rule_route(&alpha, &beta, n, prec, false, None).unwrap();
+                let dd = newton_rule(&alpha, &beta, n, prec, true, None).unwrap();
+                let mp = newton_rule(&alpha, &beta, n, prec, false, None).unwrap();
                 for i in 0..n {
                     assert_eq!(dd.nodes[i], mp.nodes[i], "{al} {be} n {n} node {i}");
                     assert_eq!(dd.weights[i], mp.weights[i], "{al} {be} n {n} weight {i}");

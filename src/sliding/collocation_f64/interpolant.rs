@@ -202,40 +202,46 @@ pub(super) fn g_on_grid(col: &Collocation, st: &State) -> Vec<f64> {
 /// Points per batch of [`g_off_contact`].
 const LANES: usize = 8;
 
-/// G(u) of [`g_at`] at points `us` off the contact (|u| >= 1, never a node), all on one side
-/// (u >= 1 or u <= -1, so the nearest collocation point x_r is the last or the first), from the
+/// G(u) of [`g_at`] at points `us` off the contact (|u| >= 1, never a node), all on the side of
+/// the collocation point x_r nearest to them (`r` = the last for u >= 1, 0 for u <= -1), from the
 /// divided differences F[u, x_r] already known (`dds`, [`Rhs::off_contact`]): the points a batch
 /// of [`LANES`] at a time, each with the same operations in the same order as the others (the
 /// node loop outside, a loop over the batch inside that the compiler vectorises), so a point's
 /// value does not depend on the batch it is in.
-pub(super) fn g_off_contact(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
+pub(super) fn g_off_contact(col: &Collocation, st: &State, r: usize, us: &[f64], dds: &[f64], out: &mut [f64]) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the processor has the `avx2` feature (checked above).
-        return unsafe { g_off_contact_avx2(col, st, us, dds, out) };
+        return unsafe { g_off_contact_avx2(col, st, r, us, dds, out) };
     }
-    g_off_contact_portable(col, st, us, dds, out)
+    g_off_contact_portable(col, st, r, us, dds, out)
 }
 
 /// [`g_off_contact_portable`] compiled for 256-bit vectors: four divisions per instruction instead of
 /// two; the same operations on each lane (no fused multiply-adds), so the same bits.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn g_off_contact_avx2(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
-    g_off_contact_portable(col, st, us, dds, out)
+unsafe fn g_off_contact_avx2(col: &Collocation, st: &State, r: usize, us: &[f64], dds: &[f64], out: &mut [f64]) {
+    g_off_contact_portable(col, st, r, us, dds, out)
 }
 
 /// [`g_off_contact`] for any processor (the vectors the target allows without run-time
 /// detection).
 #[inline(always)]
-pub(super) fn g_off_contact_portable(col: &Collocation, st: &State, us: &[f64], dds: &[f64], out: &mut [f64]) {
+pub(super) fn g_off_contact_portable(
+    col: &Collocation,
+    st: &State,
+    r: usize,
+    us: &[f64],
+    dds: &[f64],
+    out: &mut [f64],
+) {
     let n = col.n();
     let (nodes, g) = (&col.rule.nodes[..n], &st.g[..n]);
+    let row = &col.kernel[r * n..(r + 1) * n];
+    debug_assert!(us.iter().all(|u| u.abs() >= 1.0 && (*u > 0.0) == (r > 0)), "off the contact, on x_r's side");
     for ((u, dd), out) in us.chunks(LANES).zip(dds.chunks(LANES)).zip(out.chunks_mut(LANES)) {
         let m = u.len();
-        let r = if u[0] < 0.0 { 0 } else { col.colloc.len() - 1 };
-        debug_assert!(u.iter().all(|v| (*v < 0.0) == (u[0] < 0.0) && v.abs() >= 1.0), "one side, off the contact");
-        let row = &col.kernel[r * n..(r + 1) * n];
         // Unused lanes at u = 2 (off every node), their results dropped.
         let mut uu = [2.0; LANES];
         uu[..m].copy_from_slice(u);

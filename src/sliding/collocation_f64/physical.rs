@@ -52,10 +52,11 @@ use crate::params::sliding::{row_height_f64, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
-/// The collocation points next to each end, x_0 and x_n, with their offsets x(x_r) - c: the
-/// Nyström interpolant's point for u <= -1 and u >= 1.
+/// The collocation point next to an end, x_0 or x_n (index `r`), with its offset x(x_r) - c:
+/// the Nyström interpolant's point for u <= -1 and u >= 1.
 #[derive(Clone, Copy)]
 struct End {
+    r: usize,
     xr: f64,
     xi_r: f64,
 }
@@ -75,8 +76,8 @@ struct Functions<'a> {
 
 impl<'a> Functions<'a> {
     fn new(col: &'a Collocation, prm: &'a SlidingParamsF64, st: &'a State, out: &'a Outputs) -> Self {
-        let end = |xr: f64| End { xr, xi_r: st.map.offset(xr) };
-        let ends = [end(col.colloc[0]), end(col.colloc[col.colloc.len() - 1])];
+        let end = |r: usize| End { r, xr: col.colloc[r], xi_r: st.map.offset(col.colloc[r]) };
+        let ends = [end(0), end(col.colloc.len() - 1)];
         let c0 = col.sum(&st.g, |t| st.map.c0_weight(t));
         Functions { col, prm, st, ends, c0_minus_k: c0 - k_constant(prm, out.p2, out.l), grid_g: &out.grid_g }
     }
@@ -100,16 +101,16 @@ impl<'a> Functions<'a> {
         u.signum() * u.abs().max(1.0)
     }
 
-    /// w at points of one side of the contact (module doc), by batches of the same side.
-    fn slopes_one_side(&self, xis: &[f64], out: &mut [f64]) {
+    /// w at points of one side of the contact (module doc; `leading`: xi > 0, u >= 1), by batches.
+    fn slopes_one_side(&self, leading: bool, xis: &[f64], out: &mut [f64]) {
         const BATCH: usize = 16;
         let (prm, st) = (self.prm, self.st);
+        let end = self.ends[usize::from(leading)];
         let (mut us, mut fs, mut dds, mut gs) = ([0.0; BATCH], [0.0; BATCH], [0.0; BATCH], [0.0; BATCH]);
         for (xis, out) in xis.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
             let m = xis.len();
             for (i, &xi) in xis.iter().enumerate() {
                 let u = self.u_off_contact(xi);
-                let end = self.ends[usize::from(u > 0.0)];
                 (fs[i], dds[i]) = st.rhs.off_contact(&st.map, st.c, u, xi, end.xr, end.xi_r);
                 us[i] = u;
             }
@@ -120,7 +121,7 @@ impl<'a> Functions<'a> {
                     (*c, *dd) = (false, 0.0);
                 }
             }
-            g_off_contact(self.col, st, &us[..m], &dds[..m], &mut gs[..m]);
+            g_off_contact(self.col, st, end.r, &us[..m], &dds[..m], &mut gs[..m]);
             let h = 2.0 / prm.e_star;
             for (i, o) in out.iter_mut().enumerate() {
                 *o = if continued[i] {
@@ -160,7 +161,7 @@ impl ContactFunctions for Functions<'_> {
         while start < xis.len() {
             let side = xis[start] > 0.0;
             let len = xis[start..].iter().take_while(|xi| (**xi > 0.0) == side).count();
-            self.slopes_one_side(&xis[start..start + len], &mut out[start..start + len]);
+            self.slopes_one_side(side, &xis[start..start + len], &mut out[start..start + len]);
             start += len;
         }
     }

@@ -504,8 +504,8 @@ fn g_off_the_contact_is_g_at() {
                 let dds: Vec<f64> =
                     us.iter().map(|&u| st.rhs.off_contact(&st.map, st.c, u, st.map.offset(u), xr, xi_r).1).collect();
                 let (mut fast, mut portable) = (vec![0.0; us.len()], vec![0.0; us.len()]);
-                g_off_contact(&col, &st, &us, &dds, &mut fast);
-                g_off_contact_portable(&col, &st, &us, &dds, &mut portable);
+                g_off_contact(&col, &st, r, &us, &dds, &mut fast);
+                g_off_contact_portable(&col, &st, r, &us, &dds, &mut portable);
                 let scale = st.g.iter().fold(0.0f64, |m, g| m.max(g.abs()));
                 for ((u, f), p) in us.iter().zip(&fast).zip(&portable) {
                     assert_eq!(f.to_bits(), p.to_bits(), "u = {u}");
