@@ -61,6 +61,8 @@ pub mod asymptotics;
 #[allow(rustdoc::broken_intra_doc_links)]
 pub mod cli;
 pub mod error;
+pub mod growing_contact;
+pub mod loading_law;
 pub mod model;
 pub mod numerics;
 pub mod params;

@@ -1,5 +1,5 @@
 //! Issue 12: the two methods for the loading-law problem agree, and the f64 marching method
-//! (`adhesion::loading_law::verified_f64`) meets the limits.
+//! (`loading_law::verified_f64`) meets the limits.
 //! - Against the MPFR collocation (`verified::solve_law`, asked at 16 digits): a, b, c, P1, P2,
 //!   psi, phi, q1, q2 to >= 12 digits of their scales, and the f64 method never claims more than
 //!   the agreement + 0.5. In CI two cases without points (the MPFR fields are nested quadratures,
@@ -15,8 +15,8 @@
 //! - Limits: n = 0 is the symmetric problem (its f64 series solver), b = a; nu = 1/2 decouples
 //!   (P' = pi tan eta, b = a, q1 = n q2).
 
-use periodic_contact::adhesion::loading_law::verified::{solve_law, LawSolution};
-use periodic_contact::adhesion::loading_law::verified_f64::{solve_law_f64, LawSolutionF64};
+use periodic_contact::loading_law::verified::{solve_law, LawSolution};
+use periodic_contact::loading_law::verified_f64::{solve_law_f64, LawSolutionF64};
 use periodic_contact::model::{
     Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape,
 };

@@ -300,7 +300,7 @@ fn periodic_convention_moves_the_centre() {
     let c_paper = -6.968_243_622_835_079e-3; // the 20-digit run: -6.9682436228350787116e-3
     assert!((f(&v["c"]).to_f64() - c_paper).abs() > 1e-6, "{v}");
     // The library's periodic value at this contact (c/l = -0.0247, whose stresses pass the
-    // residual check in [1.8]: adhesion::loading_law::fields tests): c = -4.1140394740171823630e-3.
+    // residual check in [1.8]: loading_law::fields tests): c = -4.1140394740171823630e-3.
     assert!((f(&v["c"]).to_f64() + 4.114_039_474_017_182e-3).abs() < 1e-12, "{v}");
 }
 

@@ -5,7 +5,7 @@
 
 mod common;
 use common::run;
-use periodic_contact::adhesion::loading_law::collocation::{solve, LawSetting};
+use periodic_contact::loading_law::collocation::{solve, LawSetting};
 use periodic_contact::model::{Convention, Exact, Material};
 use periodic_contact::numerics::tanh_sinh::TanhSinh;
 use rug::Float;

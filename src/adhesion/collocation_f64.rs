@@ -5,10 +5,10 @@
 //! The equation is the leading edge's condition of the incremental method (docs/theory.md
 //! sections 4 and 10, chi = pi x/L, lambda = pi a/L, P2 = E* k (L/pi)^2 P):
 //!   Re int_0^chi P'(eta) L K(chi - eta; eta) d eta = G(chi),   0 < chi <= lambda,
-//! with the flat punch's outside slope L K of [`super::loading_law::kernel_f64`] and the punch's
+//! with the flat punch's outside slope L K of [`crate::growing_contact::kernel_f64`] and the punch's
 //! scaled slope G(chi) = pi^2 g'(L chi/pi)/(2 k L) (the parabola: pi chi; an even polynomial
 //! g = sum c_2m x^(2m): pi sum_m (m c_2m/k) (L/pi)^(2m-2) chi^(2m-1)). It is solved as one block
-//! of the loading law's march ([`super::loading_law::marching`] with N = 0, the contact centred,
+//! of the loading law's march ([`crate::growing_contact::march`] with N = 0, the contact centred,
 //! gamma = 0): F = P'(eta)/eta a polynomial of degree m - 1 in eta on [0, lambda] (Chebyshev),
 //! fixed by the equation at the m right-Radau points, the integral by tanh-sinh in chi - eta.
 //! With gamma = 0 these equations are linear in F, so they are assembled and solved directly
@@ -39,14 +39,14 @@
 //! a polynomial, and it is refused here (the series serves it inside its radius).
 
 use super::error::AdhesionError;
-use super::loading_law::kernel_f64::{KernelF64, Side};
-use super::loading_law::marching::{single_block, March, MarchOptions, MarchSetting};
 use super::profile::{check_profile_on_contact, largest_admissible_half_width};
 use super::scales::Digits;
 use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
 use super::series_f64::verify::estimate;
 use super::series_f64::RightSeries;
 use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::growing_contact::kernel_f64::{KernelF64, Side};
+use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
@@ -55,18 +55,6 @@ use crate::numerics::roots::increasing_root;
 use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use crate::params::adhesion::AdhesionParamsF64;
 use std::f64::consts::PI;
-
-/// Largest number of collocation points (lambda ~ 1.52).
-pub const MAX_POINTS: usize = 100;
-
-/// Collocation points of the nominal run at `lambda` (module doc), or `None` beyond
-/// [`MAX_POINTS`].
-pub fn points_for(lambda: f64) -> Option<usize> {
-    let u = PI / lambda.max(1e-3) - 1.0;
-    let rho = u + (u * u - 1.0).max(0.0).sqrt();
-    let m = (37.0 / rho.ln()).ceil() + 4.0;
-    (m.is_finite() && m <= MAX_POINTS as f64).then_some((m as usize).max(8))
-}
 
 /// The nominal options for `lambda` and the check run's (8 more points, finer rules).
 fn options(lambda: f64) -> Option<[MarchOptions; 2]> {

@@ -32,8 +32,6 @@
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
 pub mod collocation_f64;
-pub mod error;
-pub mod loading_law;
 pub mod method_f64;
 pub mod points;
 pub mod profile;
@@ -42,7 +40,7 @@ pub mod series_f64;
 pub mod tension;
 pub mod volterra_mpfr;
 
-pub use error::AdhesionError;
+pub use crate::growing_contact::error::{self, AdhesionError};
 pub use method_f64::solve_f64;
 pub use scales::{Digits, ScalesF64, ScalesMpfr};
 pub use series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};

@@ -2,11 +2,38 @@
 //! polynomial, the height of the punch row, and the refusals of a general profile on its contact
 //! (convexity, slope, the circle's wall). Re-exported from [`super::sliding`].
 
-use super::sliding::ShapeF64;
 use crate::error::Error;
 use crate::model::{Exact, ModelError, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use std::f64::consts::PI;
+
+/// Punch shape in `f64`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeF64 {
+    /// g = k x^2.
+    Parabolic {
+        /// k.
+        k: f64,
+    },
+    /// g = D (1 - cos(2 pi x/L)) [2.16].
+    Sinusoidal {
+        /// D.
+        d: f64,
+    },
+    /// g = sum_j c_j x^j (docs/theory.md section 9), by the coefficients of its derivatives, each
+    /// formed exactly and rounded once (trailing zeros dropped).
+    Polynomial {
+        /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
+        slope: Vec<f64>,
+        /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
+        curvature: Vec<f64>,
+    },
+    /// g = R - sqrt(R^2 - x^2) (docs/theory.md section 9).
+    Circular {
+        /// R.
+        r: f64,
+    },
+}
 
 /// g of the punch row at x (docs/theory.md sections 1, 9): the profile on the cell (-L/2, L/2)
 /// repeated with period L (x reduced to the cell; the sinusoid is periodic by itself), so a

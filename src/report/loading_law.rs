@@ -1,6 +1,6 @@
 //! Report section "Loading law (Problem 2, P1 = N(P2))" (docs/theory.md section 10; issue 12): the
 //! scenes' loading-law problems by the verified MPFR method
-//! ([`crate::adhesion::loading_law::verified::solve_law_sampled`]: two collocation runs, digits
+//! ([`crate::loading_law::verified::solve_law_sampled`]: two collocation runs, digits
 //! from their agreement). One solve per scene and convention gives the whole loading history
 //! (every smaller contact is a restriction of the Volterra solution) and the stresses of the
 //! final contact. For each scene, in its own convention:
@@ -22,7 +22,7 @@
 
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::section::{fmt_digits, Ctx, Profile, Section};
-use crate::adhesion::loading_law::verified::{solve_law_sampled, LawPathPoint, LawSolution, LawValues, PATH_STEPS};
+use crate::loading_law::verified::{solve_law_sampled, LawPathPoint, LawSolution, LawValues, PATH_STEPS};
 use crate::model::{Exact, LawSize, LoadingLaw, LoadingLawProblem};
 use crate::numerics::accuracy::{print_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::{to_f64, to_float};
@@ -288,10 +288,10 @@ fn modes_table(ctx: &Ctx, s: &mut Section, rows: &[Row]) {
     let _ = writeln!(s.markdown);
 }
 
-/// The ends of the final contact ([`crate::adhesion::loading_law::ends`]): the phase phi of
+/// The ends of the final contact ([`crate::loading_law::ends`]): the phase phi of
 /// sigma ~ C (d/l)^(1/2 -+ i eps), the zone where q2 < 0, and |q1|/q2 at d/l = 0.1 .. 1e-4.
 fn ends_table(s: &mut Section, rows: &[Row], requested: u32) {
-    let distances = crate::adhesion::loading_law::ends::DISTANCES;
+    let distances = crate::loading_law::ends::DISTANCES;
     let _ = write!(
         s.markdown,
         "Near the ends sigma = q2 + i q1 ~ C (d/l)^(1/2 -+ i eps) (d the distance to the end): its phase rotates \

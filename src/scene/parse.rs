@@ -442,3 +442,12 @@ fn parse_sweep(root: &Table, problem: &SceneProblem) -> Result<Option<Sweep>, Mo
     }
     Ok(Some(Sweep { parameter, values }))
 }
+
+#[cfg(test)]
+mod tests {
+    /// The key table's range text states the parser's limit.
+    #[test]
+    fn digits_range_text_matches_the_parser_limit() {
+        assert_eq!(super::keys::DIGITS_RANGE, format!("an integer in [1, {}]", super::MAX_DIGITS));
+    }
+}

@@ -205,12 +205,12 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 }
 
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let sol = adhesion::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
+    let sol = crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
     Ok(Value::Object(answer_law::law_answer_json(p, &sol, req.digits)))
 }
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let sol = adhesion::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
+    let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
     let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
     // digits_requested states what the user asked, not the f64 cap.

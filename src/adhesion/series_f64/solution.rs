@@ -4,9 +4,9 @@
 use super::right_side::RightSeries;
 use super::series::{UniversalSeries, SERIES_TERMS};
 use super::solve::{solve_rhs, SeriesSolution, SERIES_LAMBDA_MAX};
-use crate::adhesion::error::AdhesionError;
 use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
 use crate::adhesion::scales::Digits;
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::exact::to_f64;
 use crate::numerics::roots::increasing_root;

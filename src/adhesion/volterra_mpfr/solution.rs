@@ -5,10 +5,10 @@
 use super::right_side::RightSide;
 use super::solve::{solve_rhs, VolterraParams};
 use super::volterra::{lambda_of, VolterraSolution};
-use crate::adhesion::error::AdhesionError;
 use crate::adhesion::points::check_points;
 use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
 use crate::adhesion::tension::{tension_report, TensionReport};
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::chebyshev;
 use crate::numerics::exact::to_float;

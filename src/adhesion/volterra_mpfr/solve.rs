@@ -5,7 +5,7 @@
 use super::kernel;
 use super::right_side::RightSide;
 use super::volterra::{JSource, VolterraSolution};
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::chebyshev;
 use crate::numerics::fixed_float::Fixed;

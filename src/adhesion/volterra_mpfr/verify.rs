@@ -8,9 +8,9 @@
 
 use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
-use crate::adhesion::error::AdhesionError;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
 use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
 use crate::params::adhesion::AdhesionParamsF64;

@@ -1,9 +1,9 @@
 //! Problem 2 with a loading law P1 = N(P2) (docs/theory.md section 10; issue 12): the contact
-//! [-a, b] grows at both ends, in a periodic row or on a single punch ([`kernel::Row`]):
-//! - [`kernel`]: the increments on an off-centre contact (the unit flat punch and its surface
-//!   slopes on both sides; the left side checked against the direct cot-kernel quadrature) and
-//!   the `periodic` convention's tilted punch (closed form in the tangent variable, checked the
-//!   same way);
+//! [-a, b] grows at both ends, in a periodic row or on a single punch ([`crate::growing_contact::kernel::Row`]):
+//! - the kernels of the growing contact and the f64 march are one layer down, in
+//!   [`crate::growing_contact`] (complete adhesion's f64 collocation uses them too);
+//! - [`increment`]: the setting and the increment at one precision, shared by the residual and
+//!   its Jacobian;
 //! - [`collocation`]: the MPFR method for linear and polynomial laws in both conventions, the two
 //!   moving-edge conditions as a nonlinear Volterra system (Chebyshev collocation, Newton with
 //!   the closed-form Jacobian of `jacobian`, then chord steps);
@@ -17,7 +17,8 @@
 //!   runs, a given half-length or normal load, periodic row or single punch.
 //! - [`ends`]: the stresses at the ends (sigma ~ C (d/l)^(1/2 -+ i eps)), the tension zones of
 //!   the oscillating singularity and the friction complete adhesion needs against the distance;
-//! - [`kernel_f64`], [`marching`], [`verified_f64`]: the second, independent method in `f64`
+//! - [`verified_f64`]: the second, independent method in `f64`, on the march of
+//!   [`crate::growing_contact::march`]
 //!   (block-by-block marching in lambda, its own kernels; two runs for the digits), reachable by
 //!   `solve --method f64`; agrees with the MPFR method to 15-16 digits at nu = 0.3
 //!   (tests/loading_law_agreement.rs); at small nu (below about 0.15) a given size is one block
@@ -27,13 +28,10 @@
 //!   eta^mu* ([`crate::asymptotics::loading_law_modes`]: the history is fixed only up to C
 //!   eta^mu*, and a discretisation's error at small sizes grows like (Lambda/eta)^mu*).
 
-pub mod chebyshev_f64;
 pub mod collocation;
 pub mod ends;
 pub mod fields;
+pub mod increment;
 mod jacobian;
-pub mod kernel;
-pub mod kernel_f64;
-pub mod marching;
 pub mod verified;
 pub mod verified_f64;

@@ -1,4 +1,4 @@
-//! Chebyshev series on u in [-1, 1] in `f64` for the marching method ([`super::marching`]):
+//! Chebyshev series on u in [-1, 1] in `f64` for the marching method ([`super::march`]):
 //! Clenshaw evaluation, the divided difference (accurate as the two points meet), derivative,
 //! antiderivative from -1 and multiplication by x (the identities of Mason and Handscomb,
 //! "Chebyshev Polynomials", 2003, sections 2.4.4-2.4.5).

@@ -81,7 +81,7 @@ pub fn outside_kernel(row: Row, side: Side, d_near: &Float, eta: &Float, eps: &F
     cos * phase * mag
 }
 
-/// d ln K/d d_near of [`outside_kernel`] (the Jacobian of `super::jacobian`): with
+/// d ln K/d d_near of [`outside_kernel`] (the Jacobian of `crate::loading_law::jacobian`): with
 /// chi = +-(d + eta), d_far = d + 2 eta,
 ///   right: -tan(chi - 2 i eps eta) + i eps (cot d_far - cot d) - (cot d + cot d_far)/2,
 ///   left:  +tan(chi - 2 i eps eta) - i eps (cot d_far - cot d) - (cot d + cot d_far)/2,
@@ -236,7 +236,7 @@ impl TiltedPunch {
         z * Complex::with_val(prec, &self.a + Complex::with_val(prec, &self.b * &t)) / cosh_pi_eps
     }
 
-    /// d ln/d d_near of [`Self::outside`] (the Jacobian of `super::jacobian`): with
+    /// d ln/d d_near of [`Self::outside`] (the Jacobian of `crate::loading_law::jacobian`): with
     /// chi = +-(d + eta), the factor 1/(cos eta cos chi) of t +- m contributes +tan chi on the
     /// right and -tan chi on the left:
     ///   right: (-1/2 + i eps)(cot d_far + tan chi) + (-1/2 - i eps)(cot d + tan chi)

@@ -1,6 +1,6 @@
 //! The second method for Problem 2 under a loading law (docs/theory.md section 10; issue 12), in
 //! `f64`: block-by-block marching in the loading parameter, built differently from the MPFR
-//! collocation ([`super::collocation`], one global Chebyshev interpolant in t = eta/Lambda solved
+//! collocation ([`crate::loading_law::collocation`], one global Chebyshev interpolant in t = eta/Lambda solved
 //! all at once): here the loading [0, Lambda] is cut into blocks, each solved after the earlier
 //! ones by its own small Newton iteration, with piecewise polynomials and a graded Gauss rule for
 //! the history. Its kernels are [`super::kernel_f64`] (no MPFR code is called).
@@ -30,7 +30,7 @@
 //!   (the endpoint singularity absorbed), E from the divided difference of Gm (accurate as
 //!   eta -> lambda).
 //!
-//! Fields (the same definitions as [`super::fields`]): a point chi entered at eta_x
+//! Fields (the same definitions as [`crate::loading_law::fields`]): a point chi entered at eta_x
 //! (gamma(eta_x) +- eta_x = chi); psi_hat(chi) = Im of its edge integral at lambda = eta_x;
 //! sigma_hat(chi) = int_(eta_x)^Lambda P'(eta) [(1 + i n) L sigma_flat - beta n rho] d eta
 //! (tanh-sinh from eta_x in its block, graded Gauss beyond); int_0^chi psi_hat = int_0^(eta_x)
@@ -38,10 +38,11 @@
 
 use super::chebyshev_f64::{cheb, cheb_antiderivative, cheb_dd, cheb_derivative, cheb_times_x};
 use super::kernel_f64::{KernelF64, Side, C64};
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
 use crate::model::ModelError;
 use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
 use crate::numerics::tanh_sinh::tanh_sinh_f64;
+use std::f64::consts::PI;
 
 mod fields;
 
@@ -234,6 +235,19 @@ pub struct March {
     /// Newton steps taken over all blocks.
     pub steps: usize,
     rules: Rules,
+}
+
+/// Largest number of collocation points (lambda ~ 1.52).
+pub const MAX_POINTS: usize = 100;
+
+/// Collocation points of the nominal run at `lambda` (one block: a global collocation in eta, [`single_block`]; the loading law at small nu and
+/// complete adhesion beyond its series), or `None` beyond
+/// [`MAX_POINTS`].
+pub fn points_for(lambda: f64) -> Option<usize> {
+    let u = PI / lambda.max(1e-3) - 1.0;
+    let rho = u + (u * u - 1.0).max(0.0).sqrt();
+    let m = (37.0 / rho.ln()).ceil() + 4.0;
+    (m.is_finite() && m <= MAX_POINTS as f64).then_some((m as usize).max(8))
 }
 
 /// A singular point closer than this fraction of a block to the block's end is integrated with

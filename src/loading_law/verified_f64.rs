@@ -1,4 +1,4 @@
-//! The loading-law problem by the f64 marching method ([`super::marching`]) in dimensional form,
+//! The loading-law problem by the f64 marching method ([`crate::growing_contact::march`]) in dimensional form,
 //! with digits from a second run: the nominal march ([`MarchOptions::NOMINAL`]) and a finer one
 //! ([`MarchOptions::refined`]: blocks two thirds as long, two more points per block, finer rules);
 //! digits = -log10 of their difference over the quantity's scale, capped at
@@ -8,12 +8,12 @@
 //! c = (L/pi) gamma(Lambda), psi = -(2 k L/pi^2) psi_hat, q2 + i q1 = E* k (L/pi^2) sigma_hat,
 //! phi = -(2 k L^2/pi^3) int_0^chi psi_hat.
 //! The single punch (no period) is the same march with S(d) = d and cos -> 1
-//! ([`super::kernel_f64`]) at a nominal L (the answer does not depend on it).
+//! ([`crate::growing_contact::kernel_f64`]) at a nominal L (the answer does not depend on it).
 
-use super::kernel_f64::KernelF64;
-use super::marching::{march, March, MarchEnd, MarchOptions, MarchSetting};
 use super::verified::LawDigits;
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel_f64::KernelF64;
+use crate::growing_contact::march::{march, March, MarchEnd, MarchOptions, MarchSetting};
 use crate::model::{readable, Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem};
 use crate::numerics::accuracy::{verified_digits, F64_DIGITS_CAP};
 use crate::numerics::exact::to_f64;
@@ -205,7 +205,7 @@ pub const SMALL_NU_EPS: f64 = 0.139;
 /// Solves `problem` by the f64 marching method with the nominal discretisation, digits from the
 /// finer run (module doc). `xh` are points of the final contact in (-1, 1).
 /// At small nu (eps > [`SMALL_NU_EPS`]) and a given size, the loading is one block (a global
-/// collocation with the points of [`crate::adhesion::collocation_f64::points_for`], the check run
+/// collocation with the points of [`crate::growing_contact::march::points_for`], the check run
 /// 8 more): the march's blocks of 0.05 amplify their own error there until an end recedes, while
 /// one block stays stable wherever the problem fixes its solution (nu = 0, n = 1/5: l/L = 1/16
 /// and 1/8 agree with the MPFR collocation, tests/loading_law_agreement.rs); a given load keeps
@@ -217,7 +217,7 @@ pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSol
             crate::model::Period::Finite(big_l) => PI * f64_of(l) / f64_of(big_l),
             crate::model::Period::Infinite => 1.0,
         };
-        if let Some(m) = crate::adhesion::collocation_f64::points_for(lambda) {
+        if let Some(m) = crate::growing_contact::march::points_for(lambda) {
             let nominal = MarchOptions { nodes: m, block: lambda, gauss: 40, bits: 60 };
             let check = MarchOptions { nodes: m + 8, block: lambda, gauss: 52, bits: 76 };
             return solve_law_f64_runs(problem, xh, &nominal, &check);

@@ -8,13 +8,14 @@
 //!   the increments received since entry: q2 + i q1 = E* k (L/pi^2) sigma_hat;
 //!
 //! with n = N'(P2(eta)) along the loading and, in the `periodic` convention, each increment's
-//! tilted punch (- beta n times [`super::kernel::TiltedPunch`]) added, as in the edge conditions.
+//! tilted punch (- beta n times [`crate::growing_contact::kernel::TiltedPunch`]) added, as in the edge conditions.
 //! Near eta = eta_x the end passing x makes both integrands singular like
 //! (eta - eta_x)^(-1/2); the distance to that end is formed from a divided difference of gamma
 //! (accurate as eta -> eta_x) and the integrals taken by tanh-sinh.
 
-use super::collocation::{divided_difference, LawCollocation};
-use super::kernel::{flat_punch_stress, Side, TiltedPunch};
+use super::collocation::LawCollocation;
+use super::increment::divided_difference;
+use crate::growing_contact::kernel::{flat_punch_stress, Side, TiltedPunch};
 use crate::numerics::chebyshev;
 use crate::numerics::tanh_sinh::TanhSinh;
 use rug::{Complex, Float};

@@ -19,7 +19,7 @@
 //! against the computed phases in the tests.
 
 use super::collocation::LawCollocation;
-use super::kernel::Side;
+use crate::growing_contact::kernel::Side;
 use crate::numerics::tanh_sinh::TanhSinh;
 use rug::float::Constant;
 use rug::ops::Pow;
@@ -95,8 +95,8 @@ impl LawCollocation {
 #[cfg(test)]
 mod tests {
     use super::super::collocation::{solve, LawSetting};
-    use super::super::kernel::Row;
     use super::*;
+    use crate::growing_contact::kernel::Row;
     use crate::model::{Convention, Exact, Material};
 
     /// The computed end phases equal the closed forms of the module doc (paper convention,

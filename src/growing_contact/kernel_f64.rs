@@ -1,5 +1,5 @@
 //! The increments of the asymmetric incremental method (docs/theory.md sections 4, 10) in `f64`, for
-//! the marching method ([`super::marching`]); written anew from the formulas (the MPFR kernel
+//! the marching method ([`super::march`]); written anew from the formulas (the MPFR kernel
 //! [`super::kernel`] is not called), and checked against it in the tests.
 //!
 //! Variables as in [`super::kernel`]: chi' = chi - gamma, the earlier contact of half-length eta;
@@ -136,7 +136,7 @@ impl KernelF64 {
     }
 
     /// The surface slope left outside by the increment dP = (1 + i n) dP2 of unit dP2 in the
-    /// `periodic` convention or not: (1 + i n) L K - beta n R ([`super::collocation`]'s edge
+    /// `periodic` convention or not: (1 + i n) L K - beta n R ([`crate::loading_law::collocation`]'s edge
     /// integrand).
     pub fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
         let mut k = self.outside(side, d_near, eta) * C64::new(1.0, n);

@@ -5,7 +5,7 @@
 //! Variables: lambda = pi l/L (l = (a + b)/2, the loading parameter), gamma = pi c/L
 //! (c = (b - a)/2), P2 = E* k (L/pi)^2 P(lambda), dP = (1 + i n) dP2. Every earlier contact
 //! (eta < lambda, centre gamma(eta)) carried the increment dP(eta) and left on the surface outside
-//! it (E*/2)(dv' - i du') = dP K/L ([`super::kernel::outside_kernel`]). A point enters contact
+//! it (E*/2)(dv' - i du') = dP K/L ([`crate::growing_contact::kernel::outside_kernel`]). A point enters contact
 //! with the punch's slope, at the leading end chi_b = gamma(lambda) + lambda and at the trailing
 //! end chi_a = gamma(lambda) - lambda:
 //!   Re int_0^lambda (1 + i n) P'(eta) K(chi_e - gamma(eta), eta) d eta = G(chi_e),
@@ -24,139 +24,15 @@
 //! chord steps at the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
 //! matter), until the correction falls below 2^-(target bits).
 
-use super::kernel::{outside_kernel, Row, Side, TiltedPunch};
-use crate::adhesion::error::AdhesionError;
-use crate::model::{Convention, Exact, LoadingLaw, Material};
+use super::increment::{advance_factor, divided_difference, times_t};
+pub use super::increment::{Increment, LawSetting};
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel::{outside_kernel, Side, TiltedPunch};
 use crate::numerics::chebyshev;
-use crate::numerics::exact::to_float;
 use crate::numerics::tanh_sinh::TanhSinh;
-use crate::params::adhesion::{AdhesionParamsF64, AdhesionParamsMpfr};
+use crate::params::adhesion::AdhesionParamsF64;
 use rug::float::Constant;
 use rug::{Complex, Float};
-
-/// What the collocation needs besides the unknowns: exact inputs, rounded once per precision.
-#[derive(Debug, Clone)]
-pub struct LawSetting {
-    /// The half-plane's material (eps and C_P are derived at each precision).
-    pub material: Material,
-    /// The law P1 = N(P2).
-    pub law: LoadingLaw,
-    /// E* k L^2: P2 = (E* k L^2/pi^2) P (periodic); E* k U^2 for the single punch in the length
-    /// unit U (P2 = E* k U^2 P, [`Row::Single`]).
-    pub load_scale: Exact,
-    /// l/L at the final size, exact (Lambda = pi l/L); l/U for the single punch (Lambda = l/U).
-    pub size_over_period: Exact,
-    /// Periodic row or single punch ([`Row`]).
-    pub row: Row,
-    /// The surface convention (docs/theory.md section 8): `periodic` adds the tilted punch's increment
-    /// ([`super::kernel::TiltedPunch`]).
-    pub convention: Convention,
-}
-
-impl LawSetting {
-    /// The linear law n with E* k L^2 = 1 (tests and the dimensionless problem).
-    pub fn linear(material: Material, n: Exact, size_over_period: Exact, convention: Convention) -> Self {
-        LawSetting {
-            material,
-            law: LoadingLaw::Linear(n),
-            load_scale: Exact::from_integer(1.into()),
-            size_over_period,
-            row: Row::Periodic,
-            convention,
-        }
-    }
-
-    /// Lambda at `prec` bits: pi l/L, or l/U for the single punch.
-    pub fn lambda_max(&self, prec: u32) -> Float {
-        match self.row {
-            Row::Periodic => to_float(&self.size_over_period, prec) * Float::with_val(prec, Constant::Pi),
-            Row::Single => to_float(&self.size_over_period, prec),
-        }
-    }
-}
-
-/// The material and law constants every increment needs, at one precision.
-#[derive(Debug, Clone)]
-pub struct Increment {
-    /// eps.
-    pub eps: Float,
-    /// cosh(pi eps).
-    pub cosh_pi_eps: Float,
-    /// beta.
-    pub beta: Float,
-    /// N'(P2) coefficients (numpy order, in powers of P2).
-    pub slope: Vec<Float>,
-    /// N(P2) coefficients.
-    pub law: Vec<Float>,
-    /// E* k L^2/pi^2 (P2 per unit P).
-    pub p2_per_p: Float,
-    /// Whether the `periodic` convention's rotation increment is added (never for the single
-    /// punch: the rotation -beta P1/L vanishes as L -> infinity).
-    pub periodic: bool,
-    /// Periodic row or single punch.
-    pub row: Row,
-}
-
-impl Increment {
-    /// From the setting at `prec` bits.
-    pub fn new(setting: &LawSetting, prec: u32) -> Self {
-        let constants = AdhesionParamsMpfr::new(&setting.material, prec);
-        let pi2 = match setting.row {
-            Row::Periodic => Float::with_val(prec, Constant::Pi).square(),
-            Row::Single => Float::with_val(prec, 1),
-        };
-        let law = match &setting.law {
-            LoadingLaw::Linear(n) => vec![Exact::from_integer(0.into()), n.clone()],
-            LoadingLaw::Polynomial(c) => c.clone(),
-        };
-        Increment {
-            eps: constants.eps,
-            cosh_pi_eps: constants.cosh_pi_eps,
-            beta: constants.beta,
-            slope: setting.law.derivative().iter().map(|c| to_float(c, prec)).collect(),
-            law: law.iter().map(|c| to_float(c, prec)).collect(),
-            p2_per_p: to_float(&setting.load_scale, prec) / pi2,
-            periodic: setting.convention == Convention::PeriodicSurface && setting.row == Row::Periodic,
-            row: setting.row,
-        }
-    }
-    /// Whether n = N' is constant along the loading (linear law).
-    pub fn constant_ratio(&self) -> bool {
-        self.slope.len() <= 1
-    }
-    /// n = N'(P2) at P2 = p2_per_p `p`.
-    pub fn ratio_at(&self, p: &Float) -> Float {
-        let prec = p.prec();
-        let p2 = Float::with_val(prec, p * &self.p2_per_p);
-        self.slope.iter().rev().fold(Float::with_val(prec, 0), |acc, c| acc * &p2 + c)
-    }
-    /// N(P2) at P2 = p2_per_p `p`, in units of p2_per_p (i.e. P1/p2_per_p).
-    pub fn law_at(&self, p: &Float) -> Float {
-        let prec = p.prec();
-        let p2 = Float::with_val(prec, p * &self.p2_per_p);
-        self.law.iter().rev().fold(Float::with_val(prec, 0), |acc, c| acc * &p2 + c) / &self.p2_per_p
-    }
-}
-
-/// Chebyshev coefficients of t Phi(t) (t = (x + 1)/2, x T_j = (T_(j+1) + T_|j-1|)/2) from those
-/// of Phi: P(Lambda t) = Lambda^2 int_0^t t' Phi(t') dt'.
-pub(super) fn times_t(phi: &[Float], prec: u32) -> Vec<Float> {
-    let n = phi.len();
-    let mut x_phi = vec![Float::with_val(prec, 0); n + 1];
-    for (j, c) in phi.iter().enumerate() {
-        if j == 0 {
-            x_phi[1] += c;
-        } else {
-            let h = Float::with_val(prec, c / 2u32);
-            x_phi[j + 1] += &h;
-            x_phi[j - 1] += &h;
-        }
-    }
-    for (j, c) in phi.iter().enumerate() {
-        x_phi[j] += c;
-    }
-    x_phi.into_iter().map(|v| v / 2u32).collect()
-}
 
 /// Working data of one precision.
 struct Ctx {
@@ -179,28 +55,11 @@ impl Ctx {
     }
 }
 
-/// sum_j c_j [T_j(x) - T_j(y)]/(x - y) by the recurrence d_(j+1) = 2 x d_j + 2 T_j(y) - d_(j-1)
-/// (d_0 = 0, d_1 = 1): accurate as y -> x.
-pub(super) fn divided_difference(c: &[Float], x: &Float, y: &Float, prec: u32) -> Float {
-    let mut acc = Float::with_val(prec, 0);
-    let (mut d_prev, mut d) = (Float::with_val(prec, 0), Float::with_val(prec, 1));
-    let (mut t_prev, mut t) = (Float::with_val(prec, 1), y.clone());
-    for cj in c.iter().skip(1) {
-        acc += Float::with_val(prec, cj * &d);
-        // d_(j+1) and T_(j+1)(y).
-        let d_next = Float::with_val(prec, x * &d) * 2u32 + Float::with_val(prec, &t * 2u32) - &d_prev;
-        let t_next = Float::with_val(prec, y * &t) * 2u32 - &t_prev;
-        d_prev = std::mem::replace(&mut d, d_next);
-        t_prev = std::mem::replace(&mut t, t_next);
-    }
-    acc
-}
-
 /// int_0^lambda P'(eta) [(1 + i n) L K(chi_e - gamma(eta), eta) - beta n R(chi_e; eta)] d eta at
 /// lambda = Lambda t for the leading (chi_e = gamma + lambda) and the trailing
 /// (chi_e = gamma - lambda) end, from the Chebyshev coefficients of Phi and Gam (module doc), on
 /// `rule`; R = Z(t)(A + B t)/cosh(pi eps) is the tilted punch's slope outside
-/// ([`super::kernel::TiltedPunch::outside`], `periodic` only; its constant f = 1 cancels against
+/// ([`crate::growing_contact::kernel::TiltedPunch::outside`], `periodic` only; its constant f = 1 cancels against
 /// the -beta P1/L of the edge condition).
 ///
 /// Both ends when `only` is `None`; with `Some(side)` the kernels of that end only (the other
@@ -261,23 +120,6 @@ pub(super) fn edge_integrals(
     // int_0^lambda P' K d eta = lambda^2 int_0^1 s Phi(t s) K ds.
     let l2 = Float::with_val(prec, lambda.square_ref());
     Ok((acc_b * &l2, acc_a * &l2))
-}
-
-/// 1 +- E, the rate at which the leading (`sign` = 1) or trailing (-1) end advances relative to
-/// the half-length; an error when it does not (the contact must grow at both ends).
-pub(super) fn advance_factor(e: &Float, sign: i32, lambda: &Float) -> Result<Float, AdhesionError> {
-    let factor = Float::with_val(e.prec(), e * sign) + 1u32;
-    if factor > 0 {
-        return Ok(factor);
-    }
-    Err(AdhesionError::NotConverged {
-        what: "loading-law collocation",
-        reason: format!(
-            "the {} end recedes at lambda = {:.4} (the contact must grow at both ends)",
-            if sign > 0 { "leading" } else { "trailing" },
-            lambda.to_f64()
-        ),
-    })
 }
 
 /// The residuals (2 per node: leading, trailing) of the state (Phi values, then Gam values),
@@ -467,39 +309,11 @@ fn solve_f64(jac: &[Vec<f64>], r: &[f64]) -> Result<Vec<f64>, AdhesionError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::adhesion::volterra_mpfr::{solve as volterra_solve, VolterraParams};
+    use crate::growing_contact::kernel::Row;
     use crate::model::{Convention, Exact, LoadingLaw, Material};
-    use crate::params::adhesion::AdhesionParamsMpfr;
 
     fn material(nu: (i64, i64)) -> Material {
         Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
-    }
-
-    /// n = 0: the symmetric problem of section 4 (gamma = 0, the same load as the Volterra
-    /// method's at 30 digits). The error is the collocation's: 16 nodes 1.3e-18, 24 nodes 1.2e-26,
-    /// 32 nodes 1.3e-34 at Lambda = 0.5, nu = 0.3 (`LAW_NODES=24 cargo test --release --lib
-    /// loading_law::collocation::tests::zero -- --nocapture`).
-    #[test]
-    fn zero_ratio_is_the_symmetric_solution() {
-        let m = material((3, 10));
-        // l/L = 100000/628318, Lambda = pi l/L = 0.49999...
-        let size = Exact::new(100000.into(), 628318.into());
-        let setting = LawSetting::linear(m.clone(), Exact::from_integer(0.into()), size, Convention::Paper);
-        let t = std::time::Instant::now();
-        let nodes: usize = std::env::var("LAW_NODES").ok().and_then(|v| v.parse().ok()).unwrap_or(16);
-        let sol = solve(&setting, nodes, 100, 140).unwrap();
-        eprintln!("{:.2}s, {} steps, residual {:.1e}", t.elapsed().as_secs_f64(), sol.steps, sol.residual);
-        let params = VolterraParams::for_digits(30);
-        let constants = AdhesionParamsMpfr::new(&m, params.prec);
-        let lam = Float::with_val(params.prec, &sol.lambda_max);
-        let sym = volterra_solve(&constants, &lam, params).unwrap();
-        let p_sym = sym.load_ratio() * Float::with_val(params.prec, lam.square_ref());
-        let p = sol.load();
-        let rel = Float::with_val(140, &p - &p_sym).to_f64() / p_sym.to_f64();
-        eprintln!("P = {} vs {}: rel {rel:.1e}; c/l = {:.1e}", p.to_f64(), p_sym.to_f64(), sol.centre_ratio().to_f64());
-        let tol = [(16, 1e-17), (24, 1e-25), (32, 1e-33)].iter().find(|(n, _)| *n == nodes).map_or(1e-17, |v| v.1);
-        assert!(rel.abs() < tol, "{rel:e}");
-        assert!(sol.centre_ratio().abs().to_f64() < 1e-25);
     }
 
     /// nu = 1/2 (eps = 0, beta = 0): normal and tangential problems decouple, so for any n the

@@ -11,14 +11,14 @@
 //!   dR_i/dGam_j = Re lambda sum_q w_q s_q Phi(t_i s_q) k'(d_q) (+- lambda) [c_q delta_ij
 //!                 + s_q (delta_ij - l_j(t_i s_q))] - pi delta_ij,
 //! where delta_ii - l_i(y) is summed as sum_(k != i) l_k(y) (no cancellation as y -> t_i), and
-//! k' = k d ln k/d d from [`super::kernel::outside_kernel_log_derivative`] and
-//! [`super::kernel::TiltedPunch::outside_log_derivative`]. For a polynomial law the dependence of
+//! k' = k d ln k/d d from [`crate::growing_contact::kernel::outside_kernel_log_derivative`] and
+//! [`crate::growing_contact::kernel::TiltedPunch::outside_log_derivative`]. For a polynomial law the dependence of
 //! n = N'(P2) on Phi is left out (a chord Jacobian; the iteration still converges, more slowly
 //! when N'' P2 is not small). Checked against finite differences in the tests.
 
-use super::collocation::{divided_difference, Increment};
-use super::kernel::{outside_kernel, outside_kernel_log_derivative, Side, TiltedPunch};
-use crate::adhesion::error::AdhesionError;
+use super::increment::{divided_difference, Increment};
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel::{outside_kernel, outside_kernel_log_derivative, Side, TiltedPunch};
 use crate::numerics::chebyshev;
 use crate::numerics::tanh_sinh::TanhSinh;
 use rug::float::Constant;
@@ -56,7 +56,7 @@ pub(super) fn jacobian(
     let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
     let pi = Float::with_val(prec, Constant::Pi);
     let mut jac = vec![vec![0.0; 2 * n_nodes]; 2 * n_nodes];
-    let tphi = (!inc.constant_ratio()).then(|| super::collocation::times_t(&phi_c, prec));
+    let tphi = (!inc.constant_ratio()).then(|| super::increment::times_t(&phi_c, prec));
     let l2max = Float::with_val(prec, lambda_max.square_ref());
     let n_const = inc.ratio_at(&Float::with_val(prec, 0));
     for (i, t) in nodes.iter().enumerate() {
@@ -84,7 +84,7 @@ pub(super) fn jacobian(
             let ws = Float::with_val(prec, w * s) * &lambda;
             let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
             for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
-                let factor = super::collocation::advance_factor(&e, sign, &lambda)?;
+                let factor = super::increment::advance_factor(&e, sign, &lambda)?;
                 let d = Float::with_val(prec, &lambda * c) * &factor;
                 let kernel = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec);
                 let log_d = outside_kernel_log_derivative(inc.row, side, &d, &eta, &inc.eps, prec);

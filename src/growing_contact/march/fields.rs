@@ -3,8 +3,8 @@
 //! march.
 
 use super::{Block, March, NEAR_END};
-use crate::adhesion::error::AdhesionError;
-use crate::adhesion::loading_law::kernel_f64::{Side, C64};
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel_f64::{Side, C64};
 
 impl March {
     /// The side and the entry size eta_x of the point chi of the final contact: gamma(eta) +- eta

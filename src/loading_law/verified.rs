@@ -1,7 +1,7 @@
 //! The loading-law problem in dimensional form with verified digits (docs/theory.md section 10): a
 //! periodic row of parabolic punches g = k x^2, or a single one, indented with complete adhesion
 //! under P1 = N(P2), given the final half-length l = (a + b)/2 or the load. The single punch runs
-//! the same collocation with L = pi U in a length unit U ([`super::kernel::Row::Single`]: U = l
+//! the same collocation with L = pi U in a length unit U ([`crate::growing_contact::kernel::Row::Single`]: U = l
 //! for a given l; for a given load U = 1.3 times the symmetric single punch's half-length, so the
 //! final size is a root inside [0, U]). Two collocation runs ([`super::collocation`]), the
 //! second with 8 more nodes, 24 more bits and a finer rule; digits = -log10 of their difference
@@ -20,8 +20,8 @@
 
 use super::collocation::{solve, solve_from, LawCollocation, LawSetting};
 use super::ends::EndStress;
-use super::kernel::{Row, Side};
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel::{Row, Side};
 use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError, Period};
 use crate::numerics::accuracy::{readable_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::{to_f64, to_float};
@@ -539,59 +539,6 @@ mod tests {
 
     fn q(n: i64, d: i64) -> Exact {
         Exact::new(n.into(), d.into())
-    }
-
-    /// Verified digits at 12 requested (20 requested, measured in session 4 with
-    /// `cargo test --release --lib loading_law::verified -- --nocapture`: 23.6 verified, 27 nodes,
-    /// 21.6 s), and the limit n = 0 against the symmetric solver
-    /// (`adhesion::solve_verified`): b = a, P2 and the fields at the same points agree to the
-    /// verified digits.
-    #[test]
-    fn verified_solution_and_the_symmetric_limit() {
-        let material = Material::from_contact_modulus(q(3, 10), q(1, 1)).unwrap();
-        let problem = LoadingLawProblem::new(
-            material.clone(),
-            Period::Finite(q(1, 1)),
-            PunchShape::Parabolic { k: q(1, 1) },
-            LoadingLaw::Linear(q(0, 1)),
-            LawSize::HalfLength(q(1, 6)),
-            Convention::Paper,
-        )
-        .unwrap();
-        let xh = [q(-1, 2), q(1, 5), q(9, 10)];
-        let t = std::time::Instant::now();
-        let sol = solve_law(&problem, &xh, 12).unwrap();
-        eprintln!("{:.1}s, digits {:?}, nodes {}", t.elapsed().as_secs_f64(), sol.digits, sol.values.nodes);
-        assert!(sol.digits.headline >= 12.0, "{:?}", sol.digits);
-        let sym = crate::model::AdhesionProblem::new(
-            material,
-            crate::model::Period::Finite(q(1, 1)),
-            crate::model::PunchShape::Parabolic { k: q(1, 1) },
-            crate::model::AdhesionSize::HalfWidth(q(1, 6)),
-        )
-        .unwrap();
-        let pts: Vec<Exact> = xh.iter().map(|h| h.abs()).collect();
-        let s = crate::adhesion::solve_verified(&sym, &pts, 25).unwrap().solution;
-        let v = &sol.values;
-        let rel = |a: &Float, b: &Float, scale: f64| Float::with_val(200, a - b).to_f64().abs() / scale;
-        assert!(rel(&v.p2, &s.normal_load, s.normal_load.to_f64()) < 1e-12);
-        assert!(rel(&v.a, &v.b, 1.0) < 1e-12);
-        // The loading path stays centred (n = 0), ends at the final contact, and its digits hold.
-        assert_eq!(v.path.len(), PATH_STEPS as usize);
-        for p in &v.path {
-            assert!(rel(&p.a, &p.b, p.l.to_f64()) < 1e-12, "path at l = {}", p.l);
-        }
-        assert!(rel(&v.path[PATH_STEPS as usize - 1].p2, &v.p2, v.p2.to_f64()) < 1e-30);
-        assert!(sol.digits.path >= 12.0, "{:?}", sol.digits);
-        for (p, (h, r)) in v.points.iter().zip(xh.iter().zip(&s.points)) {
-            // psi and q are even, phi odd in x.
-            let sign = if h.is_negative() { -1.0 } else { 1.0 };
-            let scale = s.half_width.to_f64();
-            assert!(rel(&p.psi, &r.psi, scale) < 1e-12, "psi at {h}: {} vs {}", p.psi, r.psi);
-            assert!((p.phi.to_f64() - sign * r.phi.to_f64()).abs() < 1e-12 * scale * scale, "phi at {h}");
-            assert!(rel(&p.q1, &Float::with_val(200, &r.q1 * sign), scale) < 1e-12, "q1 at {h}: {} vs {}", p.q1, r.q1);
-            assert!(rel(&p.q2, &r.q2, scale) < 1e-12, "q2 at {h}");
-        }
     }
 
     /// A collocation that does not converge names the homogeneous mode when the problem has one
