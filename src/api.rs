@@ -104,18 +104,17 @@ pub enum Derivation {
 }
 
 impl Derivation {
-    /// The JSON of `--format json`: one part as `{"object", "variable", "order", "symbols",
-    /// "coefficients": [{"power", "text", "latex"}]}`, several as `{"object", "parts": [...]}`;
-    /// the loading law's with its `mode`.
+    /// The JSON of `--format json`, one schema for every object (docs/theory.md section 16):
+    /// `{"object", "parts": [{"object", "formula", "source", "variable", "order", "symbols",
+    /// "sympy", "mathematica", "coefficients": [{"power", "text", "latex", "sympy"}]}]}`; the
+    /// numerical routes' coefficients are `{"power", "value", "digits"}`, the loading law's
+    /// answer carries its `mode`.
     pub fn json(&self) -> Value {
         match self {
-            Derivation::Exact { object, parts, .. } => match parts.as_slice() {
-                [one] => one.json(),
-                many => serde_json::json!({
-                    "object": object,
-                    "parts": many.iter().map(|d| d.json()).collect::<Vec<_>>(),
-                }),
-            },
+            Derivation::Exact { object, parts, .. } => serde_json::json!({
+                "object": object,
+                "parts": parts.iter().map(|d| d.json()).collect::<Vec<_>>(),
+            }),
             Derivation::LoadingLaw { series, mode } => {
                 let mut v = series.json();
                 v["mode"] = mode.json(series.order);
@@ -352,7 +351,7 @@ mod tests {
         let d = derive(&SeriesRequest::new("kernel", 4)).unwrap();
         let v = d.json();
         let texts: Vec<&str> =
-            v["coefficients"].as_array().unwrap().iter().map(|c| c["text"].as_str().unwrap()).collect();
+            v["parts"][0]["coefficients"].as_array().unwrap().iter().map(|c| c["text"].as_str().unwrap()).collect();
         assert_eq!(texts, ["1", "-1/3", "-1/45"]);
         assert!(d.text().contains("[z^4] -1/45"));
     }
