@@ -168,6 +168,14 @@ pub fn derive(request: &SeriesRequest) -> Result<Derivation, ApiError> {
 /// Derives a request already validated ([`SeriesRequest::validate`]; the command line validates
 /// first, to check its output format against the route).
 ///
+/// ```
+/// use periodic_contact::api::{derive_valid, Derivation, SeriesRequest};
+/// // The adhesion series at nu = 1/4 beyond the exact route's order 24: the numerical route.
+/// let valid = SeriesRequest::new("adhesion", 30).option("nu", "1/4").validate()?;
+/// assert!(matches!(derive_valid(valid)?, Derivation::AdhesionNumeric(_)));
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
+///
 /// # Errors
 /// [`ApiError::Series`] when the engine fails; the numerical routes' own errors.
 pub fn derive_valid(valid: ValidSeries) -> Result<Derivation, ApiError> {
@@ -206,6 +214,18 @@ pub struct SolveOptions {
 impl SolveOptions {
     /// Applies the options to a parsed scene (the convention replaces the scene's) and chooses
     /// the method: the one path of `periodic-contact solve` and of [`solve_toml`].
+    ///
+    /// ```
+    /// use periodic_contact::api::{parse_scene, solve_with_choice, SolveOptions};
+    /// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+    /// let mut scene = parse_scene(&std::fs::read_to_string(path).unwrap())?;
+    /// let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
+    /// let choice = opts.choose(&mut scene)?;
+    /// assert_eq!(choice.reason, "forced by --method");
+    /// let v = solve_with_choice(&scene, choice)?;
+    /// assert_eq!(v["choice"]["method"], "f64");
+    /// # Ok::<(), periodic_contact::api::ApiError>(())
+    /// ```
     ///
     /// # Errors
     /// An [`Error::Input`] naming the option (`--digits`, `--method`, `--order`,
@@ -271,6 +291,14 @@ pub fn solve_with_choice(scene: &Scene, choice: MethodChoice) -> Result<Value, E
 /// Solves the scene file at `path` as `periodic-contact solve PATH --json [flags]` does and returns
 /// its JSON (string values; keys in docs/theory.md section 14).
 ///
+/// ```
+/// use periodic_contact::api::{solve_file, SolveOptions};
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+/// let v = solve_file(path.as_ref(), &SolveOptions { method: Some("f64".into()), ..Default::default() })?;
+/// assert_eq!(v["problem"], "sliding");
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
+///
 /// # Errors
 /// [`ApiError::Scene`] for an invalid scene, [`ApiError::Problem`] otherwise (an unreadable file,
 /// an invalid option, no solution, not physical, no convergence), each with the CLI's message.
@@ -314,6 +342,12 @@ pub fn solve_toml(scene: &str, options: &SolveOptions) -> Result<Value, ApiError
 }
 
 /// An exact number as text (`"1/10"`, `"0.25"`), for callers that hold exact inputs.
+///
+/// ```
+/// let x = periodic_contact::api::exact("0.25")?;
+/// assert_eq!(x, periodic_contact::api::exact("1/4")?);
+/// # Ok::<(), periodic_contact::api::ModelError>(())
+/// ```
 pub fn exact(text: &str) -> Result<Exact, ModelError> {
     crate::series_request::parse_exact("value", text)
 }
