@@ -219,9 +219,8 @@ fn convention_of(name: ConventionName) -> Convention {
     }
 }
 
-/// `--convention` replaces the scene's `[problem] convention` (Problem 1 and the loading-law
-/// problem; the symmetric Problem 2 is the same problem in both conventions, so there it changes
-/// nothing).
+/// `--convention` replaces the scene's `[problem] convention` (Problem 1, Problem 2 and the
+/// loading-law problem; docs/theory.md section 8).
 fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), ModelError> {
     let c = convention_of(name);
     match &scene.problem {
@@ -229,7 +228,7 @@ fn override_convention(scene: &mut Scene, name: ConventionName) -> Result<(), Mo
         SceneProblem::LoadingLaw(p) => {
             scene.problem = SceneProblem::LoadingLaw(crate::scene::rebuild_law(p, p.size().clone(), c)?)
         }
-        SceneProblem::Adhesion(_) => {}
+        SceneProblem::Adhesion(p) => scene.problem = SceneProblem::Adhesion(p.clone().with_convention(c)),
     }
     Ok(())
 }
