@@ -178,3 +178,15 @@ fn periodic_map_grid_holds_20_digits() {
         }
     }
 }
+
+/// A shortfall in `periodic` names full contact, not the homogeneous mode (not excited there,
+/// docs/theory.md section 8, Problem 2): nu = 0, lambda = 1.54, 20 digits asked: 18.6 verified
+/// (measured), with a warning naming full contact and no m*.
+#[test]
+fn periodic_shortfall_names_full_contact() {
+    let pr = row(q(0, 1), q(154, 100), Convention::PeriodicSurface);
+    let v = solve_verified(&pr, &[q(1, 2)], 20).unwrap();
+    assert!(v.digits_verified.headline < 20.0, "{:?}", v.digits_verified);
+    let w = v.warnings.iter().find(|w| w.contains("requested digits verified")).expect("a shortfall warning");
+    assert!(w.contains("full contact") && !w.contains("m* ="), "{w}");
+}

@@ -153,7 +153,8 @@ pub fn solve_rhs_in(
                     // Below nu = 1/2 slow decay is the homogeneous solution's share in F
                     // (asymptotics::adhesion_mode), not only the approach to full contact.
                     let f = constants.to_f64();
-                    let mode = if f.eps > 0.0 {
+                    // Not in `periodic`, where the mode is not excited (docs/theory.md section 8).
+                    let mode = if f.eps > 0.0 && !periodic {
                         format!("; {}", crate::asymptotics::adhesion_mode::mode_sentence(f.eps, f.b, f.s))
                     } else {
                         String::new()
