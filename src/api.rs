@@ -260,16 +260,15 @@ impl SolveOptions {
     }
 }
 
-/// `--convention` replaces the scene's `[problem] convention` (Problem 1 and the loading-law
-/// problem; the symmetric Problem 2 is the same problem in both conventions, so there it changes
-/// nothing).
+/// `--convention` replaces the scene's `[problem] convention` (Problem 1, Problem 2 and the
+/// loading-law problem; docs/theory.md section 8).
 fn override_convention(scene: &mut Scene, c: Convention) -> Result<(), ModelError> {
     match &scene.problem {
         SceneProblem::Sliding(p) => scene.problem = SceneProblem::Sliding(p.to_builder().convention(c).build()?),
         SceneProblem::LoadingLaw(p) => {
             scene.problem = SceneProblem::LoadingLaw(crate::scene::rebuild_law(p, p.size().clone(), c)?)
         }
-        SceneProblem::Adhesion(_) => {}
+        SceneProblem::Adhesion(p) => scene.problem = SceneProblem::Adhesion(p.clone().with_convention(c)),
     }
     Ok(())
 }

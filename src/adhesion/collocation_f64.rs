@@ -35,6 +35,11 @@
 //! (where the series refuses) and nu = 0, lambda = 0.7, load and fields to >= 12 digits; the
 //! quartic g = x^2/4 + x^4/2 at nu = 0.3, a/L = 3/10.
 //!
+//! The `periodic` convention (docs/theory.md section 8, Problem 2): each increment carries i beta
+//! times the tilted punch of [`crate::growing_contact::kernel_f64`] (`MarchSetting::tilt`); this
+//! route is derived apart from method 1's closed-form kernel, and the two agree to 15 digits at
+//! nu = 0, lambda = 0.6 and 1.0 (`convention_tests.rs`).
+//!
 //! Punches: the parabola and even polynomials (G a polynomial in chi); the circle's slope is not
 //! a polynomial, and it is refused here (the series serves it inside its radius).
 
@@ -119,7 +124,9 @@ impl Setup {
         let c = AdhesionParamsF64::new(problem.material());
         let setting = MarchSetting {
             kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
-            tilt: false,
+            // The `periodic` convention: each increment carries i beta times the tilted punch
+            // (docs/theory.md section 8, Problem 2; the march's kernel).
+            tilt: problem.periodic_surface(),
             slope: vec![0.0],
             p2_per_p: e_star * k * period * period / (PI * PI),
             profile,
@@ -158,7 +165,7 @@ impl Setup {
             // Re int_0^chi K(chi - eta; eta) eta F(eta) d eta, eta = chi s, chi - eta = chi (1 - s).
             for &(s, c, w) in &ts {
                 let eta = chi * s;
-                let weight = k.increment_outside(Side::Right, chi * c, eta, 0.0, false).re * eta * w * chi;
+                let weight = k.increment_outside(Side::Right, chi * c, eta, 0.0, self.setting.tilt).re * eta * w * chi;
                 let u = 2.0 * eta / lambda - 1.0;
                 chebyshev_values(u, &mut t);
                 for (j, tj) in t.iter().enumerate() {
@@ -298,13 +305,28 @@ pub fn solve_collocation_f64(
     let headline = sol.digits_estimated.headline;
     // The two runs disagree below nu = 1/2 where the homogeneous solution has grown (module doc).
     let c = AdhesionParamsF64::new(problem.material());
-    let cause = || if c.eps > 0.0 { mode_sentence(c.eps, c.b, c.s) } else { "the collocation converges slowly".into() };
+    // In `periodic` the mode is not excited (docs/theory.md section 8, Problem 2): full contact.
+    let cause = || {
+        if problem.periodic_surface() {
+            "near full contact lambda -> pi/2 the collocation converges slowly (in the `periodic` convention the \
+             homogeneous mode is not excited)"
+                .into()
+        } else if c.eps > 0.0 {
+            mode_sentence(c.eps, c.b, c.s)
+        } else {
+            "the collocation converges slowly".into()
+        }
+    };
     if headline < MIN_DIGITS {
         return Err(AdhesionError::IllConditioned {
             method: "f64-collocation",
             parameter: "lambda",
             value: readable_f64(sol.lambda),
-            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
+            valid: if problem.periodic_surface() {
+                "lambda below about 1.5 (`periodic`)".into()
+            } else {
+                "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into()
+            },
             reason: format!("two runs agree to only {headline:.1} digits: {}", cause()),
         });
     }

@@ -4,7 +4,9 @@
 //! MPFR method. The single punch and the circle stay with the series (the collocation does not
 //! serve them). When both refuse, the collocation's refusal is returned if the series refused
 //! for its radius (the collocation reaches further, so its reason is the binding one), else the
-//! series'.
+//! series'. The `periodic` convention (docs/theory.md section 8, Problem 2) has odd powers of
+//! lambda that the lambda^2 series does not carry: a periodic row in that convention is solved by
+//! the collocation only.
 
 use super::collocation_f64::solve_collocation_f64;
 use super::error::AdhesionError;
@@ -16,6 +18,9 @@ pub const SERIES_ENOUGH: f64 = 13.0;
 
 /// The f64 method of Problem 2 with estimated digits (module doc).
 pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<AdhesionSolutionF64, AdhesionError> {
+    if problem.periodic_surface() {
+        return solve_collocation_f64(problem, points);
+    }
     let series = super::series_f64::verify::solve_f64(problem, points);
     if let Ok(s) = &series {
         if s.digits_estimated.headline >= SERIES_ENOUGH {

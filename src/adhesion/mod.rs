@@ -11,6 +11,12 @@
 //! - [`collocation_f64`] (method 2b): collocation in eta, `f64`, one block of the loading law's
 //!   march with N = 0, where the series stops (issue 13); [`method_f64`] picks between 2 and 2b.
 //!
+//! Both surface conventions (docs/theory.md section 8, Problem 2; [`crate::model::AdhesionProblem::convention`]):
+//! `paper` (the Flamant far field) and `periodic` (u periodic; the MPFR kernel's factor
+//! [`volterra_mpfr::kernel::LateralShift`], the f64 collocation's tilted punch; the lambda^2 series
+//! is `paper` only). Checked in `convention_tests.rs` (boundary-element values, the two methods, the
+//! loading law with N = 0, the mode).
+//!
 //! Punches: the parabola, even polynomials and the circle (both methods), with the refusals of
 //! [`profile`] (convexity, |x| < R, slope limit). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
 //! relative to it), [`tension`] (the tension zones at the oscillating edge), [`error`]. The
@@ -49,5 +55,7 @@ pub use volterra_mpfr::verify::{solve_verified, VerifiedSolution};
 
 #[cfg(test)]
 mod against_series;
+#[cfg(test)]
+mod convention_tests;
 #[cfg(test)]
 mod tests;

@@ -15,7 +15,7 @@
 //! A - i B = i ch e^(2 eps eta)/cos eta,
 //!   rho = (m + t)^(-1/2 + i eps) (m - t)^(-1/2 - i eps) (A + B t) on the contact,
 //!   R = Z(t) (A + B t)/ch outside, Z = |t + m|^(-1/2 + i eps) |t - m|^(-1/2 - i eps), times -1 left.
-//! It exists only for the periodic row (the rotation -beta P1/L vanishes as L -> infinity).
+//! It exists only for the periodic row (the term i beta dP/L vanishes as L -> infinity).
 
 use nalgebra::Complex;
 
@@ -136,23 +136,24 @@ impl KernelF64 {
     }
 
     /// The surface slope left outside by the increment dP = (1 + i n) dP2 of unit dP2 in the
-    /// `periodic` convention or not: (1 + i n) L K - beta n R ([`crate::loading_law::collocation`]'s edge
-    /// integrand).
+    /// `periodic` convention or not: (1 + i n) (L K + i beta R) ([`crate::loading_law::collocation`]'s
+    /// edge integrand; docs/theory.md section 8, Problem 2: the increment's i beta dP/L keeps v and
+    /// u periodic).
     pub fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
-        let mut k = self.outside(side, d_near, eta) * C64::new(1.0, n);
+        let mut k = self.outside(side, d_near, eta);
         if tilt {
-            k -= self.tilt_outside(side, d_near, eta) * (self.beta * n);
+            k += self.tilt_outside(side, d_near, eta) * C64::new(0.0, self.beta);
         }
-        k
+        k * C64::new(1.0, n)
     }
 
-    /// The stress of the same increment on the contact: (1 + i n) L sigma_flat - beta n rho.
+    /// The stress of the same increment on the contact: (1 + i n) (L sigma_flat + i beta rho).
     pub fn increment_stress(&self, d_left: f64, d_right: f64, eta: f64, n: f64, tilt: bool) -> C64 {
-        let mut s = self.flat_stress(d_left, d_right, eta) * C64::new(1.0, n);
+        let mut s = self.flat_stress(d_left, d_right, eta);
         if tilt {
-            s -= self.tilt_stress(d_left, d_right, eta) * (self.beta * n);
+            s += self.tilt_stress(d_left, d_right, eta) * C64::new(0.0, self.beta);
         }
-        s
+        s * C64::new(1.0, n)
     }
 }
 

@@ -55,12 +55,13 @@ impl Ctx {
     }
 }
 
-/// int_0^lambda P'(eta) [(1 + i n) L K(chi_e - gamma(eta), eta) - beta n R(chi_e; eta)] d eta at
+/// int_0^lambda P'(eta) (1 + i n) [L K(chi_e - gamma(eta), eta) + i beta R(chi_e; eta)] d eta at
 /// lambda = Lambda t for the leading (chi_e = gamma + lambda) and the trailing
 /// (chi_e = gamma - lambda) end, from the Chebyshev coefficients of Phi and Gam (module doc), on
 /// `rule`; R = Z(t)(A + B t)/cosh(pi eps) is the tilted punch's slope outside
-/// ([`crate::growing_contact::kernel::TiltedPunch::outside`], `periodic` only; its constant f = 1 cancels against
-/// the -beta P1/L of the edge condition).
+/// ([`crate::growing_contact::kernel::TiltedPunch::outside`], `periodic` only: the increment's
+/// i beta dP/L of docs/theory.md section 8, Problem 2, which keeps v and u periodic; its constant
+/// f = 1 cancels against that term of the edge condition).
 ///
 /// Both ends when `only` is `None`; with `Some(side)` the kernels of that end only (the other
 /// end's integral is then zero; its advance factor is still checked, so the errors are the same):
@@ -101,7 +102,7 @@ pub(super) fn edge_integrals(
             None => n_const.clone(),
         };
         let one_in = Complex::with_val(prec, (1, &n));
-        let beta_n = Float::with_val(prec, &inc.beta * &n);
+        let tilt_factor = super::increment::periodic_factor(&inc.beta, &n, prec);
         // The tilted punch depends on eta only: once for both ends.
         let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
@@ -112,7 +113,7 @@ pub(super) fn edge_integrals(
             let d = Float::with_val(prec, &base * &factor);
             let mut k = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec) * &one_in;
             if let Some(tilt) = &tilt {
-                k -= tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &beta_n;
+                k += tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &tilt_factor;
             }
             *acc += k * &weight;
         }

@@ -12,7 +12,7 @@ use crate::model::{Convention, Exact, LoadingLaw, Material};
 use crate::numerics::exact::to_float;
 use crate::params::adhesion::AdhesionParamsMpfr;
 use rug::float::Constant;
-use rug::Float;
+use rug::{Complex, Float};
 
 /// What the collocation needs besides the unknowns: exact inputs, rounded once per precision.
 #[derive(Debug, Clone)]
@@ -170,4 +170,11 @@ pub(super) fn advance_factor(e: &Float, sign: i32, lambda: &Float) -> Result<Flo
             lambda.to_f64()
         ),
     })
+}
+
+/// The multiple i beta (1 + i n) = -beta n + i beta of the tilted punch in an increment of unit dP2
+/// (docs/theory.md section 8, Problem 2: (H + i beta) d sigma = i beta dP/L on the contact in the
+/// `periodic` convention, dP = (1 + i n) dP2).
+pub(super) fn periodic_factor(beta: &Float, n: &Float, prec: u32) -> Complex {
+    Complex::with_val(prec, (-Float::with_val(prec, beta * n), beta))
 }

@@ -80,7 +80,7 @@ pub(super) fn jacobian(
                 None => n_const.clone(),
             };
             let one_in = Complex::with_val(prec, (1, &n));
-            let beta_n = Float::with_val(prec, &inc.beta * &n);
+            let tilt_factor = super::increment::periodic_factor(&inc.beta, &n, prec);
             let ws = Float::with_val(prec, w * s) * &lambda;
             let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
             for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
@@ -91,10 +91,10 @@ pub(super) fn jacobian(
                 let mut k = Complex::with_val(prec, &kernel * &one_in);
                 let mut dk = Complex::with_val(prec, &k * &log_d);
                 if let Some(tilt) = &tilt {
-                    let value = tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &beta_n;
+                    let value = tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &tilt_factor;
                     let log_t = tilt.outside_log_derivative(side, &d, &eta, &inc.eps, prec);
-                    dk -= Complex::with_val(prec, &value * &log_t);
-                    k -= value;
+                    dk += Complex::with_val(prec, &value * &log_t);
+                    k += value;
                 }
                 let wk = Complex::with_val(prec, &k * &ws);
                 // d d/d Gam_j = +- lambda [c delta_ij + s (delta_ij - l_j)].

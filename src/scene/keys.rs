@@ -120,7 +120,7 @@ pub const SHAPE_RANGE: &str = "\"parabolic\", \"sinusoidal\", \"polynomial\" or 
 /// Every key the parser accepts, table by table, in the order of its messages.
 pub const KEYS: &[Key] = &[
     key("problem", "kind", All, "which problem: Problem 1 (steady sliding with friction and wear) or Problem 2 (indentation with complete adhesion)", "-", KIND_RANGE, "\"sliding\"", Set),
-    key("problem", "convention", All, "surface convention (docs/theory.md section 8): \"paper\" solves the paper's [2.8] as it stands; \"periodic\" adds K = (kappa P2 - 2 beta l tau0)/L so that the surface closes over every period; Problem 2 without a law is the same in both. Optional, default \"paper\"; `solve --convention` overrides it", "-", CONVENTION_RANGE, "\"paper\"", Commented),
+    key("problem", "convention", All, "surface convention (docs/theory.md section 8): \"paper\" solves the paper's [2.8] as it stands; \"periodic\" adds K = (kappa P2 - 2 beta l tau0)/L so that the surface closes over every period; in Problem 2 \"periodic\" makes u periodic (a laterally rigid row) where \"paper\" keeps the Flamant far field sigma_xx = -P2/L. Optional, default \"paper\"; `solve --convention` overrides it", "-", CONVENTION_RANGE, "\"paper\"", Commented),
     key("material", "poisson_ratio", All, "Poisson's ratio nu of the elastic half-plane (plane strain)", "-", "an exact number in [0, 1/2]", "\"0.3\"", Set),
     key("material", "youngs_modulus", All, "Young's modulus E (give it or contact_modulus, not both)", "stress", "an exact number > 0", "\"1\"", Commented),
     key("material", "contact_modulus", All, "contact modulus E* = E/(1 - nu^2) (give it or youngs_modulus, not both)", "stress", "an exact number > 0", "\"1\"", Set),

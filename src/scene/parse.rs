@@ -42,7 +42,7 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
                 let output = parse_output(root, PointRange::OpenUnit)?;
                 (output, SceneProblem::LoadingLaw(parse_loading_law(root, convention)?))
             } else {
-                (parse_output(root, PointRange::ClosedHalf)?, SceneProblem::Adhesion(parse_adhesion(root)?))
+                (parse_output(root, PointRange::ClosedHalf)?, SceneProblem::Adhesion(parse_adhesion(root, convention)?))
             };
             let (output, problem) = problem;
             let sweep = parse_sweep(root, &problem)?;
@@ -52,9 +52,9 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
     }
 }
 
-/// `[problem] convention`: "paper" (the default) or "periodic" (docs/theory.md section 8). Problem 2
-/// (symmetric: P1 = 0, no wear) is the same problem in both, so an adhesion scene accepts either
-/// value and it has no effect there; under a loading law (P1 != 0) it brings in the rotation term.
+/// `[problem] convention`: "paper" (the default) or "periodic" (docs/theory.md section 8). In
+/// Problem 2 `periodic` makes u periodic (docs/theory.md section 8, Problem 2: the lateral term
+/// i beta P/L); under a loading law (P1 != 0) it also removes the rotation.
 fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
     match value(problem, "problem", "convention")? {
         None => Ok(Convention::Paper),
@@ -237,7 +237,7 @@ fn parse_sliding(root: &Table, convention: Convention) -> Result<SlidingProblem,
         .map_err(|e| prefixed(e, "sliding"))
 }
 
-fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
+fn parse_adhesion(root: &Table, convention: Convention) -> Result<AdhesionProblem, ModelError> {
     let material = parse_material(root)?;
     let (shape, period) = parse_punch(root)?;
     let s = table(root, "adhesion")?;
@@ -250,7 +250,9 @@ fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
         (None, Some(p)) => AdhesionSize::NormalLoad(p),
         (None, None) => return Err(ModelError::new("adhesion", "(missing)", "give half_width or normal_load")),
     };
-    AdhesionProblem::new(material, period, shape, size).map_err(|e| prefixed(e, "adhesion"))
+    AdhesionProblem::new(material, period, shape, size)
+        .map(|p| p.with_convention(convention))
+        .map_err(|e| prefixed(e, "adhesion"))
 }
 
 /// The keys of `[adhesion]` that make it the loading-law problem (docs/theory.md section 10).

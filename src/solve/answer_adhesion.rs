@@ -36,7 +36,7 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
             bits: Some(s.prec),
             nodes: Some(s.nodes),
             order: None,
-            convention: None,
+            convention: convention_key(p),
         },
         kind: DigitsKind::Verified,
         lambda: matches!(p.period(), Period::Finite(_)).then(|| own(&s.lambda)),
@@ -64,6 +64,13 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
     }
 }
 
+/// `provenance.convention` of Problem 2: `periodic` when that convention applies (a finite
+/// period; docs/theory.md section 8), else absent as before (the `paper` problem, and the single
+/// punch, which is the same in both).
+fn convention_key(p: &AdhesionProblem) -> Option<&'static str> {
+    p.periodic_surface().then_some("periodic")
+}
+
 /// The answer of the f64 method at the scene's points `points` (x/a, exact).
 pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]) -> AdhesionAnswer {
     let d = &s.digits_estimated;
@@ -79,7 +86,13 @@ pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]
         (name.to_string(), rows)
     };
     AdhesionAnswer {
-        provenance: Provenance { method: "f64", bits: Some(53), nodes: Some(s.terms), order: None, convention: None },
+        provenance: Provenance {
+            method: "f64",
+            bits: Some(53),
+            nodes: Some(s.terms),
+            order: None,
+            convention: convention_key(p),
+        },
         kind: DigitsKind::Estimated,
         lambda: matches!(p.period(), Period::Finite(_)).then(|| own(s.lambda)),
         p2: own(s.normal_load),

@@ -87,8 +87,8 @@ pub struct Provenance {
     pub nodes: Option<usize>,
     /// Order of the truncated series (series method).
     pub order: Option<usize>,
-    /// Surface convention of Problem 1 (`paper` or `periodic`, docs/theory.md section 8); `None` for
-    /// Problem 2, which is the same in both.
+    /// Surface convention of Problem 1 (`paper` or `periodic`, docs/theory.md section 8); for
+    /// Problem 2 `periodic` only (absent: `paper`, or the single punch, the same in both).
     pub convention: Option<&'static str>,
 }
 

@@ -99,7 +99,7 @@ pub enum MethodName {
     Pade,
 }
 
-/// Surface conventions of Problem 1 (docs/theory.md section 8).
+/// Surface conventions of Problems 1 and 2 (docs/theory.md section 8).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ConventionName {
     /// The paper's equation [2.8] as it stands (its expansions are even in lambda).
@@ -192,8 +192,8 @@ pub enum RawCommand {
         /// Series order for --method series or pade (default 12).
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: Option<String>,
-        /// Surface convention of Problem 1 (overrides [problem] convention; default paper).
-        /// Problem 2 is the same in both.
+        /// Surface convention (overrides [problem] convention; default paper; docs/theory.md
+        /// section 8): in Problem 2 `periodic` makes u periodic.
         #[arg(long, value_enum)]
         convention: Option<ConventionName>,
         /// Output format (default text).

@@ -283,8 +283,8 @@ fn polynomial_form_at_the_shipped_load_in_text() {
     assert!(agree(&get("b"), &b20, &l, 11.0), "{out}");
 }
 
-/// `--convention periodic` brings in the rotation term (THEORY.md section 8): another centre, the
-/// law and l kept.
+/// `--convention periodic` brings in the tilted punch (docs/theory.md section 8: no rotation, u
+/// periodic): another centre, the law and l kept.
 #[test]
 fn periodic_convention_moves_the_centre() {
     let text = std::fs::read_to_string(shipped()).unwrap().replace(SHIPPED_POINTS, "points = [\"0.5\"]");
@@ -299,9 +299,9 @@ fn periodic_convention_moves_the_centre() {
     assert!(agree(&Float::with_val(256, &p1 * 5u32), &p2, &p2, 10.0), "{v}");
     let c_paper = -6.968_243_622_835_079e-3; // the 20-digit run: -6.9682436228350787116e-3
     assert!((f(&v["c"]).to_f64() - c_paper).abs() > 1e-6, "{v}");
-    // The library's periodic value at this contact (c/l = -0.0247, whose stresses pass the
-    // residual check in [1.8]: loading_law::fields tests): c = -4.1140394740171823630e-3.
-    assert!((f(&v["c"]).to_f64() + 4.114_039_474_017_182e-3).abs() < 1e-12, "{v}");
+    // The library's periodic value at this contact (c/l = -0.0240, whose stresses pass the
+    // residual check in [1.8]: loading_law::fields tests): c = -4.0043317922396922439e-3.
+    assert!((f(&v["c"]).to_f64() + 4.004_331_792_239_692e-3).abs() < 1e-12, "{v}");
 }
 
 /// The report's scene sections meet the loading-law scene without solving it: method choice and

@@ -193,8 +193,8 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
          numbers come from `periodic-contact solve SCENE --json --digits {digits}` (keys a, b, c, P1, P2, \
          path; friction_needed at its points).\n",
         if ctx.profile == Profile::Full {
-            "Each scene in its own surface convention (docs/theory.md section 8: `periodic` adds the rotation term, \
-             -beta P1/L on the contact, and moves the centre; a scene per convention shows both)."
+            "Each scene in its own surface convention (docs/theory.md section 8: `periodic` keeps v and u periodic, \
+             the term i beta (P2 + i P1)/L on the contact, and moves the centre; a scene per convention shows both)."
         } else {
             "Fast profile: fewer digits and profile points."
         },

@@ -3,7 +3,7 @@
 //! Scalings: [`crate::adhesion::scales`].
 
 use super::right_side::RightSide;
-use super::solve::{solve_rhs, VolterraParams};
+use super::solve::{solve_rhs, solve_rhs_in, VolterraParams};
 use super::volterra::{lambda_of, VolterraSolution};
 use crate::adhesion::points::check_points;
 use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
@@ -96,7 +96,7 @@ pub fn solve_mpfr_with(
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
             check_profile_on_contact(problem, to_float(a, 64).to_f64())?;
             let lam = lambda_of(a, l, prec);
-            let sol = solve_rhs(&constants, &lam, params, &rhs_for_a(a))?;
+            let sol = solve_rhs_in(&constants, &lam, params, &rhs_for_a(a), problem.periodic_surface())?;
             (lam, to_float(a, prec), sol)
         }
         (AdhesionSize::NormalLoad(p2), Period::Infinite) => match largest_admissible_half_width(problem) {
@@ -128,7 +128,12 @@ pub fn solve_mpfr_with(
                 RightSide::new(problem, ell.square(), prec)
             };
             let cap = largest_admissible_half_width(problem).map(|a_max| std::f64::consts::PI * a_max / lf.to_f64());
-            let search = LoadSearch { cp: first_guess_load_constant(problem), lambda_cap: cap, rhs_at: &rhs_at };
+            let search = LoadSearch {
+                cp: first_guess_load_constant(problem),
+                lambda_cap: cap,
+                rhs_at: &rhs_at,
+                periodic: problem.periodic_surface(),
+            };
             let (lam, big) = lambda_for_load(&constants, &search, &target, p2, params)?;
             let sol = big.restrict(&lam);
             let a = Float::with_val(prec, &lam * &lf) / &pi;
@@ -187,6 +192,8 @@ struct LoadSearch<'a> {
     cp: f64,
     lambda_cap: Option<f64>,
     rhs_at: &'a dyn Fn(&Float) -> RightSide,
+    /// The `periodic` convention (docs/theory.md section 8, Problem 2).
+    periodic: bool,
 }
 
 /// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
@@ -216,9 +223,16 @@ fn lambda_for_load(
             big = big.min(c);
         }
         let big_f = Float::with_val(prec, big);
-        let sol = solve_rhs(constants, &big_f, params, &(search.rhs_at)(&big_f))?;
+        let sol = solve_rhs_in(constants, &big_f, params, &(search.rhs_at)(&big_f), search.periodic)?;
         let big2 = Float::with_val(prec, &big_f * &big_f);
         let p_of = |sol: &VolterraSolution, lam: &Float| -> (Float, Float) {
+            if sol.periodic() {
+                // P(lam) = Lambda^2 int_0^(lam/Lambda) s F(s) ds, P'(lam) = lam F(lam/Lambda).
+                let sigma = Float::with_val(prec, lam / &big_f);
+                let p = sol.load_ratio_to(&sigma) * &big2;
+                let d = sol.f_at(&sigma) * lam;
+                return (p, d);
+            }
             let tau = Float::with_val(prec, lam * lam) / &big2;
             let p = chebyshev::integral(&sol.f_coeffs, &tau, prec) * &big2 / 2u32;
             let d = sol.f_at(&tau) * lam;
