@@ -44,7 +44,7 @@ use super::scales::Digits;
 use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
 use super::series_f64::verify::estimate;
 use super::series_f64::RightSeries;
-use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::kernel_f64::{KernelF64, Side};
 use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
@@ -298,13 +298,19 @@ pub fn solve_collocation_f64(
     let headline = sol.digits_estimated.headline;
     // The two runs disagree below nu = 1/2 where the homogeneous solution has grown (module doc).
     let c = AdhesionParamsF64::new(problem.material());
-    let cause = || if c.eps > 0.0 { mode_sentence(c.eps, c.b, c.s) } else { "the collocation converges slowly".into() };
+    let cause = || {
+        if c.eps > 0.0 {
+            mode_sentence(c.eps, c.b, c.s, SHORT_DIGITS)
+        } else {
+            "the collocation converges slowly".into()
+        }
+    };
     if headline < MIN_DIGITS {
         return Err(AdhesionError::IllConditioned {
             method: "f64-collocation",
             parameter: "lambda",
             value: readable_f64(sol.lambda),
-            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
+            valid: valid_sizes(c.eps, c.b, c.s, SHORT_DIGITS),
             reason: format!("two runs agree to only {headline:.1} digits: {}", cause()),
         });
     }

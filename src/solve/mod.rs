@@ -191,7 +191,20 @@ fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<
 
 fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let v = adhesion::solve_verified(p, &scene.output.points, req.digits)?;
-    Ok(Value::Object(render::adhesion_json(&answer_adhesion::mpfr_answer(p, &v), req.digits)))
+    let mut m = render::adhesion_json(&answer_adhesion::mpfr_answer(p, &v), req.digits);
+    m.insert("lambda_h".into(), lambda_h(p, req.digits));
+    Ok(Value::Object(m))
+}
+
+/// `lambda_h`: the largest lambda at which complete adhesion keeps `digits` (the homogeneous mode's
+/// horizon, docs/theory.md section 11), 3 decimals rounded down; null for the single punch.
+fn lambda_h(p: &AdhesionProblem, digits: u32) -> Value {
+    match p.period() {
+        Period::Finite(_) => json!(crate::asymptotics::adhesion_mode::horizon_text(
+            crate::asymptotics::adhesion_mode::horizon_of(p.material(), digits as f64)
+        )),
+        Period::Infinite => Value::Null,
+    }
 }
 
 fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
@@ -199,6 +212,7 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
     let mut m = render::adhesion_json(&answer_adhesion::f64_answer(p, &s, &scene.output.points), shown);
     m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    m.insert("lambda_h".into(), lambda_h(p, shown));
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
     Ok(Value::Object(m))

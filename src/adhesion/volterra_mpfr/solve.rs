@@ -133,7 +133,15 @@ pub fn solve_rhs(
                     // (asymptotics::adhesion_mode), not only the approach to full contact.
                     let f = constants.to_f64();
                     let mode = if f.eps > 0.0 {
-                        format!("; {}", crate::asymptotics::adhesion_mode::mode_sentence(f.eps, f.b, f.s))
+                        format!(
+                            "; {}",
+                            crate::asymptotics::adhesion_mode::mode_sentence(
+                                f.eps,
+                                f.b,
+                                f.s,
+                                params.target_bits as f64 * std::f64::consts::LOG10_2
+                            )
+                        )
                     } else {
                         String::new()
                     };

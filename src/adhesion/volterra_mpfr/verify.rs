@@ -9,7 +9,7 @@
 use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
-use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::error::AdhesionError;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
@@ -18,10 +18,10 @@ use std::time::Instant;
 
 /// Why two runs disagree below full contact: at nu < 1/2 the homogeneous solution
 /// ([`crate::asymptotics::adhesion_mode`], naming its exponent m*), at nu = 1/2 the conditioning.
-fn small_nu_cause(problem: &AdhesionProblem) -> String {
+fn small_nu_cause(problem: &AdhesionProblem, digits: u32) -> String {
     let c = AdhesionParamsF64::new(problem.material());
     if c.eps > 0.0 {
-        mode_sentence(c.eps, c.b, c.s)
+        mode_sentence(c.eps, c.b, c.s, digits as f64)
     } else {
         "the Volterra equation of the incremental method is ill-conditioned here (volterra_mpfr, Conditioning)".into()
     }
@@ -95,8 +95,14 @@ pub fn solve_verified(
             method: "mpfr-volterra",
             parameter: "lambda",
             value: readable_f64(lam),
-            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
-            reason: format!("two runs agree to only {headline:.1} digits: {}", small_nu_cause(problem)),
+            valid: {
+                let c = AdhesionParamsF64::new(problem.material());
+                valid_sizes(c.eps, c.b, c.s, digits_requested as f64)
+            },
+            reason: format!(
+                "two runs agree to only {headline:.1} digits: {}",
+                small_nu_cause(problem, digits_requested)
+            ),
         });
     }
     if headline < digits_requested as f64 {
@@ -107,9 +113,9 @@ pub fn solve_verified(
         let near = "near full contact lambda -> pi/2 the solution is singular and the discretisation converges slowly";
         let eps_positive = AdhesionParamsF64::new(problem.material()).eps > 0.0;
         let cause = match (lam >= FULL_CONTACT_LAMBDA, eps_positive) {
-            (true, true) => format!("{near}; and {}", small_nu_cause(problem)),
+            (true, true) => format!("{near}; and {}", small_nu_cause(problem, digits_requested)),
             (true, false) => near.to_string(),
-            (false, _) => small_nu_cause(problem),
+            (false, _) => small_nu_cause(problem, digits_requested),
         };
         warnings.push(format!(
             "only {headline:.1} of {digits_requested} requested digits verified (lambda = {lam:.6}; {cause})"
