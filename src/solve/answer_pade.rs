@@ -31,6 +31,7 @@ pub fn sliding_json(s: &PadeSolution, requested: u32, convention: Convention) ->
                 "approximant": format!("[{}/{}]", c.l, c.m),
                 "digits_estimated": format!("{:.1}", c.digits),
                 "poles": c.poles,
+                "map": c.map.unwrap_or("none: Pade in w"),
             })
         })
         .collect();
