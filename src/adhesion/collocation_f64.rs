@@ -49,7 +49,7 @@ use super::scales::Digits;
 use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
 use super::series_f64::verify::estimate;
 use super::series_f64::RightSeries;
-use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::kernel_f64::{KernelF64, Side};
 use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
@@ -312,7 +312,7 @@ pub fn solve_collocation_f64(
              homogeneous mode is not excited)"
                 .into()
         } else if c.eps > 0.0 {
-            mode_sentence(c.eps, c.b, c.s)
+            mode_sentence(c.eps, c.b, c.s, SHORT_DIGITS)
         } else {
             "the collocation converges slowly".into()
         }
@@ -325,7 +325,7 @@ pub fn solve_collocation_f64(
             valid: if problem.periodic_surface() {
                 "lambda below about 1.5 (`periodic`)".into()
             } else {
-                "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into()
+                valid_sizes(c.eps, c.b, c.s, SHORT_DIGITS)
             },
             reason: format!("two runs agree to only {headline:.1} digits: {}", cause()),
         });

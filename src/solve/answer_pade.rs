@@ -35,6 +35,7 @@ pub fn sliding_json(
                 "approximant": format!("[{}/{}]", c.l, c.m),
                 "digits_estimated": format!("{:.1}", c.digits),
                 "poles": c.poles,
+                "map": c.map.unwrap_or("none: Pade in w"),
             })
         })
         .collect();

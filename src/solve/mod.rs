@@ -229,7 +229,21 @@ fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Resul
     let v = adhesion::solve_verified(p, &scene.output.points, req.digits)?;
     let answer = answer_adhesion::mpfr_answer(p, &v);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
-    Ok((Value::Object(render::adhesion_json(&answer, req.digits)), claim))
+    let mut m = render::adhesion_json(&answer, req.digits);
+    m.insert("lambda_h".into(), lambda_h(p, req.digits));
+    Ok((Value::Object(m), claim))
+}
+
+/// `lambda_h`: the largest lambda at which complete adhesion keeps `digits` (the homogeneous mode's
+/// horizon, docs/theory.md section 11), 3 decimals rounded down; null for the single punch and in
+/// the `periodic` convention, where the mode is not excited (section 8, Problem 2).
+fn lambda_h(p: &AdhesionProblem, digits: u32) -> Value {
+    match p.period() {
+        Period::Finite(_) if !p.periodic_surface() => json!(crate::asymptotics::adhesion_mode::horizon_text(
+            crate::asymptotics::adhesion_mode::horizon_of(p.material(), digits as f64)
+        )),
+        _ => Value::Null,
+    }
 }
 
 fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
@@ -239,6 +253,7 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
     m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    m.insert("lambda_h".into(), lambda_h(p, shown));
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
     Ok((Value::Object(m), claim))

@@ -138,7 +138,28 @@ fn write_failures(s: &mut Section, lines: &[String]) {
     }
 }
 
-/// One map per method: the cells binned by digits (legend: the bins).
+/// The horizon lambda_h(nu, d) at the bins' boundaries d = 12, 6, 2 (docs/theory.md section 11,
+/// [`periodic_contact::asymptotics::adhesion_mode::horizon`]): below each dashed curve complete
+/// adhesion keeps d digits; nu in steps of 0.01 (pi/2 at nu = 1/2).
+fn horizon_curves() -> Vec<Curve> {
+    [(12.0, 0), (6.0, 1), (2.0, 2)]
+        .into_iter()
+        .map(|(d, b)| Curve {
+            name: format!("lambda_h(nu, {d:.0}): {d:.0} digits kept below"),
+            points: (0..=50)
+                .filter_map(|i| {
+                    let m = Material::from_contact_modulus(q(i, 100), q(1, 1)).ok()?;
+                    Some((i as f64 / 100.0, periodic_contact::asymptotics::adhesion_mode::horizon_of(&m, d)))
+                })
+                .collect(),
+            draw: Draw::Dashed,
+            colour: Some(BIN_COLOURS[b]),
+        })
+        .collect()
+}
+
+/// One map per method: the cells binned by digits (legend: the bins); the Problem 2 maps also the
+/// horizon's curves ([`horizon_curves`]).
 fn map_chart(stem: &str, title: &str, x_name: &str, knob: &Knob, i: usize, cells: &[Cell]) -> Chart {
     let curves = BINS
         .iter()
@@ -150,6 +171,7 @@ fn map_chart(stem: &str, title: &str, x_name: &str, knob: &Knob, i: usize, cells
             colour: Some(BIN_COLOURS[b]),
         })
         .filter(|c| !c.points.is_empty())
+        .chain(if x_name == "nu" { horizon_curves() } else { Vec::new() })
         .collect();
     Chart {
         stem: stem.to_string(),
@@ -337,7 +359,8 @@ fn p1_plan(
 /// Problem 2: `paper` keeps the Flamant far field, `periodic` makes u periodic).
 fn p2_plan(profile: Profile, knobs: &[Knob], convention: Convention) -> MapPlan {
     let (nus, lambdas): (Vec<(i64, i64)>, Vec<f64>) = if profile == Profile::Full {
-        (vec![(0, 1), (3, 20), (3, 10), (9, 20), (1, 2)], vec![0.2, 0.5, 0.8, 1.1, 1.4])
+        // nu and lambda fine enough to show the horizon's curves (lambda_h(nu, 12) = 0.84 .. 1.53).
+        (vec![(0, 1), (1, 10), (1, 5), (3, 10), (2, 5), (1, 2)], vec![0.2, 0.5, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4])
     } else {
         (vec![(3, 10)], vec![0.4])
     };
@@ -532,7 +555,10 @@ fn mode_table(cells: &[Cell]) -> String {
         "Below nu = 1/2 the incremental problem of Problem 2 is not unique: P' + C H(eta) solves it for every C, \
          H ~ eta^m* with Re M_m* = 0 (docs/theory.md section 11, `src/asymptotics/adhesion_mode.rs`); the \
          failures above are where the two runs pick different C. m*(nu) at the map's nu (secant on Re M_x, \
-         13 significant digits, checked against mpmath to 13-14):\n\n| nu | m* |\n|---:|---:|",
+         13 significant digits, checked against mpmath to 13-14), and the horizon lambda_h(nu, d): the largest \
+         lambda at which complete adhesion keeps d digits (the mode's growth from lambda to pi/2 by the frozen \
+         symbol, margin 2 digits; the dashed curves of the maps at d = 12, 6, 2):\n\n\
+         | nu | m* | lambda_h(nu, 20) | lambda_h(nu, 12) | lambda_h(nu, 2) |\n|---:|---:|---:|---:|---:|",
     );
     for nu in nus {
         let text = match Material::from_contact_modulus(rational(nu), q(1, 1)) {
@@ -548,7 +574,13 @@ fn mode_table(cells: &[Cell]) -> String {
             }
             Err(_) => "-".into(),
         };
-        out.push_str(&format!("\n| {nu:.3} | {text} |"));
+        let h = |d: f64| match Material::from_contact_modulus(rational(nu), q(1, 1)) {
+            Ok(m) => periodic_contact::asymptotics::adhesion_mode::horizon_text(
+                periodic_contact::asymptotics::adhesion_mode::horizon_of(&m, d),
+            ),
+            Err(_) => "-".into(),
+        };
+        out.push_str(&format!("\n| {nu:.3} | {text} | {} | {} | {} |", h(20.0), h(12.0), h(2.0)));
     }
     out
 }

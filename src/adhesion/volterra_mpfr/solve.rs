@@ -155,7 +155,15 @@ pub fn solve_rhs_in(
                     let f = constants.to_f64();
                     // Not in `periodic`, where the mode is not excited (docs/theory.md section 8).
                     let mode = if f.eps > 0.0 && !periodic {
-                        format!("; {}", crate::asymptotics::adhesion_mode::mode_sentence(f.eps, f.b, f.s))
+                        format!(
+                            "; {}",
+                            crate::asymptotics::adhesion_mode::mode_sentence(
+                                f.eps,
+                                f.b,
+                                f.s,
+                                params.target_bits as f64 * std::f64::consts::LOG10_2
+                            )
+                        )
                     } else {
                         String::new()
                     };

@@ -9,7 +9,7 @@
 use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
-use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::error::AdhesionError;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
@@ -20,12 +20,12 @@ use std::time::Instant;
 /// ([`crate::asymptotics::adhesion_mode`], naming its exponent m*), at nu = 1/2 the conditioning.
 /// In the `periodic` convention the mode is not excited (docs/theory.md section 8, Problem 2): the
 /// cause is the approach to full contact.
-fn small_nu_cause(problem: &AdhesionProblem) -> String {
+fn small_nu_cause(problem: &AdhesionProblem, digits: u32) -> String {
     let c = AdhesionParamsF64::new(problem.material());
     if problem.periodic_surface() {
         PERIODIC_CAUSE.into()
     } else if c.eps > 0.0 {
-        mode_sentence(c.eps, c.b, c.s)
+        mode_sentence(c.eps, c.b, c.s, digits as f64)
     } else {
         "the Volterra equation of the incremental method is ill-conditioned here (volterra_mpfr, Conditioning)".into()
     }
@@ -107,9 +107,13 @@ pub fn solve_verified(
             valid: if problem.periodic_surface() {
                 "lambda well below pi/2 (`periodic`: about 1.52 at 20 digits)".into()
             } else {
-                "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into()
+                let c = AdhesionParamsF64::new(problem.material());
+                valid_sizes(c.eps, c.b, c.s, digits_requested as f64)
             },
-            reason: format!("two runs agree to only {headline:.1} digits: {}", small_nu_cause(problem)),
+            reason: format!(
+                "two runs agree to only {headline:.1} digits: {}",
+                small_nu_cause(problem, digits_requested)
+            ),
         });
     }
     if headline < digits_requested as f64 {
@@ -121,9 +125,9 @@ pub fn solve_verified(
         let eps_positive = AdhesionParamsF64::new(problem.material()).eps > 0.0;
         let cause = match (lam >= FULL_CONTACT_LAMBDA, eps_positive) {
             _ if problem.periodic_surface() => PERIODIC_CAUSE.to_string(),
-            (true, true) => format!("{near}; and {}", small_nu_cause(problem)),
+            (true, true) => format!("{near}; and {}", small_nu_cause(problem, digits_requested)),
             (true, false) => near.to_string(),
-            (false, _) => small_nu_cause(problem),
+            (false, _) => small_nu_cause(problem, digits_requested),
         };
         warnings.push(format!(
             "only {headline:.1} of {digits_requested} requested digits verified (lambda = {lam:.6}; {cause})"
