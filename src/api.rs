@@ -298,7 +298,10 @@ mod tests {
         let e = derive("sliding", 4, &[("shape", "square")]).unwrap_err();
         assert!(e.to_string().contains("invalid value 'square' for '--shape"), "{e}");
         let e = derive("kernel", 100000, &[]).unwrap_err();
-        assert_eq!(e.to_string(), "invalid --order = 100000: must be an integer in [0, 2000]");
+        assert_eq!(
+            e.to_string(),
+            "invalid --order = 100000: must be an integer in [0, 2000] (the kernel series' limit)"
+        );
     }
 
     #[test]

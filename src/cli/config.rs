@@ -111,13 +111,30 @@ pub fn max_order(object: SeriesObject) -> usize {
     }
 }
 
-/// Parses `--order` (an integer in [0, max]).
-pub fn parse_order(text: &str, max: usize) -> Result<usize, ModelError> {
+/// What each object's order limit is, as the `--order` error states it (issue 30: the limit of the
+/// object and route asked, not another object's).
+pub fn order_limit_text(object: SeriesObject) -> &'static str {
+    match object {
+        SeriesObject::Kernel => "the kernel series' limit",
+        SeriesObject::Jacobi => "the Jacobi moments' limit",
+        SeriesObject::Weight => "the weight series' limit",
+        SeriesObject::Sliding(_) => "the sliding series' limit",
+        SeriesObject::Adhesion => {
+            "the adhesion series' exact route; with --nu R its numerical route takes orders up to 1000"
+        }
+        SeriesObject::PolynomialSliding | SeriesObject::PolynomialAdhesion => {
+            "the limit of a polynomial profile's series"
+        }
+    }
+}
+
+/// Parses `--order` (an integer in [0, max]); `what` names whose limit `max` is.
+pub fn parse_order(text: &str, max: usize, what: &str) -> Result<usize, ModelError> {
     text.trim()
         .parse::<usize>()
         .ok()
         .filter(|&n| n <= max)
-        .ok_or_else(|| ModelError::new("--order", text, format!("must be an integer in [0, {max}]")))
+        .ok_or_else(|| ModelError::new("--order", text, format!("must be an integer in [0, {max}] ({what})")))
 }
 
 /// Largest `report --jobs`.
@@ -300,7 +317,7 @@ fn loading_law_series(f: LawFlags) -> Result<RunConfig, ModelError> {
             "must be >= 0 (n = P1/P2 with N' >= 0; the mirror image x -> -x gives n < 0)",
         ));
     }
-    let order = parse_order(f.order, MAX_ORDER)?;
+    let order = parse_order(f.order, MAX_ORDER, "the loading-law series' limit")?;
     Ok(RunConfig::LoadingLawSeries { nu, ratio, order, format: f.format })
 }
 
@@ -394,19 +411,13 @@ impl RunConfig {
                 // The adhesion series with --nu takes any order up to the numerical route's cap.
                 let numeric_possible = object == SeriesObject::Adhesion && nu.is_some();
                 let order = if numeric_possible {
-                    parse_order(&order, crate::asymptotics::adhesion_numeric::MAX_ORDER)?
+                    parse_order(
+                        &order,
+                        crate::asymptotics::adhesion_numeric::MAX_ORDER,
+                        "the adhesion series at --nu: exact in symbols up to 24, by the numerical route beyond",
+                    )?
                 } else {
-                    parse_order(&order, max_order(object)).map_err(|e| match object {
-                        SeriesObject::Adhesion => ModelError {
-                            expected: format!(
-                                "{} (the exact route; with --nu R the numerical route takes up to {})",
-                                e.expected,
-                                crate::asymptotics::adhesion_numeric::MAX_ORDER
-                            ),
-                            ..e
-                        },
-                        _ => e,
-                    })?
+                    parse_order(&order, max_order(object), order_limit_text(object))?
                 };
                 let digits =
                     digits
@@ -521,7 +532,11 @@ impl RunConfig {
                     MethodName::Series => Method::Series,
                     MethodName::Pade => Method::Pade,
                 });
-                let series_order = order.map(|o| parse_order(&o, 24)).transpose()?;
+                let series_order = order
+                    .map(|o| {
+                        parse_order(&o, crate::scene::keys::MAX_SERIES_ORDER, "the series and pade methods' limit")
+                    })
+                    .transpose()?;
                 let forced = Forced { method, digits, series_order };
                 let choice = solve_choice(&parsed, forced)
                     .map_err(|e| ModelError::new("calibration/methods.csv", "(compiled in)", e.to_string()))?;
@@ -529,7 +544,7 @@ impl RunConfig {
                 Ok(RunConfig::Solve { scene: Box::new(parsed), choice, format })
             }
             RawCommand::Report { out, scenes, order, fast, jobs } => {
-                let order = parse_order(&order, 40)?;
+                let order = parse_order(&order, 40, "the report's coefficient tables")?;
                 if !scenes.is_dir() {
                     return Err(ModelError::new("--scenes", scenes.display(), "must be a folder of *.toml scenes"));
                 }
@@ -567,4 +582,93 @@ fn scene_template(template: TemplateName, shape: TemplateShape, law: bool) -> Re
     };
     let text = make(kind, shape).map_err(|e| ModelError::new(e.parameter, e.value, e.expected))?;
     Ok(RunConfig::SceneTemplate { text })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::{CommandFactory, Parser, ValueEnum};
+
+    fn config(args: &[&str]) -> Result<RunConfig, String> {
+        let raw = RawArgs::try_parse_from(std::iter::once("periodic-contact").chain(args.iter().copied()))
+            .map_err(|e| e.to_string())?;
+        RunConfig::from_args(raw).map_err(|e| e.to_string())
+    }
+
+    /// Issue 30: one canonical name per shape, its one alias accepted by `scene --shape`,
+    /// `series --shape` and the scene's `[punch] shape` alike, and both stated in the help.
+    #[test]
+    fn shape_names_and_aliases_agree_everywhere() {
+        use crate::scene::keys::{canonical_shape, SHAPES, SHAPE_ALIASES};
+        for (alias, canonical) in SHAPE_ALIASES {
+            assert!(SHAPES.contains(&canonical) && canonical_shape(alias) == canonical);
+            let t = TemplateShape::from_str(alias, false).unwrap();
+            assert_eq!(t.to_possible_value().unwrap().get_name(), canonical, "{alias}");
+            assert!(t.to_possible_value().unwrap().matches(alias, false));
+            if let Ok(s) = ShapeName::from_str(alias, false) {
+                assert_eq!(s.to_possible_value().unwrap().get_name(), canonical, "{alias}");
+            } else {
+                assert_eq!(canonical, "circular", "series --shape lacks {alias}");
+            }
+        }
+        for shape in SHAPES {
+            assert_eq!(canonical_shape(shape), shape);
+        }
+        // Both names give the same template; the help names each alias.
+        for (alias, canonical) in [("parabola", "parabolic"), ("sinusoid", "sinusoidal")] {
+            let text = |s: &str| match config(&["scene", "--template", "sliding", "--shape", s]).unwrap() {
+                RunConfig::SceneTemplate { text } => text,
+                other => panic!("{other:?}"),
+            };
+            assert_eq!(text(alias), text(canonical));
+            assert!(matches!(config(&["series", "sliding", "--order", "2", "--shape", alias]), Ok(_)), "{alias}");
+        }
+        let mut cmd = RawArgs::command();
+        for sub in ["scene", "series"] {
+            let help = cmd.find_subcommand_mut(sub).unwrap().render_long_help().to_string();
+            for (alias, canonical) in SHAPE_ALIASES.iter().take(3) {
+                assert!(help.contains(canonical) && help.contains(&format!("alias: {alias}")), "{sub}: {help}");
+            }
+        }
+    }
+
+    /// Issue 30: `--order` states the limit of the object and the route asked, and the help's
+    /// list of limits is the one the parser checks.
+    #[test]
+    fn order_errors_state_the_limit_of_the_object_and_route() {
+        for (args, max, what) in [
+            (vec!["series", "kernel"], 2000, "kernel"),
+            (vec!["series", "jacobi"], 2000, "Jacobi"),
+            (vec!["series", "weight"], 80, "weight"),
+            (vec!["series", "sliding"], 24, "sliding"),
+            (vec!["series", "sliding", "--shape", "polynomial", "--degree", "4"], 16, "polynomial"),
+            (vec!["series", "adhesion"], 24, "numerical route takes orders up to 1000"),
+            (vec!["series", "adhesion", "--nu", "0"], 1000, "exact in symbols up to 24"),
+            (vec!["series", "loading-law", "--nu", "0", "--ratio", "1"], 24, "loading-law"),
+            (vec!["solve", "scenes/kuznetsov_parabola.toml", "--method", "series"], 24, "series and pade"),
+        ] {
+            let mut a = args.clone();
+            a.extend(["--order", "abc"]);
+            let e = config(&a).unwrap_err();
+            assert!(e.contains(&format!("must be an integer in [0, {max}]")) && e.contains(what), "{a:?}: {e}");
+        }
+        for (object, max) in [
+            (SeriesObject::Kernel, 2000),
+            (SeriesObject::Jacobi, 2000),
+            (SeriesObject::Weight, 80),
+            (SeriesObject::Adhesion, 24),
+            (SeriesObject::PolynomialSliding, 16),
+        ] {
+            assert_eq!(max_order(object), max);
+        }
+        assert_eq!(crate::asymptotics::loading_law::MAX_ORDER, 24);
+        assert_eq!(crate::asymptotics::adhesion_numeric::MAX_ORDER, 1000);
+        let mut cmd = RawArgs::command();
+        let help = cmd.find_subcommand_mut("series").unwrap().render_long_help().to_string();
+        let flat = help.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(
+            flat.contains("kernel, jacobi 2000; weight 80; sliding, adhesion, loading-law 24; a polynomial profile 16; adhesion --nu R 1000"),
+            "{flat}"
+        );
+    }
 }

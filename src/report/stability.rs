@@ -266,10 +266,10 @@ fn series_order(shape: &PunchShape, convention: Convention) -> usize {
 }
 
 /// The quartic punch of `scenes/quartic.toml`, g = x^2 + x^4/10 (docs/theory.md section 9): its
-/// centred frictionless contact reaches the solvers' slope limit |g'| = 1/2
-/// ([`crate::params::sliding::MAX_CONTACT_SLOPE`]) at a = 0.2470 L (lambda = 0.776, L = 1), so its
-/// map shows that refusal region, moved by friction and wear (the contact off centre reaches the
-/// limit on one side first).
+/// centred frictionless contact reaches the small-slope limit |g'| = 1/2
+/// ([`crate::params::sliding::MAX_CONTACT_SLOPE`]) at a = 0.2470 L (lambda = 0.776, L = 1); beyond
+/// it the solvers answer with the small-slope warning (docs/theory.md section 9), so its map shows
+/// how the methods fare on a steep polynomial, moved by friction and wear.
 fn quartic() -> PunchShape {
     PunchShape::Polynomial { coefficients: vec![q(0, 1), q(0, 1), q(1, 1), q(0, 1), q(1, 10)] }
 }
@@ -474,13 +474,13 @@ pub fn section(ctx: &Ctx) -> Section {
     );
     let maps: Vec<ConventionMap> = p1.collect();
     if !maps.is_empty() {
-        let title = "Problem 1, quartic g = x^2 + x^4/10 (L = 1): the slope limit";
+        let title = "Problem 1, quartic g = x^2 + x^4/10 (L = 1): beyond the small-slope limit";
         let note = format!(
             "The quartic of scene `quartic` (docs/theory.md section 9; issue 11), loaded by its frictionless \
-             closed-form load at the grid lambda: the solvers refuse a contact where |g'| > {} (the theory \
-             assumes |g'| << 1 [1.9]), which for the centred frictionless contact is lambda > 0.776; friction and \
-             wear move the contact off centre, so one end reaches the limit first. \"fail\" cells at large lambda \
-             are that refusal (listed below the table). No series column: the report's series are the \
+             closed-form load at the grid lambda: where |g'| > {} (the theory assumes |g'| << 1 [1.9]; for the \
+             centred frictionless contact lambda > 0.776, moved off centre by friction and wear) the solvers answer \
+             with the small-slope warning of docs/theory.md section 9, not a refusal (one rule for every shape); \
+             \"fail\" cells are the methods' own failures (listed below the table). No series column: the report's series are the \
              parabola's and the sinusoid's.",
             crate::params::sliding::MAX_CONTACT_SLOPE
         );
