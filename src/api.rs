@@ -208,7 +208,7 @@ impl SolveOptions {
 }
 
 /// Solves the scene file at `path` as `periodic-contact solve PATH --json [flags]` does and returns
-/// its JSON (string values; keys documented in the README, section "Solving a scene").
+/// its JSON (string values; keys documented in docs/theory.md section 14).
 ///
 /// # Errors
 /// [`ApiError::Scene`] for an invalid scene, [`ApiError::Problem`] otherwise (invalid option, no

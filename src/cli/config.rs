@@ -99,7 +99,7 @@ pub enum RunConfig {
 
 /// Largest order accepted per object, where the exact derivation still takes seconds (the
 /// coefficients of Y grow like order^2 terms each; `series adhesion --order 24`: 3.8 s on a shared
-/// 2-core machine, README "Speed of the exact engine"). The adhesion series with `--nu` goes
+/// 2-core machine, docs/performance.md "Speed of the exact engine"). The adhesion series with `--nu` goes
 /// beyond, by its numerical route, up to [`crate::asymptotics::adhesion_numeric::MAX_ORDER`].
 pub fn max_order(object: SeriesObject) -> usize {
     match object {
