@@ -43,8 +43,8 @@ fn to_py(e: ApiError) -> PyErr {
 #[pyfunction]
 fn series_json(py: Python<'_>, object: String, order: usize, options: Vec<(String, String)>) -> PyResult<String> {
     py.detach(move || {
-        let opts: Vec<(&str, &str)> = options.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
-        api::derive(&object, order, &opts).map(|d| api::json_text(&d.json()))
+        let request = api::SeriesRequest { object, order: order.to_string(), options, pade: false };
+        api::derive(&request).map(|d| api::json_text(&d.json()))
     })
     .map_err(to_py)
 }

@@ -1,7 +1,7 @@
 //! The setting of a loading-law solve and its increment at one precision (docs/theory.md section
 //! 10): the exact inputs ([`LawSetting`]), the material and law constants every increment needs
 //! ([`Increment`]), and the Chebyshev helpers that both the collocation residual
-//! ([`super::collocation`]) and its closed-form Jacobian ([`super::jacobian`]) use: t Phi(t), the
+//! ([`super::collocation`]) and its closed-form Jacobian (`jacobian.rs`) use: t Phi(t), the
 //! divided difference of a Chebyshev series, the advance factor 1 +- E of an end. Tested through
 //! the collocation (`closed_form_jacobian_equals_finite_differences`, the n = 0 and nu = 1/2
 //! reductions).
