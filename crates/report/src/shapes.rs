@@ -21,7 +21,7 @@
 //!
 //! A profile with odd terms has no closed form (its contact is off centre even without friction):
 //! its MPFR and f64 curves are shown against each other. The friction scenes of the new profiles,
-//! in both conventions, are in section 6 (c/l and F_def against the load).
+//! in both conventions, are in report section 7 (c/l and F_def against the load).
 
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::runner::{self, Knob, Outcome, RunCache, COMPARE_BITS};
@@ -380,7 +380,7 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let lambdas: Vec<f64> = if ctx.profile == Profile::Full { LAMBDAS.to_vec() } else { vec![0.5, 1.1] };
     let _ = writeln!(
         s.markdown,
-        "## Punch shapes: polynomial and circular profiles against the closed form\n\n\
+        "## 8. Punch shapes: polynomial and circular profiles against the closed form\n\n\
          docs/theory.md section 9. Without friction an even profile g carries, at half-width a, \
          P2 = (E*/2) int_{{-a}}^{{a}} g'(x) sin(pi x/L) dx / sqrt(sin^2(pi a/L) - sin^2(pi x/L)); this closed form \
          is computed here independently of the solvers (`src/verification/closed_form_load.rs`: g' from the \
@@ -396,7 +396,7 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
          both problems), not a refusal. One line per even profile: a single punch (period \"inf\") against the power law \
          P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! of g = A x^(2n), summed over the even terms (polynomial), or the \
          closed form's single-punch limit (circle). The friction scenes of these profiles, in both conventions, \
-         are in section 6.\n"
+         are in section 7.\n"
     );
     let _ = writeln!(s.timings, "### Punch shapes\n\n| profile | seconds |\n|---|---:|");
     for (i, case) in cases.iter().enumerate() {

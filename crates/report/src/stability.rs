@@ -1,4 +1,4 @@
-//! Report section 4: stability maps from actual runs. Problem 1: lambda vs theta for the
+//! Report section 5: stability maps from actual runs. Problem 1: lambda vs theta for the
 //! parabola and the sinusoid (up to high load), on the same grid in both surface conventions
 //! `paper` and `periodic` (docs/theory.md section 8), side by side; Problem 2: lambda vs nu (the same
 //! in both conventions). Each cell runs every method; its digits are judged against the verified
@@ -394,7 +394,7 @@ fn timing_line(s: &mut Section, name: &str, map: &ConventionMap, seconds: f64) {
     );
 }
 
-/// Builds section 4. Every cell of every map is one job on the report's thread pool
+/// Builds section 5. Every cell of every map is one job on the report's thread pool
 /// (`run_plans`); the cells are collected in grid order, so the text does not depend on the
 /// threads. Timings: per map the sum of its cells' run times (they overlap in wall time).
 pub fn section(ctx: &Ctx) -> Section {
@@ -402,7 +402,7 @@ pub fn section(ctx: &Ctx) -> Section {
     let mut s = Section::default();
     let _ = writeln!(
         s.markdown,
-        "## 4. Stability maps\n\n\
+        "## 5. Stability maps\n\n\
          Every cell is an actual run of every method. Digits of the series and of f64 are judged against the \
          verified MPFR run of the same cell (capped at 16); the MPFR column shows its own verified digits \
          (two runs). \"fail\": the method returned an error (listed below each table); \"unjudged\": the \

@@ -149,7 +149,7 @@ fn section_text_and_charts() {
     };
     let s = periodic_contact_report::shapes::section(&mut ctx, &scenes);
     let md = &s.markdown;
-    assert!(md.starts_with("## Punch shapes"), "{md}");
+    assert!(md.starts_with("## 8. Punch shapes"), "{md}");
     assert!(md.contains("### circular radius = 1/2, L = 1, E* = 1 (scenes `circle`)"), "{md}");
     // Fast grid: lambda = 0.5, the edge (0.99 x 0.702), then 1.1 refused; and the single punch.
     let refused = md.lines().filter(|l| l.starts_with("| 0.") && l.contains("refused")).count();
