@@ -252,7 +252,11 @@ impl SolveOptions {
             Some(other) => return Err(Error::input("--method", other, "must be mpfr, f64, series or pade")),
         };
         if let Some(o) = self.order.filter(|o| *o > 24) {
-            return Err(Error::input("--order", o, "must be an integer in [0, 24]"));
+            return Err(Error::input(
+                "--order",
+                o,
+                "must be an integer in [0, 24] (the series and pade methods' limit)",
+            ));
         }
         let forced = Forced { method, digits: self.digits, series_order: self.order };
         solve_choice(scene, forced)
@@ -375,7 +379,10 @@ mod tests {
         let e = derive(&SeriesRequest::new("sliding", 4).option("shape", "square")).unwrap_err();
         assert!(e.to_string().starts_with("invalid --shape = square: must be parabolic"), "{e}");
         let e = derive(&SeriesRequest::new("kernel", 100000)).unwrap_err();
-        assert_eq!(e.to_string(), "invalid --order = 100000: must be an integer in [0, 2000]");
+        assert_eq!(
+            e.to_string(),
+            "invalid --order = 100000: must be an integer in [0, 2000] (the kernel series' limit)"
+        );
     }
 
     #[test]

@@ -35,8 +35,8 @@
 //! `examples/user-crate` does, with an insta snapshot test of a derived series) and use [`api`]:
 //! derive an object ([`api::derive`]), solve a scene ([`api::solve_toml`], [`api::solve_file`]),
 //! check the series' orders ([`api::check_orders`]). Every call validates its input with the
-//! command line's messages and returns JSON-ready values. These ten lines are the README's
-//! library section, compiled and run here as a doctest:
+//! command line's messages and returns JSON-ready values, e.g. (a doctest; the README's Rust
+//! example is compiled and run as one too, through `ReadmeDoctests` under `cfg(doctest)`):
 //!
 //! ```
 //! use periodic_contact::api::{self, SolveOptions};
@@ -56,6 +56,13 @@
 //! built with the header of the repository (`RUSTDOCFLAGS="--html-in-header katex-header.html"
 //! cargo doc`, as docs.rs does from `[package.metadata.docs.rs]`), e.g. the kernel
 //! $Z(z) = z \cot z = 1 - z^2/3 - z^4/45 - \dots$ of [`asymptotics::kernel`].
+
+/// The README's code blocks as doctests (its Rust example is compiled and run; its `console`,
+/// `toml`, `python` and `sh` blocks are not Rust: `crates/cli/tests/doc_commands.rs` runs the
+/// commands).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 pub mod adhesion;
 pub mod api;

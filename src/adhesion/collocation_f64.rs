@@ -44,7 +44,7 @@
 //! a polynomial, and it is refused here (the series serves it inside its radius).
 
 use super::error::AdhesionError;
-use super::profile::{check_profile_on_contact, largest_admissible_half_width};
+use super::profile::{check_profile_on_contact, half_width_search, HalfWidthSearch};
 use super::scales::Digits;
 use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
 use super::series_f64::verify::estimate;
@@ -289,7 +289,10 @@ pub fn solve_collocation_f64(
                 setup.solve_at(setup.lambda_of(a), which)?
             }
             AdhesionSize::NormalLoad(p2) => {
-                let lambda_max = largest_admissible_half_width(problem).map_or(1.52, |a| setup.lambda_of(a).min(1.52));
+                let lambda_max = match half_width_search(problem) {
+                    HalfWidthSearch::Capped { a_max } => setup.lambda_of(a_max).min(1.52),
+                    _ => 1.52,
+                };
                 let mar = setup.lambda_for_load(to_f64(p2).unwrap_or(f64::NAN), lambda_max, which)?;
                 check_profile_on_contact(problem, mar.end * setup.period / PI)?;
                 mar

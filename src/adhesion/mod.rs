@@ -18,7 +18,7 @@
 //! loading law with N = 0, the mode).
 //!
 //! Punches: the parabola, even polynomials and the circle (both methods), with the refusals of
-//! [`profile`] (convexity, |x| < R, slope limit). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
+//! [`profile`] (convexity, |x| < R, the load search's bounds). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
 //! relative to it), [`tension`] (the tension zones at the oscillating edge), [`error`]. The
 //! derived material constants (eps, cosh(pi eps), B, S, C_P) are computed once per solve in
 //! [`crate::params::adhesion`] and passed as data; the quadrature and interpolation are

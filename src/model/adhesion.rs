@@ -29,7 +29,7 @@ impl AdhesionProblem {
     /// is symmetric: a polynomial with a non-zero odd coefficient is refused, naming
     /// `coefficients`), positive sizes, 2a < L for a given a. (For a given load every P2 > 0 has
     /// a solution with 2a < L, since P2(a) -> infinity as 2a -> L; the single punch's half-width
-    /// under a given load is searched by the solvers for every profile.) Convexity, the circle's |x| < R and the slope limit on the contact are
+    /// under a given load is searched by the solvers for every profile.) Convexity and the circle's |x| < R on the contact are
     /// checked by the solvers once a is known ([`crate::adhesion::profile`]).
     pub fn new(material: Material, period: Period, shape: PunchShape, size: AdhesionSize) -> Result<Self, ModelError> {
         match &shape {

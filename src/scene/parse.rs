@@ -169,9 +169,15 @@ fn prefixed(mut e: ModelError, prefix: &str) -> ModelError {
     e
 }
 
+/// Whether `[punch] period` names the single punch: "inf" (as the template writes it), or
+/// "infinity" in any case.
+fn is_infinite_period(text: &str) -> bool {
+    matches!(text.trim().to_ascii_lowercase().as_str(), "inf" | "infinity")
+}
+
 fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
     let p = table(root, "punch")?;
-    let shape = string(p, "punch", "shape")?;
+    let shape = keys::canonical_shape(&string(p, "punch", "shape")?).to_string();
     let period = match value(p, "punch", "period")? {
         None => {
             return Err(ModelError::new(
@@ -180,8 +186,12 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
                 "is required: a number > 0, or \"inf\" for a single punch",
             ))
         }
-        Some(Value::String(s)) if s.value().trim() == "inf" => Period::Infinite,
-        Some(v) => Period::finite(exact_value(v, "punch.period")?).map_err(|e| prefixed(e, "punch"))?,
+        Some(Value::String(s)) if is_infinite_period(s.value()) => Period::Infinite,
+        Some(v) => Period::finite(
+            exact_value(v, "punch.period")
+                .map_err(|e| ModelError { expected: format!("{}; or \"inf\" for a single punch", e.expected), ..e })?,
+        )
+        .map_err(|e| prefixed(e, "punch"))?,
     };
     if keys::SHAPES.contains(&shape.as_str()) {
         allow_keys(p, "punch", &keys::allowed("punch", Kind::Sliding, &shape))?;
@@ -451,5 +461,26 @@ mod tests {
     #[test]
     fn digits_range_text_matches_the_parser_limit() {
         assert_eq!(super::keys::DIGITS_RANGE, format!("an integer in [1, {}]", super::MAX_DIGITS));
+    }
+
+    const SCENE: &str = "[problem]\nkind = \"sliding\"\n[material]\npoisson_ratio = \"0.3\"\ncontact_modulus = \"1\"\n\
+                         [punch]\nshape = \"parabolic\"\nk = \"1\"\nperiod = PERIOD\n[sliding]\nnormal_load = \"0.005\"\n";
+
+    /// Issue 30: "Infinity" names the single punch as "inf" does, and a period that is neither a
+    /// number nor infinite gets an error that says "inf" is accepted.
+    #[test]
+    fn the_single_punch_is_inf_or_infinity() {
+        use crate::model::Period;
+        use crate::scene::SceneProblem;
+        for text in ["\"inf\"", "\"Infinity\"", "\" INF \"", "\"infinity\""] {
+            let s = super::parse_scene(&SCENE.replace("PERIOD", text)).unwrap_or_else(|e| panic!("{text}: {e}"));
+            let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
+            assert!(matches!(p.period(), Period::Infinite), "{text}");
+        }
+        let e = super::parse_scene(&SCENE.replace("PERIOD", "\"endless\"")).unwrap_err();
+        assert_eq!(e.parameter, "punch.period");
+        assert!(e.expected.contains("or \"inf\" for a single punch"), "{e}");
+        let e = super::parse_scene(&SCENE.replace("PERIOD", "\"-1\"")).unwrap_err();
+        assert!(e.to_string().contains("\"inf\""), "{e}");
     }
 }

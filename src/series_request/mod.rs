@@ -111,6 +111,28 @@ pub fn max_order(object: SeriesObject) -> usize {
     }
 }
 
+/// What each object's order limit is, as the `--order` error states it (issue 30: the limit of the
+/// object and route asked, not another object's).
+pub fn order_limit_text(object: SeriesObject) -> &'static str {
+    match object {
+        SeriesObject::Kernel => "the kernel series' limit",
+        SeriesObject::Jacobi => "the Jacobi moments' limit",
+        SeriesObject::Weight => "the weight series' limit",
+        SeriesObject::Sliding(_) => "the sliding series' limit",
+        SeriesObject::Adhesion => {
+            "the adhesion series' exact route; with --nu R the numerical route takes up to 1000"
+        }
+        SeriesObject::PolynomialSliding | SeriesObject::PolynomialAdhesion => {
+            "the limit of a polynomial profile's series"
+        }
+    }
+}
+
+/// An order error that names whose limit it is: "... must be an integer in [0, max] (`what`)".
+pub fn order_limit(e: ModelError, what: &str) -> ModelError {
+    ModelError { expected: format!("{} ({what})", e.expected), ..e }
+}
+
 /// Parses an order (an integer in [0, max]); `flag` names it in the message.
 pub fn parse_order(flag: &str, text: &str, max: usize) -> Result<usize, ModelError> {
     text.trim()
@@ -213,18 +235,12 @@ impl SeriesRequest {
         let numeric_possible = object == SeriesObject::Adhesion && nu_given.is_some();
         let numeric_max = crate::asymptotics::adhesion_numeric::MAX_ORDER;
         let order = if numeric_possible {
-            parse_order("--order", &self.order, numeric_max)?
-        } else {
-            parse_order("--order", &self.order, max_order(object)).map_err(|e| match object {
-                SeriesObject::Adhesion => ModelError {
-                    expected: format!(
-                        "{} (the exact route; with --nu R the numerical route takes up to {numeric_max})",
-                        e.expected
-                    ),
-                    ..e
-                },
-                _ => e,
+            parse_order("--order", &self.order, numeric_max).map_err(|e| {
+                order_limit(e, "the adhesion series at --nu: exact in symbols up to 24, by the numerical route beyond")
             })?
+        } else {
+            parse_order("--order", &self.order, max_order(object))
+                .map_err(|e| order_limit(e, order_limit_text(object)))?
         };
         let digits = self
             .get("digits")
@@ -370,7 +386,8 @@ impl SeriesRequest {
                 "must be >= 0 (n = P1/P2 with N' >= 0; the mirror image x -> -x gives n < 0)",
             ));
         }
-        let order = parse_order("--order", &self.order, MAX_ORDER)?;
+        let order = parse_order("--order", &self.order, MAX_ORDER)
+            .map_err(|e| order_limit(e, "the loading-law series' limit"))?;
         Ok(ValidSeries::LoadingLaw { nu, ratio, order })
     }
 }
@@ -393,16 +410,17 @@ impl ShapeName {
     }
 }
 
-/// `shape`: parabolic (alias parabola), sinusoidal (alias sinusoid), polynomial.
+/// `shape`: parabolic, sinusoidal or polynomial, or their aliases parabola, sinusoid, poly (the one
+/// alias table of every shape name, [`crate::scene::keys::SHAPE_ALIASES`]).
 fn shape_of(text: &str) -> Result<ShapeName, ModelError> {
-    match text.trim() {
-        "parabolic" | "parabola" => Ok(ShapeName::Parabolic),
-        "sinusoidal" | "sinusoid" => Ok(ShapeName::Sinusoidal),
+    match crate::scene::keys::canonical_shape(text.trim()) {
+        "parabolic" => Ok(ShapeName::Parabolic),
+        "sinusoidal" => Ok(ShapeName::Sinusoidal),
         "polynomial" => Ok(ShapeName::Polynomial),
         other => Err(ModelError::new(
             "--shape",
             other,
-            "must be parabolic (alias parabola), sinusoidal (alias sinusoid) or polynomial",
+            "must be parabolic (alias parabola), sinusoidal (alias sinusoid) or polynomial (alias poly)",
         )),
     }
 }

@@ -56,6 +56,9 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
                 .map(|z| ZoneRow {
                     from: Num::Mpfr(z.from_x_over_a.clone()),
                     to: Num::Mpfr(z.to_x_over_a.clone()),
+                    // from_x_over_a = 1 - delta_outer (the end farther from the edge).
+                    from_one_minus: Num::Mpfr(z.delta_outer.clone()),
+                    to_one_minus: Num::Mpfr(z.delta_inner.clone()),
                     refined: z.refined,
                 })
                 .collect(),

@@ -501,7 +501,14 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
     use crate::scene::Method;
     let out = &scene.output;
     let series_order = forced.series_order.or(out.series_order).unwrap_or(DEFAULT_SERIES_ORDER);
-    let digits = forced.digits.or(out.digits).or(out.target_digits).unwrap_or(DEFAULT_DIGITS);
+    let asked = forced.digits.or(out.digits).or(out.target_digits);
+    let digits = asked.unwrap_or(DEFAULT_DIGITS);
+    // A forced method without any digits asked: f64 is asked for what it can carry (issue 30: its
+    // `digits_requested` states no 30 digits that nobody asked and f64 cannot give).
+    let digits_of = |m: Method| match (asked, m) {
+        (None, Method::F64) => crate::numerics::accuracy::F64_DIGITS_CAP as u32,
+        _ => digits,
+    };
     let req = |method, digits| SolveRequest { method, digits, series_order };
     let fixed = |method, digits, reason: &str| MethodChoice {
         request: req(method, digits),
@@ -510,13 +517,13 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
         fallbacks: Vec::new(),
     };
     if let Some(m) = forced.method {
-        return Ok(fixed(m, digits, "forced by --method"));
+        return Ok(fixed(m, digits_of(m), "forced by --method"));
     }
     if let Some(d) = forced.digits {
         return Ok(fixed(Method::Mpfr, d, "--digits forces verified MPFR at that precision"));
     }
     if let Some(m) = out.method {
-        return Ok(fixed(m, digits, "forced by the scene's [output] method"));
+        return Ok(fixed(m, digits_of(m), "forced by the scene's [output] method"));
     }
     if let Some(d) = out.digits {
         return Ok(fixed(Method::Mpfr, d, "the scene's [output] digits forces verified MPFR at that precision"));

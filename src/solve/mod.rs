@@ -129,6 +129,26 @@ fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
     }
 }
 
+/// The number a JSON answer prints under `key` (NaN when absent: no warning is then made).
+fn number(m: &Map<String, Value>, key: &str) -> f64 {
+    m.get(key).and_then(Value::as_str).and_then(|t| t.parse::<f64>().ok()).unwrap_or(f64::NAN)
+}
+
+/// Appends the small-slope warning of the contact [`left`, `right`] to the answer's `warnings`
+/// (docs/theory.md section 9: one rule for every shape in both problems; never a refusal).
+fn slope_warning(m: &mut Map<String, Value>, shape: &crate::model::PunchShape, period: &Period, left: f64, right: f64) {
+    let l = match period {
+        Period::Finite(l) => crate::numerics::exact::to_f64(l),
+        Period::Infinite => None,
+    };
+    if let Some(w) = crate::params::profile::slope_warning(shape, l, left, right) {
+        match m.entry("warnings").or_insert_with(|| Value::Array(Vec::new())) {
+            Value::Array(list) => list.push(json!(w)),
+            other => *other = json!([w]),
+        }
+    }
+}
+
 /// The path of the first string value that is not a finite number's text (NaN, inf).
 fn first_non_finite(path: &str, v: &Value) -> Option<String> {
     match v {
@@ -160,16 +180,34 @@ pub fn punch_json(shape: &crate::model::PunchShape) -> Value {
     Value::Object(m)
 }
 
-/// `{"problem": "sliding", ...first answer, "solutions": [...]}` (the list only when several
-/// contacts are physical); each answer's provenance names the punch ([`punch_json`]).
+/// The `convention_note` of an answer in the `paper` convention whose constant K of
+/// docs/theory.md section 8 is not zero by construction (friction or wear, adhesive friction, or a
+/// tangential load): the surface does not close over the period, and `periodic` would close it.
+pub const PAPER_CONVENTION_NOTE: &str =
+    "solved in the paper convention: [2.8] as the paper states it. With friction, wear, \
+     adhesive friction or a tangential load the surface does not close over the period (the closure defect M, \
+     docs/theory.md section 8); the periodic convention adds K = (kappa P2 - 2 beta l tau0)/L and closes it: \
+     solve --convention periodic, or [problem] convention = \"periodic\" in the scene";
+
+/// `{"problem": "sliding", ["convention_note"], ...first answer, "solutions": [...]}` (the list
+/// only when several contacts are physical); each answer's provenance names the punch
+/// ([`punch_json`]); `convention_note` ([`PAPER_CONVENTION_NOTE`]) where `paper` is solved with
+/// kappa != 0 or tau0 != 0 over a finite period.
 fn sliding_top(mut answers: Vec<Map<String, Value>>, p: &SlidingProblem) -> Value {
     for a in answers.iter_mut() {
         if let Some(Value::Object(prov)) = a.get_mut("provenance") {
             prov.insert("punch".into(), punch_json(p.shape()));
         }
     }
+    for a in answers.iter_mut() {
+        let (left, right) = (-number(a, "a"), number(a, "b"));
+        slope_warning(a, p.shape(), p.period(), left, right);
+    }
     let mut top = Map::new();
     top.insert("problem".into(), json!("sliding"));
+    if p.convention() == Convention::Paper && !p.kappa_and_tau0_vanish() && matches!(p.period(), Period::Finite(_)) {
+        top.insert("convention_note".into(), json!(PAPER_CONVENTION_NOTE));
+    }
     if let Some(first) = answers.first() {
         top.extend(first.clone());
     }
@@ -205,8 +243,7 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<R
         .iter()
         .map(|a| {
             let mut m = render::sliding_json(a, shown);
-            // digits_requested states what the user asked, not the f64 cap.
-            m.insert("digits_requested".into(), json!(req.digits.to_string()));
+            f64_digits(&mut m, req.digits);
             m
         })
         .collect();
@@ -231,6 +268,8 @@ fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Resul
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, req.digits);
     m.insert("lambda_h".into(), lambda_h(p, req.digits));
+    let a = number(&m, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
     Ok((Value::Object(m), claim))
 }
 
@@ -252,8 +291,10 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     let answer = answer_adhesion::f64_answer(p, &s, &scene.output.points);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
-    m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    f64_digits(&mut m, req.digits);
     m.insert("lambda_h".into(), lambda_h(p, shown));
+    let a = number(&m, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
     Ok((Value::Object(m), claim))
@@ -262,14 +303,48 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
     let claim = Claim { digits: sol.digits.headline, kind: DigitsKind::Verified };
-    Ok((Value::Object(answer_law::law_answer_json(p, &sol, req.digits)), claim))
+    let mut m = answer_law::law_answer_json(p, &sol, req.digits);
+    law_note(&mut m, p);
+    Ok((Value::Object(m), claim))
+}
+
+/// The loading law's notes: the small-slope warning of its parabola, and in the `paper`
+/// convention with a tangential load (P1 != 0, so K != 0) `convention_note`, as for Problem 1.
+fn law_note(m: &mut Map<String, Value>, p: &LoadingLawProblem) {
+    let parabola = crate::model::PunchShape::Parabolic { k: p.k().clone() };
+    let (left, right) = (-number(m, "a"), number(m, "b"));
+    slope_warning(m, &parabola, p.period(), left, right);
+    let tangential = match p.law() {
+        crate::model::LoadingLaw::Linear(n) => !num_traits::Zero::is_zero(n),
+        crate::model::LoadingLaw::Polynomial(c) => c.iter().any(|x| !num_traits::Zero::is_zero(x)),
+    };
+    if p.convention() == Convention::Paper && tangential && matches!(p.period(), Period::Finite(_)) {
+        m.insert("convention_note".into(), json!(PAPER_CONVENTION_NOTE));
+    }
+}
+
+/// The digits keys of an f64 answer: `digits_requested` states what the user asked (not the f64
+/// cap), and where that exceeds what f64 can carry, `digits_note` says so (issue 30).
+fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
+    let cap = crate::numerics::accuracy::F64_DIGITS_CAP as u32;
+    m.insert("digits_requested".into(), json!(requested.to_string()));
+    if requested > cap {
+        m.insert(
+            "digits_note".into(),
+            json!(format!(
+                "{requested} digits were asked; the f64 method carries at most {cap} significant digits, and \
+                 digits_verified (or digits_estimated) states what this answer holds; for more use --method mpfr \
+                 or --digits {requested}"
+            )),
+        );
+    }
 }
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
     let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
-    // digits_requested states what the user asked, not the f64 cap.
-    m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    f64_digits(&mut m, req.digits);
+    law_note(&mut m, p);
     Ok((Value::Object(m), Claim { digits: sol.digits.headline, kind: DigitsKind::Verified }))
 }

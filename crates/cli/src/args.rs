@@ -70,18 +70,20 @@ pub enum TemplateName {
     Adhesion,
 }
 
-/// Punch shapes of a scene template.
+/// Punch shapes of a scene template: the names of the scene's `[punch] shape`, each with one
+/// alias (issue 30: one canonical name per shape, the alias stated).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum TemplateShape {
-    /// g = k x^2.
+    /// g = k x^2 (alias: parabola).
     #[value(alias = "parabola")]
     Parabolic,
-    /// g = D (1 - cos(2 pi x/L)) (Problem 1 only).
+    /// g = D (1 - cos(2 pi x/L)), Problem 1 only (alias: sinusoid).
     #[value(alias = "sinusoid")]
     Sinusoidal,
-    /// g = sum_j c_j x^j (Problem 2: even terms only).
+    /// g = sum_j c_j x^j, Problem 2: even terms only (alias: poly).
+    #[value(alias = "poly")]
     Polynomial,
-    /// g = R - sqrt(R^2 - x^2).
+    /// g = R - sqrt(R^2 - x^2) (alias: circle).
     #[value(alias = "circle")]
     Circular,
 }
@@ -108,14 +110,17 @@ pub enum ConventionName {
     Periodic,
 }
 
-/// Punch shapes.
+/// Punch shapes of the series: the same names and aliases as [`TemplateShape`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ShapeName {
-    /// g = k x^2.
+    /// g = k x^2 (alias: parabola).
+    #[value(alias = "parabola")]
     Parabolic,
-    /// g = D (1 - cos(2 pi x/L)).
+    /// g = D (1 - cos(2 pi x/L)) (alias: sinusoid).
+    #[value(alias = "sinusoid")]
     Sinusoidal,
-    /// g = sum_j c_j x^j (with --coefficients or --degree).
+    /// g = sum_j c_j x^j, with --coefficients or --degree (alias: poly).
+    #[value(alias = "poly")]
     Polynomial,
 }
 
@@ -127,7 +132,9 @@ pub enum RawCommand {
     Series {
         /// The object to derive.
         object: ObjectName,
-        /// Keep every term through power N (for jacobi: j_0 .. j_N).
+        /// Keep every term through power N (for jacobi: j_0 .. j_N). At most: kernel, jacobi 2000;
+        /// weight 80; sliding, adhesion, loading-law 24; a polynomial profile 16; adhesion --nu R
+        /// 1000 (beyond 24 by its numerical route).
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: String,
         /// Substitute an exact rational for theta (e.g. 1/10), |theta| < 1/2.
@@ -189,7 +196,7 @@ pub enum RawCommand {
         /// Method, forced (overrides [output] method and the choice by target_digits).
         #[arg(long, value_enum)]
         method: Option<MethodName>,
-        /// Series order for --method series or pade (default 12).
+        /// Series order for --method series or pade (default 12), an integer in [0, 24].
         #[arg(long, value_name = "N", allow_hyphen_values = true)]
         order: Option<String>,
         /// Surface convention (overrides [problem] convention; default paper; docs/theory.md
@@ -285,12 +292,14 @@ Examples:
 const SCENE_HELP: &str = "Print a commented scene file (TOML) with every key the parser accepts for the
 problem and shape: its meaning, unit and valid range, alternatives and optional keys commented out.
 The text comes from the parser's own key table, so it cannot drift from what `solve` accepts.
+Shapes (--shape, and `[punch] shape` in the scene): parabolic, sinusoidal, polynomial, circular;
+--shape also takes the aliases parabola, sinusoid, poly, circle.
 
 Numbers are exact: quote decimals and ratios (\"0.25\", \"1/3\", \"1e-3\"); unknown keys are errors.
 
 Examples:
   periodic-contact scene --template sliding > sliding.toml
-  periodic-contact scene --template sliding --shape sinusoid
+  periodic-contact scene --template sliding --shape sinusoidal
   periodic-contact scene --template adhesion --shape polynomial
   periodic-contact scene --template adhesion --law > law.toml
   periodic-contact solve sliding.toml --json";

@@ -10,7 +10,7 @@ use super::args::{
 use periodic_contact::api::SolveOptions;
 use periodic_contact::model::ModelError;
 use periodic_contact::scene::{parse::parse_scene, Scene};
-use periodic_contact::series_request::{parse_order, SeriesRequest, ValidSeries};
+use periodic_contact::series_request::{order_limit, parse_order, SeriesRequest, ValidSeries};
 use periodic_contact::solve::choice::MethodChoice;
 use std::path::PathBuf;
 
@@ -175,7 +175,12 @@ impl RunConfig {
                         }
                         .to_string()
                     }),
-                    order: order.map(|o| parse_order("--order", &o, 24)).transpose()?,
+                    order: order
+                        .map(|o| {
+                            parse_order("--order", &o, periodic_contact::scene::keys::MAX_SERIES_ORDER)
+                                .map_err(|e| order_limit(e, "the series and pade methods' limit"))
+                        })
+                        .transpose()?,
                     convention: convention.map(|c| convention_name(c).to_string()),
                 };
                 let choice = options.choose(&mut parsed).map_err(|e| match e {
@@ -186,7 +191,8 @@ impl RunConfig {
                 Ok(RunConfig::Solve { scene: Box::new(parsed), choice, format })
             }
             RawCommand::Report { out, scenes, order, fast, jobs } => {
-                let order = parse_order("--order", &order, 40)?;
+                let order = parse_order("--order", &order, 40)
+                    .map_err(|e| order_limit(e, "the report's coefficient tables"))?;
                 if !scenes.is_dir() {
                     return Err(ModelError::new("--scenes", scenes.display(), "must be a folder of *.toml scenes"));
                 }
@@ -244,4 +250,97 @@ fn scene_template(template: TemplateName, shape: TemplateShape, law: bool) -> Re
     };
     let text = make(kind, shape).map_err(|e| ModelError::new(e.parameter, e.value, e.expected))?;
     Ok(RunConfig::SceneTemplate { text })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::{CommandFactory, Parser, ValueEnum};
+    use periodic_contact::asymptotics::catalog::SeriesObject;
+    use periodic_contact::series_request::max_order;
+
+    fn config(args: &[&str]) -> Result<RunConfig, String> {
+        let raw = RawArgs::try_parse_from(std::iter::once("periodic-contact").chain(args.iter().copied()))
+            .map_err(|e| e.to_string())?;
+        RunConfig::from_args(raw).map_err(|e| e.to_string())
+    }
+
+    /// Issue 30: one canonical name per shape, its one alias accepted by `scene --shape`,
+    /// `series --shape` and the scene's `[punch] shape` alike, and both stated in the help.
+    #[test]
+    fn shape_names_and_aliases_agree_everywhere() {
+        use periodic_contact::scene::keys::{canonical_shape, SHAPES, SHAPE_ALIASES};
+        for (alias, canonical) in SHAPE_ALIASES {
+            assert!(SHAPES.contains(&canonical) && canonical_shape(alias) == canonical);
+            let t = TemplateShape::from_str(alias, false).unwrap();
+            assert_eq!(t.to_possible_value().unwrap().get_name(), canonical, "{alias}");
+            assert!(t.to_possible_value().unwrap().matches(alias, false));
+            if let Ok(s) = ShapeName::from_str(alias, false) {
+                assert_eq!(s.to_possible_value().unwrap().get_name(), canonical, "{alias}");
+            } else {
+                assert_eq!(canonical, "circular", "series --shape lacks {alias}");
+            }
+        }
+        for shape in SHAPES {
+            assert_eq!(canonical_shape(shape), shape);
+        }
+        // Both names give the same template; the help names each alias.
+        for (alias, canonical) in [("parabola", "parabolic"), ("sinusoid", "sinusoidal")] {
+            let text = |s: &str| match config(&["scene", "--template", "sliding", "--shape", s]).unwrap() {
+                RunConfig::SceneTemplate { text } => text,
+                other => panic!("{other:?}"),
+            };
+            assert_eq!(text(alias), text(canonical));
+            assert!(matches!(config(&["series", "sliding", "--order", "2", "--shape", alias]), Ok(_)), "{alias}");
+        }
+        let mut cmd = RawArgs::command();
+        for sub in ["scene", "series"] {
+            let help = cmd.find_subcommand_mut(sub).unwrap().render_long_help().to_string();
+            for (alias, canonical) in SHAPE_ALIASES.iter().take(3) {
+                assert!(help.contains(canonical) && help.contains(&format!("alias: {alias}")), "{sub}: {help}");
+            }
+        }
+    }
+
+    const KUZNETSOV: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../scenes/kuznetsov_parabola.toml");
+
+    /// Issue 30: `--order` states the limit of the object and the route asked, and the help's
+    /// list of limits is the one the parser checks.
+    #[test]
+    fn order_errors_state_the_limit_of_the_object_and_route() {
+        for (args, max, what) in [
+            (vec!["series", "kernel"], 2000, "kernel"),
+            (vec!["series", "jacobi"], 2000, "Jacobi"),
+            (vec!["series", "weight"], 80, "weight"),
+            (vec!["series", "sliding"], 24, "sliding"),
+            (vec!["series", "sliding", "--shape", "polynomial", "--degree", "4"], 16, "polynomial"),
+            (vec!["series", "adhesion"], 24, "the numerical route takes up to 1000"),
+            (vec!["series", "adhesion", "--nu", "0"], 1000, "exact in symbols up to 24"),
+            (vec!["series", "loading-law", "--nu", "0", "--ratio", "1"], 24, "loading-law"),
+            (vec!["solve", KUZNETSOV, "--method", "series"], 24, "series and pade"),
+        ] {
+            let mut a = args.clone();
+            a.extend(["--order", "abc"]);
+            let e = config(&a).unwrap_err();
+            assert!(e.contains(&format!("must be an integer in [0, {max}]")) && e.contains(what), "{a:?}: {e}");
+        }
+        for (object, max) in [
+            (SeriesObject::Kernel, 2000),
+            (SeriesObject::Jacobi, 2000),
+            (SeriesObject::Weight, 80),
+            (SeriesObject::Adhesion, 24),
+            (SeriesObject::PolynomialSliding, 16),
+        ] {
+            assert_eq!(max_order(object), max);
+        }
+        assert_eq!(periodic_contact::asymptotics::loading_law::MAX_ORDER, 24);
+        assert_eq!(periodic_contact::asymptotics::adhesion_numeric::MAX_ORDER, 1000);
+        let mut cmd = RawArgs::command();
+        let help = cmd.find_subcommand_mut("series").unwrap().render_long_help().to_string();
+        let flat = help.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(
+            flat.contains("kernel, jacobi 2000; weight 80; sliding, adhesion, loading-law 24; a polynomial profile 16; adhesion --nu R 1000"),
+            "{flat}"
+        );
+    }
 }

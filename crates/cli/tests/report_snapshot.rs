@@ -28,6 +28,7 @@ fn report_text_fast_scene_set() {
         );
     }
     check_loading_law_against_solve(&md, &out);
+    check_front_page(&md);
     check_html_page(&out, &svgs);
     let timings = std::fs::read_to_string(out.join("timings.md")).unwrap();
     assert!(timings.contains("Machine:") && timings.contains("logical CPUs"));
@@ -37,6 +38,24 @@ fn report_text_fast_scene_set() {
     settings.set_snapshot_path("../../../snapshots");
     settings.set_prepend_module_to_snapshot(false);
     settings.bind(|| insta::assert_snapshot!("report_fast_scene_set", md));
+}
+
+/// Issue 30: the report opens with its summary, then the contents, then sections numbered in
+/// order from 1 to 11 (each section keeps its number; 8, punch shapes, is absent without a
+/// polynomial or circular scene, as here); no line is longer than 400 characters.
+fn check_front_page(md: &str) {
+    assert!(md.starts_with("# periodic-contact report\n\n## Summary\n"), "{}", &md[..200.min(md.len())]);
+    let headings: Vec<&str> = md.lines().filter_map(|l| l.strip_prefix("## ")).collect();
+    assert_eq!(&headings[..2], ["Summary", "Contents"]);
+    let numbers: Vec<usize> =
+        headings[2..].iter().map(|h| h.split('.').next().and_then(|n| n.parse().ok()).unwrap_or(0)).collect();
+    assert_eq!(numbers, [1, 2, 3, 4, 5, 6, 7, 9, 10, 11], "{headings:?}");
+    assert!(headings.last().is_some_and(|h| h.starts_with("11. Timings")), "{headings:?}");
+    let longest = md.lines().map(str::len).max().unwrap_or(0);
+    assert!(longest <= 400, "a line of {longest} characters");
+    for h in &headings[2..] {
+        assert!(md.contains(&format!("- [{h}](#")), "{h} is not in the contents");
+    }
 }
 
 /// `report.html` (issue 16): one self-contained page; every chart's SVG inline exactly as in its
@@ -53,12 +72,17 @@ fn check_html_page(out: &std::path::Path, svgs: &[&std::path::PathBuf]) {
         assert!(html.contains(element.trim_end()), "{} is not inline", svg.display());
     }
     assert!(!html.contains("<img") && !html.contains("<script") && !html.contains("<link"), "external resources");
-    let without_namespace = html.replace("xmlns=\"http://www.w3.org/2000/svg\"", "");
+    // In-page links of the contents list (`href="#..."`) are the only links.
+    let without_namespace = html.replace("xmlns=\"http://www.w3.org/2000/svg\"", "").replace("href=\"#", "in-page=\"#");
     for url in ["http://", "https://", "//cdn", "src=", "href=", "@import", "url("] {
         assert!(!without_namespace.contains(url), "report.html contains {url:?}");
     }
     // The tables and the report's sections are there.
-    assert!(html.contains("<table>") && html.contains("<h2>7. Timings</h2>"), "tables and sections");
+    assert!(html.contains("<table>") && html.contains("<h2 id=\"11-timings\">11. Timings</h2>"), "tables and sections");
+    // Issue 30: the summary first, and a contents list whose links reach the sections' ids.
+    let (summary, contents) = (html.find("<h2 id=\"summary\">").unwrap(), html.find("<h2 id=\"contents\">").unwrap());
+    assert!(summary < contents && contents < html.find("<h2 id=\"1-exact-coefficient").unwrap());
+    assert!(html.contains("<a href=\"#3-convergence-orders-series-against-the-high-precision-solution\">"));
 }
 
 fn float(s: &str) -> Float {
@@ -82,7 +106,7 @@ fn agree(x: &Float, y: &Float, scale: &Float, d: f64) -> bool {
 /// c/l = c/l of the JSON; the friction needed is the JSON's |q1|/q2 at that point, and it is the
 /// largest |q1|/q2 of the chart's CSV; the stresses' CSV holds the JSON's q1, q2 there.
 fn check_loading_law_against_solve(md: &str, out: &std::path::Path) {
-    assert!(md.contains("## Loading law (Problem 2, P1 = N(P2))"), "{md}");
+    assert!(md.contains("## 9. Loading law (Problem 2, P1 = N(P2))"), "{md}");
     let digits = loading_law::FAST_DIGITS.to_string();
     let r = row(md, "| `loading_law` | paper |");
     // scene, convention, law, given, l, a, b, c/l, P1, P2, friction, at, tension, verified, requested.

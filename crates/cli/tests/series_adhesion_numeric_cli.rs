@@ -1,7 +1,7 @@
 //! `periodic-contact series adhesion --order N --nu R` beyond the exact route (issue 13,
-//! "coefficients to any order"): the numerical route's content at order 200 (its time is a README
-//! line), its first terms against the exact route's values at the same nu, the pole at nu = 0,
-//! and the refusals.
+//! "coefficients to any order"): the numerical route's content at order 200 (its time is in
+//! docs/performance.md), its first terms against the exact route's values at the same nu, the
+//! pole at nu = 0, and the refusals.
 
 mod common;
 use common::run;

@@ -70,7 +70,7 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let _ = writeln!(
         s.markdown,
-        "## Method choice by accuracy target\n\n\
+        "## 2. Method choice by accuracy target\n\n\
          Each scene's `[output] target_digits` (default {DEFAULT_TARGET}; `digits` instead forces MPFR at that \
          precision) selects the cheapest method predicted to meet it by the committed calibration table \
          `calibration/methods.csv` (machine: {}; regenerate with `periodic-contact calibrate`). The prediction \

@@ -1,4 +1,5 @@
-//! Coefficient tables of the derived series (report section 1), exact, as Markdown and LaTeX.
+//! Coefficient tables of the derived series (report section 1), exact, as Markdown (long
+//! coefficients as excerpts), CSV and LaTeX.
 
 use exact_series::{Ring, SeriesError};
 use periodic_contact::asymptotics::catalog::{Derived, SeriesObject, Substitutions};
@@ -20,14 +21,45 @@ pub fn coefficient_tables(order: usize) -> Result<Vec<Derived>, SeriesError> {
     Ok(out)
 }
 
-/// The Markdown report text (deterministic: no timings, no paths).
+/// Longest coefficient printed whole in `report.md`; a longer one shows its first
+/// [`EXCERPT`] characters and where it is in full (`coefficients.tex`, `coefficients.csv`), so that
+/// no line of `report.md` exceeds 400 characters (issue 30).
+pub const LONGEST_CELL: usize = 300;
+/// Characters of a long coefficient shown in `report.md`.
+pub const EXCERPT: usize = 160;
+
+/// A coefficient's cell: the text whole, or its excerpt with where the rest is.
+fn cell(text: &str) -> String {
+    if text.len() <= LONGEST_CELL {
+        return format!("`{text}`");
+    }
+    let cut = (0..=EXCERPT).rev().find(|&i| text.is_char_boundary(i)).unwrap_or(0);
+    format!("`{} ...` ({} characters; in full in `coefficients.csv` and `coefficients.tex`)", &text[..cut], text.len())
+}
+
+/// Every coefficient as CSV, `object,power,coefficient` (the exact text, quoted): the full form of
+/// the tables whose long cells `report.md` shows as excerpts.
+pub fn csv(tables: &[Derived]) -> String {
+    let mut s = String::from("object,power,coefficient\n");
+    for d in tables {
+        for (k, c) in d.series.coeffs().iter().enumerate() {
+            if !c.is_zero() {
+                s.push_str(&format!("{},{k},\"{}\"\n", d.object, c.text().replace('"', "\"\"")));
+            }
+        }
+    }
+    s
+}
+
+/// The Markdown text of section 1 (deterministic: no timings, no paths).
 pub fn markdown(tables: &[Derived], order: usize) -> String {
-    let mut s = String::from("# periodic-contact report\n\n");
+    let mut s = String::new();
     s.push_str(&format!(
         "## 1. Exact coefficient tables (through order {order})\n\n\
          Every coefficient is exact (rationals, polynomials over Q in the named symbols), derived by the \
          `exact_series` engine; the LaTeX forms are in `coefficients.tex`. Order N keeps every term \
-         through power N (docs/theory.md section 5).\n\n"
+         through power N (docs/theory.md section 5). A coefficient longer than {LONGEST_CELL} characters \
+         shows its first {EXCERPT}; every one is whole in `coefficients.csv` and `coefficients.tex`.\n\n"
     ));
     for d in tables {
         s.push_str(&format!(
@@ -37,7 +69,7 @@ pub fn markdown(tables: &[Derived], order: usize) -> String {
         s.push_str(&format!("| {} | coefficient |\n|---:|:---|\n", if d.object == "jacobi" { "n" } else { "power" }));
         for (k, c) in d.series.coeffs().iter().enumerate() {
             if !c.is_zero() {
-                s.push_str(&format!("| {k} | `{}` |\n", c.text()));
+                s.push_str(&format!("| {k} | {} |\n", cell(&c.text())));
             }
         }
         s.push('\n');

@@ -1,4 +1,4 @@
-//! Report section 6: "paper vs periodic", the two surface conventions of Problem 1 side by side
+//! Report section 7: "paper vs periodic", the two surface conventions of Problem 1 side by side
 //! (docs/theory.md section 8).
 //!
 //! `paper` solves [2.8] as the paper states it; `periodic` adds the constant
@@ -193,7 +193,7 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let cases = cases(scenes);
     let _ = writeln!(
         s.markdown,
-        "## 6. Paper vs periodic: the two surface conventions of Problem 1\n\n\
+        "## 7. Paper vs periodic: the two surface conventions of Problem 1\n\n\
          docs/theory.md section 8. In the paper's equations (`paper`, sections 2-3, the default) the surface does not \
          close over a period when there is friction or wear: integrating the gap across the free arc from the \
          trailing and from the leading end differs by M = (2/E*) beta P1 - cW P2, because the Flamant sum \

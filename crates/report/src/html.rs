@@ -64,6 +64,22 @@ fn escape(text: &str) -> String {
     s
 }
 
+/// The anchor of a heading, as Markdown viewers (GitHub) make it: lower case, letters, digits,
+/// `-` and `_` kept, spaces to `-`, the rest dropped. `report.html` gives its `<h2>` the same ids,
+/// so the report's contents list links in both.
+pub fn slug(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+            _ => None,
+        })
+        .collect()
+}
+
 /// The page: `title`, the report's `markdown` with every `![..](name.svg)` replaced by the SVG
 /// text `charts[name.svg]`, then `latex` (the coefficient tables' LaTeX source) in a closed
 /// `<details>` block when not empty.
@@ -72,7 +88,23 @@ pub fn page(title: &str, markdown: &str, charts: &BTreeMap<String, String>, late
     let mut events: Vec<Event> = Vec::new();
     // Inside an SVG image: (file, caption text so far).
     let mut image: Option<(String, String)> = None;
+    // An open level-2 heading: the index of its start event and its text so far (for its id).
+    let mut heading: Option<(usize, String)> = None;
     for event in parser {
+        match (&mut heading, &event) {
+            (None, Event::Start(Tag::Heading { level: pulldown_cmark::HeadingLevel::H2, .. })) => {
+                heading = Some((events.len(), String::new()));
+            }
+            (Some((_, text)), Event::Text(t) | Event::Code(t)) => text.push_str(t),
+            (Some((at, text)), Event::End(TagEnd::Heading(_))) => {
+                let id = slug(text);
+                if let Event::Start(Tag::Heading { id: slot, .. }) = &mut events[*at] {
+                    *slot = Some(CowStr::from(id));
+                }
+                heading = None;
+            }
+            _ => {}
+        }
         match (&mut image, event) {
             (None, Event::Start(Tag::Image { dest_url, .. })) if dest_url.ends_with(".svg") => {
                 image = Some((dest_url.to_string(), String::new()));
@@ -138,6 +170,18 @@ mod tests {
         assert!(p.contains("<pre>\\frac{1}{2} &lt; 1</pre>"), "{p}");
         assert!(p.contains("<code>a.csv</code>"), "{p}");
         assert_eq!(p, page("report", md, &charts(), "\\frac{1}{2} < 1").unwrap(), "deterministic");
+    }
+
+    #[test]
+    fn level_two_headings_get_the_markdown_anchor() {
+        assert_eq!(
+            slug("3. Convergence orders: series against the solution"),
+            "3-convergence-orders-series-against-the-solution"
+        );
+        assert_eq!(slug("9. Loading law (Problem 2, P1 = N(P2))"), "9-loading-law-problem-2-p1--np2");
+        let p = page("r", "## 2. Method `choice`\n\n[go](#2-method-choice)\n", &charts(), "").unwrap();
+        assert!(p.contains("<h2 id=\"2-method-choice\">2. Method <code>choice</code></h2>"), "{p}");
+        assert!(p.contains("<a href=\"#2-method-choice\">go</a>"), "{p}");
     }
 
     #[test]

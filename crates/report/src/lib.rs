@@ -1,19 +1,24 @@
-//! The report (`periodic-contact report`): the main job. Sections (each a module, data -> text
-//! and charts; the runs are in [`runner`]):
-//! 1. exact coefficient tables ([`coefficients`]);
-//! - method choice by accuracy target ([`choice`], from the calibration table [`calibration`]);
-//! 2. convergence orders of the series against the MPFR solution ([`orders`]);
-//! 3. speed against accuracy ([`speed`]);
-//! 4. stability maps from actual runs ([`stability`]);
-//! 5. load-size curves from the scenes' sweeps with closed forms ([`sweeps`]);
-//! 6. paper vs periodic: the two surface conventions of Problem 1 on the friction and wear scenes
+//! The report (`periodic-contact report`): the main job. It opens with its findings
+//! ([`summary`]: what each section ran, its failures and refusals, and a contents list), then the
+//! sections (each a module, data -> text and charts; the runs are in [`runner`]):
+//! 1. exact coefficient tables ([`coefficients`]; long coefficients as excerpts, whole in
+//!    `coefficients.csv` and `coefficients.tex`);
+//! 2. method choice by accuracy target ([`choice`], from the calibration table [`calibration`]);
+//! 3. convergence orders of the series against the MPFR solution ([`orders`]);
+//! 4. speed against accuracy ([`speed`]);
+//! 5. stability maps from actual runs ([`stability`]);
+//! 6. load-size curves from the scenes' sweeps with closed forms ([`sweeps`]);
+//! 7. paper vs periodic: the two surface conventions of Problem 1 on the friction and wear scenes
 //!    ([`conventions`]);
-//! - punch shapes: the scenes' polynomial and circular profiles against the closed-form
-//!   frictionless load of docs/theory.md section 9 ([`shapes`]; no text when no scene has one);
-//! - loading law: Problem 2 under P1 = N(P2), the scenes' loading-law problems with their loading
-//!   path, stresses and the friction they need ([`loading_law`]; no text when no scene has one);
-//! 7. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
-//!    deterministic and snapshot-tested).
+//! 8. punch shapes: the scenes' polynomial and circular profiles against the closed-form
+//!    frictionless load of docs/theory.md section 9 ([`shapes`]; no text when no scene has one);
+//! 9. loading law: Problem 2 under P1 = N(P2), the scenes' loading-law problems with their loading
+//!    path, stresses and the friction they need ([`loading_law`]; no text when no scene has one);
+//! 10. Pade resummation ([`pade`]);
+//! 11. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
+//!     deterministic and snapshot-tested).
+//!
+//! No line of `report.md` exceeds [`summary::LONGEST_LINE`] characters.
 //!
 //! Every chart is written as SVG ([`chart`], plotters) with the CSV of its data beside it;
 //! `report.html` ([`html`]) is the whole report as one page with the charts inline.
@@ -33,6 +38,7 @@ pub mod section;
 pub mod shapes;
 pub mod speed;
 pub mod stability;
+pub mod summary;
 pub mod sweeps;
 
 use indicatif::{ProgressBar, ProgressStyle};
@@ -182,7 +188,8 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
             Box::new(move |_: &Ctx| {
                 let tables = coefficients::coefficient_tables(order)?;
                 let tex = coefficients::latex(&tables);
-                Ok((Section { markdown: coefficients::markdown(&tables, order), ..Default::default() }, tex))
+                let files = vec![("coefficients.csv".to_string(), coefficients::csv(&tables))];
+                Ok((Section { markdown: coefficients::markdown(&tables, order), files, ..Default::default() }, tex))
             }),
         ),
         ("method choice", 2.0, plain(choice::section)),
@@ -221,20 +228,22 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
         timings.push_str(&line);
     }
 
-    let mut md = String::new();
+    let mut body = String::new();
     let names: Vec<&str> = scenes.iter().map(|s| s.0.as_str()).collect();
     for (i, s) in sections.iter().enumerate() {
-        if i == 1 {
+        if i == 0 {
             let _ = writeln!(
-                md,
-                "Scenes: {}. Timings of this run and the machine: `timings.md` (section 7; kept out of this \
+                body,
+                "Scenes: {}. Timings of this run and the machine: `timings.md` (section 11; kept out of this \
                  text, which is deterministic).\n",
                 names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
             );
         }
-        md.push_str(&s.markdown);
+        body.push_str(&s.markdown);
     }
-    let _ = writeln!(md, "## 7. Timings\n\nSee `timings.md`: measured in the run that wrote this report.");
+    let _ = writeln!(body, "## 11. Timings\n\nSee `timings.md`: measured in the run that wrote this report.");
+    let findings: Vec<String> = sections.iter().flat_map(|s| s.findings.iter().cloned()).collect();
+    let md = summary::wrap_long_lines(&summary::front(&body, names.len(), &findings), summary::LONGEST_LINE);
     let write = |files: &mut Vec<PathBuf>, name: &str, text: &str| -> Result<(), ReportError> {
         let p = opts.out.join(name);
         std::fs::write(&p, text).map_err(io(&p))?;
@@ -243,6 +252,11 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     };
     write(&mut files, "report.md", &md)?;
     write(&mut files, "coefficients.tex", &tex)?;
+    for s in &sections {
+        for (name, text) in &s.files {
+            write(&mut files, name, text)?;
+        }
+    }
     let mut svgs = std::collections::BTreeMap::new();
     for s in &sections {
         for c in &s.charts {

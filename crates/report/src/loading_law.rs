@@ -180,7 +180,7 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let xh = profile_points(ctx.profile);
     let _ = writeln!(
         s.markdown,
-        "## Loading law (Problem 2, P1 = N(P2))\n\n\
+        "## 9. Loading law (Problem 2, P1 = N(P2))\n\n\
          docs/theory.md section 10: the punches are loaded with P1 and P2 growing together by the scene's law, with \
          complete adhesion, and the contact [-a, b] grows at both ends (c = (b - a)/2 != 0 when P1 != 0). \
          Verified MPFR method (two Chebyshev-collocation runs of the moving-edge Volterra equations, the second \

@@ -67,14 +67,14 @@ pub fn section(ctx: &Ctx) -> Section {
     let rows = match rows(ctx, &plan) {
         Ok(r) => r,
         Err(why) => {
-            let _ = writeln!(s.markdown, "## Pade resummation\n\nNot computed: {why}.\n");
+            let _ = writeln!(s.markdown, "## 10. Pade resummation\n\nNot computed: {why}.\n");
             return s;
         }
     };
     let md = &mut s.markdown;
     let _ = writeln!(
         md,
-        "## Pade resummation\n\n\
+        "## 10. Pade resummation\n\n\
          docs/theory.md section 11. The same exact coefficients summed plainly and by near-diagonal Pade \
          approximants [L/M] (L + M = all coefficients, |L - M| <= 2) in w = Lambda^2 (Problem 1) or \
          w = lambda^2 (Problem 2's load), the series through order N (column N: the parabola {}, the sinusoid \

@@ -23,6 +23,10 @@ pub struct Section {
     pub charts: Vec<Chart>,
     /// Timing lines for `timings.md` (Markdown).
     pub timings: String,
+    /// Further data files of the section, (file name, text), e.g. `coefficients.csv`.
+    pub files: Vec<(String, String)>,
+    /// Headline findings for the report's summary, one sentence each (deterministic).
+    pub findings: Vec<String>,
 }
 
 /// Shared state of a report run (shared by reference between the threads: the sections and the

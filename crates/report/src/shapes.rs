@@ -6,21 +6,22 @@
 //! One case per distinct (profile, period, E*) among the scenes with a `polynomial` or `circular`
 //! punch (Problem 1 or 2; friction, wear and nu dropped: the closed form is frictionless, and its
 //! load does not depend on nu). For each case, on a grid of half-widths a (lambda = pi a/L in
-//! 0.2 .. 1.4, up to the slope limit |g'| <= 1/2 of the solvers, [`MAX_CONTACT_SLOPE`]):
+//! 0.2 .. 1.4, up to the small-slope limit |g'| <= 1/2, [`MAX_CONTACT_SLOPE`]):
 //! - Problem 1 frictionless, half-length given: P2 by the verified MPFR method at [`DIGITS`]
 //!   digits and by the f64 method, each against the closed form (relative difference and the
 //!   digits they agree to), beside the MPFR run's own verified digits;
 //! - Problem 2 at nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem; docs/theory.md
 //!   section 9) by the verified MPFR method and by the f64 method, against the same closed form
 //!   (even profiles);
-//! - the first grid size beyond the slope limit, run to show the solvers' refusal;
+//! - the first grid size beyond the small-slope limit, run by MPFR to show that the solvers answer it
+//!   with the small-slope warning (docs/theory.md section 9), not a refusal;
 //! - one single punch (period "inf") against the power law P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!!
 //!   summed over the even terms (polynomials) or the closed form's single-punch quadrature
 //!   (circle).
 //!
 //! A profile with odd terms has no closed form (its contact is off centre even without friction):
 //! its MPFR and f64 curves are shown against each other. The friction scenes of the new profiles,
-//! in both conventions, are in section 6 (c/l and F_def against the load).
+//! in both conventions, are in report section 7 (c/l and F_def against the load).
 
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::runner::{self, Knob, Outcome, RunCache, COMPARE_BITS};
@@ -245,8 +246,8 @@ impl Row {
 
 /// The grid of half-widths of `case` (exact, 6 decimals of L): the lambdas of `lambdas` below the
 /// slope edge, the edge itself (99% of it) when the grid goes beyond it (and it is not within 2%
-/// of the grid size below it), and the first grid lambda beyond it (flagged `true`: run only to
-/// show the refusal).
+/// of the grid size below it), and the first grid lambda beyond it (flagged `true`: run by MPFR
+/// only, to show the small-slope warning).
 pub fn grid(case: &ShapeCase, lambdas: &[f64]) -> Vec<(Exact, bool)> {
     let Some(big_l) = case.period_value().and_then(to_f64) else { return Vec::new() };
     let edge = case.slope_edge(big_l) * PI / big_l;
@@ -379,22 +380,23 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let lambdas: Vec<f64> = if ctx.profile == Profile::Full { LAMBDAS.to_vec() } else { vec![0.5, 1.1] };
     let _ = writeln!(
         s.markdown,
-        "## Punch shapes: polynomial and circular profiles against the closed form\n\n\
+        "## 8. Punch shapes: polynomial and circular profiles against the closed form\n\n\
          docs/theory.md section 9. Without friction an even profile g carries, at half-width a, \
          P2 = (E*/2) int_{{-a}}^{{a}} g'(x) sin(pi x/L) dx / sqrt(sin^2(pi a/L) - sin^2(pi x/L)); this closed form \
          is computed here independently of the solvers (`src/verification/closed_form_load.rs`: g' from the \
          exact profile, substitution sin(pi x/L) = sin(lambda) sin(phi), trapezoid sums doubled until two agree \
          to {COMPARE_BITS} bits; its digits are those of that agreement). For each profile of the scenes \
-         (friction, wear and nu dropped), on lambda = pi a/L in {lambdas:?} up to the solvers' slope limit \
+         (friction, wear and nu dropped), on lambda = pi a/L in {lambdas:?} up to the small-slope limit \
          |g'| <= {MAX_CONTACT_SLOPE} ([1.9]: the theory assumes |g'| << 1): Problem 1 without friction at the \
          given half-length by the verified MPFR method ({DIGITS} digits asked) and by f64, and Problem 2 at \
          nu = 1/2 (eps = 0, where complete adhesion is the frictionless problem) by the verified MPFR method \
          and by f64, each against the closed form: relative difference and the digits they agree to (capped at the closed \
-         form's digits and the run's verified digits + 2). The first grid size beyond the slope limit is run to \
-         show the refusal. One line per even profile: a single punch (period \"inf\") against the power law \
+         form's digits and the run's verified digits + 2). The first grid size beyond the small-slope limit is run \
+         by MPFR: the solvers answer it with the small slope warning of docs/theory.md section 9 (every shape, \
+         both problems), not a refusal. One line per even profile: a single punch (period \"inf\") against the power law \
          P2 = n pi E* A a^(2n) (2n-1)!!/(2n)!! of g = A x^(2n), summed over the even terms (polynomial), or the \
          closed form's single-punch limit (circle). The friction scenes of these profiles, in both conventions, \
-         are in section 6.\n"
+         are in section 7.\n"
     );
     let _ = writeln!(s.timings, "### Punch shapes\n\n| profile | seconds |\n|---|---:|");
     for (i, case) in cases.iter().enumerate() {

@@ -1,4 +1,4 @@
-//! Report section 3: speed against accuracy. One chart per problem: relative error (against a
+//! Report section 4: speed against accuracy. One chart per problem: relative error (against a
 //! high-precision reference run) vs wall time, one curve per method, points along its knob
 //! (series order, f64 nodes, MPFR digits). Errors go into the Markdown; times only into the
 //! charts, their CSV and `timings.md`.
@@ -22,7 +22,7 @@ struct Study {
     families: Vec<(&'static str, Vec<Knob>)>,
 }
 
-/// Builds section 3.
+/// Builds section 4.
 pub fn section(ctx: &Ctx) -> Section {
     let full = ctx.profile == Profile::Full;
     let big_lambda = 0.4;
@@ -89,7 +89,7 @@ pub fn section(ctx: &Ctx) -> Section {
     let mut s = Section::default();
     let _ = writeln!(
         s.markdown,
-        "## 3. Speed against accuracy\n\n\
+        "## 4. Speed against accuracy\n\n\
          Error = max(|dl|, |dc|)/l (Problem 1, load given) or |dP2|/P2 (Problem 2, a given) against a reference \
          MPFR run at higher precision; wall time of one run on this machine (times: charts, their CSV and \
          `timings.md`; they are not in this text). The series' time excludes the one-off exact derivation of \

@@ -1,4 +1,4 @@
-//! Report section 5: load-size curves from the scenes' `[sweep]`s, each point computed by the
+//! Report section 6: load-size curves from the scenes' `[sweep]`s, each point computed by the
 //! method chosen for the scene's target, with the closed forms beside them where they exist
 //! (docs/theory.md section 6): Kuznetsov [2.15] for the frictionless periodic parabola (and for
 //! Problem 2 at nu = 1/2, eps = 0), Westergaard [2.17] for the frictionless sinusoid, and the
@@ -18,10 +18,10 @@ use std::f64::consts::PI;
 use std::fmt::Write as _;
 
 /// Where the report shows the exact series of Problem 2 (knob [`Knob::Series`] of
-/// [`super::runner`], section 3) and where their term-by-term orders are checked.
+/// [`super::runner`], section 4) and where their term-by-term orders are checked.
 pub fn adhesion_series_note() -> &'static str {
     "the exact series of Problem 2 ([3.18], `src/asymptotics/adhesion.rs`) are compared with the full \
-     solution in section 3 (speed against accuracy); their term-by-term orders (remainders after m = 0..4 \
+     solution in section 4 (speed against accuracy); their term-by-term orders (remainders after m = 0..4 \
      corrections scale like lambda^(2m+2) at nu = 0, 0.3, 0.45) are checked by the test \
      `adhesion::against_series::remainders_against_full_solution`; the load-size curves here show the \
      full solutions."
@@ -118,12 +118,12 @@ fn sig(d: f64) -> usize {
     (d.floor() as usize).clamp(2, 12)
 }
 
-/// Builds section 5.
+/// Builds section 6.
 pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
     let mut s = Section::default();
     let _ = writeln!(
         s.markdown,
-        "## 5. Load-size curves\n\n\
+        "## 6. Load-size curves\n\n\
          From each scene's `[sweep]`: every point is computed by the method chosen for the scene's target \
          (section above), the closed forms drawn beside them (dashed) where they exist. Sizes are contact \
          half-lengths l (Problem 1) or half-widths a (Problem 2), over the period L. Digits: verified (MPFR) or \
