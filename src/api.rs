@@ -104,18 +104,17 @@ pub enum Derivation {
 }
 
 impl Derivation {
-    /// The JSON of `--format json`: one part as `{"object", "variable", "order", "symbols",
-    /// "coefficients": [{"power", "text", "latex"}]}`, several as `{"object", "parts": [...]}`;
-    /// the loading law's with its `mode`.
+    /// The JSON of `--format json`, one schema for every object (docs/theory.md section 16):
+    /// `{"object", "parts": [{"object", "formula", "source", "variable", "order", "symbols",
+    /// "sympy", "mathematica", "coefficients": [{"power", "text", "latex", "sympy"}]}]}`; the
+    /// numerical routes' coefficients are `{"power", "value", "digits"}`, the loading law's
+    /// answer carries its `mode`.
     pub fn json(&self) -> Value {
         match self {
-            Derivation::Exact { object, parts, .. } => match parts.as_slice() {
-                [one] => one.json(),
-                many => serde_json::json!({
-                    "object": object,
-                    "parts": many.iter().map(|d| d.json()).collect::<Vec<_>>(),
-                }),
-            },
+            Derivation::Exact { object, parts, .. } => serde_json::json!({
+                "object": object,
+                "parts": parts.iter().map(|d| d.json()).collect::<Vec<_>>(),
+            }),
             Derivation::LoadingLaw { series, mode } => {
                 let mut v = series.json();
                 v["mode"] = mode.json(series.order);
@@ -169,6 +168,14 @@ pub fn derive(request: &SeriesRequest) -> Result<Derivation, ApiError> {
 /// Derives a request already validated ([`SeriesRequest::validate`]; the command line validates
 /// first, to check its output format against the route).
 ///
+/// ```
+/// use periodic_contact::api::{derive_valid, Derivation, SeriesRequest};
+/// // The adhesion series at nu = 1/4 beyond the exact route's order 24: the numerical route.
+/// let valid = SeriesRequest::new("adhesion", 30).option("nu", "1/4").validate()?;
+/// assert!(matches!(derive_valid(valid)?, Derivation::AdhesionNumeric(_)));
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
+///
 /// # Errors
 /// [`ApiError::Series`] when the engine fails; the numerical routes' own errors.
 pub fn derive_valid(valid: ValidSeries) -> Result<Derivation, ApiError> {
@@ -207,6 +214,18 @@ pub struct SolveOptions {
 impl SolveOptions {
     /// Applies the options to a parsed scene (the convention replaces the scene's) and chooses
     /// the method: the one path of `periodic-contact solve` and of [`solve_toml`].
+    ///
+    /// ```
+    /// use periodic_contact::api::{parse_scene, solve_with_choice, SolveOptions};
+    /// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+    /// let mut scene = parse_scene(&std::fs::read_to_string(path).unwrap())?;
+    /// let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
+    /// let choice = opts.choose(&mut scene)?;
+    /// assert_eq!(choice.reason, "forced by --method");
+    /// let v = solve_with_choice(&scene, choice)?;
+    /// assert_eq!(v["choice"]["method"], "f64");
+    /// # Ok::<(), periodic_contact::api::ApiError>(())
+    /// ```
     ///
     /// # Errors
     /// An [`Error::Input`] naming the option (`--digits`, `--method`, `--order`,
@@ -276,6 +295,14 @@ pub fn solve_with_choice(scene: &Scene, choice: MethodChoice) -> Result<Value, E
 /// Solves the scene file at `path` as `periodic-contact solve PATH --json [flags]` does and returns
 /// its JSON (string values; keys in docs/theory.md section 14).
 ///
+/// ```
+/// use periodic_contact::api::{solve_file, SolveOptions};
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+/// let v = solve_file(path.as_ref(), &SolveOptions { method: Some("f64".into()), ..Default::default() })?;
+/// assert_eq!(v["problem"], "sliding");
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
+///
 /// # Errors
 /// [`ApiError::Scene`] for an invalid scene, [`ApiError::Problem`] otherwise (an unreadable file,
 /// an invalid option, no solution, not physical, no convergence), each with the CLI's message.
@@ -319,6 +346,12 @@ pub fn solve_toml(scene: &str, options: &SolveOptions) -> Result<Value, ApiError
 }
 
 /// An exact number as text (`"1/10"`, `"0.25"`), for callers that hold exact inputs.
+///
+/// ```
+/// let x = periodic_contact::api::exact("0.25")?;
+/// assert_eq!(x, periodic_contact::api::exact("1/4")?);
+/// # Ok::<(), periodic_contact::api::ModelError>(())
+/// ```
 pub fn exact(text: &str) -> Result<Exact, ModelError> {
     crate::series_request::parse_exact("value", text)
 }
@@ -359,7 +392,7 @@ mod tests {
         let d = derive(&SeriesRequest::new("kernel", 4)).unwrap();
         let v = d.json();
         let texts: Vec<&str> =
-            v["coefficients"].as_array().unwrap().iter().map(|c| c["text"].as_str().unwrap()).collect();
+            v["parts"][0]["coefficients"].as_array().unwrap().iter().map(|c| c["text"].as_str().unwrap()).collect();
         assert_eq!(texts, ["1", "-1/3", "-1/45"]);
         assert!(d.text().contains("[z^4] -1/45"));
     }

@@ -20,6 +20,7 @@ use crate::error::Error;
 use crate::model::{AdhesionProblem, Convention, LoadingLawProblem, Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64};
+use render::DigitsKind;
 use serde_json::{json, Map, Value};
 
 /// How to run a scene.
@@ -36,10 +37,36 @@ pub struct SolveRequest {
 /// Default digits when neither the scene nor the command line gives them.
 pub const DEFAULT_DIGITS: u32 = 30;
 
-/// Runs the scene and renders the JSON result. A non-finite number anywhere in the result is
-/// refused ([`Error::NoConvergence`]) rather than printed.
+/// The accuracy an answer claims, as a number: the minimum over its accuracy table (what
+/// `digits_verified` or `digits_estimated` prints, to one decimal), and whether it was verified.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Claim {
+    /// Digits of the least accurate quantity, on its scale.
+    pub digits: f64,
+    /// Verified by a second run, or estimated.
+    pub kind: DigitsKind,
+}
+
+/// One solved scene: the typed claim of its accuracy, which the method choice reads to decide
+/// whether a dearer method must run ([`choice::solve_chosen`]), and the rendered JSON of
+/// `periodic-contact solve --json` (string values; docs/theory.md section 14).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// The accuracy claimed.
+    pub claim: Claim,
+    /// The JSON.
+    pub json: Value,
+}
+
+/// Runs the scene and renders the JSON result ([`solve_answer`] without its claim).
 pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let v = match &scene.problem {
+    solve_answer(scene, req).map(|a| a.json)
+}
+
+/// Runs the scene: the answer with its claimed accuracy. A non-finite number anywhere in the
+/// result is refused ([`Error::NoConvergence`]) rather than printed.
+pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
+    let (v, claim) = match &scene.problem {
         SceneProblem::Sliding(p) => match req.method {
             Method::Mpfr => sliding_mpfr(p, scene, req),
             Method::F64 => sliding_f64(p, scene, req),
@@ -72,7 +99,15 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
             what: format!("the {} method produced a non-finite value at {path}", req.method.name()),
         });
     }
-    Ok(v)
+    Ok(Answer { claim, json: v })
+}
+
+/// What a method returns here: the JSON and the claim of its (first) answer.
+type Rendered = (Value, Claim);
+
+/// The claim of a Problem 1 answer.
+fn sliding_claim(a: &render::SlidingAnswer) -> Claim {
+    Claim { digits: a.headline(), kind: a.kind }
 }
 
 /// A refusal in the `paper` convention (not physical, or no solution) that the `periodic`
@@ -182,75 +217,81 @@ fn sliding_top(mut answers: Vec<Map<String, Value>>, p: &SlidingProblem) -> Valu
     Value::Object(top)
 }
 
-fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sols = sliding::solve_verified(p, &scene.output.points, req.digits)?;
-    if sols.is_empty() {
+    let answers: Vec<_> = sols.iter().map(|v| answer_mpfr::sliding_answer(v, p.convention())).collect();
+    let Some(first) = answers.first() else {
         return Err(Error::NotPhysical { why: "no physical contact was found".into() });
-    }
-    Ok(sliding_top(
-        sols.iter()
-            .map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v, p.convention()), req.digits))
-            .collect(),
-        p,
-    ))
+    };
+    let claim = sliding_claim(first);
+    Ok((sliding_top(answers.iter().map(|a| render::sliding_json(a, req.digits)).collect(), p), claim))
 }
 
-fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let points: Vec<f64> =
         scene.output.points.iter().map(|x| crate::numerics::exact::to_f64(x).unwrap_or(f64::NAN)).collect();
     let sols = collocation_f64::solve_sliding_f64(p, &points, &collocation_f64::SolverOptions::default())?;
     let periodic = matches!(p.period(), Period::Finite(_));
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
-    let answers = sols
-        .solutions
+    let typed: Vec<_> =
+        sols.solutions.iter().map(|s| answer_f64::sliding_answer(s, periodic, p.convention())).collect();
+    let Some(first) = typed.first() else {
+        return Err(Error::NotPhysical { why: "no physical contact was found".into() });
+    };
+    let claim = sliding_claim(first);
+    let answers = typed
         .iter()
-        .map(|s| {
-            let mut m = render::sliding_json(&answer_f64::sliding_answer(s, periodic, p.convention()), shown);
+        .map(|a| {
+            let mut m = render::sliding_json(a, shown);
             f64_digits(&mut m, req.digits);
             m
         })
         .collect();
-    Ok(sliding_top(answers, p))
+    Ok((sliding_top(answers, p), claim))
 }
 
-fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = sliding::series::solve_series(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(
-        vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits, p.convention()), req.digits)],
-        p,
-    ))
+    let answer = answer_series::sliding_answer(&s, req.digits, p.convention());
+    Ok((sliding_top(vec![render::sliding_json(&answer, req.digits)], p), sliding_claim(&answer)))
 }
 
-fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = sliding::series::pade::solve_pade(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(vec![answer_pade::sliding_json(&s, req.digits, p.convention())], p))
+    let (m, answer) = answer_pade::sliding_json(&s, req.digits, p.convention());
+    Ok((sliding_top(vec![m], p), sliding_claim(&answer)))
 }
 
-fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let v = adhesion::solve_verified(p, &scene.output.points, req.digits)?;
-    let mut m = render::adhesion_json(&answer_adhesion::mpfr_answer(p, &v), req.digits);
+    let answer = answer_adhesion::mpfr_answer(p, &v);
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, req.digits);
     let a = number(&m, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
-    Ok(Value::Object(m))
+    Ok((Value::Object(m), claim))
 }
 
-fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = adhesion::solve_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
-    let mut m = render::adhesion_json(&answer_adhesion::f64_answer(p, &s, &scene.output.points), shown);
+    let answer = answer_adhesion::f64_answer(p, &s, &scene.output.points);
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, shown);
     f64_digits(&mut m, req.digits);
     let a = number(&m, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
-    Ok(Value::Object(m))
+    Ok((Value::Object(m), claim))
 }
 
-fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
+    let claim = Claim { digits: sol.digits.headline, kind: DigitsKind::Verified };
     let mut m = answer_law::law_answer_json(p, &sol, req.digits);
     law_note(&mut m, p);
-    Ok(Value::Object(m))
+    Ok((Value::Object(m), claim))
 }
 
 /// The loading law's notes: the small-slope warning of its parabola, and in the `paper`
@@ -285,11 +326,11 @@ fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
     }
 }
 
-fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
     let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
     f64_digits(&mut m, req.digits);
     law_note(&mut m, p);
-    Ok(Value::Object(m))
+    Ok((Value::Object(m), Claim { digits: sol.digits.headline, kind: DigitsKind::Verified }))
 }

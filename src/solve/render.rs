@@ -334,6 +334,13 @@ pub struct AdhesionAnswer {
     pub warnings: Vec<String>,
 }
 
+impl AdhesionAnswer {
+    /// The headline digits: the minimum over the accuracy table.
+    pub fn headline(&self) -> f64 {
+        self.accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min)
+    }
+}
+
 /// The JSON object of one Problem 2 answer.
 pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value> {
     let mut m = Map::new();

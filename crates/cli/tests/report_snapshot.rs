@@ -4,12 +4,15 @@
 //! checked against `periodic-contact solve --json` on the same scene.
 
 mod common;
+// The report of the fixed fast scene set, shared with the report crate's own tests.
+#[path = "../../report/tests/common/mod.rs"]
+mod report_common;
 use periodic_contact_report::{loading_law, section::Profile};
 use rug::Float;
 
 #[test]
 fn report_text_fast_scene_set() {
-    let (out, files) = common::fast_report("report-test");
+    let (out, files) = report_common::fast_report("report-test");
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert_eq!(md, files.markdown);
     // Every chart has its SVG and CSV; the SVG names its axes and curves.
