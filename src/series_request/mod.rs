@@ -119,9 +119,7 @@ pub fn order_limit_text(object: SeriesObject) -> &'static str {
         SeriesObject::Jacobi => "the Jacobi moments' limit",
         SeriesObject::Weight => "the weight series' limit",
         SeriesObject::Sliding(_) => "the sliding series' limit",
-        SeriesObject::Adhesion => {
-            "the adhesion series' exact route; with --nu R the numerical route takes up to 1000"
-        }
+        SeriesObject::Adhesion => "the adhesion series' exact route; with --nu R the numerical route takes up to 1000",
         SeriesObject::PolynomialSliding | SeriesObject::PolynomialAdhesion => {
             "the limit of a polynomial profile's series"
         }

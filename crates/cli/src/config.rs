@@ -291,7 +291,7 @@ mod tests {
                 other => panic!("{other:?}"),
             };
             assert_eq!(text(alias), text(canonical));
-            assert!(matches!(config(&["series", "sliding", "--order", "2", "--shape", alias]), Ok(_)), "{alias}");
+            assert!(config(&["series", "sliding", "--order", "2", "--shape", alias]).is_ok(), "{alias}");
         }
         let mut cmd = RawArgs::command();
         for sub in ["scene", "series"] {
