@@ -29,7 +29,7 @@ pub fn sliding_json(s: &PadeSolution, requested: u32, convention: Convention) ->
             json!({
                 "quantity": c.quantity,
                 "approximant": format!("[{}/{}]", c.l, c.m),
-                "digits_estimated": format!("{:.1}", c.digits),
+                "digits_estimated": render::digits_text(c.digits),
                 "poles": c.poles,
             })
         })

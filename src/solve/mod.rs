@@ -162,7 +162,7 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<V
         scene.output.points.iter().map(|x| crate::numerics::exact::to_f64(x).unwrap_or(f64::NAN)).collect();
     let sols = collocation_f64::solve_sliding_f64(p, &points, &collocation_f64::SolverOptions::default())?;
     let periodic = matches!(p.period(), Period::Finite(_));
-    let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
     let answers = sols
         .solutions
         .iter()
@@ -196,7 +196,7 @@ fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Resul
 
 fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let s = adhesion::solve_f64(p, &scene.output.points)?;
-    let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
     let mut m = render::adhesion_json(&answer_adhesion::f64_answer(p, &s, &scene.output.points), shown);
     m.insert("digits_requested".into(), json!(req.digits.to_string()));
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
@@ -211,7 +211,7 @@ fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<V
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
     let sol = adhesion::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
-    let shown = req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32);
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
     let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
     // digits_requested states what the user asked, not the f64 cap.
     m.insert("digits_requested".into(), json!(req.digits.to_string()));
