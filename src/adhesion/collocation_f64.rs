@@ -219,7 +219,7 @@ impl Setup {
     fn lambda_for_load(&self, target: f64, lambda_max: f64, which: usize) -> Result<March, AdhesionError> {
         let p = target / self.setting.p2_per_p;
         // First guess: Kuznetsov's parabola with C_P (P = 2 C_P ln sec lambda).
-        let guess = (-p / self.setting.start).exp().acos();
+        let guess = crate::numerics::elementary::acos_exp_neg(p / self.setting.start);
         let root = increasing_root(
             |lam| {
                 self.solve_at(lam, which).map(|mar| {

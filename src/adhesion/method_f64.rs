@@ -18,6 +18,24 @@ pub const SERIES_ENOUGH: f64 = 13.0;
 
 /// The f64 method of Problem 2 with estimated digits (module doc).
 pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<AdhesionSolutionF64, AdhesionError> {
+    let s = solve_f64_routes(problem, points)?;
+    // Fewer than one estimated digit is no answer (issue 34, fuzzing: at lambda = 2.5e-9 the series
+    // route gave P2 off by more than its scale while estimating 0 digits).
+    if !(s.digits_estimated.headline >= 1.0) {
+        return Err(AdhesionError::NotConverged {
+            what: "the f64 method",
+            reason: format!(
+                "it estimates {} digits (< 1) at these parameters; the verified MPFR method (--method mpfr) reaches them",
+                crate::numerics::accuracy::readable_f64((s.digits_estimated.headline * 10.0).floor() / 10.0)
+            ),
+        });
+    }
+    Ok(s)
+}
+
+/// The route of [`solve_f64`] (series, or collocation beyond its radius; the collocation alone in
+/// the `periodic` convention), whatever its digits.
+fn solve_f64_routes(problem: &AdhesionProblem, points: &[Exact]) -> Result<AdhesionSolutionF64, AdhesionError> {
     if problem.periodic_surface() {
         return solve_collocation_f64(problem, points);
     }

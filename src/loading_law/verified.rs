@@ -256,7 +256,7 @@ fn size_for_load(
     let mut big = 0.0;
     if let Period::Finite(l) = problem.period() {
         let target = to_f64(&(p2 / &(&stiffness * l * l))).unwrap_or(f64::NAN) * std::f64::consts::PI.powi(2);
-        let guess = (-target / (2.0 * cp)).exp().acos();
+        let guess = crate::numerics::elementary::acos_exp_neg(target / (2.0 * cp));
         big = (guess * 1.15 + 0.05).min(0.5 * (guess + half_pi));
     }
     for j in 0..6 {

@@ -15,7 +15,7 @@ use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel_f64::KernelF64;
 use crate::growing_contact::march::{march, March, MarchEnd, MarchOptions, MarchSetting};
 use crate::model::{readable, Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem};
-use crate::numerics::accuracy::{verified_digits, F64_DIGITS_CAP};
+use crate::numerics::accuracy::{f64_digits, F64_DIGITS_CAP};
 use crate::numerics::exact::to_f64;
 use crate::params::adhesion::AdhesionParamsF64;
 use num_traits::Signed;
@@ -255,7 +255,8 @@ fn solve_law_f64_runs(
     let u = run(problem, xh, options)?;
     let v = run(problem, xh, check)?;
     let cap = F64_DIGITS_CAP;
-    let dig = |x: f64, y: f64, scale: f64| verified_digits(x - y, scale, cap);
+    // With the f64 round-off floor (issue 34): the check run does not see it.
+    let dig = |x: f64, y: f64, scale: f64| f64_digits(x - y, x, scale);
     let ends = dig(u.a, v.a, u.l).min(dig(u.b, v.b, u.l)).min(dig(u.c, v.c, u.l));
     let loads = dig(u.p2, v.p2, u.p2).min(dig(u.p1, v.p1, u.p2));
     let inp = Inputs::new(problem);
@@ -269,6 +270,17 @@ fn solve_law_f64_runs(
             .min(dig(p.q2, q.q2, ekl));
     }
     let headline = ends.min(loads).min(fields);
+    // Fewer than one digit is no answer (issue 34, fuzzing: at lambda = 2.5e-9 the marching gave
+    // a = 0 for a = 1.0e-10 while estimating 0 digits).
+    if !(headline >= 1.0) {
+        return Err(AdhesionError::NotConverged {
+            what: "the f64 loading-law method",
+            reason: format!(
+                "its check run leaves {} digits (< 1) at these parameters; the verified MPFR method (--method mpfr) reaches them",
+                crate::numerics::accuracy::readable_f64((headline * 10.0).floor() / 10.0)
+            ),
+        });
+    }
     // No path at l_j = j l/16, profile stresses or end stresses from this method: their digit
     // groups are the cap and describe nothing (the JSON prints them null).
     let digits = LawDigits { ends, loads, fields, path: cap, stresses: cap, headline, friction: cap, end_phases: cap };

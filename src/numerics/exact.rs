@@ -44,6 +44,32 @@ pub fn to_f64(q: &BigRational) -> Option<f64> {
     v.is_finite().then_some(v)
 }
 
+/// The exact order of the rational `q` against `pi` times the rational `m` (m > 0), decided by MPFR
+/// bounds of pi rounded down and up at a precision doubled until they separate (pi is irrational,
+/// so `q` never equals pi m and the loop ends: at about the bits of q's parts plus 64). Never
+/// through `f64`: a load given to 20 digits below pi E* D is below it (issue 34).
+///
+/// # Panics
+/// When `m <= 0` (a bug of the caller).
+pub fn cmp_pi_times(q: &BigRational, m: &BigRational) -> std::cmp::Ordering {
+    use num_traits::Signed;
+    assert!(m.is_positive(), "cmp_pi_times: m must be > 0");
+    let r = to_rational(&(q / m));
+    let bits = |z: &Integer| z.significant_bits();
+    let mut prec = 64 + bits(r.numer()).max(bits(r.denom()));
+    loop {
+        let (lo, _) = Float::with_val_round(prec, rug::float::Constant::Pi, rug::float::Round::Down);
+        let (hi, _) = Float::with_val_round(prec, rug::float::Constant::Pi, rug::float::Round::Up);
+        if lo > r {
+            return std::cmp::Ordering::Less;
+        }
+        if hi < r {
+            return std::cmp::Ordering::Greater;
+        }
+        prec *= 2;
+    }
+}
+
 /// n/d correctly rounded to the nearest `f64` when |n| and d (d > 0) are at most 2^53, so both
 /// are exact doubles and one IEEE division rounds once (the quotient's magnitude is then 0 or at
 /// least 2^-53, far from the subnormal range); `None` otherwise.
@@ -126,6 +152,25 @@ impl SmallRational {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn comparisons_with_pi_are_exact() {
+        // See: issue 34 (a load of 0.03141592653589793238 < pi E* D, D = 0.01, refused as above it).
+        use std::cmp::Ordering::{Greater, Less};
+        let q = |s: &str| exact_series::parse_rational(s).unwrap();
+        let d = q("0.01");
+        assert_eq!(cmp_pi_times(&q("0.03141592653589793238"), &d), Less);
+        assert_eq!(cmp_pi_times(&q("0.03141592653589793239"), &d), Greater);
+        // pi to 60 digits on either side: 3.14159265358979323846264338327950288419716939937510582097494...
+        let below = "3.141592653589793238462643383279502884197169399375105820974944";
+        let above = "3.141592653589793238462643383279502884197169399375105820974945";
+        assert_eq!(cmp_pi_times(&q(below), &q("1")), Less);
+        assert_eq!(cmp_pi_times(&q(above), &q("1")), Greater);
+        // The f64 nearest pi E* D is above the exact value here, and below it times 10/11.
+        assert_eq!(cmp_pi_times(&q("355/113"), &q("1")), Greater);
+        assert_eq!(cmp_pi_times(&q("22/7"), &q("10/11")), Greater);
+        assert_eq!(cmp_pi_times(&q("1/1000000000000000000000000000000"), &q("1e-30")), Less);
+    }
     use num_bigint::BigInt;
 
     #[test]

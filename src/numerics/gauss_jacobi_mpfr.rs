@@ -109,9 +109,33 @@ impl GaussJacobiRule {
 /// ([`gauss_jacobi_f64_lifted`]) rather than computed at `prec` ([`gauss_jacobi`]).
 type Key = (Option<(Integer, i32)>, Option<(Integer, i32)>, usize, u32, bool);
 
-fn cache() -> &'static Mutex<HashMap<Key, Arc<GaussJacobiRule>>> {
-    static CACHE: OnceLock<Mutex<HashMap<Key, Arc<GaussJacobiRule>>>> = OnceLock::new();
-    CACHE.get_or_init(|| Mutex::new(HashMap::new()))
+/// The process cache of rules: thread-safe (one mutex, held only to look up and insert: two
+/// threads asking one new rule may both build it, the same bits, and one copy is kept) and bounded
+/// by [`CACHE_BITS`] (issue 34): a long run over many distinct (alpha, beta), such as a sweep in
+/// theta or the differential fuzzer, empties it when the next rule would pass the bound.
+struct Cache {
+    rules: HashMap<Key, Arc<GaussJacobiRule>>,
+    /// Mantissa bits held: sum over the rules of 2 n prec.
+    bits: u64,
+}
+
+/// Most mantissa bits the cache holds: 2^30 (128 MiB), e.g. 120 rules of 3000 nodes at 1500 bits,
+/// or every rule of a verified 30-digit solve many times over.
+pub const CACHE_BITS: u64 = 1 << 30;
+
+fn cache() -> &'static Mutex<Cache> {
+    static CACHE: OnceLock<Mutex<Cache>> = OnceLock::new();
+    CACHE.get_or_init(|| Mutex::new(Cache { rules: HashMap::new(), bits: 0 }))
+}
+
+/// The mantissa bits of a rule (nodes and weights).
+fn rule_bits(r: &GaussJacobiRule) -> u64 {
+    2 * r.nodes.len() as u64 * u64::from(r.prec)
+}
+
+/// Rules and mantissa bits the process cache holds now (for tests of its bound).
+pub fn cache_size() -> (usize, u64) {
+    cache().lock().map_or((0, 0), |c| (c.rules.len(), c.bits))
 }
 
 /// The n-point Gauss–Jacobi rule for $(1-u)^\alpha(1+u)^\beta$ at `prec` bits, from the process
@@ -127,7 +151,7 @@ pub fn gauss_jacobi(alpha: &Float, beta: &Float, n: usize, prec: u32) -> Result<
     let (ka, kb) = (alpha.to_integer_exp(), beta.to_integer_exp());
     let lifted = (ka.clone(), kb.clone(), n, prec, true);
     cached((ka, kb, n, prec, false), || {
-        let start = cache().lock().ok().and_then(|c| c.get(&lifted).cloned());
+        let start = cache().lock().ok().and_then(|c| c.rules.get(&lifted).cloned());
         uncached_from(alpha, beta, n, prec, start.map(|r| r.nodes.iter().map(Float::to_f64).collect()))
     })
 }
@@ -158,21 +182,40 @@ pub fn gauss_jacobi_f64_lifted(
 
 /// The rule of `key` from the process cache, built by `build` (and kept) the first time.
 fn cached<E>(key: Key, build: impl FnOnce() -> Result<GaussJacobiRule, E>) -> Result<Arc<GaussJacobiRule>, E> {
-    if let Some(r) = cache().lock().ok().and_then(|c| c.get(&key).cloned()) {
+    if let Some(r) = cache().lock().ok().and_then(|c| c.rules.get(&key).cloned()) {
         return Ok(r);
     }
     let rule = Arc::new(build()?);
     if let Ok(mut c) = cache().lock() {
-        c.insert(key, rule.clone());
+        c.insert(key, rule.clone(), CACHE_BITS);
     }
     Ok(rule)
+}
+
+impl Cache {
+    /// Keeps `rule` under `key`, first emptying the cache when it would pass `bound` bits (a rule
+    /// larger than the bound alone is not kept).
+    fn insert(&mut self, key: Key, rule: Arc<GaussJacobiRule>, bound: u64) {
+        let bits = rule_bits(&rule);
+        if self.bits + bits > bound {
+            self.rules.clear();
+            self.bits = 0;
+        }
+        if bits <= bound {
+            if let Some(old) = self.rules.insert(key, rule) {
+                self.bits -= rule_bits(&old);
+            }
+            self.bits += bits;
+        }
+    }
 }
 
 /// Empties the process cache of [`gauss_jacobi`] and [`gauss_jacobi_f64_lifted`] (it grows by one
 /// rule per distinct (alpha, beta, n, prec), e.g. along a sweep in theta).
 pub fn clear_cache() {
     if let Ok(mut c) = cache().lock() {
-        c.clear();
+        c.rules.clear();
+        c.bits = 0;
     }
 }
 
@@ -531,6 +574,29 @@ pub fn pi(prec: u32) -> Float {
 mod tests {
     use super::double_double::LANES;
     use super::*;
+
+    /// See: issue 34 (4). The process cache is bounded: a rule that would pass the bound empties
+    /// it first, the count of bits held is the sum over the rules kept, and a rule larger than the
+    /// bound is returned but not kept.
+    #[test]
+    fn the_cache_is_bounded() {
+        let (a, b) = (Float::with_val(64, -0.5), Float::with_val(64, 0.5));
+        let rule = |n: usize, prec: u32| Arc::new(uncached_from(&a, &b, n, prec, None).unwrap());
+        let key = |n: usize, prec: u32| (a.to_integer_exp(), b.to_integer_exp(), n, prec, false);
+        let mut c = Cache { rules: HashMap::new(), bits: 0 };
+        let bound = 2 * 16 * 128 * 2; // two 16-node rules at 128 bits
+        for n in [16usize, 16, 17, 18] {
+            let r = rule(n.min(16), 128);
+            c.insert(key(n, 128), r, bound);
+            let held: u64 = c.rules.values().map(|r| rule_bits(r)).sum();
+            assert_eq!(c.bits, held);
+            assert!(c.bits <= bound, "{} > {bound}", c.bits);
+        }
+        // The fourth distinct key passed the bound: the cache was emptied and holds it alone.
+        assert_eq!(c.rules.len(), 1);
+        c.insert(key(64, 512), rule(64, 512), bound);
+        assert!(c.rules.is_empty() && c.bits == 0);
+    }
 
     /// Tolerance 2^(-prec + c): c = 12 covers the O(n) rounding errors of sums of n <= 100 terms
     /// of size <= 4 (|x|^k <= 1, weights sum to mu0 <= ~4).

@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod chebyshev;
 pub mod complex_series;
+pub mod elementary;
 pub mod evaluate;
 pub mod exact;
 pub mod fixed_float;

@@ -107,8 +107,18 @@ pub fn tension_points_of<'a>(
 /// The loading path as JSON: one object per contact l_j (values on the scales l_j and P2_j of
 /// that contact, `path` digits).
 pub fn path_json(path: &[LawPathPoint], digits: f64, requested: u32) -> Value {
-    let print = |x: &Float, scale: &Float| Measured::mpfr(x.clone(), scale, digits).print(requested);
-    Value::Array(
+    path_json_held(path, digits, requested).0
+}
+
+/// [`path_json`] and the digits its printed values hold ([`Measured::held`], their minimum).
+fn path_json_held(path: &[LawPathPoint], digits: f64, requested: u32) -> (Value, f64) {
+    let held = std::cell::Cell::new(digits);
+    let print = |x: &Float, scale: &Float| {
+        let m = Measured::mpfr(x.clone(), scale, digits);
+        held.set(held.get().min(m.held(requested)));
+        m.print(requested)
+    };
+    let v = Value::Array(
         path.iter()
             .map(|p| {
                 json!({
@@ -122,7 +132,8 @@ pub fn path_json(path: &[LawPathPoint], digits: f64, requested: u32) -> Value {
                 })
             })
             .collect(),
-    )
+    );
+    (v, held.get())
 }
 
 /// The JSON object of a verified loading-law solution at `requested` digits.
@@ -176,57 +187,70 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     let v = &sol.values;
     let d = &sol.digits;
     let sc = LawScales::new(p, sol);
-    let print = |x: &Float, scale: &Float, digits: f64| Measured::mpfr(x.clone(), scale, digits).print(requested);
+    // What the printed values of each accuracy group hold (issue 34: a printed value holds the
+    // digits claimed for it): ends (lambda, a, b, c, l, x), loads, fields (with the friction needed).
+    let held = [d.ends, d.loads, d.fields].map(std::cell::Cell::new);
+    let (ends_g, loads_g, fields_g) = (&held[0], &held[1], &held[2]);
+    let print_in = |group: &std::cell::Cell<f64>, x: &Float, scale: &Float, digits: f64| {
+        let m = Measured::mpfr(x.clone(), scale, digits);
+        group.set(group.get().min(m.held(requested)));
+        m.print(requested)
+    };
     let mut m = Map::new();
     m.insert("problem".into(), json!("adhesion"));
     m.insert("law".into(), law_json(p.law()));
     // lambda = pi l/L: none for the single punch.
     let lambda = match p.period() {
-        crate::model::Period::Finite(_) => json!(print(&v.lambda, &v.lambda, d.ends)),
+        crate::model::Period::Finite(_) => json!(print_in(ends_g, &v.lambda, &v.lambda, d.ends)),
         crate::model::Period::Infinite => Value::Null,
     };
     m.insert("lambda".into(), lambda);
     for (key, x) in [("a", &v.a), ("b", &v.b), ("c", &v.c), ("l", &v.l)] {
-        m.insert(key.into(), json!(print(x, &sc.length, d.ends)));
+        m.insert(key.into(), json!(print_in(ends_g, x, &sc.length, d.ends)));
     }
-    m.insert("P1".into(), json!(print(&v.p1, &sc.load, d.loads)));
-    m.insert("P2".into(), json!(print(&v.p2, &sc.load, d.loads)));
+    m.insert("P1".into(), json!(print_in(loads_g, &v.p1, &sc.load, d.loads)));
+    m.insert("P2".into(), json!(print_in(loads_g, &v.p2, &sc.load, d.loads)));
     let friction = friction_needed(&v.points, &sc.stress, d.fields);
     m.insert(
         "friction_needed".into(),
-        friction.as_ref().map_or(Value::Null, |(r, scale, _)| json!(print(r, scale, d.fields))),
+        friction.as_ref().map_or(Value::Null, |(r, scale, _)| json!(print_in(fields_g, r, scale, d.fields))),
     );
     m.insert("friction_needed_at_xh".into(), friction.as_ref().map_or(Value::Null, |(_, _, xh)| json!(xh)));
     let ends = if v.ends.is_empty() { Value::Null } else { end_stress_json(sol, requested) };
     m.insert("end_stress".into(), ends);
     m.insert("digits_requested".into(), json!(requested.to_string()));
-    m.insert("digits_verified".into(), json!(digits_text(d.headline)));
-    m.insert(
-        "accuracy".into(),
-        json!({
-            "ends": digits_text(d.ends),
-            "loads": digits_text(d.loads),
-            "fields": digits_text(d.fields),
-            "path": if v.path.is_empty() { Value::Null } else { json!(digits_text(d.path)) },
-        }),
-    );
     let points: Vec<Value> = v
         .points
         .iter()
         .map(|pt| {
             json!({
                 "xh": exact_series::q_text(&pt.xh),
-                "x": print(&pt.x, &sc.length, d.ends),
-                "psi": print(&pt.psi, &sc.psi, d.fields),
-                "phi": print(&pt.phi, &sc.phi, d.fields),
-                "q1": print(&pt.q1, &sc.stress, d.fields),
-                "q2": print(&pt.q2, &sc.stress, d.fields),
+                "x": print_in(ends_g, &pt.x, &sc.length, d.ends),
+                "psi": print_in(fields_g, &pt.psi, &sc.psi, d.fields),
+                "phi": print_in(fields_g, &pt.phi, &sc.phi, d.fields),
+                "q1": print_in(fields_g, &pt.q1, &sc.stress, d.fields),
+                "q2": print_in(fields_g, &pt.q2, &sc.stress, d.fields),
             })
         })
         .collect();
-    m.insert("points".into(), Value::Array(points));
     // The f64 method gives neither the path at l_j = j l/16 nor the end stresses: null.
-    let path = if v.path.is_empty() { Value::Null } else { path_json(&v.path, d.path, requested) };
+    let (path, path_held) = match v.path.is_empty() {
+        true => (Value::Null, f64::INFINITY),
+        false => path_json_held(&v.path, d.path, requested),
+    };
+    // The headline: the solution's own, at most what every printed group holds.
+    let headline = held.iter().map(std::cell::Cell::get).fold(d.headline.min(path_held), f64::min);
+    m.insert("digits_verified".into(), json!(digits_text(headline)));
+    m.insert(
+        "accuracy".into(),
+        json!({
+            "ends": digits_text(ends_g.get()),
+            "loads": digits_text(loads_g.get()),
+            "fields": digits_text(fields_g.get()),
+            "path": if v.path.is_empty() { Value::Null } else { json!(digits_text(path_held)) },
+        }),
+    );
+    m.insert("points".into(), Value::Array(points));
     m.insert("path".into(), path);
     let mut warnings = tension_warnings(&v.points, &sc.stress, d.fields, requested);
     for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
@@ -277,25 +301,34 @@ fn end_stress_json(sol: &LawSolution, requested: u32) -> Value {
     let v = &sol.values;
     let d = &sol.digits;
     let mut m = Map::new();
+    // What the printed values hold (issue 34), for the digits stated below.
+    let (held_friction, held_phases) = (std::cell::Cell::new(d.friction), std::cell::Cell::new(d.end_phases));
+    let print_in = |held: &std::cell::Cell<f64>, m: Measured| {
+        held.set(held.get().min(m.held(requested)));
+        m.print(requested)
+    };
     for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
         let one = Float::with_val(end.phase.prec(), 1);
         let mut friction = Map::new();
         for (k, mu) in crate::loading_law::ends::DISTANCES.iter().zip(&end.friction_needed) {
             let value = mu
                 .as_ref()
-                .map_or(Value::Null, |mu| json!(Measured::mpfr(mu.clone(), mu, d.friction).print(requested)));
+                .map_or(Value::Null, |mu| json!(print_in(&held_friction, Measured::mpfr(mu.clone(), mu, d.friction))));
             friction.insert(format!("1e{k}"), value);
         }
         m.insert(
             name.into(),
             json!({
-                "phase": Measured::mpfr(end.phase.clone(), &one, d.end_phases).print(requested),
+                "phase": print_in(&held_phases, Measured::mpfr(end.phase.clone(), &one, d.end_phases)),
                 "tension_within": Measured::mpfr(end.tension_within.clone(), &end.tension_within, sol.tension_zone_digits()).print(requested),
                 "friction_needed_at_distance": Value::Object(friction),
             }),
         );
     }
-    m.insert("digits".into(), json!({"friction": digits_text(d.friction), "phases": digits_text(d.end_phases)}));
+    m.insert(
+        "digits".into(),
+        json!({"friction": digits_text(held_friction.get()), "phases": digits_text(held_phases.get())}),
+    );
     Value::Object(m)
 }
 

@@ -33,7 +33,7 @@ pub fn sliding_json(
             json!({
                 "quantity": c.quantity,
                 "approximant": format!("[{}/{}]", c.l, c.m),
-                "digits_estimated": format!("{:.1}", c.digits),
+                "digits_estimated": render::digits_text(c.digits),
                 "poles": c.poles,
                 "map": c.map.unwrap_or("none: Pade in w"),
             })

@@ -14,7 +14,9 @@ use serde_json::json;
 pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention) -> SlidingAnswer {
     let acc = &s.accuracy;
     let (g, fd) = (acc.contact, acc.f_def);
-    let exact = requested as f64;
+    // Exact inputs (and exact multiples of them) rounded once at the working precision: more than
+    // the digits requested; one above them so that the printed text holds the request.
+    let exact = requested as f64 + 1.0;
     let scale = |q: SlidingScale| q.mpfr(&s.k, &s.l, &s.p2, &s.max_pressure);
     let length = scale(SlidingScale::Length);
     let on = |x: &rug::Float, sc: &rug::Float, d: f64| Measured::mpfr(x.clone(), sc, d);
@@ -41,7 +43,9 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention
         a: on(&s.a, &length, g),
         b: on(&s.b, &length, g),
         c: on(&s.c, &length, g),
-        p1: on(&s.p1, &s.p2, g),
+        // P1 = mu P2 + 2 l tau0 carries l's relative error in its tau0 part: at most 10^-g |P1|,
+        // which on the scale P2 is g - log10(|P1|/P2) digits when |P1| > P2 (issue 34, fuzzing).
+        p1: on(&s.p1, &s.p2, g - p1_excess(&s.p1, &s.p2)),
         p2: on(&s.p2, &s.p2, exact),
         f_def: on(&s.f_def, &scale(SlidingScale::DeformationForce), fd),
         wear_per_distance: Some(on(&s.wear_per_distance, &s.wear_per_distance, exact)),
@@ -66,5 +70,16 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention
             })
             .collect(),
         physicality: Some(s.physicality.clone()),
+    }
+}
+
+/// log10(|P1|/P2) when |P1| > P2, else 0: the digits P1's error, relative to |P1|, loses on the
+/// scale P2.
+fn p1_excess(p1: &rug::Float, p2: &rug::Float) -> f64 {
+    let ratio = rug::Float::with_val(64, p1.abs_ref()) / rug::Float::with_val(64, p2.abs_ref());
+    if ratio.is_finite() && ratio > 1u32 {
+        ratio.log10().to_f64()
+    } else {
+        0.0
     }
 }

@@ -8,7 +8,7 @@
 //! and the Problem 2 scales of `crate::adhesion`.
 
 use crate::numerics::accuracy::readable_f64;
-use crate::numerics::accuracy::{fmt_f64, fmt_mpfr, print_f64, print_mpfr};
+use crate::numerics::accuracy::{fmt_f64, fmt_mpfr, held_digits_f64, held_digits_mpfr, print_f64, print_mpfr};
 use crate::sliding::physicality::Assessment;
 use rug::Float;
 use serde_json::{json, Map, Value};
@@ -65,6 +65,30 @@ impl Measured {
             ValueAndScale::Mpfr(v, s) => print_mpfr(v, s, self.digits, requested),
         }
     }
+
+    /// The digits of its scale that the text [`Measured::print`] gives holds (its own digits
+    /// less what the rounding of the text costs: [`held_digits_mpfr`]).
+    pub fn held(&self, requested: u32) -> f64 {
+        let text = self.print(requested);
+        match &self.pair {
+            ValueAndScale::F64(v, s) => held_digits_f64(&text, *v, *s, self.digits),
+            ValueAndScale::Mpfr(v, s) => held_digits_mpfr(&text, v, s, self.digits),
+        }
+    }
+}
+
+/// The smallest [`Measured::held`] of `values` (infinite for none).
+fn held_min<'a>(values: impl IntoIterator<Item = &'a Measured>, requested: u32) -> f64 {
+    values.into_iter().map(|m| m.held(requested)).fold(f64::INFINITY, f64::min)
+}
+
+/// The accuracy table as claimed for the printed texts: each entry at most what the printed values
+/// of its key hold (`printed(key)`), and the headline at most what every other printed value holds
+/// (`others`): a printed value holds the digits claimed for it (issue 34).
+fn held_accuracy(accuracy: &[(String, f64)], printed: impl Fn(&str) -> f64, others: f64) -> (Vec<(String, f64)>, f64) {
+    let table: Vec<(String, f64)> = accuracy.iter().map(|(k, d)| (k.clone(), d.min(printed(k)))).collect();
+    let head = table.iter().map(|(_, d)| *d).fold(others, f64::min);
+    (table, head)
 }
 
 /// Whether the digits of an answer were verified (by a second run) or estimated.
@@ -177,15 +201,19 @@ impl SlidingAnswer {
     }
 }
 
-/// Digits as printed in every answer: one decimal.
+/// Digits as printed in every answer: one decimal, rounded down (a claim of 14.96 digits shown as
+/// "15.0" would claim more than is held; issue 34).
 pub fn digits_text(d: f64) -> String {
-    format!("{d:.1}")
+    if !d.is_finite() {
+        return format!("{d:.1}");
+    }
+    format!("{:.1}", (d * 10.0).floor() / 10.0)
 }
 
-/// `digits_verified` (or `digits_verified: null` and `digits_estimated`): the minimum of the
-/// accuracy table.
-fn headline(m: &mut Map<String, Value>, kind: DigitsKind, accuracy: &[(String, f64)]) {
-    let head = digits_text(accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min));
+/// `digits_verified` (or `digits_verified: null` and `digits_estimated`): `head`, the minimum of
+/// the accuracy table and of what the other printed values hold.
+fn headline(m: &mut Map<String, Value>, kind: DigitsKind, head: f64) {
+    let head = digits_text(head);
     match kind {
         DigitsKind::Verified => {
             m.insert("digits_verified".into(), json!(head));
@@ -222,12 +250,38 @@ pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
         m.insert(k.clone(), v.clone());
     }
     m.insert("digits_requested".into(), json!(requested.to_string()));
-    headline(&mut m, ans.kind, &ans.accuracy);
+    // Every printed value under the key of the accuracy table that claims its digits ("p" or
+    // "p[i]" for the pressure), or none (then the headline claims them).
+    let keyed: Vec<(String, &Measured)> = [
+        ("lambda", ans.lambda.as_ref()),
+        ("l", Some(&ans.l)),
+        ("a", Some(&ans.a)),
+        ("b", Some(&ans.b)),
+        ("c", Some(&ans.c)),
+        ("P1", Some(&ans.p1)),
+        ("P2", Some(&ans.p2)),
+        ("F_def", Some(&ans.f_def)),
+        ("wear_per_distance", ans.wear_per_distance.as_ref()),
+        ("wear_rate", ans.wear_rate.as_ref()),
+        ("worn_area_per_distance", ans.worn_area_per_distance.as_ref()),
+    ]
+    .into_iter()
+    .filter_map(|(k, m)| m.map(|m| (k.to_string(), m)))
+    .chain(ans.pressure.iter().enumerate().flat_map(|(i, r)| {
+        let p_key = if ans.accuracy.iter().any(|(k, _)| k == "p") { "p".to_string() } else { format!("p[{i}]") };
+        [("x".to_string(), &r.x), (p_key, &r.p)]
+    }))
+    .collect();
+    let in_table = |k: &str| ans.accuracy.iter().any(|(t, _)| t == k);
+    let printed = |key: &str| held_min(keyed.iter().filter(|(k, _)| k == key).map(|(_, m)| *m), requested);
+    let others = held_min(keyed.iter().filter(|(k, _)| !in_table(k)).map(|(_, m)| *m), requested);
+    let (accuracy, head) = held_accuracy(&ans.accuracy, printed, others);
+    headline(&mut m, ans.kind, head);
     let mut acc = Map::new();
     if let Some(n) = &ans.note {
         acc.insert("note".into(), json!(n));
     }
-    for (k, d) in &ans.accuracy {
+    for (k, d) in &accuracy {
         acc.insert(k.clone(), json!(digits_text(*d)));
     }
     m.insert("accuracy".into(), Value::Object(acc));
@@ -349,8 +403,17 @@ pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value>
     m.insert("P2".into(), json!(ans.p2.print(requested)));
     m.insert("half_width".into(), json!(ans.half_width.print(requested)));
     m.insert("digits_requested".into(), json!(requested.to_string()));
-    headline(&mut m, ans.kind, &ans.accuracy);
-    let acc: Map<String, Value> = ans.accuracy.iter().map(|(k, d)| (k.clone(), json!(digits_text(*d)))).collect();
+    let printed = |key: &str| match key {
+        "size" => held_min([&ans.p2, &ans.half_width].into_iter().chain(&ans.lambda), requested),
+        k => ans
+            .fields
+            .iter()
+            .find(|(name, _)| name == k)
+            .map_or(f64::INFINITY, |(_, rows)| held_min(rows.iter().map(|r| &r.value), requested)),
+    };
+    let (accuracy, head) = held_accuracy(&ans.accuracy, printed, f64::INFINITY);
+    headline(&mut m, ans.kind, head);
+    let acc: Map<String, Value> = accuracy.iter().map(|(k, d)| (k.clone(), json!(digits_text(*d)))).collect();
     m.insert("accuracy".into(), Value::Object(acc));
     for (name, rows) in &ans.fields {
         let list: Vec<Value> =
@@ -390,8 +453,10 @@ mod tests {
         assert_eq!(m.print(30), "0");
         let f = Measured::f64(-1.32137139771671e-19, 2.3e-3, 14.0);
         assert_eq!(f.print(15), "0");
+        // 0.123456789 known to 5e-7: places 1e-1 .. 1e-8 (a guard digit below the bound's 1e-7).
         let v = Measured::f64(0.123456789, 0.5, 6.0);
-        assert_eq!(v.print(15), "1.2346e-1");
+        assert_eq!(v.print(15), "1.2345679e-1");
+        assert!(v.held(15) > 5.99 && v.held(15) <= 6.0);
     }
 
     /// Issue 30: a tension zone near the edge printed "1.00000 to 1.00000"; its ends now show the

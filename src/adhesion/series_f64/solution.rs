@@ -188,7 +188,7 @@ fn half_width_for_load(
     let guess = match period {
         Some(l) => {
             let t = target * pi * pi / (ek * l * l);
-            (-t / (2.0 * cp)).exp().acos() * l / pi
+            crate::numerics::elementary::acos_exp_neg(t / (2.0 * cp)) * l / pi
         }
         None => (target / (cp * ek)).sqrt(),
     };

@@ -228,7 +228,7 @@ fn lambda_for_load(
     let half_pi = std::f64::consts::FRAC_PI_2;
     // Kuznetsov-like first guess: P ~ 2 C_P ln sec(lambda).
     let t = target.to_f64();
-    let mut lam0 = (-t / (2.0 * cp)).exp().acos();
+    let mut lam0 = crate::numerics::elementary::acos_exp_neg(t / (2.0 * cp));
     if !(lam0.is_finite()) || lam0 <= 0.0 {
         lam0 = (t / cp).sqrt().min(1.0);
     }

@@ -144,9 +144,16 @@ pub(super) fn sinusoid_scan(
     let mut out = Vec::new();
     let mut max_load: f64 = 0.0;
     let mut prev: Option<(f64, f64)> = None;
-    for j in 1..=STEPS {
-        // Denser near 0 (small loads): lambda_j = SCAN_MAX (j/STEPS)^1.5.
-        let lam = SCAN_MAX * (j as f64 / STEPS as f64).powf(1.5);
+    // Denser near 0 (small loads): lambda_j = SCAN_MAX (j/STEPS)^1.5; below the first, from a
+    // quarter of the single-punch estimate of lambda ([3.10], osculating k) by factors of 4
+    // (issue 34: a load carried by a contact with lambda ~ 1e-11 had no sign change on the grid
+    // and was refused as carried by none).
+    let first = SCAN_MAX * (1.0 / STEPS as f64).powf(1.5);
+    let small = std::f64::consts::PI * prm.l_s(p2) / big_l;
+    let below = std::iter::successors((small.is_finite() && small > 0.0).then_some(small / 4.0), |x| Some(x * 4.0))
+        .take_while(|&x| x < first);
+    let grid = (1..=STEPS).map(|j| SCAN_MAX * (j as f64 / STEPS as f64).powf(1.5));
+    for lam in below.chain(grid) {
         let col = collocation(prm.theta, n_scan(lam))?;
         let map = Map::periodic(big_l, lam);
         let (bx, by) = sinusoid_bases(&col, prm, &map)?;

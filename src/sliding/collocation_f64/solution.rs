@@ -1,7 +1,7 @@
 //! Results of the f64 method: the solutions, their accuracy estimate (differences to the check
 //! run on the scales of the accuracy rule) and the digits per quantity; and the solver's tunables.
 
-use crate::numerics::accuracy::{verified_digits, F64_DIGITS_CAP};
+use crate::numerics::accuracy::f64_digits_nodes;
 
 /// Tunables of the f64 collocation solver.
 #[derive(Debug, Clone, PartialEq)]
@@ -190,12 +190,26 @@ pub struct SlidingSolutionF64 {
 }
 
 impl SlidingSolutionF64 {
-    /// Verified digits of each output under the project's accuracy rule: [`verified_digits`] of
-    /// the difference to the check run on the quantity's scale ([`Quantity::scale`]), at most
-    /// [`F64_DIGITS_CAP`]. Index the result by [`Quantity`].
+    /// Verified digits of each output under the project's accuracy rule: [`f64_digits_nodes`] of the
+    /// difference to the check run on the quantity's scale ([`Quantity::scale`]), with the f64
+    /// round-off floor. Index the result by [`Quantity`].
     pub fn digits(&self) -> PerQuantity {
         let (d, s) = (&self.accuracy.differences, &self.accuracy.scales);
-        PerQuantity(Quantity::ALL.map(|q| verified_digits(d[q], q.scale(s), F64_DIGITS_CAP)))
+        PerQuantity(Quantity::ALL.map(|q| f64_digits_nodes(d[q], self.value(q), q.scale(s), self.nodes)))
+    }
+
+    /// The value of quantity `q` (p: its scale, max p, whose round-off bounds every p's).
+    pub fn value(&self, q: Quantity) -> f64 {
+        match q {
+            Quantity::Size => self.l,
+            Quantity::A => self.a,
+            Quantity::B => self.b,
+            Quantity::C => self.c,
+            Quantity::P1 => self.p1,
+            Quantity::P2 => self.p2,
+            Quantity::FDef => self.f_def,
+            Quantity::Pressure => self.accuracy.scales.pressure,
+        }
     }
 }
 

@@ -568,9 +568,13 @@ pub fn refusal_in_reach(
         return refusal(problem.load(), reasons, ranges);
     };
     let limit = LoadLimit::of(problem);
-    // The full-contact load, when the load is at or above it.
-    let exceeded = match limit {
-        Some(LoadLimit::FullContact(m)) if load >= m => Some(m),
+    // The full-contact load, when the load is at or above it: compared exactly (issue 34: a load
+    // given to 20 digits just below pi E* D was refused as above it by an f64 comparison).
+    let exceeded = match (limit, problem.shape()) {
+        (Some(LoadLimit::FullContact(m)), PunchShape::Sinusoidal { amplitude }) => {
+            let e_d = problem.material().contact_modulus() * amplitude;
+            (crate::numerics::exact::cmp_pi_times(v, &e_d) != std::cmp::Ordering::Less).then_some(m)
+        }
         _ => None,
     };
     if let (Some(m), true) = (exceeded, reasons.is_empty()) {

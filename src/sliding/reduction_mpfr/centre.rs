@@ -36,7 +36,14 @@ pub fn centre(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacobiRule) -
         });
         closed_terms(params, size, &raw)
     };
-    let tol = Float::with_val(p, Float::with_val(p, &size.l) >> (p as i32 - 8).max(1));
+    // The step's floor: 2^-(prec-8) of max(l, |c|). A centre far off the contact's own size (adhesive
+    // friction at a tiny contact: c = -100 l) carries round-off of |c|, not of l; a floor of l
+    // alone was never reached (issue 34, fuzzing: l = 2.2e-11, c = -2.5e-9 refused as "no centre").
+    let tol = |c: &Float| {
+        let big =
+            if Float::with_val(p, c.abs_ref()) > size.l { Float::with_val(p, c.abs_ref()) } else { size.l.clone() };
+        Float::with_val(p, big >> (p as i32 - 8).max(1))
+    };
     let mut c = Float::with_val(p, 0);
     if !defined_at(params, &size.l, &c) {
         return None;
@@ -61,7 +68,7 @@ pub fn centre(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacobiRule) -
             }
         }
         c = next;
-        if Float::with_val(p, step.abs_ref()) <= tol {
+        if Float::with_val(p, step.abs_ref()) <= tol(&c) {
             let (t, _) = terms_at(&c);
             return t.re[0].is_finite().then(|| ShiftSolution { c, p2: t.re[0].clone() });
         }

@@ -110,17 +110,24 @@ fn set(curves: &mut Curves, i: usize, values: &[Option<f64>]) {
 /// they are used: next to a change of sign (a bracket's end) or a missing branch. If one of them
 /// disagreed in sign, every such point is recomputed (never observed; the curves are then as
 /// without `sign_scan`).
+///
+/// Below the grid's first size the scan starts at `small` / 4 (`small`: the single-punch estimate
+/// of lambda at the load, [3.10] with the osculating curvature) and climbs by factors of 4 to it:
+/// a load carried by a contact below cap/GRID is bracketed there (issue 34: a load of 1.7e-27, lambda
+/// ~ 1e-11, had no sign change on the grid and was refused as carried by no contact).
 pub(super) fn load_curves(
     params: &SlidingParamsMpfr,
     cap: f64,
+    small: f64,
     rel: &dyn Fn(&ShiftSolution) -> f64,
     sign_scan: bool,
 ) -> Result<Curves, SlidingError> {
     let exact = |s: f64| scan_values(params, s, bucket(nodes_for(s, SCAN_DIGITS)), rel);
+    let sizes = scan_sizes(cap, small);
+    let grid = sizes.len();
     let mut curves: Curves = [vec![], vec![]];
     let mut sign_only = vec![];
-    for i in 1..=GRID {
-        let s = cap * i as f64 / GRID as f64;
+    for &s in &sizes {
         let cheap = match sign_scan {
             true => scan_signs(params, s, bucket(nodes_for(s, SCAN_DIGITS)), rel)?,
             false => None,
@@ -140,9 +147,9 @@ pub(super) fn load_curves(
             _ => true,
         })
     };
-    let used: Vec<usize> = (0..GRID)
+    let used: Vec<usize> = (0..grid)
         .filter(|&i| {
-            sign_only[i] && ((i > 0 && differs(&curves, i - 1, i)) || (i + 1 < GRID && differs(&curves, i, i + 1)))
+            sign_only[i] && ((i > 0 && differs(&curves, i - 1, i)) || (i + 1 < grid && differs(&curves, i, i + 1)))
         })
         .collect();
     let sign = |v: Option<f64>| v.map(|v| v.partial_cmp(&0.0));
@@ -154,10 +161,26 @@ pub(super) fn load_curves(
         sign_only[i] = false;
     }
     if disagreed {
-        for i in (0..GRID).filter(|&i| sign_only[i]) {
+        for i in (0..grid).filter(|&i| sign_only[i]) {
             let values = exact(curves[0][i].0)?;
             set(&mut curves, i, &values);
         }
     }
     Ok(curves)
+}
+
+/// The sizes of the scan: `small`/4 times 4^j below the grid (while below cap/GRID; none when
+/// `small` is not a positive number below it), then cap i/GRID, i = 1..=GRID.
+pub(crate) fn scan_sizes(cap: f64, small: f64) -> Vec<f64> {
+    let first = cap / GRID as f64;
+    let mut sizes = vec![];
+    if small.is_finite() && small > 0.0 {
+        let mut s = small / 4.0;
+        while s < first {
+            sizes.push(s);
+            s *= 4.0;
+        }
+    }
+    sizes.extend((1..=GRID).map(|i| cap * i as f64 / GRID as f64));
+    sizes
 }

@@ -97,10 +97,12 @@ pub(super) fn locate_with(setup: &Setup, sign_scan: bool) -> Result<Vec<Located>
             let (s0, smax) = match period {
                 None => (ls, f64::INFINITY),
                 Some(l) => {
-                    // Kuznetsov [2.15]: cos(lambda) = exp(-pi^2 l_s^2/(2 L^2)).
+                    // Kuznetsov [2.15]: cos(lambda) = exp(-pi^2 l_s^2/(2 L^2)), without the
+                    // cancellation of acos(exp(.)) (issue 34: P2 = 1e-20 at E* = k = L = 1 gave
+                    // acos(1) = 0, the bracket started at 1e-300 and never reached lambda ~ 1e-10).
                     let l = l.to_f64();
                     let x = std::f64::consts::PI * ls / l;
-                    let lam = (-(x * x) / 2.0).exp().acos();
+                    let lam = crate::numerics::elementary::acos_exp_neg(x * x / 2.0);
                     (lam.clamp(1e-300, cap * 0.99), cap)
                 }
             };
@@ -148,10 +150,14 @@ pub(super) fn locate_with(setup: &Setup, sign_scan: bool) -> Result<Vec<Located>
             }
             Ok(vec![(root_in(|x| f(x, 0), (lo, flo), (hi, fhi))?, 0)])
         }
-        (ShapeMpfr::Sinusoidal { .. }, _, TargetMpfr::NormalLoad(_)) => {
+        (ShapeMpfr::Sinusoidal { .. }, period, TargetMpfr::NormalLoad(p2)) => {
             // Both centre branches come from the same two integrals: one scan gives both curves.
             let rel = |v: &ShiftSolution| (v.p2.to_f64() - target) / target;
-            let curves = load_curves(params, cap, &rel, sign_scan)?;
+            // The single-punch estimate of lambda (osculating k), where the scan starts below its
+            // grid.
+            let small =
+                period.as_ref().map_or(f64::NAN, |l| std::f64::consts::PI * params.l_s(p2).to_f64() / l.to_f64());
+            let curves = load_curves(params, cap, small, &rel, sign_scan)?;
             let mut found = vec![];
             for (br, curve) in curves.iter().enumerate() {
                 for w in curve.windows(2) {

@@ -94,6 +94,11 @@ fn coefficients(s: &Series<Poly>, order: usize, sp: &SeriesPoint, prec: u32) -> 
         .collect()
 }
 
+/// Fewest estimated digits the Padé method answers with: the agreement of neighbouring approximants
+/// estimates the error only once they converge (a heuristic; the differential fuzzer's cases,
+/// docs/fuzzing.md, are its evidence).
+pub const MIN_ESTIMATED_DIGITS: f64 = 3.0;
+
 /// One quantity resummed at w: its best value and digits, or the refusal naming every reason.
 /// With a known singularity (`map`) the Pade approximants in z after the conformal map compete with
 /// those in w, chosen by their own estimates (the larger wins; a tie keeps w).
@@ -167,7 +172,9 @@ fn run(
     digits: u32,
     prec: u32,
 ) -> Result<(Run, SlidingParamsMpfr, SeriesPoint, Vec<Float>), Error> {
-    let cap = digits as f64;
+    // One digit above the request: the evaluation at precision_for(digits) bits sees more, and a
+    // cap of exactly the request would leave the printed text (its rounding) below it (issue 34).
+    let cap = digits as f64 + 1.0;
     let params = SlidingParamsMpfr::new(problem, prec)?;
     let sp = SeriesPoint::new(&params)?;
     let xh: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
@@ -301,7 +308,9 @@ pub fn solve_pade_with(
     let prec = precision_for(digits);
     let (first, params, sp, xh) = run(e, problem, points, order, digits, prec)?;
     let (second, ..) = run(e, problem, points, order, digits, prec + VERIFY_EXTRA_BITS)?;
-    let cap = digits as f64;
+    // One digit above the request: the evaluation at precision_for(digits) bits sees more, and a
+    // cap of exactly the request would leave the printed text (its rounding) below it (issue 34).
+    let cap = digits as f64 + 1.0;
     let agree = |x: &Float, y: &Float, scale: &Float| verified_digits_mpfr(&Float::with_val(prec, x - y), scale, cap);
     let (a, b) = (&first.partial, &second.partial);
     let mut acc = first.digits.clone();
@@ -315,10 +324,13 @@ pub fn solve_pade_with(
         }
     }
     acc.headline = acc.contact.min(acc.f_def).min(acc.pressure.unwrap_or(f64::INFINITY));
-    if acc.headline < 1.0 {
+    // Below MIN_ESTIMATED_DIGITS the neighbours' agreement does not estimate the error (issue 34:
+    // the fuzzer found 1.8 digits claimed, 1.4 held, at lambda = 1.48).
+    if acc.headline < MIN_ESTIMATED_DIGITS {
         return Err(Error::NoConvergence {
             what: format!(
-                "the Pade approximants of the series through Lambda^{order} at Lambda = pi l_s/L = {} leave {} estimated digits (< 1)",
+                "the Pade approximants of the series through Lambda^{order} at Lambda = pi l_s/L = {} leave {} estimated \
+                 digits (< {MIN_ESTIMATED_DIGITS}: neighbours agreeing this little do not estimate the error)",
                 readable_mpfr(&sp.big_lambda),
                 readable_f64((acc.headline * 10.0).floor() / 10.0)
             ),

@@ -184,7 +184,9 @@ pub fn solve_series_with(
             ),
         });
     }
-    let cap = digits as f64;
+    // One digit above the request: the evaluation at precision_for(digits) bits sees more, and a
+    // cap of exactly the request would leave the printed text (its rounding) below it (issue 34).
+    let cap = digits as f64 + 1.0;
     let err_contact = tail(&t_l, rho) + tail(&of(&|v| v.c.clone()), rho);
     let contact = verified_digits_mpfr(&err_contact, &hi.l, cap);
     let kl_p2 = Float::with_val(prec, &sp.k * &hi.l) * &sp.p2;
