@@ -126,11 +126,14 @@ fn check_loading_law_against_solve(md: &str, out: &std::path::Path) {
     assert_eq!((r[4], r[5], r[6], r[8], r[9]), (&*s("l"), &*s("a"), &*s("b"), &*s("P1"), &*s("P2")), "{v}");
     let verified: Vec<f64> = r[13].split('/').map(|x| x.trim().parse().unwrap()).collect();
     let (ends, path_digits, stresses) = (verified[0], verified[2], verified[3]);
-    assert_eq!(format!("{ends:.1}"), v["accuracy"]["ends"].as_str().unwrap());
-    assert_eq!(format!("{path_digits:.1}"), v["accuracy"]["path"].as_str().unwrap());
+    // The JSON claims what its printed text holds (issue 34): at most what the two runs verified,
+    // which the report's column states.
+    let claim = |k: &str| -> f64 { v["accuracy"][k].as_str().unwrap().parse().unwrap() };
+    assert!(claim("ends") <= ends + 0.05, "ends: {} vs {ends}", claim("ends"));
+    assert!(claim("path") <= path_digits + 0.05, "path: {} vs {path_digits}", claim("path"));
     let (c, l) = (float(&s("c")), float(&s("l")));
     let one = Float::with_val(256, 1);
-    assert!(agree(&float(r[7]), &Float::with_val(256, &c / &l), &one, ends), "c/l {} vs {c}/{l}", r[7]);
+    assert!(agree(&float(r[7]), &Float::with_val(256, &c / &l), &one, claim("ends")), "c/l {} vs {c}/{l}", r[7]);
     // The friction needed at its point.
     let fields: f64 = v["accuracy"]["fields"].as_str().unwrap().parse().unwrap();
     let friction = float(r[10]);
@@ -145,7 +148,8 @@ fn check_loading_law_against_solve(md: &str, out: &std::path::Path) {
         let js = |k: &str| q[k].as_str().unwrap().to_string();
         assert_eq!((p[3], p[4], p[5], p[7], p[8]), (&*js("l"), &*js("a"), &*js("b"), &*js("P1"), &*js("P2")), "{j}");
         let c_over_l = Float::with_val(256, float(&js("c")) / float(&js("l")));
-        assert!(agree(&float(p[6]), &c_over_l, &one, path_digits), "path {j}: {} vs {c_over_l}", p[6]);
+        // Both print what they hold: agreement to the JSON's claim for the path.
+        assert!(agree(&float(p[6]), &c_over_l, &one, claim("path")), "path {j}: {} vs {c_over_l}", p[6]);
     }
     // The charts' data: the largest |q1|/q2 is the friction needed; q1, q2 at its point over E* k l
     // (E* = k = 1) are the JSON's.
