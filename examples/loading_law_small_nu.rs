@@ -1,8 +1,8 @@
 //! The loading-law problem at small nu (issue 12's open point): the MPFR collocation's verified
 //! digits at nu = 0 and 1/10 for n = 1/5 and 1/2 (the f64 march refuses nu <= 0.1; see
-//! `src/adhesion/loading_law/marching.rs`, "Stability"). Run:
+//! `src/growing_contact/march.rs`, "Stability"). Run:
 //! `cargo run --release --example loading_law_small_nu`.
-use periodic_contact::adhesion::loading_law::verified::solve_law;
+use periodic_contact::loading_law::verified::solve_law;
 use periodic_contact::model::{
     Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape,
 };

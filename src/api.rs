@@ -1,8 +1,8 @@
-//! The library's front door (issue 16): the three things users do, each one call, each through
-//! the same validation, defaults and messages as the command line (the CLI's raw arguments ->
-//! validated configuration of [`crate::cli`], then the same library functions):
+//! The library's front door: the three things users do, each one call, each through the same
+//! validation, defaults and messages as the command line (which is a client of these calls):
 //!
-//! 1. **derive an object** ([`derive()`]): the exact series of `periodic-contact series OBJECT`,
+//! 1. **derive an object** ([`derive()`] of a [`SeriesRequest`]): the series of
+//!    `periodic-contact series OBJECT`,
 //!    e.g. the Problem 1 expansions in $\Lambda = \pi l_s / L$ ([3.7]-[3.12] of the paper),
 //!    $l/l_s = 1 + (\theta^2/3 - 1/12)\Lambda^2 + O(\Lambda^4)$;
 //! 2. **solve a problem** ([`solve_toml`], [`solve_file`], or [`solve`] on a parsed [`Scene`]):
@@ -17,24 +17,26 @@
 //! ```
 //! use periodic_contact::api;
 //! // Problem 1 at theta = 1/10: l/l_s = 1 + (theta^2/3 - 1/12) Lambda^2 + ... = 1 - 2/25 Lambda^2 + ...
-//! let parts = api::derive("sliding", 2, &[("theta", "1/10")])?.json();
+//! let parts = api::derive(&api::SeriesRequest::new("sliding", 2).option("theta", "1/10"))?.json();
 //! assert_eq!(parts["parts"][0]["object"], "l_over_ls");
 //! assert_eq!(parts["parts"][0]["coefficients"][1]["text"], "-2/25");
 //! # Ok::<(), api::ApiError>(())
 //! ```
 
-use crate::cli::{args::RawArgs, config::RunConfig};
-use clap::Parser;
+use crate::model::{Convention, Exact};
+use crate::scene::SceneProblem;
+use crate::solve::choice::{solve_choice, Forced, MethodChoice};
 use serde_json::Value;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 pub use crate::asymptotics::adhesion_numeric::AdhesionNumeric;
 pub use crate::asymptotics::catalog::Derived;
 pub use crate::asymptotics::loading_law::LawSeries;
+pub use crate::asymptotics::loading_law_modes::ModeExponent;
 pub use crate::error::{Error, ErrorKind};
 pub use crate::model::ModelError;
 pub use crate::scene::{parse::parse_scene, Method, Scene};
+pub use crate::series_request::{SeriesRequest, ValidSeries, OPTION_NAMES as SERIES_OPTIONS};
 pub use crate::solve::{solve_scene as solve, SolveRequest};
 pub use crate::verification::convergence::{
     parabola_case, sliding_convergence as check_orders, ConvergenceStudy, OrderRow,
@@ -85,156 +87,233 @@ pub enum Derivation {
         object: &'static str,
         /// The parts (e.g. `l_over_ls`, `rbar_minus_rbar_s`, ... for `sliding`).
         parts: Vec<Derived>,
+        /// Whether the Pade approximants were asked ([`Derivation::pade_text`]).
+        pade: bool,
     },
-    /// `loading-law`: numerical coefficients at given nu and n (MPFR, verified by a second run).
-    LoadingLaw(Box<LawSeries>),
+    /// `loading-law`: numerical coefficients at given nu and n (MPFR, verified by a second run),
+    /// with the homogeneous mode's exponent of the loading (docs/theory.md section 10).
+    LoadingLaw {
+        /// The coefficients.
+        series: Box<LawSeries>,
+        /// mu*, the exponent of the loading's homogeneous mode.
+        mode: Box<ModeExponent>,
+    },
     /// `adhesion` with `nu` beyond the exact route's order or with `digits`: numerical
     /// coefficients at nu (MPFR, verified by a second run).
     AdhesionNumeric(Box<AdhesionNumeric>),
 }
 
 impl Derivation {
-    /// The JSON of `--format json`: one part as `{"object", "variable", "order", "symbols",
-    /// "coefficients": [{"power", "text", "latex"}]}`, several as `{"object", "parts": [...]}`.
+    /// The JSON of `--format json`, one schema for every object (docs/theory.md section 16):
+    /// `{"object", "parts": [{"object", "formula", "source", "variable", "order", "symbols",
+    /// "sympy", "mathematica", "coefficients": [{"power", "text", "latex", "sympy"}]}]}`; the
+    /// numerical routes' coefficients are `{"power", "value", "digits"}`, the loading law's
+    /// answer carries its `mode`.
     pub fn json(&self) -> Value {
         match self {
-            Derivation::Exact { object, parts } => match parts.as_slice() {
-                [one] => one.json(),
-                many => serde_json::json!({
-                    "object": object,
-                    "parts": many.iter().map(|d| d.json()).collect::<Vec<_>>(),
-                }),
-            },
-            Derivation::LoadingLaw(s) => s.json(),
+            Derivation::Exact { object, parts, .. } => serde_json::json!({
+                "object": object,
+                "parts": parts.iter().map(|d| d.json()).collect::<Vec<_>>(),
+            }),
+            Derivation::LoadingLaw { series, mode } => {
+                let mut v = series.json();
+                v["mode"] = mode.json(series.order);
+                v
+            }
             Derivation::AdhesionNumeric(s) => s.json(),
         }
     }
 
-    /// The plain text of `--format text`.
+    /// The plain text of `--format text` (with the Pade approximants when they were asked).
     pub fn text(&self) -> String {
         match self {
-            Derivation::Exact { parts, .. } => parts.iter().map(|d| d.text()).collect::<Vec<_>>().join("\n"),
-            Derivation::LoadingLaw(s) => s.text(),
+            Derivation::Exact { object, parts, .. } => {
+                crate::asymptotics::print::render(object, parts, crate::asymptotics::print::SeriesFormat::Text)
+                    + &self.pade_text()
+            }
+            Derivation::LoadingLaw { series, mode } => series.text() + &mode.text(series.order),
             Derivation::AdhesionNumeric(s) => s.text(),
         }
     }
+
+    /// The Pade approximants' text when they were asked (the exact route), else empty.
+    pub fn pade_text(&self) -> String {
+        match self {
+            Derivation::Exact { parts, pade: true, .. } => crate::asymptotics::pade::pade_text(parts),
+            _ => String::new(),
+        }
+    }
 }
 
-/// Option names of [`derive()`] (the CLI's flags without the dashes, `rbar_s` for `--rbar-s`).
-pub const SERIES_OPTIONS: [&str; 11] =
-    ["theta", "xh", "T", "nu", "digits", "ratio", "shape", "coefficients", "degree", "rbar_s", "convention"];
-
-/// The clap error's message without its `error: ` prefix and usage lines.
-fn clap_message(e: &clap::Error) -> String {
-    let text = e.to_string();
-    let first: Vec<&str> = text.lines().take_while(|l| !l.trim_start().starts_with("Usage:")).collect();
-    first.join(" ").trim().trim_start_matches("error: ").split_whitespace().collect::<Vec<_>>().join(" ")
-}
-
-/// Parses the CLI arguments `args` (after the program name) into a validated configuration.
-fn config(args: &[String], what: &str) -> Result<RunConfig, ApiError> {
-    let argv = std::iter::once("periodic-contact".to_string()).chain(args.iter().cloned());
-    let raw = RawArgs::try_parse_from(argv).map_err(|e| ModelError::new(what, args.join(" "), clap_message(&e)))?;
-    Ok(RunConfig::from_args(raw)?)
-}
-
-/// Derives `object` (`kernel`, `weight`, `jacobi`, `sliding`, `adhesion`, `loading-law`) through
-/// power `order`, exactly as `periodic-contact series OBJECT --order ORDER --KEY VALUE ...` does,
-/// with `options` as `(key, value)` pairs, keys from [`SERIES_OPTIONS`] and values as on the
-/// command line (exact rationals as text: `("theta", "1/10")`, `("coefficients", "0,0,1,0,1/10")`,
-/// `("shape", "sinusoidal")`, `("convention", "periodic")`).
+/// Derives what `request` asks, exactly as `periodic-contact series OBJECT --order N --KEY VALUE
+/// ...` does: validated once by [`SeriesRequest::validate`] (the same table and messages as the
+/// command line), then the exact route, the adhesion series' numerical route or the loading law.
+///
+/// ```
+/// use periodic_contact::api::{derive, SeriesRequest};
+/// // Problem 1 at theta = 1/10: l/l_s = 1 - 2/25 Lambda^2 + ...
+/// let d = derive(&SeriesRequest::new("sliding", 2).option("theta", "1/10"))?;
+/// assert_eq!(d.json()["parts"][0]["coefficients"][1]["text"], "-2/25");
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
 ///
 /// # Errors
-/// [`ApiError::Problem`] with [`Error::Input`] for an unknown key or an invalid value (the
-/// message names the flag, the value and the valid range, as the CLI's); [`ApiError::Series`]
-/// when the engine fails; the loading-law series' own errors.
-pub fn derive(object: &str, order: usize, options: &[(&str, &str)]) -> Result<Derivation, ApiError> {
-    let mut args = vec!["series".to_string(), object.to_string(), "--order".into(), order.to_string()];
-    for (key, value) in options {
-        if !SERIES_OPTIONS.contains(key) {
-            return Err(ModelError::new("option", key, format!("must be one of {}", SERIES_OPTIONS.join(", "))).into());
-        }
-        args.push(format!("--{}", key.replace('_', "-")));
-        args.push(value.to_string());
-    }
-    args.extend(["--format".to_string(), "json".to_string()]);
-    match config(&args, &format!("series {object}"))? {
-        RunConfig::Series { object, order, subs, convention, .. } => {
+/// [`ApiError::Problem`] with [`Error::Input`] for an unknown object or option or an invalid
+/// value (the message names the flag, the value and the valid range); [`ApiError::Series`] when
+/// the engine fails; the numerical routes' own errors.
+pub fn derive(request: &SeriesRequest) -> Result<Derivation, ApiError> {
+    derive_valid(request.validate()?)
+}
+
+/// Derives a request already validated ([`SeriesRequest::validate`]; the command line validates
+/// first, to check its output format against the route).
+///
+/// ```
+/// use periodic_contact::api::{derive_valid, Derivation, SeriesRequest};
+/// // The adhesion series at nu = 1/4 beyond the exact route's order 24: the numerical route.
+/// let valid = SeriesRequest::new("adhesion", 30).option("nu", "1/4").validate()?;
+/// assert!(matches!(derive_valid(valid)?, Derivation::AdhesionNumeric(_)));
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
+///
+/// # Errors
+/// [`ApiError::Series`] when the engine fails; the numerical routes' own errors.
+pub fn derive_valid(valid: ValidSeries) -> Result<Derivation, ApiError> {
+    match valid {
+        ValidSeries::Exact { object, order, subs, convention, pade } => {
             let parts = object.derive_in(convention, order, &subs)?;
-            Ok(Derivation::Exact { object: object.name(), parts })
+            Ok(Derivation::Exact { object: object.name(), parts, pade })
         }
-        RunConfig::LoadingLawSeries { nu, ratio, order, .. } => {
-            let digits = crate::asymptotics::catalog::VALUE_DIGITS as u32;
-            Ok(Derivation::LoadingLaw(Box::new(crate::asymptotics::loading_law::loading_law_series(
-                &nu, &ratio, order, digits,
-            )?)))
+        ValidSeries::LoadingLaw { nu, ratio, order } => {
+            use crate::asymptotics::{catalog::VALUE_DIGITS, loading_law, loading_law_modes};
+            let series = loading_law::loading_law_series(&nu, &ratio, order, VALUE_DIGITS as u32)?;
+            let mode = loading_law_modes::mode_exponent(&nu, &ratio, loading_law_modes::MODE_DIGITS)?;
+            Ok(Derivation::LoadingLaw { series: Box::new(series), mode: Box::new(mode) })
         }
-        RunConfig::AdhesionNumericSeries { nu, order, digits, .. } => Ok(Derivation::AdhesionNumeric(Box::new(
+        ValidSeries::AdhesionNumeric { nu, order, digits } => Ok(Derivation::AdhesionNumeric(Box::new(
             crate::asymptotics::adhesion_numeric::adhesion_numeric(&nu, order, digits)?,
         ))),
-        _ => unreachable!("a `series` command line validates to a series configuration"),
     }
 }
 
 /// Options of [`solve_toml`] and [`solve_file`]: the flags of `periodic-contact solve`; `None`
-/// leaves the scene's `[output]` (or the CLI's default) in force.
+/// leaves the scene's `[output]` (or the default) in force.
 #[derive(Debug, Clone, Default)]
 pub struct SolveOptions {
-    /// `--digits N` (default: the scene's `digits`, else 30).
+    /// `--digits N` (default: the scene's `digits`, else 30), in [1, 1000].
     pub digits: Option<u32>,
-    /// `--method mpfr|f64|series` (default: the scene's `method`, else `mpfr`).
+    /// `--method mpfr|f64|series|pade` (default: the scene's `method`, else the choice by
+    /// `target_digits`, else `mpfr`).
     pub method: Option<String>,
-    /// `--order N`: the series order of `--method series` (default 12).
+    /// `--order N`: the series order of `--method series` or `pade` (default 12), at most 24.
     pub order: Option<usize>,
     /// `--convention paper|periodic` (default: the scene's, else `paper`).
     pub convention: Option<String>,
 }
 
 impl SolveOptions {
-    fn flags(&self) -> Vec<String> {
-        let mut v = Vec::new();
-        let mut push = |flag: &str, value: Option<String>| {
-            if let Some(x) = value {
-                v.push(flag.to_string());
-                v.push(x);
-            }
+    /// Applies the options to a parsed scene (the convention replaces the scene's) and chooses
+    /// the method: the one path of `periodic-contact solve` and of [`solve_toml`].
+    ///
+    /// ```
+    /// use periodic_contact::api::{parse_scene, solve_with_choice, SolveOptions};
+    /// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+    /// let mut scene = parse_scene(&std::fs::read_to_string(path).unwrap())?;
+    /// let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
+    /// let choice = opts.choose(&mut scene)?;
+    /// assert_eq!(choice.reason, "forced by --method");
+    /// let v = solve_with_choice(&scene, choice)?;
+    /// assert_eq!(v["choice"]["method"], "f64");
+    /// # Ok::<(), periodic_contact::api::ApiError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// An [`Error::Input`] naming the option (`--digits`, `--method`, `--order`,
+    /// `--convention`), its value and the valid range.
+    pub fn choose(&self, scene: &mut Scene) -> Result<MethodChoice, Error> {
+        if let Some(c) = &self.convention {
+            let c = match c.trim() {
+                "paper" => Convention::Paper,
+                "periodic" => Convention::PeriodicSurface,
+                other => return Err(Error::input("--convention", other, "must be paper or periodic")),
+            };
+            override_convention(scene, c)?;
+        }
+        let max = crate::scene::parse::MAX_DIGITS;
+        if let Some(d) = self.digits.filter(|d| !(1..=max).contains(d)) {
+            return Err(Error::input("--digits", d, format!("must be an integer in [1, {max}]")));
+        }
+        let method = match self.method.as_deref().map(str::trim) {
+            None => None,
+            Some("mpfr") => Some(Method::Mpfr),
+            Some("f64") => Some(Method::F64),
+            Some("series") => Some(Method::Series),
+            Some("pade") => Some(Method::Pade),
+            Some(other) => return Err(Error::input("--method", other, "must be mpfr, f64, series or pade")),
         };
-        push("--digits", self.digits.map(|d| d.to_string()));
-        push("--method", self.method.clone());
-        push("--order", self.order.map(|d| d.to_string()));
-        push("--convention", self.convention.clone());
-        v
+        if let Some(o) = self.order.filter(|o| *o > 24) {
+            return Err(Error::input(
+                "--order",
+                o,
+                "must be an integer in [0, 24] (the series and pade methods' limit)",
+            ));
+        }
+        let forced = Forced { method, digits: self.digits, series_order: self.order };
+        solve_choice(scene, forced)
+            .map_err(|e| Error::Input(ModelError::new("calibration/methods.csv", "(compiled in)", e.to_string())))
     }
+}
+
+/// `--convention` replaces the scene's `[problem] convention` (Problem 1, Problem 2 and the
+/// loading-law problem; docs/theory.md section 8).
+fn override_convention(scene: &mut Scene, c: Convention) -> Result<(), ModelError> {
+    match &scene.problem {
+        SceneProblem::Sliding(p) => scene.problem = SceneProblem::Sliding(p.to_builder().convention(c).build()?),
+        SceneProblem::LoadingLaw(p) => {
+            scene.problem = SceneProblem::LoadingLaw(crate::scene::rebuild_law(p, p.size().clone(), c)?)
+        }
+        SceneProblem::Adhesion(p) => scene.problem = SceneProblem::Adhesion(p.clone().with_convention(c)),
+    }
+    Ok(())
+}
+
+/// Solves a parsed scene with the method `choice` names (escalating to dearer methods when the
+/// answer's digits fall short of a `target_digits`), and returns the JSON of `periodic-contact
+/// solve --json` with its `choice`.
+///
+/// # Errors
+/// [`Error`]: no solution, not physical, no convergence (and input errors of the method).
+pub fn solve_with_choice(scene: &Scene, choice: MethodChoice) -> Result<Value, Error> {
+    let (mut v, choice) = crate::solve::choice::solve_chosen(scene, choice)?;
+    if let Some(m) = v.as_object_mut() {
+        m.insert("choice".into(), choice.json());
+    }
+    Ok(v)
 }
 
 /// Solves the scene file at `path` as `periodic-contact solve PATH --json [flags]` does and returns
-/// its JSON (string values; keys documented in the README, section "Solving a scene").
+/// its JSON (string values; keys in docs/theory.md section 14).
+///
+/// ```
+/// use periodic_contact::api::{solve_file, SolveOptions};
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
+/// let v = solve_file(path.as_ref(), &SolveOptions { method: Some("f64".into()), ..Default::default() })?;
+/// assert_eq!(v["problem"], "sliding");
+/// # Ok::<(), periodic_contact::api::ApiError>(())
+/// ```
 ///
 /// # Errors
-/// [`ApiError::Scene`] for an invalid scene, [`ApiError::Problem`] otherwise (invalid option, no
-/// solution, not physical, no convergence), each with the CLI's message.
+/// [`ApiError::Scene`] for an invalid scene, [`ApiError::Problem`] otherwise (an unreadable file,
+/// an invalid option, no solution, not physical, no convergence), each with the CLI's message.
 pub fn solve_file(path: &Path, options: &SolveOptions) -> Result<Value, ApiError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| ModelError::new("SCENE", path.display(), format!("cannot be read: {e}")))?;
-    parse_scene(&text).map_err(ApiError::Scene)?;
-    let mut args = vec!["solve".to_string(), path.display().to_string(), "--json".to_string()];
-    args.extend(options.flags());
-    match config(&args, "solve")? {
-        RunConfig::Solve { scene, choice, .. } => {
-            // As `periodic-contact solve --json`: the chosen method's answer with its `choice`.
-            let (mut v, choice) = crate::solve::choice::solve_chosen(&scene, choice)?;
-            if let Some(m) = v.as_object_mut() {
-                m.insert("choice".into(), choice.json());
-            }
-            Ok(v)
-        }
-        _ => unreachable!("a `solve` command line validates to a solve configuration"),
-    }
+    solve_toml(&text, options)
 }
 
 /// Solves a scene given as TOML text (the format of `scenes/*.toml`, documented in
-/// [`crate::scene`]) like [`solve_file`]. The text goes through the command line's own path (a
-/// private temporary file, removed afterwards), so defaults and messages cannot drift apart.
+/// [`crate::scene`]) like [`solve_file`]: parsed once, the options applied
+/// ([`SolveOptions::choose`]), solved ([`solve_with_choice`]).
 ///
 /// ```
 /// use periodic_contact::api::{solve_toml, SolveOptions};
@@ -260,18 +339,20 @@ pub fn solve_file(path: &Path, options: &SolveOptions) -> Result<Value, ApiError
 /// # Ok::<(), periodic_contact::api::ApiError>(())
 /// ```
 pub fn solve_toml(scene: &str, options: &SolveOptions) -> Result<Value, ApiError> {
-    parse_scene(scene).map_err(ApiError::Scene)?;
-    static COUNTER: AtomicUsize = AtomicUsize::new(0);
-    let path = std::env::temp_dir().join(format!(
-        "periodic-contact-api-{}-{}.toml",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
-    std::fs::write(&path, scene)
-        .map_err(|e| ModelError::new("scene", path.display(), format!("cannot be written: {e}")))?;
-    let r = solve_file(&path, options);
-    let _ = std::fs::remove_file(&path);
-    r
+    let mut scene = parse_scene(scene).map_err(ApiError::Scene)?;
+    let choice = options.choose(&mut scene)?;
+    Ok(solve_with_choice(&scene, choice)?)
+}
+
+/// An exact number as text (`"1/10"`, `"0.25"`), for callers that hold exact inputs.
+///
+/// ```
+/// let x = periodic_contact::api::exact("0.25")?;
+/// assert_eq!(x, periodic_contact::api::exact("1/4")?);
+/// # Ok::<(), periodic_contact::api::ModelError>(())
+/// ```
+pub fn exact(text: &str) -> Result<Exact, ModelError> {
+    crate::series_request::parse_exact("value", text)
 }
 
 /// The CLI's JSON text of a [`Value`] (`serde_json::to_string_pretty`, a newline at the end),
@@ -286,28 +367,31 @@ mod tests {
 
     #[test]
     fn unknown_option_names_the_valid_ones() {
-        let e = derive("sliding", 4, &[("tehta", "1/10")]).unwrap_err();
+        let e = derive(&SeriesRequest::new("sliding", 4).option("tehta", "1/10")).unwrap_err();
         assert_eq!(e.kind(), Some(ErrorKind::Input));
         assert!(e.to_string().starts_with("invalid option = tehta: must be one of theta, xh, T"), "{e}");
     }
 
     #[test]
     fn invalid_values_carry_the_cli_message() {
-        let e = derive("sliding", 4, &[("theta", "1/2")]).unwrap_err();
+        let e = derive(&SeriesRequest::new("sliding", 4).option("theta", "1/2")).unwrap_err();
         assert_eq!(e.to_string(), "invalid --theta = 1/2: must satisfy |theta| < 1/2");
-        let e = derive("sliding", 4, &[("shape", "square")]).unwrap_err();
-        assert!(e.to_string().contains("invalid value 'square' for '--shape"), "{e}");
-        let e = derive("kernel", 100000, &[]).unwrap_err();
-        assert_eq!(e.to_string(), "invalid --order = 100000: must be an integer in [0, 2000]");
+        let e = derive(&SeriesRequest::new("sliding", 4).option("shape", "square")).unwrap_err();
+        assert!(e.to_string().starts_with("invalid --shape = square: must be parabolic"), "{e}");
+        let e = derive(&SeriesRequest::new("kernel", 100000)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "invalid --order = 100000: must be an integer in [0, 2000] (the kernel series' limit)"
+        );
     }
 
     #[test]
     fn kernel_is_z_cot_z() {
         // z cot z = 1 - z^2/3 - z^4/45 - ... (DLMF 4.19.6).
-        let d = derive("kernel", 4, &[]).unwrap();
+        let d = derive(&SeriesRequest::new("kernel", 4)).unwrap();
         let v = d.json();
         let texts: Vec<&str> =
-            v["coefficients"].as_array().unwrap().iter().map(|c| c["text"].as_str().unwrap()).collect();
+            v["parts"][0]["coefficients"].as_array().unwrap().iter().map(|c| c["text"].as_str().unwrap()).collect();
         assert_eq!(texts, ["1", "-1/3", "-1/45"]);
         assert!(d.text().contains("[z^4] -1/45"));
     }

@@ -20,10 +20,14 @@
 //!   with parallel verbs (`solve`, `verify`, `physical`, `solution`).
 //! - [`verification`]: term-by-term convergence orders of the series against the full solutions;
 //!   the closed-form frictionless load of a general even profile (docs/theory.md section 9).
-//! - [`solve`]: a scene -> one method -> one answer struct -> the one JSON renderer per problem.
-//! - [`report`]: the main job (tables, charts, stability maps); [`cli`]: raw arguments ->
-//!   validated configuration; [`api`]: the front door for users of the crate (below);
-//!   `main.rs` parses, runs and maps error kinds to exit codes.
+//! - [`solve`]: a scene -> one method -> one answer struct -> the one JSON renderer per problem;
+//!   [`series_request`]: what `derive` is asked, validated once (the one table of options).
+//! - [`api`]: the front door for users of the crate (below).
+//!
+//! Clients, in crates of their own (so that their dependencies stay out of this one): the report
+//! (`crates/report`, the main job: tables, charts, stability maps) and the command line
+//! (`crates/cli`, the `periodic-contact` binary: raw arguments -> the library's requests -> one
+//! rendering); the Python module (`python/`).
 //!
 //! ## Using the crate
 //!
@@ -31,13 +35,13 @@
 //! `examples/user-crate` does, with an insta snapshot test of a derived series) and use [`api`]:
 //! derive an object ([`api::derive`]), solve a scene ([`api::solve_toml`], [`api::solve_file`]),
 //! check the series' orders ([`api::check_orders`]). Every call validates its input with the
-//! command line's messages and returns JSON-ready values. These ten lines are the README's
-//! library section, compiled and run here as a doctest:
+//! command line's messages and returns JSON-ready values, e.g. (a doctest; the README's Rust
+//! example is compiled and run as one too, through `ReadmeDoctests` under `cfg(doctest)`):
 //!
 //! ```
 //! use periodic_contact::api::{self, SolveOptions};
 //! // 1. The exact Problem 1 expansions at theta = 1/10, through Lambda^4.
-//! let sliding = api::derive("sliding", 4, &[("theta", "1/10")])?.json();
+//! let sliding = api::derive(&api::SeriesRequest::new("sliding", 4).option("theta", "1/10"))?.json();
 //! let l_over_ls = &sliding["parts"][0]; // l/l_s = 1 - 2/25 Lambda^2 + ...
 //! assert_eq!(l_over_ls["coefficients"][1]["text"], "-2/25");
 //! // 2. A scene file solved as `periodic-contact solve FILE --json --method f64` does.
@@ -53,21 +57,26 @@
 //! cargo doc`, as docs.rs does from `[package.metadata.docs.rs]`), e.g. the kernel
 //! $Z(z) = z \cot z = 1 - z^2/3 - z^4/45 - \dots$ of [`asymptotics::kernel`].
 
+/// The README's code blocks as doctests (its Rust example is compiled and run; its `console`,
+/// `toml`, `python` and `sh` blocks are not Rust: `crates/cli/tests/doc_commands.rs` runs the
+/// commands).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 pub mod adhesion;
 pub mod api;
 pub mod asymptotics;
-// The doc comments of `cli::args` are clap's --help text: `[output] digits` names a TOML table of
-// the scene, not an intra-doc link, and must print without escapes.
-#[allow(rustdoc::broken_intra_doc_links)]
-pub mod cli;
 pub mod error;
+pub mod growing_contact;
+pub mod loading_law;
 pub mod model;
 pub mod numerics;
 pub mod params;
-pub mod report;
 pub mod scene;
+pub mod series_request;
 pub mod sliding;
 pub mod solve;
 pub mod verification;
 
-pub use api::{derive, solve_file, solve_toml, ApiError, Derivation, SolveOptions};
+pub use api::{derive, solve_file, solve_toml, ApiError, Derivation, SeriesRequest, SolveOptions};

@@ -1,7 +1,9 @@
 //! The module graph, drawn from the code: every `crate::<module>` reference of every file under
 //! `src/` (comments left out), folded to top-level modules. Asserts that imports only point down
-//! the layers (model -> numerics -> params -> asymptotics -> sliding / adhesion -> verification ->
-//! solve -> report -> cli -> api -> main), that the two solver folders do not use each other, and that the
+//! the layers (model -> numerics -> params -> asymptotics -> growing_contact -> sliding / adhesion /
+//! loading_law -> verification -> solve, series_request -> api; the report and the command line
+//! are crates of their own on top), that the three problems' folders do not use each other, that
+//! no two files of any folder of any crate name each other, and that the
 //! committed picture `docs/module-graph.md` is the graph of the code as it is (regenerate with
 //! `UPDATE_MODULE_GRAPH=1 cargo test --test architecture`).
 
@@ -16,14 +18,14 @@ const LAYERS: [(&str, u32); 14] = [
     ("numerics", 2),
     ("params", 3),
     ("asymptotics", 4),
-    ("sliding", 5),
-    ("adhesion", 5),
-    ("verification", 6),
-    ("solve", 7),
-    ("report", 8),
-    ("cli", 9),
-    ("api", 10),
-    ("main", 11),
+    ("growing_contact", 5),
+    ("sliding", 6),
+    ("adhesion", 6),
+    ("loading_law", 6),
+    ("verification", 7),
+    ("solve", 8),
+    ("series_request", 8),
+    ("api", 9),
 ];
 
 fn layer(m: &str) -> Option<u32> {
@@ -123,8 +125,9 @@ fn mermaid(g: &BTreeMap<String, BTreeSet<String>>) -> String {
         "# Module graph of `src/`\n\nDrawn from the code by `tests/architecture.rs` (which fails when this file is out of date;\n\
          regenerate with `UPDATE_MODULE_GRAPH=1 cargo test --test architecture`). An arrow `a --> b` means\n\
          a file of `a` names `crate::b`. Layers, lowest first: model; error, scene; numerics; params;\n\
-         asymptotics; sliding, adhesion; verification; solve; report; cli; api; main. Every arrow points to a\n\
-         lower layer.\n\n```mermaid\ngraph TD\n",
+         asymptotics; growing_contact; sliding, adhesion, loading_law; verification; solve, series_request; api.\n\
+         Every arrow points to a lower layer. The report (`crates/report`) and the command line\n\
+         (`crates/cli`) are crates on top of the library.\n\n```mermaid\ngraph TD\n",
     );
     for (m, deps) in g {
         for d in deps {
@@ -163,33 +166,162 @@ fn committed_picture_is_the_graph_of_the_code() {
     assert_eq!(have, want, "docs/module-graph.md is out of date: UPDATE_MODULE_GRAPH=1 cargo test --test architecture");
 }
 
-#[test]
-fn the_series_crate_has_no_file_cycle() {
-    // Files of series/src and the files each names through `crate::<file>`.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("series/src");
+/// The module path of a file under `root` (`loading_law/jacobian.rs` -> `[loading_law, jacobian]`;
+/// `mod.rs`, `lib.rs` and `main.rs` name their folder).
+fn module_path(root: &Path, file: &Path) -> Vec<String> {
+    let rel = file.strip_prefix(root).unwrap();
+    let mut parts: Vec<String> = rel.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+    let last = parts.pop().unwrap();
+    let stem = last.trim_end_matches(".rs");
+    if !matches!(stem, "mod" | "lib" | "main") {
+        parts.push(stem.to_string());
+    }
+    parts
+}
+
+/// Every path a piece of code names: `crate::a::b`, `super::super::c`, `self::d`, with `use`
+/// groups expanded one level (`use super::{a::X, b}` names `super::a` and `super::b`).
+fn paths(code: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let bytes: Vec<char> = code.chars().collect();
+    let is_id = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == ':';
+    let mut i = 0;
+    while i < bytes.len() {
+        let starts = ["crate::", "super::", "self::"].iter().find(|p| code_at(&bytes, i, p));
+        let boundary = i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == '_' || bytes[i - 1] == ':');
+        if let (Some(_), true) = (starts, boundary) {
+            let mut j = i;
+            while j < bytes.len() && is_id(bytes[j]) {
+                j += 1;
+            }
+            let head: String = bytes[i..j].iter().collect();
+            if j < bytes.len() && bytes[j] == '{' && head.ends_with("::") {
+                // A group: its items, one level.
+                let mut depth = 0;
+                let mut k = j + 1;
+                let mut start = k;
+                while k < bytes.len() {
+                    match bytes[k] {
+                        '{' => depth += 1,
+                        '}' if depth == 0 => break,
+                        '}' => depth -= 1,
+                        ',' if depth == 0 => {
+                            let item: String = bytes[start..k].iter().collect();
+                            out.push(format!("{head}{}", item.trim()));
+                            start = k + 1;
+                        }
+                        _ => {}
+                    }
+                    k += 1;
+                }
+                let item: String = bytes[start..k.min(bytes.len())].iter().collect();
+                out.push(format!("{head}{}", item.trim()));
+                i = k;
+            } else {
+                out.push(head.trim_end_matches(':').to_string());
+                i = j;
+            }
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+fn code_at(chars: &[char], i: usize, pat: &str) -> bool {
+    pat.chars().enumerate().all(|(k, c)| chars.get(i + k) == Some(&c))
+}
+
+/// The files of a crate (`root` = its `src/`) and, per file, the other files it names: a path is
+/// resolved from the crate root (`crate::`) or the file's module (`super::`, `self::`; inside an
+/// inline `mod tests { ... }` one `super` more), to the deepest module that is a file. A folder
+/// module's `pub use` of its own children (its public face) is not counted.
+fn file_graph(root: &Path) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
     let mut files = Vec::new();
-    rust_files(&root, &mut files);
-    let name = |p: &Path| {
-        let rel = p.strip_prefix(&root).unwrap();
-        rel.components().next().unwrap().as_os_str().to_string_lossy().trim_end_matches(".rs").to_string()
-    };
-    let names: BTreeSet<String> = files.iter().map(|f| name(f)).collect();
-    let mut g: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    rust_files(root, &mut files);
+    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module_path(root, f)).collect();
+    let mut g = BTreeMap::new();
     for f in &files {
-        let m = name(f);
+        let me = module_path(root, f);
         let text = code(&std::fs::read_to_string(f).unwrap());
-        let e = g.entry(m.clone()).or_default();
-        for r in references(&text, "crate::") {
-            if r != m && names.contains(&r) {
-                e.insert(r);
+        // The code before the first inline module (tests) and after it.
+        let split = text.find("mod tests {").unwrap_or(text.len());
+        let mut deps = BTreeSet::new();
+        for (part, extra) in [(&text[..split], 0usize), (&text[split..], 1)] {
+            for p in paths(part) {
+                let is_face = p.starts_with("self::") || (extra == 0 && part.contains(&format!("pub use {p}")));
+                let mut segs: Vec<&str> = p.split("::").filter(|s| !s.is_empty()).collect();
+                let mut base: Vec<String> = match segs.first() {
+                    Some(&"crate") => {
+                        segs.remove(0);
+                        Vec::new()
+                    }
+                    _ => me.clone(),
+                };
+                let mut ups = 0usize;
+                while segs.first() == Some(&"super") {
+                    segs.remove(0);
+                    ups += 1;
+                }
+                if segs.first() == Some(&"self") {
+                    segs.remove(0);
+                }
+                let ups = if ups > 0 { ups.saturating_sub(extra) } else { 0 };
+                for _ in 0..ups {
+                    base.pop();
+                }
+                let mut target = base.clone();
+                let mut best = base.clone();
+                for s in segs {
+                    target.push(s.to_string());
+                    if modules.contains(&target) {
+                        best = target.clone();
+                    }
+                }
+                // A folder's `pub use child::...` (its public face) and a child's own names.
+                let child_of_me = best.len() > me.len() && best.starts_with(&me);
+                if best != me && modules.contains(&best) && !(is_face && child_of_me) {
+                    deps.insert(best);
+                }
+            }
+        }
+        g.insert(me, deps);
+    }
+    g
+}
+
+/// Pairs of files that name each other.
+fn mutual_pairs(root: &Path) -> Vec<String> {
+    let g = file_graph(root);
+    let mut bad = Vec::new();
+    for (a, deps) in &g {
+        for b in deps {
+            if a < b && g.get(b).is_some_and(|d| d.contains(a)) {
+                bad.push(format!("{} <-> {}", a.join("/"), b.join("/")));
             }
         }
     }
-    for (a, deps) in &g {
-        for b in deps {
-            assert!(!g.get(b).is_some_and(|d| d.contains(a)), "series files {a} and {b} use each other");
+    bad
+}
+
+/// No two files of any folder name each other (a split that leaves two files importing each
+/// other is worse than the long file), in every crate of the workspace.
+#[test]
+fn no_two_files_use_each_other() {
+    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut bad = Vec::new();
+    for krate in ["src", "series/src", "crates/report/src", "crates/cli/src"] {
+        for pair in mutual_pairs(&here.join(krate)) {
+            bad.push(format!("{krate}: {pair}"));
         }
     }
+    assert!(bad.is_empty(), "files that use each other:\n{}", bad.join("\n"));
+}
+
+#[test]
+fn the_file_graph_sees_super_and_crate_paths() {
+    let p = paths("use super::{increment::{a, b}, kernel::Side};\nlet x = crate::model::Exact::new(); self::f();");
+    assert_eq!(p, ["super::increment::{a, b}", "super::kernel::Side", "crate::model::Exact::new", "self::f"]);
 }
 
 #[test]

@@ -1,6 +1,6 @@
 //! The loading-law expansion (`asymptotics::loading_law`, issue 12 "Asymptotics beyond the
 //! paper") against the full MPFR solution of the loading-law problem
-//! (`adhesion::loading_law::collocation`, an independent method: Chebyshev collocation of the
+//! (`loading_law::collocation`, an independent method: Chebyshev collocation of the
 //! Volterra system in the contact size, chord Newton): at several small Lambda the remainder
 //! after the terms through lambda^(2J) of P(Lambda), c/l and psi_hat at chi = +-Lambda/2 (one
 //! point on each side) decays like Lambda^(2J+2), J = 0..4: least-squares slopes over
@@ -9,8 +9,8 @@
 //! convergence_orders_loading_law -- --nocapture` prints every slope). An odd power of lambda in the expansion would
 //! give slope 2J + 1 (the parity claim of the module doc).
 
-use periodic_contact::adhesion::loading_law::collocation::{solve, LawCollocation, LawSetting};
 use periodic_contact::asymptotics::loading_law::{law_coefficients, LawExpansion};
+use periodic_contact::loading_law::collocation::{solve, LawCollocation, LawSetting};
 use periodic_contact::model::{Convention, Exact, Material};
 use periodic_contact::numerics::exact::to_float;
 use periodic_contact::numerics::tanh_sinh::TanhSinh;

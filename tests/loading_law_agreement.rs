@@ -1,5 +1,5 @@
 //! Issue 12: the two methods for the loading-law problem agree, and the f64 marching method
-//! (`adhesion::loading_law::verified_f64`) meets the limits.
+//! (`loading_law::verified_f64`) meets the limits.
 //! - Against the MPFR collocation (`verified::solve_law`, asked at 16 digits): a, b, c, P1, P2,
 //!   psi, phi, q1, q2 to >= 12 digits of their scales, and the f64 method never claims more than
 //!   the agreement + 0.5. In CI two cases without points (the MPFR fields are nested quadratures,
@@ -15,8 +15,8 @@
 //! - Limits: n = 0 is the symmetric problem (its f64 series solver), b = a; nu = 1/2 decouples
 //!   (P' = pi tan eta, b = a, q1 = n q2).
 
-use periodic_contact::adhesion::loading_law::verified::{solve_law, LawSolution};
-use periodic_contact::adhesion::loading_law::verified_f64::{solve_law_f64, LawSolutionF64};
+use periodic_contact::loading_law::verified::{solve_law, LawSolution};
+use periodic_contact::loading_law::verified_f64::{solve_law_f64, LawSolutionF64};
 use periodic_contact::model::{
     Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape,
 };
@@ -184,9 +184,10 @@ fn nu_zero_is_refused_not_answered() {
     }
 }
 
-/// n = 0 gives the symmetric solution (the f64 series method of `adhesion::solve_f64`, built
-/// independently): P2 and the fields at the same |x| to 12 digits (psi, q2 even, phi, q1 odd),
-/// b = a, P1 = 0; in both conventions (P1 = 0: no rotation).
+/// n = 0 gives the symmetric solution (the f64 method of `adhesion::solve_f64`: the series in
+/// `paper`, the collocation in eta with the same tilted punch in `periodic`): P2 and the fields at
+/// the same |x| to 12 digits (psi, q2 even, phi, q1 odd), b = a, P1 = 0; in both conventions
+/// (P1 = 0: no rotation; `periodic` keeps u periodic, docs/theory.md section 8, Problem 2).
 #[test]
 fn zero_ratio_is_the_symmetric_solution() {
     let nu = q(3, 10);
@@ -199,8 +200,8 @@ fn zero_ratio_is_the_symmetric_solution() {
     .unwrap();
     let xh = xh5();
     let abs: Vec<Exact> = xh.iter().map(|h| if *h < q(0, 1) { -h.clone() } else { h.clone() }).collect();
-    let s = periodic_contact::adhesion::solve_f64(&sym, &abs).unwrap();
     for convention in [Convention::Paper, Convention::PeriodicSurface] {
+        let s = periodic_contact::adhesion::solve_f64(&sym.clone().with_convention(convention), &abs).unwrap();
         let p = problem(nu.clone(), LoadingLaw::Linear(q(0, 1)), LawSize::HalfLength(q(1, 6)), convention);
         let f = solve_law_f64(&p, &xh).unwrap();
         let v = &f.values;
@@ -261,4 +262,29 @@ fn given_load_polynomial_law_and_refusal() {
     let neg = problem(nu, LoadingLaw::Linear(q(-1, 5)), LawSize::HalfLength(q(1, 6)), Convention::Paper);
     let e = solve_law_f64(&neg, &[]).unwrap_err();
     assert!(e.to_string().contains("tangential_ratio") && e.to_string().contains("N'(P2) >= 0"), "{e}");
+}
+
+/// Issue 32: the loading law with N = 0 is the symmetric Problem 2 in both conventions, in MPFR:
+/// its collocation (in `periodic` the tilted punch `growing_contact::kernel::TiltedPunch` times
+/// i beta (1 + i n)) gives the load of the Volterra method (in `periodic` its closed-form kernel,
+/// docs/theory.md section 8, Problem 2), at nu = 0 and l/L = 1/5 (lambda = 0.628), 20 digits
+/// asked: agreement to 1e-18 relative (measured 8.1e-22 `paper`, 1.3e-28 `periodic`).
+#[test]
+fn zero_ratio_in_mpfr_is_problem_2_in_both_conventions() {
+    for convention in [Convention::Paper, Convention::PeriodicSurface] {
+        let law = problem(q(0, 1), LoadingLaw::Linear(q(0, 1)), LawSize::HalfLength(q(1, 5)), convention);
+        let l = solve_law(&law, &[], 20).unwrap();
+        let sym = periodic_contact::model::AdhesionProblem::new(
+            Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap(),
+            Period::Finite(q(1, 1)),
+            PunchShape::Parabolic { k: q(1, 1) },
+            periodic_contact::model::AdhesionSize::HalfWidth(q(1, 5)),
+        )
+        .unwrap()
+        .with_convention(convention);
+        let m = periodic_contact::adhesion::solve_verified(&sym, &[], 20).unwrap();
+        let e = rug::Float::with_val(m.solution.prec, &l.values.p2 - &m.solution.normal_load).abs().to_f64()
+            / m.solution.normal_load.to_f64();
+        assert!(e < 1e-18, "{convention:?}: {} against {}: {e:e}", l.values.p2, m.solution.normal_load);
+    }
 }

@@ -1,8 +1,11 @@
-//! `periodic_contact._native`: the PyO3 bindings of [`periodic_contact::api`] (issue 16). Each
-//! function returns the CLI's JSON as text (Python's `json.loads` reads it); the Python package
-//! `periodic_contact` (`periodic_contact/__init__.py`) turns coefficients into `Fraction`s and
-//! SymPy-readable strings. Errors become typed Python exceptions carrying the CLI's message
-//! (what `periodic-contact` prints after `error: `).
+//! `periodic_contact._native`: the PyO3 bindings of [`periodic_contact::api`]. Each function
+//! returns the CLI's JSON as text (Python's `json.loads` reads it); the Python package
+//! `periodic_contact` (`periodic_contact/__init__.py`) turns it into typed objects (coefficients
+//! as `Fraction`, `Decimal` or SymPy-ready expressions; solutions with numbers as attributes and
+//! numpy arrays at the points). Errors become typed Python exceptions carrying the CLI's message
+//! (what `periodic-contact` prints after `error: `). Every computation runs on its own thread
+//! with the GIL released, and Ctrl-C (KeyboardInterrupt) returns control at once (the abandoned
+//! computation finishes in the background and its answer is dropped); a panic becomes `Error`.
 
 use periodic_contact::api::{self, ApiError, ErrorKind, SolveOptions};
 use pyo3::create_exception;
@@ -39,13 +42,40 @@ fn to_py(e: ApiError) -> PyErr {
     }
 }
 
+/// Runs `work` on its own thread with the GIL released, checking Python's signals every 50 ms:
+/// Ctrl-C raises KeyboardInterrupt at once; a panic of `work` becomes [`Error`].
+fn interruptible<T: Send + 'static>(py: Python<'_>, work: impl FnOnce() -> T + Send + 'static) -> PyResult<T> {
+    use std::sync::mpsc::{channel, RecvTimeoutError};
+    let (tx, rx) = channel();
+    std::thread::Builder::new()
+        .name("periodic-contact".into())
+        .stack_size(64 << 20)
+        .spawn(move || {
+            let _ = tx.send(work());
+        })
+        .map_err(|e| Error::new_err(format!("cannot start the computation: {e}")))?;
+    let mut rx = rx;
+    loop {
+        // The receiver moves into the GIL-free wait and back (it is Send, not Sync).
+        let (got, back) = py.detach(move || (rx.recv_timeout(std::time::Duration::from_millis(50)), rx));
+        rx = back;
+        match got {
+            Ok(v) => return Ok(v),
+            Err(RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(RecvTimeoutError::Disconnected) => {
+                return Err(Error::new_err("the computation stopped without an answer (an internal error)"))
+            }
+        }
+    }
+}
+
 /// `periodic-contact series OBJECT --order ORDER --KEY VALUE ... --format json`, as JSON text.
 #[pyfunction]
 fn series_json(py: Python<'_>, object: String, order: usize, options: Vec<(String, String)>) -> PyResult<String> {
-    py.detach(move || {
-        let opts: Vec<(&str, &str)> = options.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
-        api::derive(&object, order, &opts).map(|d| api::json_text(&d.json()))
-    })
+    interruptible(py, move || {
+        let request = api::SeriesRequest { object, order: order.to_string(), options, pade: false };
+        api::derive(&request).map(|d| api::json_text(&d.json()))
+    })?
     .map_err(to_py)
 }
 
@@ -61,10 +91,10 @@ fn solve_json(
     order: Option<usize>,
     convention: Option<String>,
 ) -> PyResult<String> {
-    py.detach(move || {
+    interruptible(py, move || {
         let opts = SolveOptions { digits, method, order, convention };
         api::solve_toml(&scene, &opts).map(|v| api::json_text(&v))
-    })
+    })?
     .map_err(to_py)
 }
 

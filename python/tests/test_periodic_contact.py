@@ -1,4 +1,4 @@
-"""pytest tests of the Python module (issue 16). They compare with the command line itself: the
+"""pytest tests of the Python module. They compare with the command line itself: the
 binary `periodic-contact` of this repository (env PERIODIC_CONTACT_CLI, else target/debug or
 target/release; `cargo build` makes it, scripts/test runs these after `cargo test`)."""
 
@@ -6,6 +6,7 @@ import json
 import os
 import subprocess
 import tomllib
+from decimal import Decimal
 from fractions import Fraction
 from math import comb
 from pathlib import Path
@@ -103,20 +104,20 @@ def test_solve_reproduces_the_cli_json():
     code, out, _ = run_cli("solve", str(SCENE), "--json")
     assert code == 0
     want = json.loads(out)
-    assert pc.solve(SCENE) == want
-    assert pc.solve(str(SCENE)) == want
+    assert pc.solve(SCENE).to_dict() == want
+    assert pc.solve(str(SCENE)).to_dict() == want
     text = SCENE.read_text()
-    assert pc.solve(text) == want
+    assert pc.solve(text).to_dict() == want
     with open(SCENE, "rb") as f:
         as_dict = tomllib.load(f)
-    assert pc.solve(as_dict) == want
-    assert list(pc.solve(text)) == list(want), "same keys in the same order"
+    assert pc.solve(as_dict).to_dict() == want
+    assert pc.solve(text).keys() == list(want), "same keys in the same order"
 
 
 def test_solve_flags_are_the_cli_flags():
     code, out, _ = run_cli("solve", str(SCENE), "--json", "--method", "f64", "--digits", "12")
     assert code == 0
-    assert pc.solve(SCENE, method="f64", digits=12) == json.loads(out)
+    assert pc.solve(SCENE, method="f64", digits=12).to_dict() == json.loads(out)
 
 
 def test_scene_errors_carry_the_cli_message(tmp_path):
@@ -158,3 +159,128 @@ def test_no_solution_carries_the_cli_message(tmp_path):
     assert str(e.value) == message
     assert type(e.value) in (pc.NoSolutionError, pc.NotPhysicalError, pc.NoConvergenceError)
     assert not isinstance(e.value, pc.InputError)
+
+
+# Every object and route the CLI derives, with the CLI's flags: (object, order, options).
+ROUTES = [
+    ("kernel", 12, {}),
+    ("weight", 6, {"theta": "1/10", "xh": "1/2"}),
+    ("jacobi", 8, {}),
+    ("sliding", 8, {}),
+    ("sliding", 6, {"shape": "sinusoidal", "theta": "1/10"}),
+    ("sliding", 6, {"convention": "periodic"}),
+    ("sliding", 4, {"shape": "polynomial", "coefficients": "0,0,1,0,1/10", "theta": "0", "rbar_s": "0"}),
+    ("adhesion", 6, {}),
+    ("adhesion", 6, {"nu": "3/10"}),
+    ("adhesion", 4, {"coefficients": "0,0,1,0,1/10"}),
+    ("adhesion", 30, {"nu": "1/4"}),
+    ("adhesion", 8, {"nu": "1/4", "digits": "40"}),
+    ("loading-law", 6, {"nu": "3/10", "ratio": "1/5"}),
+]
+
+
+@pytest.mark.parametrize("obj,order,options", ROUTES)
+def test_every_object_and_route_equals_the_cli(obj, order, options):
+    args = ["series", obj, "--order", str(order), "--format", "json"]
+    for k, v in options.items():
+        args += [f"--{k.replace('_', '-')}", v]
+    code, out, err = run_cli(*args)
+    assert code == 0, err
+    want = json.loads(out)
+    s = pc.series(obj, order=order, **options)
+    assert s.to_dict() == want
+    parts = want["parts"] if "parts" in want else [want]
+    assert list(s) == [p["object"] for p in parts]
+    for p in parts:
+        part = s[p["object"]]
+        for c in p["coefficients"]:
+            k = int(c["power"])
+            if "text" in c:
+                assert str(part.coefficients[k]) == c["text"].replace("^", "**")
+                assert isinstance(part.coefficients[k], (Fraction, pc.Expr))
+            else:
+                assert part.coefficients[k] == Decimal(c["value"])
+                assert part.digits[k] == float(c["digits"])
+
+
+def test_adhesion_at_order_30_is_the_numerical_route():
+    s = pc.series("adhesion", order=30, nu="1/4")
+    assert s.route == "numeric"
+    c = s["load_c"].coefficients
+    assert isinstance(c[0], Decimal) and c[0] == 1 and max(c) <= 30
+
+
+def test_loading_law_carries_its_mode():
+    s = pc.series("loading-law", order=4, nu="3/10", ratio="1/5")
+    assert s.mode is not None and s.mode == s.to_dict()["mode"]
+    assert isinstance(s["c_over_l"].coefficients[0], Decimal)
+
+
+def test_adhesion_coefficients_sympify():
+    sympy = pytest.importorskip("sympy")
+    part = pc.series("adhesion", order=4)["load_c"]
+    c = next(v for v in part.coefficients.values() if isinstance(v, pc.Expr))
+    e = sympy.sympify(c)
+    assert e == c.sympy()
+    assert all(isinstance(x, sympy.Symbol) for x in e.free_symbols)
+    assert {str(x) for x in e.free_symbols} <= set(part.symbols)
+
+
+def test_solution_values_are_numbers_and_arrays():
+    np = pytest.importorskip("numpy")
+    code, out, _ = run_cli("solve", str(SCENE), "--json")
+    want = json.loads(out)
+    r = pc.solve(SCENE)
+    assert isinstance(r.P2, float) and r.P2 == float(want["P2"])
+    assert r.text("P2") == want["P2"] and r.decimal("P2") == Decimal(want["P2"])
+    assert isinstance(r.digits_verified, float) and r.digits_verified == float(want["digits_verified"])
+    assert r.lambda_ == float(want["lambda"])
+    assert isinstance(r.pressure.p, np.ndarray)
+    assert list(r.pressure.p) == [float(p["p"]) for p in want["pressure"]]
+    assert r.provenance.method == "mpfr" and r.accuracy.P2 == float(want["accuracy"]["P2"])
+    with pytest.raises(AttributeError):
+        r.no_such_key
+
+
+def test_invalid_scene_raises_the_modules_own_exception():
+    with pytest.raises(pc.SceneError):
+        pc.solve("[problem]\nkind = 3\n")
+    with pytest.raises(pc.InputError):
+        pc.solve("/no/such/scene.toml")
+    with pytest.raises(pc.InputError):
+        pc.series("adhesion", order=30, nu="7/10")
+    with pytest.raises(pc.InputError):
+        pc.series("no-such-object", order=3)
+
+
+def test_the_namespace_is_clean():
+    public = {n for n in dir(pc) if not n.startswith("_")}
+    assert not public & {"json", "os", "re", "copy", "dataclass", "field", "Any", "Dict"}, public
+    assert set(pc.__all__) <= public
+
+
+def test_ctrl_c_stops_a_long_solve(tmp_path):
+    # A 1000-digit solve takes far longer than the 1.5 s before SIGINT; the interpreter must leave
+    # the call with KeyboardInterrupt at once.
+    script = tmp_path / "long.py"
+    script.write_text(
+        "import sys, time, periodic_contact as pc\n"
+        "print('started', flush=True)\n"
+        "t = time.time()\n"
+        "try:\n"
+        f"    pc.solve({str(SCENE)!r}, digits=1000)\n"
+        "    print('finished')\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted after %.1f s' % (time.time() - t))\n"
+        "    sys.exit(130)\n"
+    )
+    import signal
+    import sys
+    import time
+
+    p = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True)
+    assert p.stdout.readline().strip() == "started"
+    time.sleep(1.5)
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=20)
+    assert p.returncode == 130 and out.startswith("interrupted"), out

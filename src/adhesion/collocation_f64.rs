@@ -5,10 +5,10 @@
 //! The equation is the leading edge's condition of the incremental method (docs/theory.md
 //! sections 4 and 10, chi = pi x/L, lambda = pi a/L, P2 = E* k (L/pi)^2 P):
 //!   Re int_0^chi P'(eta) L K(chi - eta; eta) d eta = G(chi),   0 < chi <= lambda,
-//! with the flat punch's outside slope L K of [`super::loading_law::kernel_f64`] and the punch's
+//! with the flat punch's outside slope L K of [`crate::growing_contact::kernel_f64`] and the punch's
 //! scaled slope G(chi) = pi^2 g'(L chi/pi)/(2 k L) (the parabola: pi chi; an even polynomial
 //! g = sum c_2m x^(2m): pi sum_m (m c_2m/k) (L/pi)^(2m-2) chi^(2m-1)). It is solved as one block
-//! of the loading law's march ([`super::loading_law::marching`] with N = 0, the contact centred,
+//! of the loading law's march ([`crate::growing_contact::march`] with N = 0, the contact centred,
 //! gamma = 0): F = P'(eta)/eta a polynomial of degree m - 1 in eta on [0, lambda] (Chebyshev),
 //! fixed by the equation at the m right-Radau points, the integral by tanh-sinh in chi - eta.
 //! With gamma = 0 these equations are linear in F, so they are assembled and solved directly
@@ -35,18 +35,23 @@
 //! (where the series refuses) and nu = 0, lambda = 0.7, load and fields to >= 12 digits; the
 //! quartic g = x^2/4 + x^4/2 at nu = 0.3, a/L = 3/10.
 //!
+//! The `periodic` convention (docs/theory.md section 8, Problem 2): each increment carries i beta
+//! times the tilted punch of [`crate::growing_contact::kernel_f64`] (`MarchSetting::tilt`); this
+//! route is derived apart from method 1's closed-form kernel, and the two agree to 15 digits at
+//! nu = 0, lambda = 0.6 and 1.0 (`convention_tests.rs`).
+//!
 //! Punches: the parabola and even polynomials (G a polynomial in chi); the circle's slope is not
 //! a polynomial, and it is refused here (the series serves it inside its radius).
 
 use super::error::AdhesionError;
-use super::loading_law::kernel_f64::{KernelF64, Side};
-use super::loading_law::marching::{single_block, March, MarchOptions, MarchSetting};
-use super::profile::{check_profile_on_contact, largest_admissible_half_width};
+use super::profile::{check_profile_on_contact, half_width_search, HalfWidthSearch};
 use super::scales::Digits;
 use super::series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
 use super::series_f64::verify::estimate;
 use super::series_f64::RightSeries;
-use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
+use crate::growing_contact::kernel_f64::{KernelF64, Side};
+use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
@@ -55,18 +60,6 @@ use crate::numerics::roots::increasing_root;
 use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use crate::params::adhesion::AdhesionParamsF64;
 use std::f64::consts::PI;
-
-/// Largest number of collocation points (lambda ~ 1.52).
-pub const MAX_POINTS: usize = 100;
-
-/// Collocation points of the nominal run at `lambda` (module doc), or `None` beyond
-/// [`MAX_POINTS`].
-pub fn points_for(lambda: f64) -> Option<usize> {
-    let u = PI / lambda.max(1e-3) - 1.0;
-    let rho = u + (u * u - 1.0).max(0.0).sqrt();
-    let m = (37.0 / rho.ln()).ceil() + 4.0;
-    (m.is_finite() && m <= MAX_POINTS as f64).then_some((m as usize).max(8))
-}
 
 /// The nominal options for `lambda` and the check run's (8 more points, finer rules).
 fn options(lambda: f64) -> Option<[MarchOptions; 2]> {
@@ -131,7 +124,9 @@ impl Setup {
         let c = AdhesionParamsF64::new(problem.material());
         let setting = MarchSetting {
             kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
-            tilt: false,
+            // The `periodic` convention: each increment carries i beta times the tilted punch
+            // (docs/theory.md section 8, Problem 2; the march's kernel).
+            tilt: problem.periodic_surface(),
             slope: vec![0.0],
             p2_per_p: e_star * k * period * period / (PI * PI),
             profile,
@@ -170,7 +165,7 @@ impl Setup {
             // Re int_0^chi K(chi - eta; eta) eta F(eta) d eta, eta = chi s, chi - eta = chi (1 - s).
             for &(s, c, w) in &ts {
                 let eta = chi * s;
-                let weight = k.increment_outside(Side::Right, chi * c, eta, 0.0, false).re * eta * w * chi;
+                let weight = k.increment_outside(Side::Right, chi * c, eta, 0.0, self.setting.tilt).re * eta * w * chi;
                 let u = 2.0 * eta / lambda - 1.0;
                 chebyshev_values(u, &mut t);
                 for (j, tj) in t.iter().enumerate() {
@@ -294,7 +289,10 @@ pub fn solve_collocation_f64(
                 setup.solve_at(setup.lambda_of(a), which)?
             }
             AdhesionSize::NormalLoad(p2) => {
-                let lambda_max = largest_admissible_half_width(problem).map_or(1.52, |a| setup.lambda_of(a).min(1.52));
+                let lambda_max = match half_width_search(problem) {
+                    HalfWidthSearch::Capped { a_max } => setup.lambda_of(a_max).min(1.52),
+                    _ => 1.52,
+                };
                 let mar = setup.lambda_for_load(to_f64(p2).unwrap_or(f64::NAN), lambda_max, which)?;
                 check_profile_on_contact(problem, mar.end * setup.period / PI)?;
                 mar
@@ -310,13 +308,28 @@ pub fn solve_collocation_f64(
     let headline = sol.digits_estimated.headline;
     // The two runs disagree below nu = 1/2 where the homogeneous solution has grown (module doc).
     let c = AdhesionParamsF64::new(problem.material());
-    let cause = || if c.eps > 0.0 { mode_sentence(c.eps, c.b, c.s) } else { "the collocation converges slowly".into() };
+    // In `periodic` the mode is not excited (docs/theory.md section 8, Problem 2): full contact.
+    let cause = || {
+        if problem.periodic_surface() {
+            "near full contact lambda -> pi/2 the collocation converges slowly (in the `periodic` convention the \
+             homogeneous mode is not excited)"
+                .into()
+        } else if c.eps > 0.0 {
+            mode_sentence(c.eps, c.b, c.s, SHORT_DIGITS)
+        } else {
+            "the collocation converges slowly".into()
+        }
+    };
     if headline < MIN_DIGITS {
         return Err(AdhesionError::IllConditioned {
             method: "f64-collocation",
             parameter: "lambda",
             value: readable_f64(sol.lambda),
-            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
+            valid: if problem.periodic_surface() {
+                "lambda below about 1.5 (`periodic`)".into()
+            } else {
+                valid_sizes(c.eps, c.b, c.s, SHORT_DIGITS)
+            },
             reason: format!("two runs agree to only {headline:.1} digits: {}", cause()),
         });
     }

@@ -11,8 +11,14 @@
 //! - [`collocation_f64`] (method 2b): collocation in eta, `f64`, one block of the loading law's
 //!   march with N = 0, where the series stops (issue 13); [`method_f64`] picks between 2 and 2b.
 //!
+//! Both surface conventions (docs/theory.md section 8, Problem 2; [`crate::model::AdhesionProblem::convention`]):
+//! `paper` (the Flamant far field) and `periodic` (u periodic; the MPFR kernel's factor
+//! [`volterra_mpfr::kernel::LateralShift`], the f64 collocation's tilted punch; the lambda^2 series
+//! is `paper` only). Checked in `convention_tests.rs` (boundary-element values, the two methods, the
+//! loading law with N = 0, the mode).
+//!
 //! Punches: the parabola, even polynomials and the circle (both methods), with the refusals of
-//! [`profile`] (convexity, |x| < R, slope limit). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
+//! [`profile`] (convexity, |x| < R, the load search's bounds). Shared: [`points`] (the requested points), [`scales`] (the scale of each output and the digits
 //! relative to it), [`tension`] (the tension zones at the oscillating edge), [`error`]. The
 //! derived material constants (eps, cosh(pi eps), B, S, C_P) are computed once per solve in
 //! [`crate::params::adhesion`] and passed as data; the quadrature and interpolation are
@@ -32,8 +38,6 @@
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
 pub mod collocation_f64;
-pub mod error;
-pub mod loading_law;
 pub mod method_f64;
 pub mod points;
 pub mod profile;
@@ -42,7 +46,7 @@ pub mod series_f64;
 pub mod tension;
 pub mod volterra_mpfr;
 
-pub use error::AdhesionError;
+pub use crate::growing_contact::error::{self, AdhesionError};
 pub use method_f64::solve_f64;
 pub use scales::{Digits, ScalesF64, ScalesMpfr};
 pub use series_f64::solution::{AdhesionSolutionF64, F64Route, PointValuesF64};
@@ -51,5 +55,7 @@ pub use volterra_mpfr::verify::{solve_verified, VerifiedSolution};
 
 #[cfg(test)]
 mod against_series;
+#[cfg(test)]
+mod convention_tests;
 #[cfg(test)]
 mod tests;

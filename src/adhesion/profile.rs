@@ -3,16 +3,16 @@
 //! [`crate::params::sliding::check_profile_on_contact`]: (i) the circle's contact stays inside
 //! |x| < R; (ii) g'' >= 0 on [0, a] (g even; sampled at 257 Chebyshev points in `f64` from the
 //! exact coefficients, relative tolerance 1e-12: a heuristic, a dip narrower than the sampling
-//! is missed); (iii) g'(a) <= [`MAX_CONTACT_SLOPE`] (g' is increasing once g is convex), the
-//! small-slope assumption [1.9]. The parabola is not checked (no slope limit, as before).
-//! Also [`largest_admissible_half_width`]: the a with g'(a) = [`MAX_CONTACT_SLOPE`], which bounds
-//! the search for the half-width of a given load.
+//! is missed). The slope is not refused: every shape gets the one small-slope warning of
+//! [`crate::params::profile::slope_warning`] (docs/theory.md section 9). Also
+//! [`half_width_search`]: where the search for the half-width of a given load may look (the
+//! circle's cap short of its wall; a polynomial's first bracket, grown as needed).
 
 use super::error::AdhesionError;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, ModelError, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
-use crate::params::sliding::{polynomial_derivative, MAX_CONTACT_SLOPE};
+use crate::params::sliding::{polynomial_derivative, CIRCLE_SIZE_CAP, MAX_CONTACT_SLOPE};
 
 /// g' and g'' of the problem's profile in `f64` (None for the parabola).
 #[allow(clippy::type_complexity)]
@@ -47,7 +47,7 @@ fn size_of(problem: &AdhesionProblem) -> (&'static str, String) {
 
 /// Checks (i)-(iii) of the module doc on the contact [-a, a].
 pub fn check_profile_on_contact(problem: &AdhesionProblem, a: f64) -> Result<(), AdhesionError> {
-    let Some((slope, curvature)) = slope_and_curvature(problem) else {
+    let Some((_, curvature)) = slope_and_curvature(problem) else {
         return Ok(());
     };
     let (size_name, size_value) = size_of(problem);
@@ -85,30 +85,60 @@ pub fn check_profile_on_contact(problem: &AdhesionProblem, a: f64) -> Result<(),
             .into());
         }
     }
-    let worst = slope(a).abs();
-    if !(worst <= MAX_CONTACT_SLOPE) {
-        return Err(ModelError::new(
-            size_name,
-            size_value,
-            format!(
-                "g'(a) on the contact {contact} is {} > {MAX_CONTACT_SLOPE}: the theory assumes a small slope |g'| << 1 [1.9] (neglected terms O(g'^2)); reduce {size_name}",
-                readable_f64(worst)
-            ),
-        )
-        .into());
-    }
     Ok(())
 }
 
+/// Where the search for the half-width of a given load may look, by profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HalfWidthSearch {
+    /// The parabola: no bound of the profile's own (its single punch is self-similar).
+    Parabola,
+    /// A polynomial: no bound; `start` is a first bracket (the a with g'(a) =
+    /// [`MAX_CONTACT_SLOPE`]), doubled while the load there is short of the target.
+    Unbounded {
+        /// The first bracket's end.
+        start: f64,
+    },
+    /// The circle: a <= [`CIRCLE_SIZE_CAP`] R, short of its wall |x| = R where g' is infinite (the
+    /// quadrature near that singularity stays affordable; |g'| = 2.06 there).
+    Capped {
+        /// The largest half-width searched.
+        a_max: f64,
+    },
+}
+
+/// The [`HalfWidthSearch`] of the problem's profile.
+pub fn half_width_search(problem: &AdhesionProblem) -> HalfWidthSearch {
+    match problem.shape() {
+        PunchShape::Circular { radius } => {
+            HalfWidthSearch::Capped { a_max: CIRCLE_SIZE_CAP * to_f64(radius).unwrap_or(f64::NAN) }
+        }
+        PunchShape::Polynomial { .. } => HalfWidthSearch::Unbounded { start: slope_half_width(problem).unwrap_or(1.0) },
+        _ => HalfWidthSearch::Parabola,
+    }
+}
+
+/// The refusal of a load whose contact would pass the circle's search cap `a_max` (`load`: the
+/// given P2; `largest`: the load at the cap, when known).
+pub fn circle_cap_error(load: &crate::model::Exact, a_max: f64, largest: Option<String>) -> AdhesionError {
+    ModelError::new(
+        "normal_load",
+        readable(load),
+        format!(
+            "the contact of the circular punch would pass a = {} = {CIRCLE_SIZE_CAP} R{}, the limit of the search short \
+             of its wall |x| = R (g' -> infinity); reduce normal_load or enlarge the radius",
+            readable_f64(a_max),
+            largest.map_or(String::new(), |p| format!(" (largest load {p})"))
+        ),
+    )
+    .into()
+}
+
 /// The half-width a with g'(a) = [`MAX_CONTACT_SLOPE`] (bisection in `f64` on the increasing
-/// g'; None for the parabola, which has no slope limit). The circle: R/sqrt(1 + 1/s^2), s the limit.
-pub fn largest_admissible_half_width(problem: &AdhesionProblem) -> Option<f64> {
+/// g'; None for the parabola): a polynomial's first search bracket.
+fn slope_half_width(problem: &AdhesionProblem) -> Option<f64> {
     let (slope, _) = slope_and_curvature(problem)?;
     let mut hi = 1.0f64;
-    if let PunchShape::Circular { radius } = problem.shape() {
-        let s = MAX_CONTACT_SLOPE;
-        return Some(to_f64(radius).unwrap_or(f64::NAN) / (1.0 + 1.0 / (s * s)).sqrt());
-    }
     while slope(hi) < MAX_CONTACT_SLOPE && hi < 1e300 {
         hi *= 2.0;
     }

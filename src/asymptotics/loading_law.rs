@@ -8,13 +8,13 @@
 //! (c = (b - a)/2), P2 = E* k (L/pi)^2 P(lambda). Every earlier contact (size eta, centre
 //! gamma(eta)) carried the complex increment (1 + i n) dP2; a point enters contact with the
 //! punch's slope at the leading (sigma = +1) and trailing (sigma = -1) ends chi_e = gamma +- lambda
-//! (`crate::adhesion::loading_law::collocation`, docs/theory.md section 10):
+//! (`crate::loading_law::collocation`, docs/theory.md section 10):
 //!   Re int_0^lambda (1 + i n) P'(eta) K_sigma(chi_e - gamma(eta), eta) d eta = pi chi_e,
 //!   K_sigma = sigma cos(chi' - 2 i eps eta) sin(d_near)^(a1) sin(d_far)^(a2),
 //!   a1 = -1/2 - sigma i eps, a2 = -1/2 + sigma i eps,
 //! d_near = (lambda + sigma gamma(lambda)) - (eta + sigma gamma(eta)) and d_far = d_near + 2 eta
 //! the distances to the near and far end of the earlier contact, |chi'| = d_near + eta
-//! (`crate::adhesion::loading_law::kernel::outside_kernel` written in these distances).
+//! (`crate::growing_contact::kernel::outside_kernel` written in these distances).
 //!
 //! # Expansion \[reconstructed\]
 //! Unknowns F(eta) = P'(eta)/eta = sum_j f_j eta^(2j) and Gam(eta) = gamma(eta)/eta =
@@ -48,7 +48,7 @@
 //! - psi, frozen at entry: the point x entering at lambda through the end sigma has
 //!   chi = pi x/L = lambda (sigma + Gam(lambda)) and psi(x) = -(2 k L/pi^2) Im int_0^lambda (1 + i n)
 //!   P' K_sigma d eta = -(2 k L/pi^2) lambda H_sigma(t) (the edge integral's imaginary part,
-//!   `crate::adhesion::loading_law::fields` psi_hat at entry). Inverting chi(lambda) (t as a series
+//!   `crate::loading_law::fields` psi_hat at entry). Inverting chi(lambda) (t as a series
 //!   in u = chi^2 by the fixed point t = u/(sigma + Gam(t))^2) gives psi(x) = sum_m A_m^sigma x^m,
 //!   x > 0 (sigma = +1) and x < 0 (sigma = -1), odd m only; printed, as for the symmetric series
 //!   (`series adhesion`), as A_m/(k (pi/L)^(m-1)) = -(2/pi) [chi^m] lambda H_sigma(t).

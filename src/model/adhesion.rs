@@ -1,7 +1,7 @@
 //! Problem 2: monotone indentation of periodic punches with complete adhesion
 //! (docs/theory.md section 4; the paper's (1.4), (2.18)-(2.26)).
 
-use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
+use super::{error::readable, error::ModelError, Convention, Exact, Material, Period, PunchShape};
 use num_traits::{Signed, Zero};
 
 /// What fixes the state of the monotone indentation.
@@ -21,6 +21,7 @@ pub struct AdhesionProblem {
     shape: PunchShape,
     size: AdhesionSize,
     reference_curvature: Exact,
+    convention: Convention,
 }
 
 impl AdhesionProblem {
@@ -28,7 +29,7 @@ impl AdhesionProblem {
     /// is symmetric: a polynomial with a non-zero odd coefficient is refused, naming
     /// `coefficients`), positive sizes, 2a < L for a given a. (For a given load every P2 > 0 has
     /// a solution with 2a < L, since P2(a) -> infinity as 2a -> L; the single punch's half-width
-    /// under a given load is searched by the solvers for every profile.) Convexity, the circle's |x| < R and the slope limit on the contact are
+    /// under a given load is searched by the solvers for every profile.) Convexity and the circle's |x| < R on the contact are
     /// checked by the solvers once a is known ([`crate::adhesion::profile`]).
     pub fn new(material: Material, period: Period, shape: PunchShape, size: AdhesionSize) -> Result<Self, ModelError> {
         match &shape {
@@ -74,7 +75,7 @@ impl AdhesionProblem {
             }
         }
         let reference_curvature = reference_curvature(&shape, &period, &size);
-        Ok(AdhesionProblem { material, period, shape, size, reference_curvature })
+        Ok(AdhesionProblem { material, period, shape, size, reference_curvature, convention: Convention::Paper })
     }
 
     /// Half-plane material.
@@ -92,6 +93,23 @@ impl AdhesionProblem {
     /// Half-width or load.
     pub fn size(&self) -> &AdhesionSize {
         &self.size
+    }
+    /// The surface convention (docs/theory.md section 8): `paper` (the default) keeps the Flamant
+    /// far field sigma_xx = -P2/L (u not periodic, each punch translates with the surface under
+    /// it), `periodic` makes u periodic (a laterally rigid row, zero mean lateral strain). The
+    /// single punch is the same in both.
+    pub fn convention(&self) -> Convention {
+        self.convention
+    }
+    /// The same problem in the convention `c`.
+    pub fn with_convention(mut self, c: Convention) -> Self {
+        self.convention = c;
+        self
+    }
+    /// Whether the `periodic` convention's lateral term applies: the `periodic` convention on a
+    /// finite period (the term beta P2/L vanishes for the single punch).
+    pub fn periodic_surface(&self) -> bool {
+        self.convention == Convention::PeriodicSurface && matches!(self.period, Period::Finite(_))
     }
 
     /// The reference curvature k of the scalings P2 = E* k (L/pi)^2 P, psi ~ k a, phi ~ k a^2,

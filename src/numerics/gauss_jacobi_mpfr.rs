@@ -42,7 +42,9 @@ const DD_BITS: u32 = 116;
 const DD_ONLY_PREC: u32 = 64;
 
 mod double_double;
-use double_double::{dd_rule, Dd, EvalDd};
+mod recurrence_eval;
+use double_double::{Dd, EvalDd, LANES};
+use recurrence_eval::Eval;
 
 /// Largest number of nodes a rule may have (the f64 start and the O(n^2) Newton phase are
 /// the limits; beyond this the caller should change method).
@@ -278,73 +280,6 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Option<Vec<f64>> {
     Some(d)
 }
 
-/// Scratch for the recurrence at one precision, with the constants of the structure relation.
-struct Eval {
-    a: Vec<Float>,
-    ib: Vec<Float>,
-    b: Vec<Float>,
-    /// (alpha - beta)/(2n + alpha + beta).
-    shift: Float,
-    /// (2n + alpha + beta + 1) b_n.
-    c2: Float,
-}
-
-impl Eval {
-    fn new(alpha: &Float, beta: &Float, a: &[Float], b: &[Float], prec: u32) -> Self {
-        let n = a.len();
-        let s = Float::with_val(prec, alpha + beta) + (2 * n) as u32;
-        let shift = Float::with_val(prec, alpha - beta) / &s;
-        let c2 = Float::with_val(prec, &s + 1u32) * &b[n];
-        Eval {
-            a: a.iter().map(|x| Float::with_val(prec, x)).collect(),
-            b: b.iter().map(|x| Float::with_val(prec, x)).collect(),
-            ib: b
-                .iter()
-                .map(|x| {
-                    if x.is_zero() {
-                        Float::with_val(prec, 0)
-                    } else {
-                        Float::with_val(prec, 1u32) / Float::with_val(prec, x)
-                    }
-                })
-                .collect(),
-            shift,
-            c2,
-        }
-    }
-
-    /// p_n(x), p_n'(x), p_{n-1}(x) (p_0 = 1; n = the length of the recurrence) for x in (-1, 1).
-    ///
-    /// The values by the recurrence; the derivative by the structure relation of the module doc,
-    /// $(1-x^2) p_n' = c_1(x) p_n + c_2 p_{n-1}$: its leading terms give $c_1 = n (\text{shift} - x)$
-    /// (with shift = (alpha - beta)/(2n + alpha + beta), DLMF 18.9.16 for the classical normalisation),
-    /// and $c_2 = \langle (1-x^2) p_n', p_{n-1} \rangle - \langle c_1 p_n, p_{n-1} \rangle$ in the
-    /// weight's inner product: by parts the first is $(n + \alpha + \beta + 1) b_n$, the second
-    /// $-n b_n$ (from $\langle x p_n, p_{n-1} \rangle = b_n$ and $k_{n-1}/k_n = b_n$), so
-    /// $c_2 = (2n + \alpha + \beta + 1) b_n$. The test `structure_relation_derivative` compares it
-    /// with the derivative of the recurrence.
-    fn run(&self, x: &Float, prec: u32) -> (Float, Float, Float) {
-        let n = self.a.len();
-        let mut pm = Float::with_val(prec, 0);
-        let mut p = Float::with_val(prec, 1);
-        let mut xa = Float::with_val(prec, 0);
-        let mut t = Float::with_val(prec, 0);
-        for k in 0..n {
-            xa.assign(x - &self.a[k]);
-            t.assign(&xa * &p - &self.b[k] * &pm);
-            t *= &self.ib[k + 1];
-            std::mem::swap(&mut pm, &mut p);
-            std::mem::swap(&mut p, &mut t);
-        }
-        let c1 = Float::with_val(prec, &self.shift - x) * n as u32;
-        let num = Float::with_val(prec, &c1 * &p) + Float::with_val(prec, &self.c2 * &pm);
-        let one_minus = Float::with_val(prec, 1u32 - x);
-        let one_plus = Float::with_val(prec, x + 1u32);
-        let dp = num / Float::with_val(prec, one_minus * one_plus);
-        (p, dp, pm)
-    }
-}
-
 /// The n-point rule computed afresh (no cache); see the module doc for the method.
 pub fn gauss_jacobi_uncached(
     alpha: &Float,
@@ -519,6 +454,92 @@ fn newton_rule(
         let w = Float::with_val(wp, &mu0 / &sum);
         nodes.push(Float::with_val(prec, &x));
         weights.push(Float::with_val(prec, &w));
+    }
+    checked_rule(alpha, beta, nodes, weights, prec)
+}
+
+/// The rule of `newton_rule` for `prec` <= `DD_ONLY_PREC`, every Newton pass in double-double
+/// (about 100 correct bits, `wp` ~ 100-108 here) instead of the MPFR passes at `wp` bits: from the f64
+/// start `start`, passes until the correction is below 2^-(prec + 28) (two, as the ladder at `wp`:
+/// one to ~100 bits, one whose negligible correction yields p_n' and p_{n-1} for the weight), the
+/// weight mu0 / (b_n p_n' p_{n-1}) as in the MPFR route; then each node and weight rounded to
+/// `prec` bits. Both routes carry more than 30 bits beyond `prec`, so both round to the same
+/// `prec`-bit numbers except when a value lies within about 2^-95 of a rounding boundary (test
+/// `double_double_route_rounds_as_the_mpfr_route`: bit for bit, the locating stage's rules of
+/// `sliding::reduction_mpfr` among them). A Newton pass in double-double costs about a quarter
+/// of one in MPFR at 104 bits: the 192-node rule of the sinusoid's bracket refinement took 8.7 ms
+/// of a 30 ms cold solve (`GJ` timing of each built rule, a temporary trace).
+fn dd_rule(
+    alpha: &Float,
+    beta: &Float,
+    (a, b): (&[Float], &[Float]),
+    start: &[f64],
+    mu0: &Float,
+    prec: u32,
+    wp: u32,
+) -> Result<GaussJacobiRule, QuadratureError> {
+    let n = start.len();
+    let dd = EvalDd::new(&Eval::new(alpha, beta, a, b, wp));
+    let (mu0, bn) = (Dd::of(mu0), Dd::of(&b[n]));
+    let tol = 2f64.powi(-(prec as i32) - 28);
+    // hi + lo rounded once to `prec` bits (hi + lo is exact at 2 x 64 + 64 bits for |lo| <= ulp(hi)).
+    let round = |v: Dd| {
+        let mut f = Float::with_val(192, v.0);
+        f += v.1;
+        Float::with_val(prec, &f)
+    };
+    let mut nodes = Vec::with_capacity(n);
+    let mut weights = Vec::with_capacity(n);
+    // Newton in chunks of LANES nodes (the last chunk padded with its last node); a converged
+    // node keeps its x and its (p_n', p_{n-1}).
+    let mut found: Vec<(Dd, Dd, Dd)> = Vec::with_capacity(n);
+    for chunk in start.chunks(LANES) {
+        let at = |l: usize| chunk[l.min(chunk.len() - 1)];
+        let mut x: [Dd; LANES] = std::array::from_fn(|l| Dd(at(l), 0.0));
+        let mut last: [Option<(Dd, Dd)>; LANES] = [None; LANES];
+        for pass in 0..8 {
+            let values = dd.run_lanes(&x);
+            for l in 0..LANES {
+                if last[l].is_some() {
+                    continue;
+                }
+                let (p, dp, pm) = values[l];
+                let dx = p.div(dp);
+                if !(dx.0.is_finite() && dx.1.is_finite()) || dp.0 == 0.0 {
+                    let i = found.len() + l.min(chunk.len() - 1);
+                    return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
+                }
+                x[l] = x[l].sub(dx);
+                if pass >= 1 && dx.0.abs() <= tol {
+                    last[l] = Some((dp, pm));
+                }
+            }
+            if last.iter().all(Option::is_some) {
+                break;
+            }
+        }
+        let base = found.len();
+        for l in 0..chunk.len() {
+            let Some((dp, pm)) = last[l] else {
+                let i = base + l;
+                return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
+            };
+            found.push((x[l], dp, pm));
+        }
+    }
+    for (i, (&x0, &(x, dp, pm))) in start.iter().zip(&found).enumerate() {
+        if (x.0 - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
+            return Err(QuadratureError::NoConvergence {
+                n,
+                why: format!("Newton drifted from its start at node {i}"),
+            });
+        }
+        let sum = dp.mul(pm).mul(bn);
+        if !(sum.0 > 0.0) {
+            return Err(QuadratureError::NoConvergence { n, why: format!("non-positive Christoffel sum at node {i}") });
+        }
+        nodes.push(round(x));
+        weights.push(round(mu0.div(sum)));
     }
     checked_rule(alpha, beta, nodes, weights, prec)
 }

@@ -1,12 +1,40 @@
 //! The punch profile as the checks see it (docs/theory.md sections 1, 9): the exact derivatives of a
-//! polynomial, the height of the punch row, and the refusals of a general profile on its contact
-//! (convexity, slope, the circle's wall). Re-exported from [`super::sliding`].
+//! polynomial, the height of the punch row, the refusals of a general profile on its contact
+//! (convexity, the circle's wall) and the small-slope warning of every shape in both problems
+//! ([`slope_warning`], docs/theory.md section 9). Re-exported from [`super::sliding`].
 
-use super::sliding::ShapeF64;
 use crate::error::Error;
 use crate::model::{Exact, ModelError, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use std::f64::consts::PI;
+
+/// Punch shape in `f64`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeF64 {
+    /// g = k x^2.
+    Parabolic {
+        /// k.
+        k: f64,
+    },
+    /// g = D (1 - cos(2 pi x/L)) [2.16].
+    Sinusoidal {
+        /// D.
+        d: f64,
+    },
+    /// g = sum_j c_j x^j (docs/theory.md section 9), by the coefficients of its derivatives, each
+    /// formed exactly and rounded once (trailing zeros dropped).
+    Polynomial {
+        /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
+        slope: Vec<f64>,
+        /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
+        curvature: Vec<f64>,
+    },
+    /// g = R - sqrt(R^2 - x^2) (docs/theory.md section 9).
+    Circular {
+        /// R.
+        r: f64,
+    },
+}
 
 /// g of the punch row at x (docs/theory.md sections 1, 9): the profile on the cell (-L/2, L/2)
 /// repeated with period L (x reduced to the cell; the sinusoid is periodic by itself), so a
@@ -57,14 +85,72 @@ pub fn polynomial_derivative(coefficients: &[Exact], order: usize) -> Vec<Exact>
     d
 }
 
-/// Largest |g'| accepted on the contact of a polynomial or circular punch. The theory
-/// linearises the boundary conditions in the slope ([1.9]: |g'| << 1, the boundary of the
-/// half-plane and its normal are taken as those of the undeformed surface); the neglected terms
-/// are relative O(g'^2) (e.g. the normal's direction cosine 1/sqrt(1 + g'^2) = 1 - g'^2/2), i.e.
-/// up to 12% at |g'| = 1/2, already a coarse model. Beyond it the contact is refused rather than
-/// computed to many digits of a model that no longer describes it. (The parabola and the sinusoid
-/// keep their earlier behaviour: no slope limit.)
+/// Largest |g'| on the contact without a warning, for every shape in both problems (docs/theory.md
+/// section 9, the small-slope rule). The theory linearises the boundary conditions in the slope
+/// ([1.9]: |g'| << 1, the boundary of the half-plane and its normal are taken as those of the
+/// undeformed surface); the neglected terms are relative O(g'^2) (e.g. the normal's direction
+/// cosine 1/sqrt(1 + g'^2) = 1 - g'^2/2), i.e. up to 12% at |g'| = 1/2. Beyond it the answer is
+/// still the linear problem's, to the digits printed (the problem is linear in the profile: g
+/// scaled by s scales every load and stress by s at the same contact, so any slope is a small
+/// one's answer scaled), and the output warns with the slope and where ([`slope_warning`]).
 pub const MAX_CONTACT_SLOPE: f64 = 0.5;
+
+/// The largest |g'| on the contact [`left`, `right`] of `shape` (`period`: L, or None for a single
+/// punch), and where: (|g'|, x). At the ends for the parabola, a convex polynomial (g' increasing)
+/// and the circle; the sinusoid's g' = (2 pi D/L) sin(2 pi x/L) peaks at x = +-L/4 when the contact
+/// holds it. `f64` from the exact parameters (a warning's figure, not a printed result).
+pub fn max_contact_slope(shape: &PunchShape, period: Option<f64>, left: f64, right: f64) -> (f64, f64) {
+    let f = |q: &Exact| to_f64(q).unwrap_or(f64::NAN);
+    let slope: Box<dyn Fn(f64) -> f64> = match shape {
+        PunchShape::Parabolic { k } => {
+            let k = f(k);
+            Box::new(move |x| 2.0 * k * x)
+        }
+        PunchShape::Sinusoidal { amplitude } => {
+            let (d, l) = (f(amplitude), period.unwrap_or(f64::NAN));
+            let peak = 2.0 * PI * d / l;
+            for x in [-0.25 * l, 0.25 * l] {
+                if left <= x && x <= right {
+                    return (peak, x);
+                }
+            }
+            Box::new(move |x| peak * (2.0 * PI * x / l).sin())
+        }
+        PunchShape::Polynomial { coefficients } => {
+            let d1: Vec<f64> = polynomial_derivative(coefficients, 1).iter().map(f).collect();
+            Box::new(move |x| d1.iter().rev().fold(0.0, |acc, c| acc * x + c))
+        }
+        PunchShape::Circular { radius } => {
+            let r = f(radius);
+            Box::new(move |x| x / ((r - x) * (r + x)).sqrt())
+        }
+    };
+    let (l, r) = (slope(left).abs(), slope(right).abs());
+    if r >= l {
+        (r, right)
+    } else {
+        (l, left)
+    }
+}
+
+/// The small-slope warning (docs/theory.md section 9), one rule for every shape in both problems:
+/// None when max |g'| on the contact [`left`, `right`] is at most [`MAX_CONTACT_SLOPE`], else a
+/// sentence naming the slope, where it is reached and what it means.
+pub fn slope_warning(shape: &PunchShape, period: Option<f64>, left: f64, right: f64) -> Option<String> {
+    let (s, x) = max_contact_slope(shape, period, left, right);
+    (s > MAX_CONTACT_SLOPE).then(|| {
+        format!(
+            "small slope: |g'| = {} at x = {} on the contact [{}, {}] exceeds {MAX_CONTACT_SLOPE}; the linear theory \
+             assumes |g'| << 1 [1.9] (neglected terms relative O(g'^2), about {:.0}% here): the answer is the linear \
+             problem's, to the digits printed, and a coarse model of the physical contact (docs/theory.md section 9)",
+            crate::numerics::accuracy::readable_f64(s),
+            crate::numerics::accuracy::readable_f64(x),
+            crate::numerics::accuracy::readable_f64(left),
+            crate::numerics::accuracy::readable_f64(right),
+            50.0 * s * s
+        )
+    })
+}
 
 /// Largest half-length, as a fraction of the circle's radius, that the locating stages search:
 /// there |g'| = 0.9/sqrt(1 - 0.81) = 2.06, far beyond [`MAX_CONTACT_SLOPE`], so no admissible
@@ -75,9 +161,9 @@ pub const CIRCLE_SIZE_CAP: f64 = 0.9;
 /// (docs/theory.md section 9), evaluated in `f64` from the exact profile: (i) the circle's contact
 /// must stay inside |x| < R; (ii) g'' >= 0 on [-a, b] (sampled at 257 Chebyshev points and the
 /// ends, relative tolerance 1e-12: a heuristic, a dip narrower than the sampling is missed);
-/// (iii) max |g'| on [-a, b] <= [`MAX_CONTACT_SLOPE`] (at the ends, g' being monotone once
-/// convex). The parabola and the sinusoid are not checked here. Each error names the parameter
-/// to change, its value and the valid range.
+/// The slope is not refused: [`slope_warning`] is the one rule of every shape. The parabola and
+/// the sinusoid are not checked here. Each error names the parameter to change, its value and the
+/// valid range.
 pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64) -> Result<(), Error> {
     // The texts of the errors, formatted only when one is returned (the f64 solver calls this
     // for every solve, most of them of the unchecked shapes).
@@ -96,13 +182,11 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
             crate::numerics::accuracy::readable_f64(right)
         )
     };
-    let (slope_at, curvature_at): (Box<dyn Fn(f64) -> f64>, Box<dyn Fn(f64) -> f64>) = match problem.shape() {
+    let curvature_at: Box<dyn Fn(f64) -> f64> = match problem.shape() {
         PunchShape::Polynomial { coefficients } => {
-            let to = |v: Vec<Exact>| v.iter().map(|c| to_f64(c).unwrap_or(f64::NAN)).collect::<Vec<f64>>();
-            let d1 = to(polynomial_derivative(coefficients, 1));
-            let d2 = to(polynomial_derivative(coefficients, 2));
-            let horner = |c: Vec<f64>| move |x: f64| c.iter().rev().fold(0.0, |acc, v| acc * x + v);
-            (Box::new(horner(d1)), Box::new(horner(d2)))
+            let d2: Vec<f64> =
+                polynomial_derivative(coefficients, 2).iter().map(|c| to_f64(c).unwrap_or(f64::NAN)).collect();
+            Box::new(move |x: f64| d2.iter().rev().fold(0.0, |acc, v| acc * x + v))
         }
         PunchShape::Circular { radius } => {
             let r = to_f64(radius).unwrap_or(f64::NAN);
@@ -117,10 +201,7 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
                     ),
                 )));
             }
-            (
-                Box::new(move |x: f64| x / ((r - x) * (r + x)).sqrt()),
-                Box::new(move |x: f64| r * r / ((r - x) * (r + x)).powf(1.5)),
-            )
+            Box::new(move |x: f64| r * r / ((r - x) * (r + x)).powf(1.5))
         }
         _ => return Ok(()),
     };
@@ -144,19 +225,6 @@ pub fn check_profile_on_contact(problem: &SlidingProblem, left: f64, right: f64)
                 contact(),
                 crate::numerics::accuracy::readable_f64(*x),
                 crate::numerics::accuracy::readable_f64(*v)
-            ),
-        )));
-    }
-    // (iii) small slope.
-    let worst = slope_at(left).abs().max(slope_at(right).abs());
-    if !(worst <= MAX_CONTACT_SLOPE) {
-        return Err(Error::Input(ModelError::new(
-            size_name,
-            size_value(),
-            format!(
-                "max |g'| on the contact {} is {} > {MAX_CONTACT_SLOPE}: the theory assumes a small slope |g'| << 1 [1.9] (neglected terms O(g'^2)); reduce {size_name}",
-                contact(),
-                crate::numerics::accuracy::readable_f64(worst)
             ),
         )));
     }

@@ -18,7 +18,7 @@
 //! the `f64` range reach the solvers' `f64` stages; [`SlidingParamsMpfr::unit`] converts back.
 
 pub use super::profile::{
-    check_profile_on_contact, polynomial_derivative, row_height_f64, CIRCLE_SIZE_CAP, MAX_CONTACT_SLOPE,
+    check_profile_on_contact, polynomial_derivative, row_height_f64, ShapeF64, CIRCLE_SIZE_CAP, MAX_CONTACT_SLOPE,
 };
 use crate::error::Error;
 use crate::model::{Convention, Exact, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem};
@@ -191,34 +191,6 @@ pub fn polynomial_curvature_scale_mpfr(slope: &[Float], target: &TargetMpfr, pre
         )));
     }
     Ok(k)
-}
-
-/// Punch shape in `f64`.
-#[derive(Debug, Clone, PartialEq)]
-pub enum ShapeF64 {
-    /// g = k x^2.
-    Parabolic {
-        /// k.
-        k: f64,
-    },
-    /// g = D (1 - cos(2 pi x/L)) [2.16].
-    Sinusoidal {
-        /// D.
-        d: f64,
-    },
-    /// g = sum_j c_j x^j (docs/theory.md section 9), by the coefficients of its derivatives, each
-    /// formed exactly and rounded once (trailing zeros dropped).
-    Polynomial {
-        /// g' = sum_j slope\[j\] x^j, slope\[j\] = (j + 1) c_(j+1).
-        slope: Vec<f64>,
-        /// g'' = sum_j curvature\[j\] x^j, curvature\[j\] = (j + 2)(j + 1) c_(j+2).
-        curvature: Vec<f64>,
-    },
-    /// g = R - sqrt(R^2 - x^2) (docs/theory.md section 9).
-    Circular {
-        /// R.
-        r: f64,
-    },
 }
 
 /// Punch shape in MPFR.

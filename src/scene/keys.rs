@@ -115,19 +115,30 @@ pub const CONVENTION_RANGE: &str = "\"paper\" or \"periodic\"";
 /// Range text of `[problem] kind`.
 pub const KIND_RANGE: &str = "\"sliding\" or \"adhesion\"";
 /// Range text of `[punch] shape`.
-pub const SHAPE_RANGE: &str = "\"parabolic\", \"sinusoidal\", \"polynomial\" or \"circular\"";
+pub const SHAPE_RANGE: &str =
+    "\"parabolic\", \"sinusoidal\", \"polynomial\" or \"circular\" (aliases \"parabola\", \"sinusoid\", \"poly\", \"circle\")";
+
+/// The one alias of each punch shape (issue 30), accepted wherever a shape is named: the scene's
+/// `[punch] shape` and the command line's `--shape`. Outputs print the canonical name.
+pub const SHAPE_ALIASES: [(&str, &str); 4] =
+    [("parabola", "parabolic"), ("sinusoid", "sinusoidal"), ("poly", "polynomial"), ("circle", "circular")];
+
+/// The canonical name of a shape given by its name or its alias (other text unchanged).
+pub fn canonical_shape(name: &str) -> &str {
+    SHAPE_ALIASES.iter().find(|(alias, _)| *alias == name).map_or(name, |(_, canonical)| canonical)
+}
 
 /// Every key the parser accepts, table by table, in the order of its messages.
 pub const KEYS: &[Key] = &[
     key("problem", "kind", All, "which problem: Problem 1 (steady sliding with friction and wear) or Problem 2 (indentation with complete adhesion)", "-", KIND_RANGE, "\"sliding\"", Set),
-    key("problem", "convention", All, "surface convention (docs/theory.md section 8): \"paper\" solves the paper's [2.8] as it stands; \"periodic\" adds K = (kappa P2 - 2 beta l tau0)/L so that the surface closes over every period; Problem 2 without a law is the same in both. Optional, default \"paper\"; `solve --convention` overrides it", "-", CONVENTION_RANGE, "\"paper\"", Commented),
+    key("problem", "convention", All, "surface convention (docs/theory.md section 8): \"paper\" solves the paper's [2.8] as it stands; \"periodic\" adds K = (kappa P2 - 2 beta l tau0)/L so that the surface closes over every period; in Problem 2 \"periodic\" makes u periodic (a laterally rigid row) where \"paper\" keeps the Flamant far field sigma_xx = -P2/L. Optional, default \"paper\"; `solve --convention` overrides it", "-", CONVENTION_RANGE, "\"paper\"", Commented),
     key("material", "poisson_ratio", All, "Poisson's ratio nu of the elastic half-plane (plane strain)", "-", "an exact number in [0, 1/2]", "\"0.3\"", Set),
     key("material", "youngs_modulus", All, "Young's modulus E (give it or contact_modulus, not both)", "stress", "an exact number > 0", "\"1\"", Commented),
     key("material", "contact_modulus", All, "contact modulus E* = E/(1 - nu^2) (give it or youngs_modulus, not both)", "stress", "an exact number > 0", "\"1\"", Set),
     key("punch", "shape", All, "punch profile g on the cell (-L/2, L/2), repeated with period L (docs/theory.md section 9)", "-", SHAPE_RANGE, "\"parabolic\"", Set),
     key("punch", "k", Shape("parabolic"), "curvature parameter of the parabola g = k x^2", "1/length", "an exact number > 0", "\"1\"", Set),
     key("punch", "amplitude", Shape("sinusoidal"), "amplitude D of the sinusoid g = D (1 - cos(2 pi x/L)) (needs a finite period)", "length", "an exact number > 0", "\"0.01\"", Set),
-    key("punch", "coefficients", Shape("polynomial"), "coefficients c_j of g = sum_j c_j x^j in numpy order (index j multiplies x^j), exact numbers, c_0 = 0; the profile must be convex and |g'| <= 1/2 on the contact", "length^(1-j)", "a list of exact numbers with c_0 = 0 and some c_j != 0, j >= 2", "[\"0\", \"0\", \"1\", \"0\", \"1/10\"]", Set),
+    key("punch", "coefficients", Shape("polynomial"), "coefficients c_j of g = sum_j c_j x^j in numpy order (index j multiplies x^j), exact numbers, c_0 = 0; the profile must be convex on the contact (beyond |g'| = 1/2 the answer carries a small-slope warning, docs/theory.md section 9)", "length^(1-j)", "a list of exact numbers with c_0 = 0 and some c_j != 0, j >= 2", "[\"0\", \"0\", \"1\", \"0\", \"1/10\"]", Set),
     key("punch", "radius", Shape("circular"), "radius R of the circular punch g = R - sqrt(R^2 - x^2) (the contact must stay within |x| < R)", "length", "an exact number > 0", "\"1/2\"", Set),
     key("punch", "period", All, "period L of the row of punches, or \"inf\" for a single punch", "length", "an exact number > 0, or \"inf\"", "\"1\"", Set),
     key("sliding", "normal_load", Sliding, "normal load P2 per punch (give it or half_length, not both)", "force/length", "an exact number > 0 that the punch can carry", "\"0.005\"", Set),
@@ -142,9 +153,9 @@ pub const KEYS: &[Key] = &[
     key("adhesion", "half_length", Law, "half-length l = (a + b)/2 of the asymmetric contact [-a, b] (give it or normal_load)", "length", "an exact number > 0 with the contact inside its cell", "\"0.05\"", Set),
     key("adhesion", "normal_load", AnyAdhesion, "normal load P2 per punch (instead of the size: the size is then found)", "force/length", "an exact number > 0", "\"0.01\"", Commented),
     key("output", "digits", All, "digits requested: forces the verified MPFR method at this working precision (`solve --digits` overrides it)", "digits", DIGITS_RANGE, "30", Commented),
-    key("output", "target_digits", All, "accuracy target: `solve` and the report run the cheapest method predicted to meet it (calibration/methods.csv); without it and without digits `solve` runs MPFR at 30 digits", "digits", DIGITS_RANGE, "8", Set),
+    key("output", "target_digits", All, "accuracy target: `solve` and the report run the cheapest method predicted to meet it (calibration/methods.csv), e.g. 8 for a fast f64 answer. Optional: without it and without digits `solve` runs verified MPFR at 30 digits", "digits", DIGITS_RANGE, "8", Commented),
     key("output", "points", All, "points where the fields are printed: Problem 1 and the loading law xh = (x - c)/l in (-1, 1); Problem 2 x/a in [0, 1]", "-", "exact numbers in (-1, 1) (xh) or [0, 1] (x/a)", "[\"-0.5\", \"0\", \"0.5\"]", Set),
-    key("output", "method", All, "forces a method: \"mpfr\" (verified high precision), \"f64\" (fast, estimated digits), \"series\" (truncated exact series, Problem 1 with a given normal_load and a finite period), \"pade\" (Pade approximants of that series, docs/theory.md section 11); `solve --method` overrides it", "-", METHOD_RANGE, "\"f64\"", Commented),
+    key("output", "method", All, "forces a method: \"mpfr\" (verified high precision), \"f64\" (fast, estimated digits), \"series\" (truncated exact series: Problem 1, parabolic or sinusoidal punch, a given normal_load and a finite period; a polynomial or circular punch is refused), \"pade\" (Pade approximants of that series, docs/theory.md section 11); `solve --method` overrides it", "-", METHOD_RANGE, "\"f64\"", Commented),
     key("output", "series_order", All, "order N of the series and pade methods: every term through Lambda^N. Optional, default 12; `solve --order` overrides it", "-", SERIES_ORDER_RANGE, "12", Commented),
     key("sweep", "normal_load", All, "load-size curve for the report: the scene's load replaced by each value in turn (one sweep key per scene; `solve` ignores the sweep)", "force/length", "a list of 1 to 64 exact numbers, each valid for the problem", "[\"0.001\", \"0.003\", \"0.005\"]", Set),
     key("sweep", "half_length", SlidingOrLaw, "load-size curve over the half-length l instead of the load", "length", "a list of 1 to 64 exact numbers, each valid for the problem", "[\"0.02\", \"0.05\"]", Commented),
@@ -269,7 +280,6 @@ mod tests {
 
     #[test]
     fn range_texts_match_the_parser_limits() {
-        assert_eq!(DIGITS_RANGE, format!("an integer in [1, {}]", super::super::parse::MAX_DIGITS));
         assert_eq!(SERIES_ORDER_RANGE, format!("an integer in [0, {MAX_SERIES_ORDER}]"));
     }
 

@@ -33,8 +33,9 @@
 //! period (the consistent model of a row of identical punches at one height). The two coincide
 //! when K = 0 (e.g. frictionless without wear and tau0). Any other value is an input error.
 //! The series method has only the paper's expansions and refuses `"periodic"` when K can be
-//! nonzero. Problem 2 is the same in both conventions: an adhesion scene accepts either value
-//! and it changes nothing. `periodic-contact solve --convention` overrides the key.
+//! nonzero. In Problem 2 `"periodic"` makes the tangential displacement u periodic (a laterally
+//! rigid row), `"paper"` keeps the Flamant far field sigma_xx = -P2/L (docs/theory.md section 8);
+//! the stick condition feels the difference. `periodic-contact solve --convention` overrides the key.
 //!
 //! Problem 2 (adhesion, parabolic punch only) replaces `[sliding]` by
 //!
@@ -49,8 +50,8 @@
 //!
 //! Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; an asymmetric contact
 //! [-a, b]) is an adhesion scene whose `[adhesion]` states the law; it parses to
-//! [`SceneProblem::LoadingLaw`], and `[problem] convention` matters there (P1 != 0 brings in the
-//! rotation term):
+//! [`SceneProblem::LoadingLaw`], and `[problem] convention` matters there (`periodic`: no rotation
+//! with P1 != 0 and u periodic):
 //!
 //! ```toml
 //! [adhesion]
@@ -212,7 +213,7 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
             };
             AdhesionProblem::new(p.material().clone(), p.period().clone(), p.shape().clone(), size)
                 .ok()
-                .map(SceneProblem::Adhesion)
+                .map(|q| SceneProblem::Adhesion(q.with_convention(p.convention())))
         }
         (SceneProblem::LoadingLaw(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
             let size = if parameter == SweepParameter::NormalLoad {

@@ -42,7 +42,7 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
                 let output = parse_output(root, PointRange::OpenUnit)?;
                 (output, SceneProblem::LoadingLaw(parse_loading_law(root, convention)?))
             } else {
-                (parse_output(root, PointRange::ClosedHalf)?, SceneProblem::Adhesion(parse_adhesion(root)?))
+                (parse_output(root, PointRange::ClosedHalf)?, SceneProblem::Adhesion(parse_adhesion(root, convention)?))
             };
             let (output, problem) = problem;
             let sweep = parse_sweep(root, &problem)?;
@@ -52,9 +52,9 @@ pub fn parse_scene(text: &str) -> Result<Scene, ModelError> {
     }
 }
 
-/// `[problem] convention`: "paper" (the default) or "periodic" (docs/theory.md section 8). Problem 2
-/// (symmetric: P1 = 0, no wear) is the same problem in both, so an adhesion scene accepts either
-/// value and it has no effect there; under a loading law (P1 != 0) it brings in the rotation term.
+/// `[problem] convention`: "paper" (the default) or "periodic" (docs/theory.md section 8). In
+/// Problem 2 `periodic` makes u periodic (docs/theory.md section 8, Problem 2: the lateral term
+/// i beta P/L); under a loading law (P1 != 0) it also removes the rotation.
 fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
     match value(problem, "problem", "convention")? {
         None => Ok(Convention::Paper),
@@ -169,9 +169,15 @@ fn prefixed(mut e: ModelError, prefix: &str) -> ModelError {
     e
 }
 
+/// Whether `[punch] period` names the single punch: "inf" (as the template writes it), or
+/// "infinity" in any case.
+fn is_infinite_period(text: &str) -> bool {
+    matches!(text.trim().to_ascii_lowercase().as_str(), "inf" | "infinity")
+}
+
 fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
     let p = table(root, "punch")?;
-    let shape = string(p, "punch", "shape")?;
+    let shape = keys::canonical_shape(&string(p, "punch", "shape")?).to_string();
     let period = match value(p, "punch", "period")? {
         None => {
             return Err(ModelError::new(
@@ -180,8 +186,12 @@ fn parse_punch(root: &Table) -> Result<(PunchShape, Period), ModelError> {
                 "is required: a number > 0, or \"inf\" for a single punch",
             ))
         }
-        Some(Value::String(s)) if s.value().trim() == "inf" => Period::Infinite,
-        Some(v) => Period::finite(exact_value(v, "punch.period")?).map_err(|e| prefixed(e, "punch"))?,
+        Some(Value::String(s)) if is_infinite_period(s.value()) => Period::Infinite,
+        Some(v) => Period::finite(
+            exact_value(v, "punch.period")
+                .map_err(|e| ModelError { expected: format!("{}; or \"inf\" for a single punch", e.expected), ..e })?,
+        )
+        .map_err(|e| prefixed(e, "punch"))?,
     };
     if keys::SHAPES.contains(&shape.as_str()) {
         allow_keys(p, "punch", &keys::allowed("punch", Kind::Sliding, &shape))?;
@@ -237,7 +247,7 @@ fn parse_sliding(root: &Table, convention: Convention) -> Result<SlidingProblem,
         .map_err(|e| prefixed(e, "sliding"))
 }
 
-fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
+fn parse_adhesion(root: &Table, convention: Convention) -> Result<AdhesionProblem, ModelError> {
     let material = parse_material(root)?;
     let (shape, period) = parse_punch(root)?;
     let s = table(root, "adhesion")?;
@@ -250,7 +260,9 @@ fn parse_adhesion(root: &Table) -> Result<AdhesionProblem, ModelError> {
         (None, Some(p)) => AdhesionSize::NormalLoad(p),
         (None, None) => return Err(ModelError::new("adhesion", "(missing)", "give half_width or normal_load")),
     };
-    AdhesionProblem::new(material, period, shape, size).map_err(|e| prefixed(e, "adhesion"))
+    AdhesionProblem::new(material, period, shape, size)
+        .map(|p| p.with_convention(convention))
+        .map_err(|e| prefixed(e, "adhesion"))
 }
 
 /// The keys of `[adhesion]` that make it the loading-law problem (docs/theory.md section 10).
@@ -441,4 +453,34 @@ fn parse_sweep(root: &Table, problem: &SceneProblem) -> Result<Option<Sweep>, Mo
         values.push(x);
     }
     Ok(Some(Sweep { parameter, values }))
+}
+
+#[cfg(test)]
+mod tests {
+    /// The key table's range text states the parser's limit.
+    #[test]
+    fn digits_range_text_matches_the_parser_limit() {
+        assert_eq!(super::keys::DIGITS_RANGE, format!("an integer in [1, {}]", super::MAX_DIGITS));
+    }
+
+    const SCENE: &str = "[problem]\nkind = \"sliding\"\n[material]\npoisson_ratio = \"0.3\"\ncontact_modulus = \"1\"\n\
+                         [punch]\nshape = \"parabolic\"\nk = \"1\"\nperiod = PERIOD\n[sliding]\nnormal_load = \"0.005\"\n";
+
+    /// Issue 30: "Infinity" names the single punch as "inf" does, and a period that is neither a
+    /// number nor infinite gets an error that says "inf" is accepted.
+    #[test]
+    fn the_single_punch_is_inf_or_infinity() {
+        use crate::model::Period;
+        use crate::scene::SceneProblem;
+        for text in ["\"inf\"", "\"Infinity\"", "\" INF \"", "\"infinity\""] {
+            let s = super::parse_scene(&SCENE.replace("PERIOD", text)).unwrap_or_else(|e| panic!("{text}: {e}"));
+            let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
+            assert!(matches!(p.period(), Period::Infinite), "{text}");
+        }
+        let e = super::parse_scene(&SCENE.replace("PERIOD", "\"endless\"")).unwrap_err();
+        assert_eq!(e.parameter, "punch.period");
+        assert!(e.expected.contains("or \"inf\" for a single punch"), "{e}");
+        let e = super::parse_scene(&SCENE.replace("PERIOD", "\"-1\"")).unwrap_err();
+        assert!(e.to_string().contains("\"inf\""), "{e}");
+    }
 }

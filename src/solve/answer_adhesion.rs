@@ -36,7 +36,7 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
             bits: Some(s.prec),
             nodes: Some(s.nodes),
             order: None,
-            convention: None,
+            convention: convention_key(p),
         },
         kind: DigitsKind::Verified,
         lambda: matches!(p.period(), Period::Finite(_)).then(|| own(&s.lambda)),
@@ -56,12 +56,22 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
                 .map(|z| ZoneRow {
                     from: Num::Mpfr(z.from_x_over_a.clone()),
                     to: Num::Mpfr(z.to_x_over_a.clone()),
+                    // from_x_over_a = 1 - delta_outer (the end farther from the edge).
+                    from_one_minus: Num::Mpfr(z.delta_outer.clone()),
+                    to_one_minus: Num::Mpfr(z.delta_inner.clone()),
                     refined: z.refined,
                 })
                 .collect(),
         ),
         warnings: v.warnings.clone(),
     }
+}
+
+/// `provenance.convention` of Problem 2: `periodic` when that convention applies (a finite
+/// period; docs/theory.md section 8), else absent as before (the `paper` problem, and the single
+/// punch, which is the same in both).
+fn convention_key(p: &AdhesionProblem) -> Option<&'static str> {
+    p.periodic_surface().then_some("periodic")
 }
 
 /// The answer of the f64 method at the scene's points `points` (x/a, exact).
@@ -79,7 +89,13 @@ pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]
         (name.to_string(), rows)
     };
     AdhesionAnswer {
-        provenance: Provenance { method: "f64", bits: Some(53), nodes: Some(s.terms), order: None, convention: None },
+        provenance: Provenance {
+            method: "f64",
+            bits: Some(53),
+            nodes: Some(s.terms),
+            order: None,
+            convention: convention_key(p),
+        },
         kind: DigitsKind::Estimated,
         lambda: matches!(p.period(), Period::Finite(_)).then(|| own(s.lambda)),
         p2: own(s.normal_load),

@@ -38,7 +38,11 @@ pub fn sliding_answer(s: &SlidingSolutionF64, periodic: bool, convention: Conven
         f_def: m(s.f_def, Quantity::FDef),
         wear_per_distance: load(s.wear_per_distance),
         wear_rate: load(s.wear_rate),
-        worn_area_per_distance: None,
+        worn_area_per_distance: Some(Measured::f64(
+            s.worn_area_per_distance,
+            s.worn_area_per_distance,
+            d[Quantity::P2],
+        )),
         accuracy: [
             ("a", Quantity::A),
             ("b", Quantity::B),

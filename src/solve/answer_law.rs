@@ -1,6 +1,6 @@
 //! Problem 2 under a loading law P1 = N(P2) (docs/theory.md section 10; issue 12) as JSON: the
-//! verified MPFR solution ([`crate::adhesion::loading_law::verified`]), or the f64 marching
-//! method's ([`crate::adhesion::loading_law::verified_f64`], the same keys, its digits from its own
+//! verified MPFR solution ([`crate::loading_law::verified`]), or the f64 marching
+//! method's ([`crate::loading_law::verified_f64`], the same keys, its digits from its own
 //! two runs, `provenance.method` = `f64`), printed under the accuracy
 //! rule of [`crate::numerics::accuracy`], each number with the digits its group verified:
 //! - `ends` for lambda, a, b, c, l and the points' x (scale l);
@@ -8,7 +8,7 @@
 //! - `fields` for psi (scale k l), phi (k l^2), q1 and q2 (E* k l), the minimum over the points;
 //! - `path` for the loading path (`"path"`: l_j = j l/16, j = 1..=16, with lambda_j, a_j, b_j, c_j
 //!   on the scale l_j and P1_j, P2_j on P2_j;
-//!   [`crate::adhesion::loading_law::verified::PATH_STEPS`]), the minimum over the path.
+//!   [`crate::loading_law::verified::PATH_STEPS`]), the minimum over the path.
 //!
 //! Derived here: `friction_needed`, the friction coefficient complete adhesion needs at the
 //! printed points, max |q1|/q2 over the points where q2 > 0 (sampled at the points only, not a
@@ -17,15 +17,15 @@
 //! fields' accuracy is a tension warning (complete adhesion then needs the interface to carry
 //! tension there).
 //!
-//! `end_stress` ([`crate::adhesion::loading_law::ends`]): at each end the phase phi of
+//! `end_stress` ([`crate::loading_law::ends`]): at each end the phase phi of
 //! sigma = q2 + i q1 ~ C (d/l)^(1/2 -+ i eps), the zone d/l < tension_within where q2 < 0 (the
 //! oscillating singularity; a warning when it is not empty) and |q1|/q2 at d/l = 0.1 ... 1e-4
 //! (null inside the tension zone): the friction complete adhesion needs grows without bound
 //! toward the ends, so it is given against the distance.
 
 use super::render::{digits_text, Measured, Provenance};
-use crate::adhesion::loading_law::verified::{LawPathPoint, LawPoint, LawSolution, LawValues};
-use crate::adhesion::loading_law::verified_f64::LawSolutionF64;
+use crate::loading_law::verified::{LawPathPoint, LawPoint, LawSolution, LawValues};
+use crate::loading_law::verified_f64::LawSolutionF64;
 use crate::model::{Exact, LoadingLaw, LoadingLawProblem};
 use crate::numerics::exact::to_float;
 use rug::Float;
@@ -74,7 +74,7 @@ pub fn friction_needed(points: &[LawPoint], stress: &Float, fields: f64) -> Opti
 }
 
 /// [`friction_needed`] over (xh, q1, q2) triples (the report's profiles,
-/// [`crate::adhesion::loading_law::verified::LawStress`]).
+/// [`crate::loading_law::verified::LawStress`]).
 pub fn friction_needed_of<'a>(
     points: impl IntoIterator<Item = (&'a Exact, &'a Float, &'a Float)>,
     stress: &Float,
@@ -310,7 +310,7 @@ fn end_stress_json(sol: &LawSolution, requested: u32) -> Value {
     for (end, name) in v.ends.iter().zip(["leading", "trailing"]) {
         let one = Float::with_val(end.phase.prec(), 1);
         let mut friction = Map::new();
-        for (k, mu) in crate::adhesion::loading_law::ends::DISTANCES.iter().zip(&end.friction_needed) {
+        for (k, mu) in crate::loading_law::ends::DISTANCES.iter().zip(&end.friction_needed) {
             let value = mu
                 .as_ref()
                 .map_or(Value::Null, |mu| json!(print_in(&held_friction, Measured::mpfr(mu.clone(), mu, d.friction))));

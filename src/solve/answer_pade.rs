@@ -9,8 +9,12 @@ use crate::model::Convention;
 use crate::sliding::series::pade::PadeSolution;
 use serde_json::{json, Map, Value};
 
-/// The JSON object of one Padé solution at `requested` digits.
-pub fn sliding_json(s: &PadeSolution, requested: u32, convention: Convention) -> Map<String, Value> {
+/// The JSON object of one Padé solution at `requested` digits, and its answer (for its claim).
+pub fn sliding_json(
+    s: &PadeSolution,
+    requested: u32,
+    convention: Convention,
+) -> (Map<String, Value>, render::SlidingAnswer) {
     let mut answer = answer_series::sliding_answer(&s.solution, requested, convention);
     answer.provenance.method = "pade";
     let w = if s.w_is_square { "w = Lambda^2" } else { "w = Lambda" };
@@ -31,9 +35,10 @@ pub fn sliding_json(s: &PadeSolution, requested: u32, convention: Convention) ->
                 "approximant": format!("[{}/{}]", c.l, c.m),
                 "digits_estimated": render::digits_text(c.digits),
                 "poles": c.poles,
+                "map": c.map.unwrap_or("none: Pade in w"),
             })
         })
         .collect();
     m.insert("pade".into(), json!({ "variable": w, "approximants": chosen }));
-    m
+    (m, answer)
 }

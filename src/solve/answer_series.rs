@@ -50,7 +50,7 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention
         f_def: on(&s.f_def, &scale(SlidingScale::DeformationForce), fd),
         wear_per_distance: Some(on(&s.wear_per_distance, &s.wear_per_distance, exact)),
         wear_rate: s.wear_rate.as_ref().map(|w| on(w, w, exact)),
-        worn_area_per_distance: None,
+        worn_area_per_distance: Some(on(&s.worn_area_per_distance, &s.worn_area_per_distance, exact)),
         accuracy,
         extra: vec![("Lambda".into(), json!(Num::Mpfr(s.big_lambda.clone()).fmt(10)))],
         note: Some(format!(

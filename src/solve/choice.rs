@@ -501,7 +501,14 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
     use crate::scene::Method;
     let out = &scene.output;
     let series_order = forced.series_order.or(out.series_order).unwrap_or(DEFAULT_SERIES_ORDER);
-    let digits = forced.digits.or(out.digits).or(out.target_digits).unwrap_or(DEFAULT_DIGITS);
+    let asked = forced.digits.or(out.digits).or(out.target_digits);
+    let digits = asked.unwrap_or(DEFAULT_DIGITS);
+    // A forced method without any digits asked: f64 is asked for what it can carry (issue 30: its
+    // `digits_requested` states no 30 digits that nobody asked and f64 cannot give).
+    let digits_of = |m: Method| match (asked, m) {
+        (None, Method::F64) => crate::numerics::accuracy::F64_DIGITS_CAP as u32,
+        _ => digits,
+    };
     let req = |method, digits| SolveRequest { method, digits, series_order };
     let fixed = |method, digits, reason: &str| MethodChoice {
         request: req(method, digits),
@@ -510,13 +517,13 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
         fallbacks: Vec::new(),
     };
     if let Some(m) = forced.method {
-        return Ok(fixed(m, digits, "forced by --method"));
+        return Ok(fixed(m, digits_of(m), "forced by --method"));
     }
     if let Some(d) = forced.digits {
         return Ok(fixed(Method::Mpfr, d, "--digits forces verified MPFR at that precision"));
     }
     if let Some(m) = out.method {
-        return Ok(fixed(m, digits, "forced by the scene's [output] method"));
+        return Ok(fixed(m, digits_of(m), "forced by the scene's [output] method"));
     }
     if let Some(d) = out.digits {
         return Ok(fixed(Method::Mpfr, d, "the scene's [output] digits forces verified MPFR at that precision"));
@@ -555,12 +562,6 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
     })
 }
 
-/// The digits an answer claims: `digits_verified`, else `digits_estimated` (None if neither is a
-/// number, e.g. several solutions).
-pub fn claimed_digits(v: &serde_json::Value) -> Option<f64> {
-    ["digits_verified", "digits_estimated"].iter().find_map(|k| v[*k].as_str().and_then(|s| s.parse().ok()))
-}
-
 /// Runs the chosen method; when a target was set and the answer claims fewer digits than the
 /// target (the calibration predicted the true error, the method's own estimate is more cautious),
 /// runs the next fallback, and says so in `reason`. Returns the answer and the final choice.
@@ -568,11 +569,15 @@ pub fn solve_chosen(
     scene: &crate::scene::Scene,
     mut choice: MethodChoice,
 ) -> Result<(serde_json::Value, MethodChoice), crate::error::Error> {
-    let mut v = super::solve_scene(scene, choice.request)?;
-    let Some(target) = choice.target_digits else { return Ok((v, choice)) };
+    let mut answer = super::solve_answer(scene, choice.request)?;
+    let Some(target) = choice.target_digits else { return Ok((answer.json, choice)) };
     let fallbacks = std::mem::take(&mut choice.fallbacks);
     for next in fallbacks {
-        let Some(d) = claimed_digits(&v).filter(|d| *d < target as f64) else { break };
+        // The typed claim, as printed (one decimal): the answer's own statement of its accuracy.
+        let d = answer.claim.digits;
+        if !(printed(d) < target as f64) {
+            break;
+        }
         let label = |r: &super::SolveRequest| match r.method {
             crate::scene::Method::Series => format!("series order {}", r.series_order),
             crate::scene::Method::Pade => format!("Pade of the series order {}", r.series_order),
@@ -586,9 +591,15 @@ pub fn solve_chosen(
             label(&next)
         );
         choice.request = next;
-        v = super::solve_scene(scene, next)?;
+        answer = super::solve_answer(scene, next)?;
     }
-    Ok((v, choice))
+    Ok((answer.json, choice))
+}
+
+/// Digits as the answer prints them (one decimal, [`super::render::digits_text`]): the choice
+/// compares the claim a user reads.
+fn printed(d: f64) -> f64 {
+    (d * 10.0).round() / 10.0
 }
 
 #[cfg(test)]

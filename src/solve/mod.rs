@@ -20,6 +20,7 @@ use crate::error::Error;
 use crate::model::{AdhesionProblem, Convention, LoadingLawProblem, Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64};
+use render::DigitsKind;
 use serde_json::{json, Map, Value};
 
 /// How to run a scene.
@@ -36,10 +37,36 @@ pub struct SolveRequest {
 /// Default digits when neither the scene nor the command line gives them.
 pub const DEFAULT_DIGITS: u32 = 30;
 
-/// Runs the scene and renders the JSON result. A non-finite number anywhere in the result is
-/// refused ([`Error::NoConvergence`]) rather than printed.
+/// The accuracy an answer claims, as a number: the minimum over its accuracy table (what
+/// `digits_verified` or `digits_estimated` prints, to one decimal), and whether it was verified.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Claim {
+    /// Digits of the least accurate quantity, on its scale.
+    pub digits: f64,
+    /// Verified by a second run, or estimated.
+    pub kind: DigitsKind,
+}
+
+/// One solved scene: the typed claim of its accuracy, which the method choice reads to decide
+/// whether a dearer method must run ([`choice::solve_chosen`]), and the rendered JSON of
+/// `periodic-contact solve --json` (string values; docs/theory.md section 14).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// The accuracy claimed.
+    pub claim: Claim,
+    /// The JSON.
+    pub json: Value,
+}
+
+/// Runs the scene and renders the JSON result ([`solve_answer`] without its claim).
 pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let v = match &scene.problem {
+    solve_answer(scene, req).map(|a| a.json)
+}
+
+/// Runs the scene: the answer with its claimed accuracy. A non-finite number anywhere in the
+/// result is refused ([`Error::NoConvergence`]) rather than printed.
+pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
+    let (v, claim) = match &scene.problem {
         SceneProblem::Sliding(p) => match req.method {
             Method::Mpfr => sliding_mpfr(p, scene, req),
             Method::F64 => sliding_f64(p, scene, req),
@@ -72,7 +99,15 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
             what: format!("the {} method produced a non-finite value at {path}", req.method.name()),
         });
     }
-    Ok(v)
+    Ok(Answer { claim, json: v })
+}
+
+/// What a method returns here: the JSON and the claim of its (first) answer.
+type Rendered = (Value, Claim);
+
+/// The claim of a Problem 1 answer.
+fn sliding_claim(a: &render::SlidingAnswer) -> Claim {
+    Claim { digits: a.headline(), kind: a.kind }
 }
 
 /// A refusal in the `paper` convention (not physical, or no solution) that the `periodic`
@@ -91,6 +126,26 @@ fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
         Error::NotPhysical { why } if solved => Error::NotPhysical { why: format!("{why}{hint}") },
         Error::NoSolution { why } if solved => Error::NoSolution { why: format!("{why}{hint}") },
         other => other,
+    }
+}
+
+/// The number a JSON answer prints under `key` (NaN when absent: no warning is then made).
+fn number(m: &Map<String, Value>, key: &str) -> f64 {
+    m.get(key).and_then(Value::as_str).and_then(|t| t.parse::<f64>().ok()).unwrap_or(f64::NAN)
+}
+
+/// Appends the small-slope warning of the contact [`left`, `right`] to the answer's `warnings`
+/// (docs/theory.md section 9: one rule for every shape in both problems; never a refusal).
+fn slope_warning(m: &mut Map<String, Value>, shape: &crate::model::PunchShape, period: &Period, left: f64, right: f64) {
+    let l = match period {
+        Period::Finite(l) => crate::numerics::exact::to_f64(l),
+        Period::Infinite => None,
+    };
+    if let Some(w) = crate::params::profile::slope_warning(shape, l, left, right) {
+        match m.entry("warnings").or_insert_with(|| Value::Array(Vec::new())) {
+            Value::Array(list) => list.push(json!(w)),
+            other => *other = json!([w]),
+        }
     }
 }
 
@@ -125,16 +180,34 @@ pub fn punch_json(shape: &crate::model::PunchShape) -> Value {
     Value::Object(m)
 }
 
-/// `{"problem": "sliding", ...first answer, "solutions": [...]}` (the list only when several
-/// contacts are physical); each answer's provenance names the punch ([`punch_json`]).
+/// The `convention_note` of an answer in the `paper` convention whose constant K of
+/// docs/theory.md section 8 is not zero by construction (friction or wear, adhesive friction, or a
+/// tangential load): the surface does not close over the period, and `periodic` would close it.
+pub const PAPER_CONVENTION_NOTE: &str =
+    "solved in the paper convention: [2.8] as the paper states it. With friction, wear, \
+     adhesive friction or a tangential load the surface does not close over the period (the closure defect M, \
+     docs/theory.md section 8); the periodic convention adds K = (kappa P2 - 2 beta l tau0)/L and closes it: \
+     solve --convention periodic, or [problem] convention = \"periodic\" in the scene";
+
+/// `{"problem": "sliding", ["convention_note"], ...first answer, "solutions": [...]}` (the list
+/// only when several contacts are physical); each answer's provenance names the punch
+/// ([`punch_json`]); `convention_note` ([`PAPER_CONVENTION_NOTE`]) where `paper` is solved with
+/// kappa != 0 or tau0 != 0 over a finite period.
 fn sliding_top(mut answers: Vec<Map<String, Value>>, p: &SlidingProblem) -> Value {
     for a in answers.iter_mut() {
         if let Some(Value::Object(prov)) = a.get_mut("provenance") {
             prov.insert("punch".into(), punch_json(p.shape()));
         }
     }
+    for a in answers.iter_mut() {
+        let (left, right) = (-number(a, "a"), number(a, "b"));
+        slope_warning(a, p.shape(), p.period(), left, right);
+    }
     let mut top = Map::new();
     top.insert("problem".into(), json!("sliding"));
+    if p.convention() == Convention::Paper && !p.kappa_and_tau0_vanish() && matches!(p.period(), Period::Finite(_)) {
+        top.insert("convention_note".into(), json!(PAPER_CONVENTION_NOTE));
+    }
     if let Some(first) = answers.first() {
         top.extend(first.clone());
     }
@@ -144,76 +217,134 @@ fn sliding_top(mut answers: Vec<Map<String, Value>>, p: &SlidingProblem) -> Valu
     Value::Object(top)
 }
 
-fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sols = sliding::solve_verified(p, &scene.output.points, req.digits)?;
-    if sols.is_empty() {
+    let answers: Vec<_> = sols.iter().map(|v| answer_mpfr::sliding_answer(v, p.convention())).collect();
+    let Some(first) = answers.first() else {
         return Err(Error::NotPhysical { why: "no physical contact was found".into() });
-    }
-    Ok(sliding_top(
-        sols.iter()
-            .map(|v| render::sliding_json(&answer_mpfr::sliding_answer(v, p.convention()), req.digits))
-            .collect(),
-        p,
-    ))
+    };
+    let claim = sliding_claim(first);
+    Ok((sliding_top(answers.iter().map(|a| render::sliding_json(a, req.digits)).collect(), p), claim))
 }
 
-fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let points: Vec<f64> =
         scene.output.points.iter().map(|x| crate::numerics::exact::to_f64(x).unwrap_or(f64::NAN)).collect();
     let sols = collocation_f64::solve_sliding_f64(p, &points, &collocation_f64::SolverOptions::default())?;
     let periodic = matches!(p.period(), Period::Finite(_));
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
-    let answers = sols
-        .solutions
+    let typed: Vec<_> =
+        sols.solutions.iter().map(|s| answer_f64::sliding_answer(s, periodic, p.convention())).collect();
+    let Some(first) = typed.first() else {
+        return Err(Error::NotPhysical { why: "no physical contact was found".into() });
+    };
+    let claim = sliding_claim(first);
+    let answers = typed
         .iter()
-        .map(|s| {
-            let mut m = render::sliding_json(&answer_f64::sliding_answer(s, periodic, p.convention()), shown);
-            // digits_requested states what the user asked, not the f64 cap.
-            m.insert("digits_requested".into(), json!(req.digits.to_string()));
+        .map(|a| {
+            let mut m = render::sliding_json(a, shown);
+            f64_digits(&mut m, req.digits);
             m
         })
         .collect();
-    Ok(sliding_top(answers, p))
+    Ok((sliding_top(answers, p), claim))
 }
 
-fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = sliding::series::solve_series(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(
-        vec![render::sliding_json(&answer_series::sliding_answer(&s, req.digits, p.convention()), req.digits)],
-        p,
-    ))
+    let answer = answer_series::sliding_answer(&s, req.digits, p.convention());
+    Ok((sliding_top(vec![render::sliding_json(&answer, req.digits)], p), sliding_claim(&answer)))
 }
 
-fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = sliding::series::pade::solve_pade(p, &scene.output.points, req.series_order, req.digits)?;
-    Ok(sliding_top(vec![answer_pade::sliding_json(&s, req.digits, p.convention())], p))
+    let (m, answer) = answer_pade::sliding_json(&s, req.digits, p.convention());
+    Ok((sliding_top(vec![m], p), sliding_claim(&answer)))
 }
 
-fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let v = adhesion::solve_verified(p, &scene.output.points, req.digits)?;
-    Ok(Value::Object(render::adhesion_json(&answer_adhesion::mpfr_answer(p, &v), req.digits)))
+    let answer = answer_adhesion::mpfr_answer(p, &v);
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, req.digits);
+    m.insert("lambda_h".into(), lambda_h(p, req.digits));
+    let a = number(&m, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
+    Ok((Value::Object(m), claim))
 }
 
-fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
+/// `lambda_h`: the largest lambda at which complete adhesion keeps `digits` (the homogeneous mode's
+/// horizon, docs/theory.md section 11), 3 decimals rounded down; null for the single punch and in
+/// the `periodic` convention, where the mode is not excited (section 8, Problem 2).
+fn lambda_h(p: &AdhesionProblem, digits: u32) -> Value {
+    match p.period() {
+        Period::Finite(_) if !p.periodic_surface() => json!(crate::asymptotics::adhesion_mode::horizon_text(
+            crate::asymptotics::adhesion_mode::horizon_of(p.material(), digits as f64)
+        )),
+        _ => Value::Null,
+    }
+}
+
+fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = adhesion::solve_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
-    let mut m = render::adhesion_json(&answer_adhesion::f64_answer(p, &s, &scene.output.points), shown);
-    m.insert("digits_requested".into(), json!(req.digits.to_string()));
+    let answer = answer_adhesion::f64_answer(p, &s, &scene.output.points);
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, shown);
+    f64_digits(&mut m, req.digits);
+    m.insert("lambda_h".into(), lambda_h(p, req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32)));
+    let a = number(&m, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
-    Ok(Value::Object(m))
+    Ok((Value::Object(m), claim))
 }
 
-fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let sol = adhesion::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
-    Ok(Value::Object(answer_law::law_answer_json(p, &sol, req.digits)))
+fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
+    let sol = crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
+    let claim = Claim { digits: sol.digits.headline, kind: DigitsKind::Verified };
+    let mut m = answer_law::law_answer_json(p, &sol, req.digits);
+    law_note(&mut m, p);
+    Ok((Value::Object(m), claim))
 }
 
-fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
-    let sol = adhesion::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
+/// The loading law's notes: the small-slope warning of its parabola, and in the `paper`
+/// convention with a tangential load (P1 != 0, so K != 0) `convention_note`, as for Problem 1.
+fn law_note(m: &mut Map<String, Value>, p: &LoadingLawProblem) {
+    let parabola = crate::model::PunchShape::Parabolic { k: p.k().clone() };
+    let (left, right) = (-number(m, "a"), number(m, "b"));
+    slope_warning(m, &parabola, p.period(), left, right);
+    let tangential = match p.law() {
+        crate::model::LoadingLaw::Linear(n) => !num_traits::Zero::is_zero(n),
+        crate::model::LoadingLaw::Polynomial(c) => c.iter().any(|x| !num_traits::Zero::is_zero(x)),
+    };
+    if p.convention() == Convention::Paper && tangential && matches!(p.period(), Period::Finite(_)) {
+        m.insert("convention_note".into(), json!(PAPER_CONVENTION_NOTE));
+    }
+}
+
+/// The digits keys of an f64 answer: `digits_requested` states what the user asked (not the f64
+/// cap), and where that exceeds what f64 can carry, `digits_note` says so (issue 30).
+fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
+    let cap = crate::numerics::accuracy::F64_DIGITS_CAP as u32;
+    m.insert("digits_requested".into(), json!(requested.to_string()));
+    if requested > cap {
+        m.insert(
+            "digits_note".into(),
+            json!(format!(
+                "{requested} digits were asked; the f64 method carries at most {cap} significant digits, and \
+                 digits_verified (or digits_estimated) states what this answer holds; for more use --method mpfr \
+                 or --digits {requested}"
+            )),
+        );
+    }
+}
+
+fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
+    let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
     let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
-    // digits_requested states what the user asked, not the f64 cap.
-    m.insert("digits_requested".into(), json!(req.digits.to_string()));
-    Ok(Value::Object(m))
+    f64_digits(&mut m, req.digits);
+    law_note(&mut m, p);
+    Ok((Value::Object(m), Claim { digits: sol.digits.headline, kind: DigitsKind::Verified }))
 }

@@ -111,8 +111,8 @@ pub struct Provenance {
     pub nodes: Option<usize>,
     /// Order of the truncated series (series method).
     pub order: Option<usize>,
-    /// Surface convention of Problem 1 (`paper` or `periodic`, docs/theory.md section 8); `None` for
-    /// Problem 2, which is the same in both.
+    /// Surface convention of Problem 1 (`paper` or `periodic`, docs/theory.md section 8); for
+    /// Problem 2 `periodic` only (absent: `paper`, or the single punch, the same in both).
     pub convention: Option<&'static str>,
 }
 
@@ -179,7 +179,7 @@ pub struct SlidingAnswer {
     pub wear_per_distance: Option<Measured>,
     /// cW V P2/L (None without V or for a single punch).
     pub wear_rate: Option<Measured>,
-    /// cW P2 per punch (None where the method does not report it).
+    /// cW P2 per punch (every method of Problem 1 reports it; `Option` for a caller's own answer).
     pub worn_area_per_distance: Option<Measured>,
     /// Per-quantity digits, in print order.
     pub accuracy: Vec<(String, f64)>,
@@ -330,15 +330,39 @@ pub struct FieldRow {
     pub value: Measured,
 }
 
-/// A tension zone (q2 < 0) of Problem 2, in x/a.
+/// A tension zone (q2 < 0) of Problem 2, in x/a and in 1 - x/a (the zones crowd towards the
+/// edge x/a = 1, where x/a alone rounds to 1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ZoneRow {
-    /// Start.
+    /// Start (x/a).
     pub from: Num,
-    /// End.
+    /// End (x/a).
     pub to: Num,
+    /// 1 - x/a at the start, accurate where x/a rounds to 1.
+    pub from_one_minus: Num,
+    /// 1 - x/a at the end.
+    pub to_one_minus: Num,
     /// Whether its ends were refined by bisection.
     pub refined: bool,
+}
+
+/// Significant digits of 1 - x/a printed beside a zone.
+pub const ZONE_DELTA_DIGITS: usize = 4;
+
+/// x/a = 1 - `delta` printed with the digits that separate it from 1: six significant digits, or
+/// as many as show [`ZONE_DELTA_DIGITS`] digits of `delta` (issue 30: 1 - 3.1e-11 printed
+/// "1.00000" before). Computed as 1 - delta in MPFR at the precision those digits need, so a
+/// delta below the solution's own 2^-prec still prints (x/a itself rounds to 1 there).
+pub fn zone_end_text(delta: &Num) -> String {
+    let d = match delta {
+        Num::F64(x) => Float::with_val(64, *x),
+        Num::Mpfr(x) => x.clone(),
+    };
+    // delta = m 10^-e with m in [1, 10): x/a = 0.99..9 (e - 1 nines) then delta's digits.
+    let e = if d.is_zero() { 0 } else { (-d.to_f64().log10()).floor().max(0.0) as usize + 1 };
+    let sig = 6usize.max(e - 1 + ZONE_DELTA_DIGITS);
+    let bits = (sig as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 16;
+    fmt_mpfr(&(Float::with_val(bits, 1u32) - Float::with_val(bits, &d)), sig)
 }
 
 /// One answer of Problem 2, from any method.
@@ -362,6 +386,13 @@ pub struct AdhesionAnswer {
     pub tension_zones: Option<Vec<ZoneRow>>,
     /// Warnings (conditioning, tension).
     pub warnings: Vec<String>,
+}
+
+impl AdhesionAnswer {
+    /// The headline digits: the minimum over the accuracy table.
+    pub fn headline(&self) -> f64 {
+        self.accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min)
+    }
 }
 
 /// The JSON object of one Problem 2 answer.
@@ -392,7 +423,15 @@ pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value>
     if let Some(zones) = &ans.tension_zones {
         let z: Vec<Value> = zones
             .iter()
-            .map(|z| json!({"from_x_over_a": z.from.fmt(6), "to_x_over_a": z.to.fmt(6), "refined": z.refined}))
+            .map(|z| {
+                json!({
+                    "from_x_over_a": zone_end_text(&z.from_one_minus),
+                    "to_x_over_a": zone_end_text(&z.to_one_minus),
+                    "from_1_minus_x_over_a": z.from_one_minus.fmt(ZONE_DELTA_DIGITS),
+                    "to_1_minus_x_over_a": z.to_one_minus.fmt(ZONE_DELTA_DIGITS),
+                    "refined": z.refined
+                })
+            })
             .collect();
         m.insert("tension_zones".into(), Value::Array(z));
     }
@@ -418,5 +457,32 @@ mod tests {
         let v = Measured::f64(0.123456789, 0.5, 6.0);
         assert_eq!(v.print(15), "1.2345679e-1");
         assert!(v.held(15) > 5.99 && v.held(15) <= 6.0);
+    }
+
+    /// Issue 30: a tension zone near the edge printed "1.00000 to 1.00000"; its ends now show the
+    /// digits that separate them from 1 and from each other, and 1 - x/a beside them.
+    #[test]
+    fn zone_ends_near_the_edge_are_distinct_from_one() {
+        let d = |x: f64| Num::Mpfr(Float::with_val(200, x));
+        // An end far from the edge keeps six digits, as before.
+        assert_eq!(zone_end_text(&d(1.963770e-3)), fmt_f64(1.0 - 1.963770e-3, 6));
+        let outer = zone_end_text(&d(3.098824e-11));
+        let inner = zone_end_text(&d(1.2e-27));
+        assert_ne!(outer, inner);
+        for (text, delta) in [(&outer, 3.098824e-11), (&inner, 1.2e-27)] {
+            assert_ne!(text.trim_end_matches('0'), "1.");
+            // Read back with MPFR: 1 - x/a to four digits.
+            let x = Float::with_val(256, Float::parse(text).unwrap());
+            let back = (Float::with_val(256, 1u32) - x).to_f64();
+            assert!(((back - delta) / delta).abs() < 1e-3, "{text}: {back} vs {delta}");
+        }
+        let zone = ZoneRow {
+            from: Num::Mpfr(Float::with_val(64, 1u32)),
+            to: Num::Mpfr(Float::with_val(64, 1u32)),
+            from_one_minus: d(3.098824e-11),
+            to_one_minus: d(1.2e-27),
+            refined: false,
+        };
+        assert_eq!(zone.from_one_minus.fmt(ZONE_DELTA_DIGITS), "3.099e-11");
     }
 }

@@ -20,7 +20,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ("adhesion", "adhesion", vec![]),
     ];
     for (name, object, options) in jobs {
-        let d = api::derive(object, order, &options)?;
+        let request = options.iter().fold(api::SeriesRequest::new(object, order), |r, (k, v)| r.option(k, v));
+        let d = api::derive(&request)?;
         let json = dir.join(format!("{name}.json"));
         std::fs::write(&json, serde_json::to_string_pretty(&d.json())? + "\n")?;
         std::fs::write(dir.join(format!("{name}.txt")), d.text())?;

@@ -17,7 +17,7 @@ pub struct Coefficient {
 /// The exact coefficients of the part `part` (e.g. `l_over_ls`) of the Problem 1 expansions of
 /// the parabola at `theta` (exact, e.g. `"1/10"`), through Lambda^`order`.
 pub fn sliding_part(part: &str, theta: &str, order: usize) -> Result<Vec<Coefficient>, ApiError> {
-    let v = api::derive("sliding", order, &[("theta", theta)])?.json();
+    let v = api::derive(&api::SeriesRequest::new("sliding", order).option("theta", theta))?.json();
     let parts = v["parts"].as_array().cloned().unwrap_or_default();
     let found = parts.iter().find(|p| p["object"] == part).cloned().unwrap_or_default();
     Ok(found["coefficients"]

@@ -6,6 +6,7 @@
 //! denominator costs one content gcd per operation instead of a gcd per coefficient (FLINT's
 //! `fmpq_poly` does the same).
 
+mod coprime;
 mod gcd;
 mod heu;
 

@@ -12,7 +12,7 @@
 //! The coefficients are rounded once from the exact profile (`f64`); k is the problem's reference
 //! curvature ([`crate::model::AdhesionProblem::curvature`]).
 
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{readable, AdhesionProblem, PunchShape};
 use crate::numerics::exact::to_f64;
 

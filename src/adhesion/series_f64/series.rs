@@ -3,7 +3,7 @@
 //! f(t), which do not depend on lambda: computed once per material and discretisation.
 
 use super::kernel;
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
 use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use crate::params::adhesion::AdhesionParamsF64;
 use nalgebra::Complex;

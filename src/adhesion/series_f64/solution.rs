@@ -4,9 +4,9 @@
 use super::right_side::RightSeries;
 use super::series::{UniversalSeries, SERIES_TERMS};
 use super::solve::{solve_rhs, SeriesSolution, SERIES_LAMBDA_MAX};
-use crate::adhesion::error::AdhesionError;
-use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
+use crate::adhesion::profile::{check_profile_on_contact, circle_cap_error, half_width_search, HalfWidthSearch};
 use crate::adhesion::scales::Digits;
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::exact::to_f64;
 use crate::numerics::roots::increasing_root;
@@ -138,8 +138,9 @@ pub(super) fn solve_run(
 /// on a in (0, a_max): P2(a) = E* k a^2 P~(a) increases with a, and dP2/da = E* k a F(1)
 /// (f does not depend on the contact size, docs/theory.md section 4: P(lambda) = (1/2) int_0^(lambda^2) f,
 /// the same for the single punch in the limit L -> infinity). a_max: the series' range
-/// lambda <= [`SERIES_LAMBDA_MAX`] and the profile's slope limit
-/// ([`largest_admissible_half_width`]). A solve that fails inside the bracket (the series too
+/// lambda <= [`SERIES_LAMBDA_MAX`] and the profile's search bound ([`half_width_search`]: the
+/// circle's cap; a polynomial's single punch doubles its first bracket until the load is reached).
+/// A solve that fails inside the bracket (the series too
 /// close to its radius) shrinks the bracket from above; a load beyond the last solvable contact is
 /// refused with the reason of that contact. `ek` = E* k. The parabola's single punch is
 /// self-similar (P~ constant) and needs no iteration.
@@ -152,13 +153,30 @@ fn half_width_for_load(
     period: Option<f64>,
 ) -> Result<(f64, SeriesSolution), AdhesionError> {
     let pi = std::f64::consts::PI;
-    let slope_cap = largest_admissible_half_width(problem);
-    if period.is_none() && slope_cap.is_none() {
+    let search = half_width_search(problem);
+    if period.is_none() && search == HalfWidthSearch::Parabola {
         let sol = at(1.0)?;
         return Ok(((target / (sol.load_ratio() * ek)).sqrt(), sol));
     }
+    let load_at = |a: f64| at(a).map(|sol| ek * a * a * sol.load_ratio());
+    let profile_cap = match search {
+        HalfWidthSearch::Capped { a_max } => Some(a_max),
+        // A polynomial's single punch: double the first bracket until it holds the load (P2 grows
+        // at least like a^2); with a period, the series' range bounds the search.
+        HalfWidthSearch::Unbounded { start } if period.is_none() => {
+            let mut hi = start;
+            for _ in 0..64 {
+                if load_at(hi)? >= target {
+                    break;
+                }
+                hi *= 2.0;
+            }
+            Some(hi)
+        }
+        _ => None,
+    };
     let series_cap = period.map(|l| SERIES_LAMBDA_MAX * l / pi);
-    let a_max = match (series_cap, slope_cap) {
+    let a_max = match (series_cap, profile_cap) {
         (Some(s), Some(c)) => s.min(c),
         (Some(s), None) => s,
         (None, Some(c)) => c,
@@ -200,17 +218,10 @@ fn half_width_for_load(
         AdhesionSize::NormalLoad(p) => p,
         AdhesionSize::HalfWidth(a) => a,
     });
-    if slope_cap.is_some_and(|c| c <= a_max) {
-        return Err(crate::model::ModelError::new(
-            "normal_load",
-            size,
-            format!(
-                "the contact would pass a = {}, where g'(a) reaches the slope limit {}: the theory assumes a small slope |g'| << 1 [1.9]; reduce normal_load",
-                crate::numerics::accuracy::readable_f64(a_max),
-                crate::params::sliding::MAX_CONTACT_SLOPE
-            ),
-        )
-        .into());
+    if let (HalfWidthSearch::Capped { a_max: cap }, AdhesionSize::NormalLoad(p2)) = (search, problem.size()) {
+        if cap <= a_max {
+            return Err(circle_cap_error(p2, cap, None));
+        }
     }
     Err(last_err.unwrap_or(AdhesionError::IllConditioned {
         method: "f64-series",

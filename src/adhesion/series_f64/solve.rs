@@ -3,7 +3,7 @@
 
 use super::kernel;
 use super::series::{radius_estimate, SeriesParams, UniversalSeries, C64};
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
 use crate::model::Material;
 use crate::numerics::accuracy::readable_f64;
 use crate::params::adhesion::AdhesionParamsF64;

@@ -10,9 +10,9 @@
 
 use super::series::{SeriesParams, UniversalSeries};
 use super::solution::{solve_run, AdhesionSolutionF64};
-use crate::adhesion::error::AdhesionError;
 use crate::adhesion::points::check_points;
 use crate::adhesion::scales::{Digits, ScalesF64};
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{f64_digits, F64_DIGITS_CAP};
 use crate::params::adhesion::AdhesionParamsF64;

@@ -17,8 +17,33 @@
 //! this is Hertz: F = pi, q2 = E* k a sqrt(1 - sigma^2).
 //!
 //! The same integrands in `f64` (method 2): [`crate::adhesion::series_f64::kernel`].
+//!
+//! The `periodic` convention (u periodic; docs/theory.md section 8, Problem 2) changes one factor
+//! of both kernels: cos(chi - 2 i eps eta) -> cos(chi - i eps (2 eta - pi))/cosh(pi eps)
+//! ([`LateralShift`]); G is then no longer even in chi, and F is interpolated in sigma instead of
+//! sigma^2 ([`super::volterra`]).
 
+use rug::float::Constant;
 use rug::Float;
+
+/// The `periodic` convention's change of the kernels (module doc): the shift pi eps of the
+/// imaginary part of the cosine's argument and the factor 1/cosh(pi eps).
+#[derive(Debug, Clone)]
+pub struct LateralShift {
+    /// pi eps.
+    pub pi_eps: Float,
+    /// 1/cosh(pi eps).
+    pub inv_cosh_pi_eps: Float,
+}
+
+impl LateralShift {
+    /// The shift for `eps` at `prec` bits.
+    pub fn new(eps: &Float, prec: u32) -> Self {
+        let pi_eps = Float::with_val(prec, Constant::Pi) * eps;
+        let inv_cosh_pi_eps = Float::with_val(prec, pi_eps.cosh_ref()).recip();
+        LateralShift { pi_eps, inv_cosh_pi_eps }
+    }
+}
 
 /// sinc z = sin z / z (1 at z = 0).
 pub fn sinc(z: &Float, prec: u32) -> Float {
@@ -67,6 +92,7 @@ pub fn stress_integrand(
     y: &Float,
     lambda: &Float,
     eps: &Float,
+    shift: Option<&LateralShift>,
     prec: u32,
 ) -> (Float, Float, Float) {
     let y2d = Float::with_val(prec, y * y) * one_minus_sigma_sq; // r^2 - sigma^2
@@ -82,7 +108,10 @@ pub fn stress_integrand(
         - Float::with_val(prec, b.ln_ref());
     let theta = theta * eps;
     let x = Float::with_val(prec, lambda * sigma);
-    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    let mut yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    if let Some(shift) = shift {
+        yy -= &shift.pi_eps;
+    }
     let (cr, ci) = cos_minus_i(&x, &yy, prec);
     let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
     (re, im, r2)
@@ -97,7 +126,14 @@ pub fn stress_integrand(
 ///       / sqrt(sinc(lambda(r+sigma)) sinc(lambda(r-sigma))) r F(r^2) dv,
 /// whose singularities in v lie at distance pi from the real axis. Returns (re, im, r^2) without
 /// F(r^2) and without the prefactor, times r.
-pub fn stress_integrand_v(sigma: &Float, v: &Float, lambda: &Float, eps: &Float, prec: u32) -> (Float, Float, Float) {
+pub fn stress_integrand_v(
+    sigma: &Float,
+    v: &Float,
+    lambda: &Float,
+    eps: &Float,
+    shift: Option<&LateralShift>,
+    prec: u32,
+) -> (Float, Float, Float) {
     let half = Float::with_val(prec, v / 2u32);
     let (sh, ch) = half.sinh_cosh(Float::new(prec));
     let r = Float::with_val(prec, &ch * &ch) * sigma * 2u32 - sigma; // sigma cosh v
@@ -108,7 +144,10 @@ pub fn stress_integrand_v(sigma: &Float, v: &Float, lambda: &Float, eps: &Float,
     let mag = Float::with_val(prec, &a * &b).sqrt().recip() * &r;
     let theta = (Float::with_val(prec, &ch / &sh).ln() * 2u32 + Float::with_val(prec, &a / &b).ln()) * eps;
     let x = Float::with_val(prec, lambda * sigma);
-    let yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    let mut yy = Float::with_val(prec, lambda * &r) * eps * 2u32;
+    if let Some(shift) = shift {
+        yy -= &shift.pi_eps;
+    }
     let (cr, ci) = cos_minus_i(&x, &yy, prec);
     let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
     let r2 = Float::with_val(prec, &r * &r);
@@ -144,7 +183,9 @@ impl VolterraNodes {
         out
     }
 
-    /// Same value as [`volterra_integrand`] at node j; `sc_chi` = (sin chi, cos chi).
+    /// Same value as [`volterra_integrand`] at node j; `sc_chi` = (sin chi, cos chi); with a
+    /// `shift`, the `periodic` convention's kernel (module doc).
+    #[allow(clippy::too_many_arguments)]
     pub fn integrand(
         &self,
         j: usize,
@@ -153,6 +194,7 @@ impl VolterraNodes {
         chi: &Float,
         sc_chi: &(Float, Float),
         eps: &Float,
+        shift: Option<&LateralShift>,
         prec: u32,
     ) -> (Float, Float) {
         let a = sinc(&Float::with_val(prec, chi * &self.one_p[j]), prec);
@@ -160,11 +202,18 @@ impl VolterraNodes {
         let ab = Float::with_val(prec, &a * &b);
         let mag = Float::with_val(prec, &self.amp[j] / ab.sqrt());
         let theta = (Float::with_val(prec, &a / &b).ln() + &self.log_ratio[j]) * eps;
-        let y = Float::with_val(prec, chi * s) * eps * 2u32;
+        let mut y = Float::with_val(prec, chi * s) * eps * 2u32;
+        if let Some(shift) = shift {
+            y -= &shift.pi_eps;
+        }
         let (shy, chy) = y.sinh_cosh(Float::new(prec));
         let cr = Float::with_val(prec, &sc_chi.1 * &chy);
         let ci = Float::with_val(prec, &sc_chi.0 * &shy);
-        rotate(&mag, &theta, &cr, &ci, prec)
+        let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
+        match shift {
+            Some(shift) => (re * &shift.inv_cosh_pi_eps, im * &shift.inv_cosh_pi_eps),
+            None => (re, im),
+        }
     }
 }
 
@@ -181,7 +230,7 @@ mod tests {
         let eps = Float::with_val(prec, 0.17);
         let pre = VolterraNodes::new(&[s.clone()], &[c.clone()], prec);
         let sc = chi.clone().sin_cos(Float::new(prec));
-        let (r1, i1) = pre.integrand(0, &s, &c, &chi, &sc, &eps, prec);
+        let (r1, i1) = pre.integrand(0, &s, &c, &chi, &sc, &eps, None, prec);
         let (r2, i2) = volterra_integrand(&s, &c, &chi, &eps, prec);
         assert!(Float::with_val(prec, r1 - r2).abs().to_f64() < 1e-35);
         assert!(Float::with_val(prec, i1 - i2).abs().to_f64() < 1e-35);

@@ -18,6 +18,10 @@
 //!   phi/(k a^2) = -(1/pi) int_0^{sigma^2} Im I(sqrt tau) d tau,
 //! and the stresses by [`kernel::stress_integrand`].
 //! lambda = 0 is the single punch (G = 1, F = pi/Re M_1 constant: self-similar).
+//! The `periodic` convention (docs/theory.md section 8, Problem 2) replaces the factor
+//! cos(chi (1 - 2 i eps s)) of G by cos(chi (1 - 2 i eps s) + i pi eps)/cosh(pi eps)
+//! ([`kernel::LateralShift`]); G is then not even in chi, and F is interpolated in sigma
+//! (P'(eta) = eta F(eta/lambda), P2/(E* k a^2) = int_0^1 sigma F; [`volterra`]).
 //! A general even profile (docs/theory.md section 9: even polynomial, circle) replaces the right side
 //! pi by pi g'(x)/(2 k x), x = a sigma, k the reference curvature ([`right_side`]); the load, psi,
 //! phi and the stresses follow from F by the same formulas. At nu = 1/2 its load equals THEORY 9's
@@ -66,5 +70,8 @@ pub mod verify;
 pub mod volterra;
 
 pub use right_side::RightSide;
-pub use solve::{chebyshev_size, solve, solve_rhs, solve_with_nodes, solve_with_nodes_rhs, VolterraParams, MAX_NODES};
+pub use solve::{
+    chebyshev_size, chebyshev_size_in, solve, solve_rhs, solve_rhs_in, solve_with_nodes, solve_with_nodes_in,
+    solve_with_nodes_rhs, VolterraParams, MAX_NODES,
+};
 pub use volterra::{lambda_of, VolterraSolution};

@@ -3,12 +3,12 @@
 //! Scalings: [`crate::adhesion::scales`].
 
 use super::right_side::RightSide;
-use super::solve::{solve_rhs, VolterraParams};
+use super::solve::{solve_rhs, solve_rhs_in, VolterraParams};
 use super::volterra::{lambda_of, VolterraSolution};
-use crate::adhesion::error::AdhesionError;
 use crate::adhesion::points::check_points;
-use crate::adhesion::profile::{check_profile_on_contact, largest_admissible_half_width};
+use crate::adhesion::profile::{check_profile_on_contact, circle_cap_error, half_width_search, HalfWidthSearch};
 use crate::adhesion::tension::{tension_report, TensionReport};
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::chebyshev;
 use crate::numerics::exact::to_float;
@@ -96,24 +96,36 @@ pub fn solve_mpfr_with(
         (AdhesionSize::HalfWidth(a), Period::Finite(l)) => {
             check_profile_on_contact(problem, to_float(a, 64).to_f64())?;
             let lam = lambda_of(a, l, prec);
-            let sol = solve_rhs(&constants, &lam, params, &rhs_for_a(a))?;
+            let sol = solve_rhs_in(&constants, &lam, params, &rhs_for_a(a), problem.periodic_surface())?;
             (lam, to_float(a, prec), sol)
         }
-        (AdhesionSize::NormalLoad(p2), Period::Infinite) => match largest_admissible_half_width(problem) {
+        (AdhesionSize::NormalLoad(p2), Period::Infinite) => match half_width_search(problem) {
             // The parabola: self-similar, F constant.
-            None => {
+            HalfWidthSearch::Parabola => {
                 let sol = solve_rhs(&constants, &zero, params, &RightSide::Parabola)?;
                 let p = to_float(p2, prec);
                 let a = Float::with_val(prec, p / (sol.load_ratio() * &e_star * &k)).sqrt();
                 (zero.clone(), a, sol)
             }
-            Some(a_max) => {
+            search => {
+                let (a_max, grow) = match search {
+                    HalfWidthSearch::Capped { a_max } => (a_max, false),
+                    HalfWidthSearch::Unbounded { start } => (start, true),
+                    HalfWidthSearch::Parabola => unreachable!("matched above"),
+                };
                 let ek = Float::with_val(prec, &e_star * &k);
                 let rhs_at = |a: &Float| RightSide::new(problem, Float::with_val(prec, a * a), prec);
                 let p2_f64 = crate::numerics::exact::to_f64(p2).unwrap_or(f64::NAN);
                 let guess = (p2_f64 / (first_guess_load_constant(problem) * ek.to_f64())).sqrt();
-                let (a, sol) =
-                    single_punch_half_width(&constants, &rhs_at, &ek, p2, Float::with_val(prec, a_max), guess, params)?;
+                let (a, sol) = single_punch_half_width(
+                    &constants,
+                    &rhs_at,
+                    &ek,
+                    p2,
+                    (Float::with_val(prec, a_max), grow),
+                    guess,
+                    params,
+                )?;
                 check_profile_on_contact(problem, a.to_f64())?;
                 (zero.clone(), a, sol)
             }
@@ -127,8 +139,17 @@ pub fn solve_mpfr_with(
                 let ell = Float::with_val(prec, lam * &lf) / &pi;
                 RightSide::new(problem, ell.square(), prec)
             };
-            let cap = largest_admissible_half_width(problem).map(|a_max| std::f64::consts::PI * a_max / lf.to_f64());
-            let search = LoadSearch { cp: first_guess_load_constant(problem), lambda_cap: cap, rhs_at: &rhs_at };
+            let cap = match half_width_search(problem) {
+                HalfWidthSearch::Capped { a_max } => Some(std::f64::consts::PI * a_max / lf.to_f64()),
+                _ => None,
+            };
+            let search = LoadSearch {
+                cp: first_guess_load_constant(problem),
+                period: lf.to_f64(),
+                lambda_cap: cap,
+                rhs_at: &rhs_at,
+                periodic: problem.periodic_surface(),
+            };
             let (lam, big) = lambda_for_load(&constants, &search, &target, p2, params)?;
             let sol = big.restrict(&lam);
             let a = Float::with_val(prec, &lam * &lf) / &pi;
@@ -180,13 +201,15 @@ pub fn solve_mpfr_with(
 }
 
 /// What the search for the half-width of a given load needs beside the material: `cp` = C_P in
-/// `f64` (first guess), the largest admissible lambda (the slope limit of a polynomial or
-/// circular profile, [`largest_admissible_half_width`]; None for the parabola) and the right side
-/// at a solved lambda.
+/// `f64` (first guess), the largest lambda searched (the circle's cap short of its wall,
+/// [`half_width_search`]; None for the other profiles) and the right side at a solved lambda.
 struct LoadSearch<'a> {
     cp: f64,
+    period: f64,
     lambda_cap: Option<f64>,
     rhs_at: &'a dyn Fn(&Float) -> RightSide,
+    /// The `periodic` convention (docs/theory.md section 8, Problem 2).
+    periodic: bool,
 }
 
 /// Solves P(lambda) = target, P(lambda) = lambda^2 P2/(E* k a^2) = P2 pi^2/(E* k L^2), by
@@ -216,9 +239,16 @@ fn lambda_for_load(
             big = big.min(c);
         }
         let big_f = Float::with_val(prec, big);
-        let sol = solve_rhs(constants, &big_f, params, &(search.rhs_at)(&big_f))?;
+        let sol = solve_rhs_in(constants, &big_f, params, &(search.rhs_at)(&big_f), search.periodic)?;
         let big2 = Float::with_val(prec, &big_f * &big_f);
         let p_of = |sol: &VolterraSolution, lam: &Float| -> (Float, Float) {
+            if sol.periodic() {
+                // P(lam) = Lambda^2 int_0^(lam/Lambda) s F(s) ds, P'(lam) = lam F(lam/Lambda).
+                let sigma = Float::with_val(prec, lam / &big_f);
+                let p = sol.load_ratio_to(&sigma) * &big2;
+                let d = sol.f_at(&sigma) * lam;
+                return (p, d);
+            }
             let tau = Float::with_val(prec, lam * lam) / &big2;
             let p = chebyshev::integral(&sol.f_coeffs, &tau, prec) * &big2 / 2u32;
             let d = sol.f_at(&tau) * lam;
@@ -227,15 +257,8 @@ fn lambda_for_load(
         let (pmax, _) = p_of(&sol, &big_f);
         if &pmax < target {
             if capped {
-                return Err(crate::model::ModelError::new(
-                    "normal_load",
-                    readable(normal_load),
-                    format!(
-                        "the contact would pass lambda = pi a/L = {big:.6}, where g'(a) reaches the slope limit {}: the theory assumes a small slope |g'| << 1 [1.9]; reduce normal_load",
-                        crate::params::sliding::MAX_CONTACT_SLOPE
-                    ),
-                )
-                .into());
+                let a_max = big * search.period / std::f64::consts::PI;
+                return Err(circle_cap_error(normal_load, a_max, None));
             }
             lam0 = 0.5 * (big + half_pi);
             continue;
@@ -279,8 +302,9 @@ fn first_guess_load_constant(problem: &AdhesionProblem) -> f64 {
 /// The half-width of a single punch (period "inf") of a profile other than the parabola under
 /// the given load P2: P2(a) = E* k a^2 P~(a) with P~ = (1/2) int_0^1 F (the right side, and so F,
 /// depends on a), dP2/da = E* k a F(1) (docs/theory.md section 4 in the limit L -> infinity: f does
-/// not depend on the contact size). Newton's method safeguarded by bisection on (0, a_max), a_max
-/// the slope limit ([`largest_admissible_half_width`]); a load beyond P2(a_max) is refused naming
+/// not depend on the contact size). Newton's method safeguarded by bisection on (0, a_max):
+/// `bracket` = (a_max, grow) of [`half_width_search`]; with `grow` (a polynomial) a_max doubles
+/// while P2(a_max) is short of the load, else (the circle's cap) such a load is refused naming
 /// `normal_load`. Each step is one collocation solve at lambda = 0 (the right side's own size,
 /// M + 2 nodes for an even polynomial of degree 2M).
 fn single_punch_half_width(
@@ -288,10 +312,11 @@ fn single_punch_half_width(
     rhs_at: &dyn Fn(&Float) -> RightSide,
     ek: &Float,
     normal_load: &Exact,
-    a_max: Float,
+    bracket: (Float, bool),
     guess: f64,
     params: VolterraParams,
 ) -> Result<(Float, VolterraSolution), AdhesionError> {
+    let (mut a_max, grow) = bracket;
     let prec = params.prec;
     let zero = Float::with_val(prec, 0);
     let one = Float::with_val(prec, 1);
@@ -302,19 +327,21 @@ fn single_punch_half_width(
         let d = Float::with_val(prec, ek * a) * sol.f_at(&one);
         Ok((p, d, sol))
     };
-    let (p_max, _, _) = load_at(&a_max)?;
+    let (mut p_max, _, _) = load_at(&a_max)?;
+    // P2 grows at least like a^2 for a convex polynomial: 64 doublings reach any f64 load.
+    for _ in 0..64 {
+        if !(grow && p_max < target) {
+            break;
+        }
+        a_max *= 2u32;
+        p_max = load_at(&a_max)?.0;
+    }
     if p_max < target {
-        return Err(crate::model::ModelError::new(
-            "normal_load",
-            readable(normal_load),
-            format!(
-                "the contact would pass a = {}, where g'(a) reaches the slope limit {} (largest load {}): the theory assumes a small slope |g'| << 1 [1.9]; reduce normal_load",
-                crate::numerics::accuracy::readable_mpfr(&a_max),
-                crate::params::sliding::MAX_CONTACT_SLOPE,
-                crate::numerics::accuracy::readable_mpfr(&p_max)
-            ),
-        )
-        .into());
+        return Err(circle_cap_error(
+            normal_load,
+            a_max.to_f64(),
+            Some(crate::numerics::accuracy::readable_mpfr(&p_max)),
+        ));
     }
     let (mut lo, mut hi) = (zero.clone(), a_max.clone());
     let mut a = if guess.is_finite() && guess > 0.0 && guess < a_max.to_f64() {

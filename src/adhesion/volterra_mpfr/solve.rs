@@ -5,7 +5,7 @@
 use super::kernel;
 use super::right_side::RightSide;
 use super::volterra::{JSource, VolterraSolution};
-use crate::adhesion::error::AdhesionError;
+use crate::growing_contact::error::AdhesionError;
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
 use crate::numerics::chebyshev;
 use crate::numerics::fixed_float::Fixed;
@@ -43,12 +43,19 @@ impl VolterraParams {
 
 /// Chebyshev size for accuracy 2^-bits at this lambda (see module doc), or an error near pi/2.
 pub fn chebyshev_size(lambda: f64, bits: u32, refine: f64) -> Result<usize, AdhesionError> {
+    chebyshev_size_in(lambda, bits, refine, false)
+}
+
+/// [`chebyshev_size`] in either convention: `periodic` interpolates in sigma = eta/lambda, whose
+/// singularity at full contact lies at sigma = pi/(2 lambda) (z = pi/lambda - 1), not at
+/// tau = sigma^2 = (pi/(2 lambda))^2.
+pub fn chebyshev_size_in(lambda: f64, bits: u32, refine: f64, periodic: bool) -> Result<usize, AdhesionError> {
     if lambda <= 0.0 {
         return Ok(2);
     }
     let half_pi = std::f64::consts::FRAC_PI_2;
     let tau_star = (half_pi / lambda).powi(2);
-    let z = 2.0 * tau_star - 1.0;
+    let z = if periodic { 2.0 * (half_pi / lambda) - 1.0 } else { 2.0 * tau_star - 1.0 };
     // Observed (nu = 0) slower decay (rho ~ 2 + 3.2/lambda^2 at lambda = pi/5): cap rho so the
     // first size is usually sufficient and the adaptive re-solve rare.
     let rho = (z + (z * z - 1.0).max(0.0).sqrt()).min(2.0 + 3.0 / (lambda * lambda));
@@ -91,7 +98,21 @@ pub fn solve_rhs(
     params: VolterraParams,
     rhs: &RightSide,
 ) -> Result<VolterraSolution, AdhesionError> {
-    let mut n = chebyshev_size(lambda.to_f64(), params.target_bits, params.refine)?
+    solve_rhs_in(constants, lambda, params, rhs, false)
+}
+
+/// [`solve_rhs`] in either surface convention: `periodic` (u periodic, docs/theory.md section 8,
+/// Problem 2) solves with the kernel of [`kernel::LateralShift`] and F in sigma (at lambda = 0,
+/// the single punch, the two coincide and the `paper` form is used).
+pub fn solve_rhs_in(
+    constants: &AdhesionParamsMpfr,
+    lambda: &Float,
+    params: VolterraParams,
+    rhs: &RightSide,
+    periodic: bool,
+) -> Result<VolterraSolution, AdhesionError> {
+    let periodic = periodic && !lambda.is_zero();
+    let mut n = chebyshev_size_in(lambda.to_f64(), params.target_bits, params.refine, periodic)?
         .max(rhs.min_nodes(params.target_bits, params.refine));
     if n > MAX_NODES {
         return Err(AdhesionError::IllConditioned {
@@ -105,7 +126,7 @@ pub fn solve_rhs(
     let goal = (params.target_bits as f64) * std::f64::consts::LN_2;
     for _ in 0..5 {
         // The residual check only for the size that is kept.
-        let mut sol = solve_unchecked(constants, lambda, params, n, rhs)?;
+        let mut sol = solve_unchecked(constants, lambda, params, n, rhs, periodic)?;
         let c: Vec<f64> = sol.f_coeffs.iter().map(|x| x.clone().abs().to_f64()).collect();
         let c0 = c[0].max(f64::MIN_POSITIVE);
         let m = c.len();
@@ -132,8 +153,17 @@ pub fn solve_rhs(
                     // Below nu = 1/2 slow decay is the homogeneous solution's share in F
                     // (asymptotics::adhesion_mode), not only the approach to full contact.
                     let f = constants.to_f64();
-                    let mode = if f.eps > 0.0 {
-                        format!("; {}", crate::asymptotics::adhesion_mode::mode_sentence(f.eps, f.b, f.s))
+                    // Not in `periodic`, where the mode is not excited (docs/theory.md section 8).
+                    let mode = if f.eps > 0.0 && !periodic {
+                        format!(
+                            "; {}",
+                            crate::asymptotics::adhesion_mode::mode_sentence(
+                                f.eps,
+                                f.b,
+                                f.s,
+                                params.target_bits as f64 * std::f64::consts::LOG10_2
+                            )
+                        )
                     } else {
                         String::new()
                     };
@@ -163,7 +193,20 @@ pub fn solve_with_nodes_rhs(
     n: usize,
     rhs: &RightSide,
 ) -> Result<VolterraSolution, AdhesionError> {
-    let mut sol = solve_unchecked(constants, lambda, params, n, rhs)?;
+    solve_with_nodes_in(constants, lambda, params, n, rhs, false)
+}
+
+/// [`solve_with_nodes_rhs`] in either convention ([`solve_rhs_in`]).
+pub fn solve_with_nodes_in(
+    constants: &AdhesionParamsMpfr,
+    lambda: &Float,
+    params: VolterraParams,
+    n: usize,
+    rhs: &RightSide,
+    periodic: bool,
+) -> Result<VolterraSolution, AdhesionError> {
+    let periodic = periodic && !lambda.is_zero();
+    let mut sol = solve_unchecked(constants, lambda, params, n, rhs, periodic)?;
     sol.residual = residual(&sol, rhs);
     Ok(sol)
 }
@@ -175,15 +218,21 @@ fn solve_unchecked(
     params: VolterraParams,
     n: usize,
     rhs: &RightSide,
+    periodic: bool,
 ) -> Result<VolterraSolution, AdhesionError> {
     let prec = params.prec;
     let eps = Float::with_val(prec, &constants.eps);
     let cosh_pi_eps = Float::with_val(prec, &constants.cosh_pi_eps);
     let rule = TanhSinh::new(params.target_bits + 8, params.refine, prec);
     let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
+    let shift = periodic.then(|| kernel::LateralShift::new(&eps, prec));
+    // The nodes of the interpolation variable: tau = sigma^2 (`paper`) or sigma (`periodic`).
     let tau = chebyshev::nodes(n, prec);
-    let (res, keep) = collocation_rows(&tau, lambda, &eps, &rule, &pre, prec);
-    let b: Vec<Float> = tau.iter().map(|t| rhs.at(t, prec)).collect();
+    let (res, keep) = collocation_rows(&tau, lambda, &eps, &rule, &pre, shift.as_ref(), prec);
+    let b: Vec<Float> = tau
+        .iter()
+        .map(|t| if periodic { rhs.at(&Float::with_val(prec, t * t), prec) } else { rhs.at(t, prec) })
+        .collect();
     let (f_coeffs, pivot_ratio) = collocation_solve(&res, &keep, b, prec)?;
     Ok(VolterraSolution {
         prec,
@@ -191,6 +240,7 @@ fn solve_unchecked(
         eps,
         cosh_pi_eps,
         f_coeffs,
+        shift,
         j_source: JSource::Rows(Arc::new(keep)),
         j_coeffs: OnceLock::new(),
         residual: 0.0,
@@ -215,7 +265,8 @@ fn residual(sol: &VolterraSolution, rhs: &RightSide) -> f64 {
 }
 
 /// The data of the collocation rows at the nodes `tau`: per row i, re_iq = w_q Re z_iq and the
-/// pairs (w_q Im z_iq, x_iq), x_iq = 2 tau_i s_q^2 - 1 (the second kept for J).
+/// pairs (w_q Im z_iq, x_iq), x_iq = 2 tau_i s_q^2 - 1 (the second kept for J). With a `shift`
+/// (`periodic`) the nodes are sigma_i and x_iq = 2 sigma_i s_q - 1.
 #[allow(clippy::type_complexity)]
 fn collocation_rows(
     tau: &[Float],
@@ -223,6 +274,7 @@ fn collocation_rows(
     eps: &Float,
     rule: &TanhSinh,
     pre: &kernel::VolterraNodes,
+    shift: Option<&kernel::LateralShift>,
     prec: u32,
 ) -> (Vec<Vec<Float>>, Vec<Vec<(Float, Float)>>) {
     let n = tau.len();
@@ -230,16 +282,19 @@ fn collocation_rows(
     let mut res: Vec<Vec<Float>> = Vec::with_capacity(n);
     let mut keep: Vec<Vec<(Float, Float)>> = Vec::with_capacity(n);
     for tau_i in tau {
-        let sigma = Float::with_val(prec, tau_i.sqrt_ref());
+        let sigma = if shift.is_some() { tau_i.clone() } else { Float::with_val(prec, tau_i.sqrt_ref()) };
         let chi = Float::with_val(prec, lambda * &sigma);
         let sc_chi = chi.clone().sin_cos(Float::new(prec));
         let mut row_res = Vec::with_capacity(rule.len());
         let mut row_keep = Vec::with_capacity(rule.len());
         for q in 0..rule.len() {
-            let (re, im) = pre.integrand(q, &rule.s[q], &rule.c[q], &chi, &sc_chi, eps, prec);
+            let (re, im) = pre.integrand(q, &rule.s[q], &rule.c[q], &chi, &sc_chi, eps, shift, prec);
             let re = re * &rule.w[q];
             let im = im * &rule.w[q];
-            let x = Float::with_val(prec, tau_i * &pre.s2[q]) * 2u32 - 1u32;
+            let x = match shift {
+                Some(_) => Float::with_val(prec, &sigma * &rule.s[q]) * 2u32 - 1u32,
+                None => Float::with_val(prec, tau_i * &pre.s2[q]) * 2u32 - 1u32,
+            };
             row_res.push(re);
             row_keep.push((im, x));
         }
@@ -508,7 +563,7 @@ mod tests {
             let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
             let tau = chebyshev::nodes(40, prec);
             let lambda = Float::with_val(prec, 1.2);
-            let (res, keep) = collocation_rows(&tau, &lambda, &eps, &rule, &pre, prec);
+            let (res, keep) = collocation_rows(&tau, &lambda, &eps, &rule, &pre, None, prec);
             let b: Vec<Float> = tau.iter().map(|t| RightSide::Parabola.at(t, prec)).collect();
             let (fixed, ratio_fixed) = collocation_solve(&res, &keep, b.clone(), prec).unwrap();
             let rows = res.iter().zip(&keep).map(|(r, x)| row_sums_mpfr(r, x, 40, prec)).collect();

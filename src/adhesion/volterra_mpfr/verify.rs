@@ -8,9 +8,9 @@
 
 use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
-use crate::adhesion::error::AdhesionError;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
-use crate::asymptotics::adhesion_mode::mode_sentence;
+use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
+use crate::growing_contact::error::AdhesionError;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
 use crate::params::adhesion::AdhesionParamsF64;
@@ -18,14 +18,23 @@ use std::time::Instant;
 
 /// Why two runs disagree below full contact: at nu < 1/2 the homogeneous solution
 /// ([`crate::asymptotics::adhesion_mode`], naming its exponent m*), at nu = 1/2 the conditioning.
-fn small_nu_cause(problem: &AdhesionProblem) -> String {
+/// In the `periodic` convention the mode is not excited (docs/theory.md section 8, Problem 2): the
+/// cause is the approach to full contact.
+fn small_nu_cause(problem: &AdhesionProblem, digits: u32) -> String {
     let c = AdhesionParamsF64::new(problem.material());
-    if c.eps > 0.0 {
-        mode_sentence(c.eps, c.b, c.s)
+    if problem.periodic_surface() {
+        PERIODIC_CAUSE.into()
+    } else if c.eps > 0.0 {
+        mode_sentence(c.eps, c.b, c.s, digits as f64)
     } else {
         "the Volterra equation of the incremental method is ill-conditioned here (volterra_mpfr, Conditioning)".into()
     }
 }
+
+/// The cause of a shortfall in the `periodic` convention (measured: nu = 0 holds 20 digits to
+/// lambda = 1.52; docs/theory.md section 8, Problem 2).
+const PERIODIC_CAUSE: &str = "near full contact lambda -> pi/2 the solution is singular and the discretisation \
+     converges slowly (in the `periodic` convention the homogeneous mode is not excited: docs/theory.md section 8)";
 
 /// Below this many verified digits `solve_verified` returns `IllConditioned` instead of values.
 pub const MIN_DIGITS: f64 = 2.0;
@@ -95,8 +104,16 @@ pub fn solve_verified(
             method: "mpfr-volterra",
             parameter: "lambda",
             value: readable_f64(lam),
-            valid: "small nu: lambda below ~0.85 (nu = 0) or ~1.35 (nu = 0.3); lambda < pi/2 otherwise".into(),
-            reason: format!("two runs agree to only {headline:.1} digits: {}", small_nu_cause(problem)),
+            valid: if problem.periodic_surface() {
+                "lambda well below pi/2 (`periodic`: about 1.52 at 20 digits)".into()
+            } else {
+                let c = AdhesionParamsF64::new(problem.material());
+                valid_sizes(c.eps, c.b, c.s, digits_requested as f64)
+            },
+            reason: format!(
+                "two runs agree to only {headline:.1} digits: {}",
+                small_nu_cause(problem, digits_requested)
+            ),
         });
     }
     if headline < digits_requested as f64 {
@@ -107,9 +124,10 @@ pub fn solve_verified(
         let near = "near full contact lambda -> pi/2 the solution is singular and the discretisation converges slowly";
         let eps_positive = AdhesionParamsF64::new(problem.material()).eps > 0.0;
         let cause = match (lam >= FULL_CONTACT_LAMBDA, eps_positive) {
-            (true, true) => format!("{near}; and {}", small_nu_cause(problem)),
+            _ if problem.periodic_surface() => PERIODIC_CAUSE.to_string(),
+            (true, true) => format!("{near}; and {}", small_nu_cause(problem, digits_requested)),
             (true, false) => near.to_string(),
-            (false, _) => small_nu_cause(problem),
+            (false, _) => small_nu_cause(problem, digits_requested),
         };
         warnings.push(format!(
             "only {headline:.1} of {digits_requested} requested digits verified (lambda = {lam:.6}; {cause})"

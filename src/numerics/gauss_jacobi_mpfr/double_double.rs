@@ -1,8 +1,8 @@
 //! Double-double arithmetic (hi + lo, about 106 bits in `f64` operations) for the Newton passes
 //! of the MPFR Gauss–Jacobi rules ([`super`]'s module doc): the first rung of the precision
-//! ladder, and the whole rule at up to 64 bits ([`dd_rule`]), four nodes side by side.
+//! ladder, and the whole rule at up to 64 bits (`dd_rule` of [`super`]), four nodes side by side.
 
-use super::{checked_rule, Eval, GaussJacobiRule, QuadratureError};
+use super::recurrence_eval::Eval;
 use rug::Float;
 
 /// Nodes whose Newton passes in double-double run side by side ([`EvalDd::run_lanes`]).
@@ -148,90 +148,4 @@ impl EvalDd {
         let [(p, num, den, _)] = self.recurrence::<1, false>(&[x]);
         p.mul(den).div(num)
     }
-}
-
-/// The rule of `newton_rule` for `prec` <= `DD_ONLY_PREC`, every Newton pass in double-double
-/// (about 100 correct bits, `wp` ~ 100-108 here) instead of the MPFR passes at `wp` bits: from the f64
-/// start `start`, passes until the correction is below 2^-(prec + 28) (two, as the ladder at `wp`:
-/// one to ~100 bits, one whose negligible correction yields p_n' and p_{n-1} for the weight), the
-/// weight mu0 / (b_n p_n' p_{n-1}) as in the MPFR route; then each node and weight rounded to
-/// `prec` bits. Both routes carry more than 30 bits beyond `prec`, so both round to the same
-/// `prec`-bit numbers except when a value lies within about 2^-95 of a rounding boundary (test
-/// `double_double_route_rounds_as_the_mpfr_route`: bit for bit, the locating stage's rules of
-/// `sliding::reduction_mpfr` among them). A Newton pass in double-double costs about a quarter
-/// of one in MPFR at 104 bits: the 192-node rule of the sinusoid's bracket refinement took 8.7 ms
-/// of a 30 ms cold solve (`GJ` timing of each built rule, a temporary trace).
-pub(super) fn dd_rule(
-    alpha: &Float,
-    beta: &Float,
-    (a, b): (&[Float], &[Float]),
-    start: &[f64],
-    mu0: &Float,
-    prec: u32,
-    wp: u32,
-) -> Result<GaussJacobiRule, QuadratureError> {
-    let n = start.len();
-    let dd = EvalDd::new(&Eval::new(alpha, beta, a, b, wp));
-    let (mu0, bn) = (Dd::of(mu0), Dd::of(&b[n]));
-    let tol = 2f64.powi(-(prec as i32) - 28);
-    // hi + lo rounded once to `prec` bits (hi + lo is exact at 2 x 64 + 64 bits for |lo| <= ulp(hi)).
-    let round = |v: Dd| {
-        let mut f = Float::with_val(192, v.0);
-        f += v.1;
-        Float::with_val(prec, &f)
-    };
-    let mut nodes = Vec::with_capacity(n);
-    let mut weights = Vec::with_capacity(n);
-    // Newton in chunks of LANES nodes (the last chunk padded with its last node); a converged
-    // node keeps its x and its (p_n', p_{n-1}).
-    let mut found: Vec<(Dd, Dd, Dd)> = Vec::with_capacity(n);
-    for chunk in start.chunks(LANES) {
-        let at = |l: usize| chunk[l.min(chunk.len() - 1)];
-        let mut x: [Dd; LANES] = std::array::from_fn(|l| Dd(at(l), 0.0));
-        let mut last: [Option<(Dd, Dd)>; LANES] = [None; LANES];
-        for pass in 0..8 {
-            let values = dd.run_lanes(&x);
-            for l in 0..LANES {
-                if last[l].is_some() {
-                    continue;
-                }
-                let (p, dp, pm) = values[l];
-                let dx = p.div(dp);
-                if !(dx.0.is_finite() && dx.1.is_finite()) || dp.0 == 0.0 {
-                    let i = found.len() + l.min(chunk.len() - 1);
-                    return Err(QuadratureError::NoConvergence { n, why: format!("zero derivative at node {i}") });
-                }
-                x[l] = x[l].sub(dx);
-                if pass >= 1 && dx.0.abs() <= tol {
-                    last[l] = Some((dp, pm));
-                }
-            }
-            if last.iter().all(Option::is_some) {
-                break;
-            }
-        }
-        let base = found.len();
-        for l in 0..chunk.len() {
-            let Some((dp, pm)) = last[l] else {
-                let i = base + l;
-                return Err(QuadratureError::NoConvergence { n, why: format!("Newton did not converge at node {i}") });
-            };
-            found.push((x[l], dp, pm));
-        }
-    }
-    for (i, (&x0, &(x, dp, pm))) in start.iter().zip(&found).enumerate() {
-        if (x.0 - x0).abs() > 1e-6 + 1e-3 * (1.0 - x0 * x0) {
-            return Err(QuadratureError::NoConvergence {
-                n,
-                why: format!("Newton drifted from its start at node {i}"),
-            });
-        }
-        let sum = dp.mul(pm).mul(bn);
-        if !(sum.0 > 0.0) {
-            return Err(QuadratureError::NoConvergence { n, why: format!("non-positive Christoffel sum at node {i}") });
-        }
-        nodes.push(round(x));
-        weights.push(round(mu0.div(sum)));
-    }
-    checked_rule(alpha, beta, nodes, weights, prec)
 }

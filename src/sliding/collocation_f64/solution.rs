@@ -172,6 +172,8 @@ pub struct SlidingSolutionF64 {
     pub wear_per_distance: Option<f64>,
     /// Mean wear rate cW V P2/L when the speed V is given (and L finite).
     pub wear_rate: Option<f64>,
+    /// Worn area (volume per unit width) per unit sliding distance, cW P2, for each punch.
+    pub worn_area_per_distance: f64,
     /// Largest pressure over the requested points and the 86 fixed samples in u of the
     /// physicality criterion's p >= 0, the MPFR method's samples of max p (`outputs.rs`).
     pub max_pressure: f64,

@@ -113,6 +113,7 @@ pub fn solve_sliding_f64_with(
                 (Some(w), Some(v)) => Some(w * v),
                 _ => None,
             },
+            worn_area_per_distance: prm.wear * out.p2,
             max_pressure: out.max_p,
             physicality: gap,
             pressure: out.pressure,

@@ -192,7 +192,7 @@ pub fn shift_solutions(params: &SlidingParamsMpfr, size: &Size, terms: &Equation
                 .collect()
         }
         ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. } => {
-            unreachable!("general profiles find their centre by Newton's method (super::centre::centre)")
+            unreachable!("general profiles find their centre by Newton's method (the centre module)")
         }
     }
 }

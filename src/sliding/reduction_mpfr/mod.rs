@@ -45,11 +45,13 @@
 //! P2 = int p dx by a separate rule; direct vs inverse problem.
 
 pub mod bracket;
+mod branches;
 pub mod centre;
 pub mod contact;
 pub mod equation;
 pub mod error;
 pub mod locate_profile;
+mod nodes;
 pub mod physical;
 pub mod pressure;
 pub mod profile;

@@ -3,9 +3,10 @@
 //! sizes that `solve::locate_with` then refines. Only signs matter here (`SCAN_DIGITS`); the
 //! values at a bracket's ends are passed on to Brent's method, so they are always the scan rule's.
 
+use super::branches::branches_with;
 use super::equation::ShiftSolution;
 use super::error::SlidingError;
-use super::solve::{branches_with, bucket, nodes_for};
+use super::nodes::{bucket, nodes_for};
 use crate::numerics::gauss_jacobi_mpfr::GaussJacobiRule;
 use crate::params::sliding::SlidingParamsMpfr;
 use rug::Float;

@@ -14,14 +14,15 @@
 
 pub use super::bracket::Located;
 use super::bracket::{root_in, LOCATE_DIGITS, LOCATE_NODES, RESIDUAL_NOISE};
-use super::centre::centre;
+use super::branches::{branches, inverse_rule};
 use super::contact::{Contact, Size};
-use super::equation::{equation_terms, shift_solutions, ShiftSolution};
+use super::equation::ShiftSolution;
 use super::error::SlidingError;
 use super::locate_profile::{locate_profile, profile_nodes};
+pub use super::nodes::nodes_for;
+use super::nodes::{bucket, lambda_cap};
 use super::physical::{max_pressure, physicality, physicality_with};
 use super::pressure::Pressure;
-use super::profile::is_general;
 use super::scan::load_curves;
 use super::setup::{Setup, LOCATE_PREC};
 use super::solution::{PressurePoint, SlidingSolution};
@@ -48,45 +49,6 @@ pub struct NodeRule {
     pub factor: f64,
 }
 
-/// Error model (docs/theory.md section 3): the quadrature error behaves like tan(lambda/2)^(2n), so
-/// n = (digits + 4) ln 10 / (-2 ln tan(lambda/2)), at least 8 (a single punch, lambda = 0, needs few:
-/// the integrands are polynomials for the parabola). Heuristic margin of 4 digits for the constant.
-pub fn nodes_for(lambda: f64, digits: f64) -> usize {
-    if lambda <= 0.0 {
-        return 8;
-    }
-    let r = -(lambda / 2.0).tan().ln();
-    if r <= 0.0 {
-        return usize::MAX;
-    }
-    let n = ((digits + 4.0) * std::f64::consts::LN_10 / (2.0 * r)).ceil();
-    if n > 1e9 {
-        usize::MAX
-    } else {
-        (n as usize).max(8)
-    }
-}
-
-/// Largest lambda for which `nodes_for(lambda, digits) <= nmax`.
-pub(super) fn lambda_cap(digits: f64, nmax: usize) -> f64 {
-    2.0 * (-(digits + 4.0) * std::f64::consts::LN_10 / (2.0 * nmax as f64)).exp().atan()
-}
-
-pub(super) fn bucket(n: usize) -> usize {
-    for b in [8usize, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512] {
-        if n <= b {
-            return b;
-        }
-    }
-    n.div_ceil(64) * 64
-}
-
-/// Rule for 1/omega with n nodes at the parameters' precision.
-fn inverse_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
-    let (a, b) = params.inverse_weight_exponents();
-    Ok(gauss_jacobi(&a, &b, n, params.prec)?)
-}
-
 /// Rule for omega with n nodes.
 fn weight_rule(params: &SlidingParamsMpfr, n: usize) -> Result<Arc<GaussJacobiRule>, SlidingError> {
     let (a, b) = params.weight_exponents();
@@ -100,24 +62,6 @@ fn lambda_of(params: &SlidingParamsMpfr, s: f64) -> f64 {
     } else {
         0.0
     }
-}
-
-/// Centre solutions (all branches) at size s with n nodes.
-fn branches(params: &SlidingParamsMpfr, s: &Float, n: usize) -> Result<Vec<ShiftSolution>, SlidingError> {
-    branches_with(params, s, &*inverse_rule(params, n)?)
-}
-
-/// Centre solutions (all branches) at size s with the rule `rule` for 1/omega.
-pub(super) fn branches_with(
-    params: &SlidingParamsMpfr,
-    s: &Float,
-    rule: &GaussJacobiRule,
-) -> Result<Vec<ShiftSolution>, SlidingError> {
-    let size = Size::new(params, s);
-    if is_general(&params.shape) {
-        return Ok(centre(params, &size, rule).into_iter().collect());
-    }
-    Ok(shift_solutions(params, &size, &equation_terms(params, &size, rule)))
 }
 
 /// Low-precision load on a branch at size s (None: no centre on this branch).

@@ -766,8 +766,9 @@ fn general_profiles_satisfy_the_cot_kernel_equation() {
 #[test]
 fn sign_scan_locates_the_same_sizes() {
     use super::bracket::{LOCATE_DIGITS, LOCATE_NODES};
+    use super::nodes::{lambda_cap, nodes_for};
     use super::scan::{scan_signs, scan_values};
-    use super::solve::{lambda_cap, locate_with, nodes_for};
+    use super::solve::locate_with;
     // The sinusoid's scan with and without scan_signs: the same sizes bit for bit (the brackets'
     // ends, which Brent's method receives, carry the full scan rule's values in both), over loads
     // with one, two (non-monotone) and no roots, both conventions, with and without friction.

@@ -18,13 +18,13 @@ use super::point::SeriesPoint;
 use super::solve::{
     assess_physicality, check_expansion, check_order, derive_expansion, solution, SeriesAccuracy, SeriesSolution,
 };
-use crate::asymptotics::sliding::SlidingExpansion;
+use crate::asymptotics::sliding::{SlidingExpansion, SlidingShape};
 use crate::error::Error;
 use crate::model::{Exact, SlidingProblem};
 use crate::numerics::accuracy::{readable_f64, readable_mpfr, verified_digits_mpfr};
 use crate::numerics::evaluate;
 use crate::numerics::exact::to_float;
-use crate::numerics::pade::{complex_text, resum_mpfr, Resummation};
+use crate::numerics::pade::{complex_text, resum_conformal, resum_mpfr, Conformal, Cut, Resummation};
 use crate::numerics::precision::{precision_for, VERIFY_EXTRA_BITS};
 use crate::params::sliding::SlidingParamsMpfr;
 use exact_series::{Poly, Series};
@@ -42,8 +42,33 @@ pub struct Chosen {
     pub m: usize,
     /// Its estimated digits on the quantity's scale.
     pub digits: f64,
-    /// Its poles in w (6 digits), nearest first.
+    /// Its poles in w (6 digits), nearest first; in z when `map` is set.
     pub poles: Vec<String>,
+    /// The conformal map applied before the approximant ([`known_singularity`]), as text; `None`:
+    /// Pade in w itself.
+    pub map: Option<&'static str>,
+}
+
+/// The conformal map of a singularity the project knows in closed form, for the frictionless
+/// (theta = 0, T = 0) expansions in w = Lambda^2 (docs/theory.md section 11): Kuznetsov's parabola,
+/// l/l_s = arccos(exp(-w/2))/sqrt(w), singular where exp(-w/2) = +-1 off 0 (cuts from
+/// w = +-2 pi i along the imaginary axis), and every quantity with it (each is analytic in
+/// lambda(w)); the sinusoid, a/a0 = arcsin(sqrt w)/sqrt w (cut [1, inf)). `None` otherwise.
+pub fn known_singularity(e: &SlidingExpansion, sp: &SeriesPoint) -> Option<(Conformal, &'static str)> {
+    if e.step != 2 || !sp.theta.is_zero() || !sp.t.is_zero() {
+        return None;
+    }
+    let prec = sp.prec;
+    Some(match e.shape {
+        SlidingShape::Parabolic => (
+            Conformal { cut: Cut::Imaginary, radius: Float::with_val(prec, rug::float::Constant::Pi) * 2u32 },
+            "z: the plane cut from w = +-2 pi i along the imaginary axis onto |z| < 1, w = 4 pi z/(1 - z^2)",
+        ),
+        SlidingShape::Sinusoidal => (
+            Conformal { cut: Cut::Real, radius: Float::with_val(prec, 1) },
+            "z: the plane cut along [1, inf) onto |z| < 1, w = 4 z/(1 + z)^2",
+        ),
+    })
 }
 
 /// The Padé method's solution: the quantities of the series method's solution (its `accuracy`
@@ -75,6 +100,8 @@ fn coefficients(s: &Series<Poly>, order: usize, sp: &SeriesPoint, prec: u32) -> 
 pub const MIN_ESTIMATED_DIGITS: f64 = 3.0;
 
 /// One quantity resummed at w: its best value and digits, or the refusal naming every reason.
+/// With a known singularity (`map`) the Pade approximants in z after the conformal map compete with
+/// those in w, chosen by their own estimates (the larger wins; a tie keeps w).
 fn resummed(
     name: &str,
     c: &[Float],
@@ -82,6 +109,7 @@ fn resummed(
     sp: &SeriesPoint,
     scale: &Float,
     cap: f64,
+    map: Option<&(Conformal, &'static str)>,
 ) -> Result<(Float, f64, Chosen), Error> {
     let prec = sp.prec;
     let (cw, w): (Vec<Float>, Float) = if w_is_square {
@@ -92,6 +120,21 @@ fn resummed(
     let r: Resummation = resum_mpfr(&cw, &w, scale, cap, prec).ok_or_else(|| Error::NoConvergence {
         what: format!("a coefficient of {name} is not finite at these parameters"),
     })?;
+    let conformal = map.and_then(|(m, text)| Some((resum_conformal(&cw, m, &w, scale, cap, prec)?, *text)));
+    let mapped = conformal.as_ref().and_then(|(rc, text)| Some((rc.best()?, *text)));
+    if let Some((b, text)) = mapped {
+        if r.best().is_none_or(|p| b.digits > p.digits) {
+            let chosen = Chosen {
+                quantity: name.to_string(),
+                l: b.l,
+                m: b.m,
+                digits: b.digits,
+                poles: b.poles.iter().map(complex_text).collect(),
+                map: Some(text),
+            };
+            return Ok((b.value.clone(), b.digits, chosen));
+        }
+    }
     let Some(b) = r.best() else {
         return Err(Error::NoConvergence {
             what: format!(
@@ -107,6 +150,7 @@ fn resummed(
         m: b.m,
         digits: b.digits,
         poles: b.poles.iter().map(complex_text).collect(),
+        map: None,
     };
     Ok((b.value.clone(), b.digits, chosen))
 }
@@ -137,9 +181,11 @@ fn run(
     let one = Float::with_val(prec, 1);
     let l_coeffs = coefficients(&e.l_over_ls, order, &sp, prec);
     let w_is_square = e.step == 2;
-    let (l_ratio, d_l, ch_l) = resummed("l/l_s", &l_coeffs, w_is_square, &sp, &one, cap)?;
+    let known = known_singularity(e, &sp);
+    let map = known.as_ref();
+    let (l_ratio, d_l, ch_l) = resummed("l/l_s", &l_coeffs, w_is_square, &sp, &one, cap, map)?;
     let r_coeffs = coefficients(&e.rbar_minus_rbar_s, order, &sp, prec);
-    let (dr, d_r, ch_r) = resummed("rbar - rbar_s", &r_coeffs, w_is_square, &sp, &one, cap)?;
+    let (dr, d_r, ch_r) = resummed("rbar - rbar_s", &r_coeffs, w_is_square, &sp, &one, cap, map)?;
     let l = Float::with_val(prec, &sp.l_s * &l_ratio);
     let rbar = Float::with_val(prec, 2 * sp.theta.clone() - &sp.t) + &dr;
     let c = Float::with_val(prec, &rbar * &l);
@@ -156,6 +202,7 @@ fn run(
         &sp,
         &Float::with_val(prec, &kl_p2 / &unit_fd),
         cap,
+        map,
     )?;
     let f_def = Float::with_val(prec, &unit_fd * &fds);
     // Pressure brackets at the points.
@@ -193,7 +240,7 @@ fn run(
     for (i, (b, factor)) in pressure.iter().enumerate() {
         let scale = Float::with_val(prec, &plain_max / factor);
         let name = format!("pressure bracket at xh = {}", readable_mpfr(&xh[i]));
-        let (v, d, ch) = resummed(&name, b, w_is_square, &sp, &scale, cap)?;
+        let (v, d, ch) = resummed(&name, b, w_is_square, &sp, &scale, cap, map)?;
         p_values.push(Float::with_val(prec, factor * &v));
         d_p = Some(d_p.map_or(d, |a| a.min(d)));
         chosen.push(ch);

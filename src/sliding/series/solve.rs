@@ -65,6 +65,8 @@ pub struct SeriesSolution {
     pub wear_per_distance: Float,
     /// Mean wear rate cW V P2/L when the speed V is given.
     pub wear_rate: Option<Float>,
+    /// Worn area (volume per unit width) per unit sliding distance, cW P2, for each punch.
+    pub worn_area_per_distance: Float,
     /// p at the requested points.
     pub pressure: Vec<PressurePoint>,
     /// The largest p at the requested points (0 without points): the scale of p.
@@ -254,7 +256,8 @@ pub(super) fn solution(
     let p1 = Float::with_val(prec, &params.mu * &p2)
         + Float::with_val(prec, 2 * hi.l.clone()) * Float::with_val(prec, &params.tau0 * unit);
     // cW P2/L = (cW E*)(P2/E*)/L.
-    let wear = Float::with_val(prec, &params.wear * &sp.p2) / &sp.period;
+    let worn = Float::with_val(prec, &params.wear * &sp.p2);
+    let wear = Float::with_val(prec, &worn / &sp.period);
     let wear_rate = params.speed.as_ref().map(|v| Float::with_val(prec, &wear * v));
     let pressure = xh
         .iter()
@@ -280,6 +283,7 @@ pub(super) fn solution(
         f_def: Float::with_val(prec, &hi.f_def * unit),
         wear_per_distance: wear,
         wear_rate,
+        worn_area_per_distance: worn,
         pressure,
         max_pressure: Float::with_val(prec, &max_p * unit),
         order,

@@ -1,0 +1,106 @@
+//! `periodic-contact series adhesion --order N --nu R` beyond the exact route (issue 13,
+//! "coefficients to any order"): the numerical route's content at order 200 (its time is in
+//! docs/performance.md), its first terms against the exact route's values at the same nu, the
+//! pole at nu = 0, and the refusals.
+
+mod common;
+use common::run;
+
+/// The `[v^k] value` lines of a text output as (part, power, value): every such line when
+/// `marker` is empty, else only those after a line starting with `marker` within each part.
+fn values(text: &str, marker: &str) -> Vec<(String, String, String)> {
+    let mut part = String::new();
+    let mut out = Vec::new();
+    let mut on = marker.is_empty();
+    for line in text.lines() {
+        if !marker.is_empty() && line.starts_with(marker) {
+            on = true;
+            continue;
+        }
+        if let Some(name) = line.strip_prefix("part: ").or_else(|| line.strip_prefix("object: ")) {
+            part = name.trim().to_string();
+            on = marker.is_empty();
+            continue;
+        }
+        if let (true, Some(rest)) = (on, line.strip_prefix('[')) {
+            let (power, value) = rest.split_once("] ").unwrap();
+            out.push((part.clone(), power.to_string(), value.to_string()));
+        }
+    }
+    out
+}
+
+/// `--order 200 --nu 3/10`: exit 0, every term through lambda^200 and chi^201, 30 digits
+/// verified, no pole; its first terms (through lambda^12 and chi^13) print exactly the 30-digit
+/// values of the exact route `--order 12 --nu 3/10` (the symbolic coefficients substituted).
+#[test]
+fn order_200_at_three_tenths_matches_the_exact_route() {
+    let (code, text, err) = run(&["series", "adhesion", "--order", "200", "--nu", "3/10"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("object: adhesion (numerical route)"), "{text}");
+    assert!(text.contains("no pole"), "{text}");
+    assert!(text.contains("[lambda^200] "), "{text}");
+    assert!(text.contains("[chi^201] "), "{text}");
+    let numeric = values(&text, "");
+    assert_eq!(numeric.len(), 1 + 101 + 101);
+    let (code, exact, err) = run(&["series", "adhesion", "--order", "12", "--nu", "3/10"]);
+    assert_eq!(code, 0, "{err}");
+    // The exact route prints the values after "values at nu = 3/10 (30 digits):" in each part.
+    let exact = values(&exact, "values at nu = 3/10 (30 digits):");
+    assert_eq!(exact.len(), 1 + 7 + 7);
+    for (part, power, value) in &exact {
+        let same = numeric.iter().find(|(p, k, _)| p == part && k == power);
+        let Some((_, _, v)) = same else { panic!("{part} {power} missing from the numerical route") };
+        assert_eq!(v, value, "{part} [{power}]");
+    }
+    let (code, json, err) = run(&["series", "adhesion", "--order", "200", "--nu", "3/10", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["route"], "numeric");
+    assert_eq!(v["printed_order"], 200);
+    assert!(v["pole"].is_null());
+    assert!(v["verified_digits"].as_f64().unwrap() >= 30.0, "{}", v["verified_digits"]);
+    assert_eq!(v["parts"][1]["coefficients"].as_array().unwrap().len(), 101);
+}
+
+/// nu = 0 beyond N = 303: the text and the JSON name the sign change of Re M_(2N+1) and print
+/// through lambda^604 only.
+#[test]
+fn pole_at_nu_zero_is_named() {
+    let (code, text, err) = run(&["series", "adhesion", "--order", "640", "--nu", "0", "--digits", "12"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("changes sign at N = 303"), "{}", &text[..2000.min(text.len())]);
+    assert!(text.contains("[lambda^604] ") && !text.contains("[lambda^606] "));
+    let (code, json, err) =
+        run(&["series", "adhesion", "--order", "640", "--nu", "0", "--digits", "12", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["pole"]["n"], 303);
+    assert_eq!(v["printed_order"], 604);
+}
+
+/// `--digits` at a small order runs the numerical route; the exact route without --nu stays capped
+/// at 24 and says where the numerical route is; bad values name the flag (exit code 2).
+#[test]
+fn routes_and_refusals() {
+    let (code, text, err) = run(&["series", "adhesion", "--order", "4", "--nu", "1/4", "--digits", "50"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("values to 50 digits"), "{text}");
+    for (args, needle) in [
+        (vec!["series", "adhesion", "--order", "30"], "with --nu R the numerical route takes up to 1000"),
+        (vec!["series", "adhesion", "--order", "1002", "--nu", "0.3"], "[0, 1000]"),
+        (vec!["series", "adhesion", "--order", "4", "--nu", "0.3", "--digits", "0"], "--digits"),
+        (vec!["series", "adhesion", "--order", "4", "--digits", "20"], "only the adhesion series with --nu"),
+        (vec!["series", "kernel", "--order", "4", "--digits", "20"], "--digits"),
+        (vec!["series", "adhesion", "--order", "40", "--nu", "0.3", "--format", "latex"], "text or json"),
+        (vec!["series", "adhesion", "--order", "40", "--nu", "0.7"], "must lie in [0, 1/2]"),
+        (vec!["series", "adhesion", "--order", "40", "--nu", "0.3", "--pade"], "built by the exact route"),
+        (vec!["series", "loading-law", "--order", "4", "--nu", "0.3", "--ratio", "0", "--digits", "9"], "--digits"),
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?} printed {out}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}

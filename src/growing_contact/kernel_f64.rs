@@ -1,0 +1,223 @@
+//! The increments of the asymmetric incremental method (docs/theory.md sections 4, 10) in `f64`, for
+//! the marching method ([`super::march`]); written anew from the formulas (the MPFR kernel
+//! [`super::kernel`] is not called), and checked against it in the tests.
+//!
+//! Variables as in [`super::kernel`]: chi' = chi - gamma, the earlier contact of half-length eta;
+//! d_near, d_far the distances of an outside point to the nearer and farther end; d_left,
+//! d_right those of a contact point to the trailing and leading end. With s = +1 right of the
+//! contact, -1 left of it, and S(d) = sin d for the periodic row (S(d) = d, cos -> 1 for the
+//! single punch, the limit L -> infinity at fixed x/L-scaled lengths):
+//!   L K = s cos(chi' - 2 i eps eta) (S(d_far)/S(d_near))^(s i eps) / sqrt(S(d_near) S(d_far)),
+//!   L sigma_flat = cosh(pi eps) cos(chi' - 2 i eps eta) (S(d_left)/S(d_right))^(i eps)
+//!                  / sqrt(S(d_left) S(d_right)).
+//! The tilted punch of the `periodic` convention (rotation f = 1, no load; [`super::kernel::
+//! TiltedPunch`]): with t = tan chi', m = tan eta, A + i B = -i ch e^(-2 eps eta)/cos eta,
+//! A - i B = i ch e^(2 eps eta)/cos eta,
+//!   rho = (m + t)^(-1/2 + i eps) (m - t)^(-1/2 - i eps) (A + B t) on the contact,
+//!   R = Z(t) (A + B t)/ch outside, Z = |t + m|^(-1/2 + i eps) |t - m|^(-1/2 - i eps), times -1 left.
+//! It exists only for the periodic row (the term i beta dP/L vanishes as L -> infinity).
+
+use nalgebra::Complex;
+
+/// Complex `f64`.
+pub type C64 = Complex<f64>;
+
+/// The side of the earlier contact an outside point lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// Toward the leading end b (s = +1).
+    Right,
+    /// Toward the trailing end -a (s = -1).
+    Left,
+}
+
+impl Side {
+    /// s = +1 (right) or -1 (left).
+    pub fn sign(self) -> f64 {
+        match self {
+            Side::Right => 1.0,
+            Side::Left => -1.0,
+        }
+    }
+}
+
+/// The material constants and the geometry of the increments.
+#[derive(Debug, Clone, Copy)]
+pub struct KernelF64 {
+    /// eps = ln(3 - 4 nu)/(2 pi).
+    pub eps: f64,
+    /// cosh(pi eps).
+    pub cosh_pi_eps: f64,
+    /// beta = tanh(pi eps).
+    pub beta: f64,
+    /// The single punch (S(d) = d, cos -> 1) instead of the periodic row.
+    pub single: bool,
+}
+
+/// r^(-1/2 + i e) for r > 0.
+fn power(r: f64, e: f64) -> C64 {
+    C64::from_polar(1.0 / r.sqrt(), e * r.ln())
+}
+
+impl KernelF64 {
+    fn s(&self, d: f64) -> f64 {
+        if self.single {
+            d
+        } else {
+            d.sin()
+        }
+    }
+
+    /// cos(chi' - 2 i eps eta) (1 for the single punch).
+    fn cos_factor(&self, chi: f64, eta: f64) -> C64 {
+        if self.single {
+            C64::new(1.0, 0.0)
+        } else {
+            C64::new(chi, -2.0 * self.eps * eta).cos()
+        }
+    }
+
+    /// L K at distance `d_near` > 0 from the nearer end of a contact of half-length `eta`, on
+    /// `side` (module doc).
+    pub fn outside(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+        let sg = side.sign();
+        let d_far = d_near + 2.0 * eta;
+        let (sn, sf) = (self.s(d_near), self.s(d_far));
+        let chi = sg * (d_near + eta);
+        let phase = C64::from_polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
+        self.cos_factor(chi, eta) * phase
+    }
+
+    /// L sigma_flat at the contact point with distances `d_left`, `d_right` to the trailing and
+    /// leading ends (module doc).
+    pub fn flat_stress(&self, d_left: f64, d_right: f64, eta: f64) -> C64 {
+        let chi = 0.5 * (d_left - d_right);
+        let (sl, sr) = (self.s(d_left), self.s(d_right));
+        let phase = C64::from_polar(self.cosh_pi_eps / (sl * sr).sqrt(), self.eps * (sl / sr).ln());
+        self.cos_factor(chi, eta) * phase
+    }
+
+    /// (A, B) of the rotation (module doc), periodic row only.
+    fn tilt_coefficients(&self, eta: f64) -> (C64, C64) {
+        let (ch, grow, cos) = (self.cosh_pi_eps, (2.0 * self.eps * eta).exp(), eta.cos());
+        let plus = C64::new(0.0, -ch / (grow * cos));
+        let minus = C64::new(0.0, ch * grow / cos);
+        ((plus + minus) * 0.5, (plus - minus) / C64::new(0.0, 2.0))
+    }
+
+    /// The rotation's stress rho on the contact (module doc); zero for the single punch.
+    pub fn tilt_stress(&self, d_left: f64, d_right: f64, eta: f64) -> C64 {
+        if self.single {
+            return C64::new(0.0, 0.0);
+        }
+        let (a, b) = self.tilt_coefficients(eta);
+        let chi = 0.5 * (d_left - d_right);
+        let cc = eta.cos() * chi.cos();
+        let x = power(d_left.sin() / cc, self.eps) * power(d_right.sin() / cc, -self.eps);
+        x * (a + b * chi.tan())
+    }
+
+    /// The rotation's slope R outside (module doc); zero for the single punch.
+    pub fn tilt_outside(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+        if self.single {
+            return C64::new(0.0, 0.0);
+        }
+        let (a, b) = self.tilt_coefficients(eta);
+        let d_far = d_near + 2.0 * eta;
+        let chi = side.sign() * (d_near + eta);
+        let cc = eta.cos() * chi.cos();
+        let (near, far) = (d_near.sin() / cc, d_far.sin() / cc);
+        let (tp, tm) = match side {
+            Side::Right => (far, near),
+            Side::Left => (near, far),
+        };
+        let z = power(tp, self.eps) * power(tm, -self.eps) * side.sign();
+        z * (a + b * chi.tan()) / self.cosh_pi_eps
+    }
+
+    /// The surface slope left outside by the increment dP = (1 + i n) dP2 of unit dP2 in the
+    /// `periodic` convention or not: (1 + i n) (L K + i beta R) ([`crate::loading_law::collocation`]'s
+    /// edge integrand; docs/theory.md section 8, Problem 2: the increment's i beta dP/L keeps v and
+    /// u periodic).
+    pub fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
+        let mut k = self.outside(side, d_near, eta);
+        if tilt {
+            k += self.tilt_outside(side, d_near, eta) * C64::new(0.0, self.beta);
+        }
+        k * C64::new(1.0, n)
+    }
+
+    /// The stress of the same increment on the contact: (1 + i n) (L sigma_flat + i beta rho).
+    pub fn increment_stress(&self, d_left: f64, d_right: f64, eta: f64, n: f64, tilt: bool) -> C64 {
+        let mut s = self.flat_stress(d_left, d_right, eta);
+        if tilt {
+            s += self.tilt_stress(d_left, d_right, eta) * C64::new(0.0, self.beta);
+        }
+        s * C64::new(1.0, n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::kernel::{self, TiltedPunch};
+    use super::*;
+    use rug::float::Constant;
+    use rug::Float;
+
+    const PREC: u32 = 120;
+
+    /// Every f64 formula against the MPFR kernel (an independent transcription, itself checked
+    /// against the direct cot-kernel quadrature) at nu = 0.3, to 1e-14 relative; and the single
+    /// punch as the limit of the periodic row: lengths scaled by 1e-4 (K scales as 1/length).
+    #[test]
+    fn f64_kernel_matches_the_mpfr_kernel() {
+        let pi = Float::with_val(PREC, Constant::Pi);
+        let eps_m = Float::with_val(PREC, Float::with_val(PREC, 1.8).ln_ref()) / (pi.clone() * 2u32);
+        let ch_m = Float::with_val(PREC, Float::with_val(PREC, &pi * &eps_m).cosh_ref());
+        let eps = eps_m.to_f64();
+        let k = KernelF64 { eps, cosh_pi_eps: ch_m.to_f64(), beta: (std::f64::consts::PI * eps).tanh(), single: false };
+        let f = |v: f64| Float::with_val(PREC, v);
+        let close = |a: C64, b: rug::Complex| {
+            let (br, bi) = (b.real().to_f64(), b.imag().to_f64());
+            let e = ((a.re - br).powi(2) + (a.im - bi).powi(2)).sqrt() / (br * br + bi * bi).sqrt();
+            assert!(e < 1e-14, "{a} vs {br} {bi}: {e:e}");
+        };
+        let eta = 0.6;
+        let tilt = TiltedPunch::rotation(&f(eta), &eps_m, &ch_m, PREC);
+        for (side, ms) in [(Side::Right, kernel::Side::Right), (Side::Left, kernel::Side::Left)] {
+            for d in [1e-9, 0.01, 0.3, 0.7] {
+                close(
+                    k.outside(side, d, eta),
+                    kernel::outside_kernel(kernel::Row::Periodic, ms, &f(d), &f(eta), &eps_m, PREC),
+                );
+                close(k.tilt_outside(side, d, eta), tilt.outside(ms, &f(d), &f(eta), &eps_m, &ch_m, PREC));
+            }
+        }
+        for (dl, dr) in [(1e-9, 1.2 - 1e-9), (0.3, 0.9), (1.1, 0.1), (0.6, 0.6)] {
+            close(
+                k.flat_stress(dl, dr, eta),
+                kernel::flat_punch_stress(kernel::Row::Periodic, &f(dl), &f(dr), &f(eta), &eps_m, &ch_m, PREC),
+            );
+            close(k.tilt_stress(dl, dr, eta), tilt.stress(&f(dl), &f(dr), &f(eta), &eps_m, PREC));
+        }
+        let single = KernelF64 { single: true, ..k };
+        let s = 1e-4;
+        for side in [Side::Right, Side::Left] {
+            let (a, b) = (single.outside(side, 0.3, 0.6), k.outside(side, 0.3 * s, 0.6 * s) * s);
+            assert!((a - b).norm() < 1e-7 * a.norm(), "{a} vs {b}");
+        }
+        let (a, b) = (single.flat_stress(0.3, 0.9, 0.6), k.flat_stress(0.3 * s, 0.9 * s, 0.6 * s) * s);
+        assert!((a - b).norm() < 1e-7 * a.norm(), "{a} vs {b}");
+        // The single punch against the MPFR kernel's Row::Single.
+        for (side, ms) in [(Side::Right, kernel::Side::Right), (Side::Left, kernel::Side::Left)] {
+            close(
+                single.outside(side, 0.3, 0.6),
+                kernel::outside_kernel(kernel::Row::Single, ms, &f(0.3), &f(0.6), &eps_m, PREC),
+            );
+        }
+        close(
+            single.flat_stress(0.3, 0.9, 0.6),
+            kernel::flat_punch_stress(kernel::Row::Single, &f(0.3), &f(0.9), &f(0.6), &eps_m, &ch_m, PREC),
+        );
+    }
+}

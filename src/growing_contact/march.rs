@@ -1,0 +1,687 @@
+//! The second method for Problem 2 under a loading law (docs/theory.md section 10; issue 12), in
+//! `f64`: block-by-block marching in the loading parameter, built differently from the MPFR
+//! collocation ([`crate::loading_law::collocation`], one global Chebyshev interpolant in t = eta/Lambda solved
+//! all at once): here the loading [0, Lambda] is cut into blocks, each solved after the earlier
+//! ones by its own small Newton iteration, with piecewise polynomials and a graded Gauss rule for
+//! the history. Its kernels are [`super::kernel_f64`] (no MPFR code is called).
+//!
+//! Equations (dimensionless, chi = pi x/L, lambda = pi l/L, gamma = pi c/L, P2 = E* k (L/pi)^2 P,
+//! dP1 = n dP2 with n = N'(P2)): at every size lambda both ends enter with the punch's slope,
+//!   Re int_0^lambda P'(eta) [(1 + i n) L K(d; eta) - beta n R(d; eta)] d eta = G(chi_e),
+//! chi_e = gamma(lambda) +- lambda (leading, trailing), d = chi_e's distance to the nearer end of
+//! the contact of size eta: d = (lambda - eta)(1 +- E), E = (gamma(lambda) - gamma(eta))/(lambda -
+//! eta); R (the tilted punch) only in the `periodic` convention of the periodic row. G(chi) is
+//! the punch's slope pi^2 g'(L chi/pi)/(2 k L), a polynomial in chi (the parabola: pi chi).
+//!
+//! Discretisation. Block j covers [eta_j, eta_j + h_j]; in it F = P'(eta)/eta and Gm =
+//! gamma(eta)/eta are polynomials of degree m - 1 in u in [-1, 1] (Chebyshev coefficients), fixed
+//! by their values at the m right-Radau points (the zeros of (1 - u) P^(1,0)_(m-1)(u), u = 1
+//! included: collocation of a first-kind Volterra equation with a weakly singular kernel is stable
+//! with c_m = 1, Brunner 2004, section 6.2). At each of the m points both edge equations are
+//! imposed: 2m equations for the 2m values, solved by Newton (Jacobian by differences; the
+//! history enters only through gamma(lambda), by one difference per point), started from the
+//! previous block's interpolant continued. The load P(eta) and, for a polynomial law, n(eta)
+//! follow from the exact integral of eta F in each block.
+//! Quadrature of the edge integral at lambda in block k:
+//! - the earlier blocks by Gauss-Legendre on segments graded toward lambda (each segment no
+//!   longer than its distance to lambda, so the (lambda - eta)^(-1/2 -+ i eps) singularity just
+//!   beyond a block end is resolved; error about (3 + sqrt 8)^(-2 q) per segment of q points);
+//! - the current block's part (eta_k, lambda) by tanh-sinh in the complement lambda - eta
+//!   (the endpoint singularity absorbed), E from the divided difference of Gm (accurate as
+//!   eta -> lambda).
+//!
+//! Fields (the same definitions as [`crate::loading_law::fields`]): a point chi entered at eta_x
+//! (gamma(eta_x) +- eta_x = chi); psi_hat(chi) = Im of its edge integral at lambda = eta_x;
+//! sigma_hat(chi) = int_(eta_x)^Lambda P'(eta) [(1 + i n) L sigma_flat - beta n rho] d eta
+//! (tanh-sinh from eta_x in its block, graded Gauss beyond); int_0^chi psi_hat = int_0^(eta_x)
+//! psi_hat(chi(eta)) chi'(eta) d eta by Gauss per block.
+
+use super::chebyshev_f64::{cheb, cheb_antiderivative, cheb_dd, cheb_derivative, cheb_times_x};
+use super::kernel_f64::{KernelF64, Side, C64};
+use crate::growing_contact::error::AdhesionError;
+use crate::model::ModelError;
+use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
+use crate::numerics::tanh_sinh::tanh_sinh_f64;
+use std::f64::consts::PI;
+
+mod fields;
+
+/// Horner: sum_j p_j x^j (numpy order).
+fn poly(p: &[f64], x: f64) -> f64 {
+    p.iter().rev().fold(0.0, |acc, c| acc * x + c)
+}
+
+/// What the march needs besides its discretisation.
+#[derive(Debug, Clone)]
+pub struct MarchSetting {
+    /// The increments' kernels (material and geometry).
+    pub kernel: KernelF64,
+    /// Whether each increment carries the `periodic` convention's tilted punch (periodic row only).
+    pub tilt: bool,
+    /// N'(P2) in powers of P2 (numpy order); one coefficient for the linear law.
+    pub slope: Vec<f64>,
+    /// P2 per unit P (E* k L^2/pi^2).
+    pub p2_per_p: f64,
+    /// G(chi) = sum_j profile_j chi^j, the punch's scaled slope (module doc; [0, pi] for the parabola).
+    pub profile: Vec<f64>,
+    /// First guess of P'(eta)/eta at eta = 0 (the symmetric single punch's 2 C_P).
+    pub start: f64,
+    /// The law's scene key and text, for the refusal N' < 0.
+    pub law_key: &'static str,
+    /// The law as the scene writes it.
+    pub law_text: String,
+}
+
+impl MarchSetting {
+    /// n = N'(P2) at P2 = p2_per_p `p`.
+    pub fn ratio(&self, p: f64) -> f64 {
+        poly(&self.slope, p * self.p2_per_p)
+    }
+    fn constant_ratio(&self) -> bool {
+        self.slope.len() <= 1
+    }
+    /// No tangential load (N = 0) on an even punch (G odd): the contact stays centred, gamma = 0,
+    /// and only the leading edge's equation is imposed (the trailing one is its mirror image).
+    /// Then the march is a method for section 4's symmetric Problem 2 in its own right: with
+    /// gamma free, its own error would move the centre at small nu (the asymmetric homogeneous
+    /// modes of [`crate::asymptotics::loading_law_modes`]) although the exact centre stays put.
+    pub fn symmetric(&self) -> bool {
+        self.slope.iter().all(|c| *c == 0.0) && self.profile.iter().step_by(2).all(|c| *c == 0.0)
+    }
+}
+
+/// The discretisation of the march.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MarchOptions {
+    /// Collocation points per block (m).
+    pub nodes: usize,
+    /// Block length in lambda (the blocks are equal; the last one of a given load is cut).
+    pub block: f64,
+    /// Gauss points per history segment.
+    pub gauss: usize,
+    /// Bits of the tanh-sinh rule of the current block.
+    pub bits: u32,
+}
+
+impl MarchOptions {
+    /// The nominal discretisation: 10 points per block, blocks of 0.05, 14 Gauss points.
+    pub const NOMINAL: MarchOptions = MarchOptions { nodes: 10, block: 0.05, gauss: 14, bits: 60 };
+    /// The checking run: blocks of two thirds the length, two more points, finer rules.
+    pub fn refined(&self) -> Self {
+        MarchOptions {
+            nodes: self.nodes + 2,
+            block: self.block * 2.0 / 3.0,
+            gauss: self.gauss + 4,
+            bits: self.bits + 16,
+        }
+    }
+}
+
+/// Where the march stops.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MarchEnd {
+    /// At the size Lambda.
+    Size(f64),
+    /// Where P reaches `load`, refused beyond `limit` in lambda.
+    Load {
+        /// Target P.
+        load: f64,
+        /// Largest lambda allowed.
+        limit: f64,
+    },
+}
+
+/// One block: F = P'/eta and Gm = gamma/eta as Chebyshev series in u = 2 (eta - start)/h - 1.
+#[derive(Debug, Clone)]
+pub struct Block {
+    /// Left end.
+    pub start: f64,
+    /// Length.
+    pub h: f64,
+    f: Vec<f64>,
+    g: Vec<f64>,
+    dg: Vec<f64>,
+    load: Vec<f64>,
+}
+
+impl Block {
+    fn new(start: f64, h: f64, f: Vec<f64>, g: Vec<f64>, load_start: f64) -> Self {
+        // P = P(start) + (h/2) int_(-1)^u eta(u') F(u') du', eta(u) = start + h/2 + (h/2) u.
+        let xf = cheb_times_x(&f);
+        let ef: Vec<f64> =
+            (0..xf.len()).map(|j| (start + h / 2.0) * f.get(j).copied().unwrap_or(0.0) + h / 2.0 * xf[j]).collect();
+        let mut load: Vec<f64> = cheb_antiderivative(&ef).into_iter().map(|v| v * h / 2.0).collect();
+        load[0] += load_start;
+        let dg = cheb_derivative(&g);
+        Block { start, h, f, g, dg, load }
+    }
+    /// Right end.
+    pub fn end(&self) -> f64 {
+        self.start + self.h
+    }
+    fn u(&self, eta: f64) -> f64 {
+        2.0 * (eta - self.start) / self.h - 1.0
+    }
+    fn p_prime(&self, eta: f64) -> f64 {
+        eta * cheb(&self.f, self.u(eta))
+    }
+    fn gamma(&self, eta: f64) -> f64 {
+        eta * cheb(&self.g, self.u(eta))
+    }
+    /// gamma'(eta) = Gm + eta Gm_u 2/h.
+    fn gamma_slope(&self, eta: f64) -> f64 {
+        let u = self.u(eta);
+        cheb(&self.g, u) + eta * cheb(&self.dg, u) * 2.0 / self.h
+    }
+    fn load_at(&self, eta: f64) -> f64 {
+        cheb(&self.load, self.u(eta))
+    }
+    /// (gamma(a) - gamma(b))/(a - b) for a, b in the block, accurate as b -> a.
+    fn gamma_dd(&self, a: f64, b: f64) -> f64 {
+        let (ua, ub) = (self.u(a), self.u(b));
+        cheb(&self.g, ua) + b * cheb_dd(&self.g, ua, ub) * 2.0 / self.h
+    }
+}
+
+/// The quadrature and interpolation rules of one discretisation.
+#[derive(Debug, Clone)]
+struct Rules {
+    /// Right-Radau points in (-1, 1].
+    radau: Vec<f64>,
+    /// Values at `radau` -> Chebyshev coefficients.
+    to_cheb: nalgebra::DMatrix<f64>,
+    /// Gauss-Legendre on (-1, 1): (node, weight).
+    gauss: Vec<(f64, f64)>,
+    /// Tanh-sinh on (0, 1): (s, 1 - s, weight).
+    ts: Vec<(f64, f64, f64)>,
+}
+
+impl Rules {
+    fn new(o: &MarchOptions) -> Result<Self, AdhesionError> {
+        let quad = |e: crate::numerics::gauss_jacobi_f64::QuadratureError| AdhesionError::NotConverged {
+            what: "loading-law march rules",
+            reason: e.to_string(),
+        };
+        let mut radau = gauss_jacobi(o.nodes - 1, 1.0, 0.0).map_err(quad)?.nodes;
+        radau.push(1.0);
+        let m = radau.len();
+        let v = nalgebra::DMatrix::from_fn(m, m, |i, j| (j as f64 * radau[i].acos()).cos());
+        let singular = || AdhesionError::NotConverged {
+            what: "loading-law march rules",
+            reason: "singular Chebyshev matrix".into(),
+        };
+        let to_cheb = v.try_inverse().ok_or_else(singular)?;
+
+        let g = gauss_jacobi(o.gauss, 0.0, 0.0).map_err(quad)?;
+        let gauss = g.nodes.into_iter().zip(g.weights).collect();
+        Ok(Rules { radau, to_cheb, gauss, ts: tanh_sinh_f64(o.bits, 1.0) })
+    }
+    fn coefficients(&self, values: &[f64]) -> Vec<f64> {
+        (&self.to_cheb * nalgebra::DVector::from_column_slice(values)).iter().copied().collect()
+    }
+}
+
+/// A finished (or running) march: its blocks up to `end`.
+#[derive(Debug, Clone)]
+pub struct March {
+    /// The setting.
+    pub setting: MarchSetting,
+    /// The discretisation.
+    pub options: MarchOptions,
+    /// The blocks; the last one may reach beyond `end` (a given load).
+    pub blocks: Vec<Block>,
+    /// The final size Lambda.
+    pub end: f64,
+    /// Newton steps taken over all blocks.
+    pub steps: usize,
+    rules: Rules,
+}
+
+/// Largest number of collocation points (lambda ~ 1.52).
+pub const MAX_POINTS: usize = 100;
+
+/// Collocation points of the nominal run at `lambda` (one block: a global collocation in eta, [`single_block`]; the loading law at small nu and
+/// complete adhesion beyond its series), or `None` beyond
+/// [`MAX_POINTS`].
+pub fn points_for(lambda: f64) -> Option<usize> {
+    let u = PI / lambda.max(1e-3) - 1.0;
+    let rho = u + (u * u - 1.0).max(0.0).sqrt();
+    let m = (37.0 / rho.ln()).ceil() + 4.0;
+    (m.is_finite() && m <= MAX_POINTS as f64).then_some((m as usize).max(8))
+}
+
+/// A singular point closer than this fraction of a block to the block's end is integrated with
+/// the neighbouring block in one tanh-sinh piece (the graded Gauss rule needs its distance).
+const NEAR_END: f64 = 0.05;
+
+fn recedes(side: Side, lambda: f64) -> AdhesionError {
+    AdhesionError::NotConverged {
+        what: "loading-law march",
+        reason: format!(
+            "the {} end recedes at lambda = {lambda:.4} (the contact must grow at both ends for complete adhesion; \
+             at small nu this is the problem's homogeneous mode eta^mu* grown to this size (asymptotics::\
+             loading_law_modes: the history is fixed only up to C eta^mu*, and the discretisation's own error \
+             sets C), or with blocks of 0.05 their own growing error)",
+            if side == Side::Right { "leading" } else { "trailing" }
+        ),
+    }
+}
+
+impl March {
+    /// The block with start < eta <= end (eta = 0: the first).
+    fn block_right(&self, eta: f64) -> usize {
+        self.blocks.partition_point(|b| b.end() < eta).min(self.blocks.len() - 1)
+    }
+    /// The block with start <= eta < end.
+    fn block_left(&self, eta: f64) -> usize {
+        self.blocks.partition_point(|b| b.end() <= eta).min(self.blocks.len() - 1)
+    }
+    /// P'(eta).
+    pub fn p_prime(&self, eta: f64) -> f64 {
+        self.blocks[self.block_right(eta)].p_prime(eta)
+    }
+    /// gamma(eta) = pi c/L at size eta.
+    pub fn gamma(&self, eta: f64) -> f64 {
+        self.blocks[self.block_right(eta)].gamma(eta)
+    }
+    /// P(eta).
+    pub fn load(&self, eta: f64) -> f64 {
+        self.blocks[self.block_right(eta)].load_at(eta)
+    }
+    /// n = N'(P2(eta)).
+    fn ratio_in(&self, block: &Block, eta: f64) -> f64 {
+        if self.setting.constant_ratio() {
+            self.setting.ratio(0.0)
+        } else {
+            self.setting.ratio(block.load_at(eta))
+        }
+    }
+
+    /// Gauss-Legendre over [lo, hi] on segments graded toward `sing` outside it (module doc).
+    fn graded(
+        &self,
+        lo: f64,
+        hi: f64,
+        sing: f64,
+        f: &mut dyn FnMut(f64) -> Result<C64, AdhesionError>,
+    ) -> Result<C64, AdhesionError> {
+        let toward_hi = sing >= hi;
+        let (mut a, mut b) = (lo, hi);
+        let mut acc = C64::new(0.0, 0.0);
+        let mut segment = |a: f64, b: f64, acc: &mut C64| -> Result<(), AdhesionError> {
+            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+            for &(x, w) in &self.rules.gauss {
+                *acc += f(mid + half * x)? * (w * half);
+            }
+            Ok(())
+        };
+        loop {
+            let dist = if toward_hi { sing - b } else { a - sing };
+            if b - a <= dist || dist <= 1e-13 * (hi - lo) {
+                segment(a, b, &mut acc)?;
+                return Ok(acc);
+            }
+            if toward_hi {
+                segment(b - dist, b, &mut acc)?;
+                b -= dist;
+            } else {
+                segment(a, a + dist, &mut acc)?;
+                a += dist;
+            }
+        }
+    }
+
+    /// The edge integrand of the increment at eta (block `b`) for the end at distance d.
+    fn edge_term(&self, b: &Block, side: Side, d: f64, eta: f64, lambda: f64) -> Result<C64, AdhesionError> {
+        if d.is_nan() || d <= 0.0 {
+            return Err(recedes(side, lambda));
+        }
+        let n = self.ratio_in(b, eta);
+        Ok(self.setting.kernel.increment_outside(side, d, eta, n, self.setting.tilt) * b.p_prime(eta))
+    }
+
+    /// The edge integral over the blocks before `upto` at the size lambda with gamma(lambda) = `gl`.
+    fn history(&self, side: Side, lambda: f64, gl: f64, upto: usize) -> Result<C64, AdhesionError> {
+        let sg = side.sign();
+        let mut acc = C64::new(0.0, 0.0);
+        for b in &self.blocks[..upto] {
+            acc += self.graded(b.start, b.end(), lambda, &mut |eta| {
+                let e = (gl - b.gamma(eta)) / (lambda - eta);
+                self.edge_term(b, side, (lambda - eta) * (1.0 + sg * e), eta, lambda)
+            })?;
+        }
+        Ok(acc)
+    }
+
+    /// The edge integral over (start, lambda) of block `k` (tanh-sinh in lambda - eta).
+    fn partial(&self, side: Side, lambda: f64, k: usize) -> Result<C64, AdhesionError> {
+        let b = &self.blocks[k];
+        let sg = side.sign();
+        let span = lambda - b.start;
+        let mut acc = C64::new(0.0, 0.0);
+        for &(s, c, w) in &self.rules.ts {
+            let gap = span * c;
+            let eta = b.start + span * s;
+            let e = b.gamma_dd(lambda, eta);
+            acc += self.edge_term(b, side, gap * (1.0 + sg * e), eta, lambda)? * w;
+        }
+        Ok(acc * span)
+    }
+
+    /// int_0^lambda of the edge integrand at the leading (Right) or trailing (Left) end of the
+    /// contact of size lambda <= end.
+    pub fn edge(&self, side: Side, lambda: f64) -> Result<C64, AdhesionError> {
+        let k = self.block_right(lambda);
+        let b = &self.blocks[k];
+        let gl = b.gamma(lambda);
+        if k == 0 || lambda - b.start >= NEAR_END * b.h {
+            return Ok(self.history(side, lambda, gl, k)? + self.partial(side, lambda, k)?);
+        }
+        // lambda just past a block start (a point entering there): the singular piece spans the
+        // previous block too, whose polynomial gives E there (continued by < NEAR_END h).
+        let prev = &self.blocks[k - 1];
+        let sg = side.sign();
+        let span = lambda - prev.start;
+        let mut acc = C64::new(0.0, 0.0);
+        for &(s, c, w) in &self.rules.ts {
+            let eta = prev.start + span * s;
+            let bj = if eta > prev.end() { b } else { prev };
+            let e = bj.gamma_dd(lambda, eta);
+            acc += self.edge_term(bj, side, span * c * (1.0 + sg * e), eta, lambda)? * w;
+        }
+        Ok(self.history(side, lambda, gl, k - 1)? + acc * span)
+    }
+
+    /// The residuals (2 per point: leading, trailing) of the last block, divided by lambda, and
+    /// the history integrals (for the Jacobian).
+    fn residual(
+        &self,
+        lambdas: &[f64],
+        gammas: &[f64],
+        with_history: Option<&[[C64; 2]]>,
+    ) -> Result<(Vec<f64>, Vec<[C64; 2]>), AdhesionError> {
+        let k = self.blocks.len() - 1;
+        let sides: &[Side] = if self.setting.symmetric() { &[Side::Right] } else { &[Side::Right, Side::Left] };
+        let mut out = Vec::with_capacity(sides.len() * lambdas.len());
+        let mut hist = Vec::with_capacity(lambdas.len());
+        for (j, (&lam, &gl)) in lambdas.iter().zip(gammas).enumerate() {
+            let mut h = [C64::new(0.0, 0.0); 2];
+            for (i, &side) in sides.iter().enumerate() {
+                h[i] = match with_history {
+                    Some(hs) => hs[j][i],
+                    None => self.history(side, lam, gl, k)?,
+                };
+                let total = h[i] + self.partial(side, lam, k)?;
+                out.push((total.re - poly(&self.setting.profile, gl + side.sign() * lam)) / lam);
+            }
+            hist.push(h);
+        }
+        Ok((out, hist))
+    }
+}
+
+/// One block on [0, `lambda`] holding F = P'/eta with the Chebyshev coefficients `f` (in
+/// u = 2 eta/lambda - 1) and gamma = 0: the march's fields (load, psi, phi, stresses) for a
+/// symmetric solution found by another solve ([`crate::adhesion::collocation_f64`], which solves
+/// the same collocation equations of one block directly: they are linear in F when gamma = 0).
+pub fn single_block(
+    setting: &MarchSetting,
+    options: &MarchOptions,
+    lambda: f64,
+    f: Vec<f64>,
+) -> Result<March, AdhesionError> {
+    let rules = Rules::new(options)?;
+    let g = vec![0.0; f.len()];
+    let blocks = vec![Block::new(0.0, lambda, f, g, 0.0)];
+    Ok(March { setting: setting.clone(), options: *options, blocks, end: lambda, steps: 1, rules })
+}
+
+/// Marches from 0 to `end` (module doc).
+pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> Result<March, AdhesionError> {
+    let rules = Rules::new(options)?;
+    let m = options.nodes;
+    // Unknowns per block: the values of F, and of Gm unless the contact stays centred.
+    let symmetric = setting.symmetric();
+    let unknowns = if symmetric { m } else { 2 * m };
+    let (h, count) = match end {
+        MarchEnd::Size(lam) => {
+            let count = (lam / options.block).ceil().max(1.0) as usize;
+            (lam / count as f64, count)
+        }
+        MarchEnd::Load { limit, .. } => (options.block, (limit / options.block).ceil() as usize + 1),
+    };
+    let mut mar = March { setting: setting.clone(), options: *options, blocks: Vec::new(), end: 0.0, steps: 0, rules };
+    for k in 0..count {
+        let start = k as f64 * h;
+        let lambdas: Vec<f64> = mar.rules.radau.iter().map(|u| start + h * (1.0 + u) / 2.0).collect();
+        let load_start = mar.blocks.last().map_or(0.0, |b| b.load_at(start));
+        // First guess: the previous block continued, or the symmetric single punch.
+        let mut x: Vec<f64> = match mar.blocks.last() {
+            Some(b) => {
+                let us: Vec<f64> = lambdas.iter().map(|l| b.u(*l)).collect();
+                us.iter().map(|u| cheb(&b.f, *u)).chain(us.iter().map(|u| cheb(&b.g, *u))).take(unknowns).collect()
+            }
+            None => (0..unknowns).map(|i| if i < m { setting.start } else { 0.0 }).collect(),
+        };
+        let install = |mar: &mut March, x: &[f64]| {
+            let g = if symmetric { vec![0.0; m] } else { mar.rules.coefficients(&x[m..]) };
+            let blk = Block::new(start, h, mar.rules.coefficients(&x[..m]), g, load_start);
+            if mar.blocks.len() == k + 1 {
+                mar.blocks[k] = blk;
+            } else {
+                mar.blocks.push(blk);
+            }
+        };
+        install(&mut mar, &x);
+        let mut jac: Option<nalgebra::DMatrix<f64>> = None;
+        let mut previous = f64::INFINITY;
+        let mut done = false;
+        // Near round-off the corrections stall at the noise of the residual times the
+        // conditioning (small nu: ~1e-12); then the iterate of least residual is kept.
+        let mut best = (f64::INFINITY, x.clone());
+        let mut stalls = 0;
+        for _ in 0..40 {
+            mar.steps += 1;
+            let gammas: Vec<f64> =
+                if symmetric { vec![0.0; m] } else { lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect() };
+            let (r, hist) = mar.residual(&lambdas, &gammas, None)?;
+            let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
+            if rmax < best.0 {
+                best = (rmax, x.clone());
+            }
+            if jac.is_none() {
+                jac = Some(jacobian(&mut mar, &x, &lambdas, &gammas, &r, &hist, &install)?);
+                install(&mut mar, &x);
+            }
+            let j = jac.as_ref().expect("set above");
+            let delta =
+                j.clone().lu().solve(&nalgebra::DVector::from_column_slice(&r)).ok_or(AdhesionError::NotConverged {
+                    what: "loading-law march Newton",
+                    reason: "singular Jacobian".into(),
+                })?;
+            let size = delta.iter().fold(0f64, |a, v| a.max(v.abs()));
+            for (xi, d) in x.iter_mut().zip(delta.iter()) {
+                *xi -= d;
+            }
+            install(&mut mar, &x);
+            if !size.is_finite() {
+                break;
+            }
+            let scale = x.iter().fold(1f64, |a, v| a.max(v.abs()));
+            if size < 4e-15 * scale {
+                done = true;
+                break;
+            }
+            if size < 1e-9 * scale {
+                if size > 0.3 * previous {
+                    stalls += 1;
+                }
+                if stalls >= 3 {
+                    x = best.1.clone();
+                    install(&mut mar, &x);
+                    done = true;
+                    break;
+                }
+            } else if size > 0.1 * previous {
+                jac = None;
+            }
+            previous = size;
+        }
+        if !done {
+            return Err(AdhesionError::NotConverged {
+                what: "loading-law march Newton",
+                reason: format!("block {k} (lambda in [{start:.4}, {:.4}]): 40 steps", start + h),
+            });
+        }
+        let blk = &mar.blocks[k];
+        for &lam in lambdas.iter().chain([start + 0.5 * h / m as f64].iter()) {
+            let n = mar.ratio_in(blk, lam);
+            if n < 0.0 {
+                return Err(ModelError::new(
+                    setting.law_key,
+                    setting.law_text.clone(),
+                    format!(
+                        "N'(P2) >= 0 along the loading (P1 must not decrease as P2 grows), but N'({:.6e}) = {n:.6e}",
+                        blk.load_at(lam) * setting.p2_per_p
+                    ),
+                )
+                .into());
+            }
+            let slope = blk.gamma_slope(lam);
+            if slope.is_nan() || slope.abs() >= 1.0 {
+                return Err(recedes(if slope > 0.0 { Side::Left } else { Side::Right }, lam));
+            }
+        }
+        match end {
+            MarchEnd::Size(lam) if k + 1 == count => {
+                mar.end = lam;
+                return Ok(mar);
+            }
+            MarchEnd::Load { load, .. } if blk.load_at(blk.end()) >= load => {
+                // P increases (P' > 0): bisection in the block.
+                let (mut lo, mut hi) = (blk.start, blk.end());
+                for _ in 0..200 {
+                    let mid = 0.5 * (lo + hi);
+                    if mid <= lo || mid >= hi {
+                        break;
+                    }
+                    if blk.load_at(mid) < load {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                mar.end = 0.5 * (lo + hi);
+                return Ok(mar);
+            }
+            _ => {}
+        }
+    }
+    Err(AdhesionError::IllConditioned {
+        method: "f64-loading-law",
+        parameter: "normal_load",
+        value: match end {
+            MarchEnd::Load { load, .. } => format!("{:.6e}", load * setting.p2_per_p),
+            MarchEnd::Size(l) => format!("lambda {l}"),
+        },
+        valid: "a load whose contact stays below lambda = pi l/L = 1.45".into(),
+        reason: "the march reached its largest contact before the load".into(),
+    })
+}
+
+/// The Jacobian of the last block's residuals: the block's own part by forward differences in
+/// each value, the history's by one difference in gamma(lambda) per point.
+#[allow(clippy::too_many_arguments)]
+fn jacobian(
+    mar: &mut March,
+    x: &[f64],
+    lambdas: &[f64],
+    gammas: &[f64],
+    r: &[f64],
+    hist: &[[C64; 2]],
+    install: &dyn Fn(&mut March, &[f64]),
+) -> Result<nalgebra::DMatrix<f64>, AdhesionError> {
+    let m = lambdas.len();
+    let k = mar.blocks.len() - 1;
+    // x holds m values (symmetric: F only) or 2 m (F and Gm); as many equations.
+    let q = x.len();
+    let mut jac = nalgebra::DMatrix::zeros(q, q);
+    for i in 0..q {
+        let step = 1e-7 * (1.0 + x[i].abs());
+        let mut xp = x.to_vec();
+        xp[i] += step;
+        install(mar, &xp);
+        let gp: Vec<f64> =
+            if q == m { gammas.to_vec() } else { lambdas.iter().zip(&xp[m..]).map(|(l, g)| l * g).collect() };
+        // The history at the unperturbed gamma: its dependence is added below.
+        let (rp, _) = mar.residual(lambdas, &gp, Some(hist))?;
+        for row in 0..q {
+            jac[(row, i)] = (rp[row] - r[row]) / step;
+        }
+        // The residual above moved G(chi_e) with gamma; the history's share is added here.
+        if i >= m {
+            let j = i - m;
+            for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
+                let lam = lambdas[j];
+                let dg = 1e-7 * lam.max(1e-300);
+                let hp = mar.history(side, lam, gammas[j] + dg, k)?;
+                // d(history)/d gamma times d gamma/d g (= lambda), over lambda.
+                jac[(2 * j + s, i)] += (hp.re - hist[j][s].re) / dg;
+            }
+        }
+    }
+    Ok(jac)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Exact, Material};
+    use crate::params::adhesion::AdhesionParamsF64;
+    use std::f64::consts::PI;
+
+    fn setting(nu: (i64, i64), n: f64, periodic: bool, single: bool) -> MarchSetting {
+        let m = Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into()))
+            .unwrap();
+        let c = AdhesionParamsF64::new(&m);
+        MarchSetting {
+            kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single },
+            tilt: periodic && !single,
+            slope: vec![n],
+            p2_per_p: 1.0 / (PI * PI),
+            profile: vec![0.0, PI],
+            start: 2.0 * c.load_constant,
+            law_key: "tangential_ratio",
+            law_text: format!("{n}"),
+        }
+    }
+
+    /// The single punch (no period): the solution is self-similar, P'/eta and gamma/eta constant,
+    /// so c/l and P/lambda^2 are the same at every size along one march (to 1e-13), here at
+    /// nu = 0.3, n = 1/5, in the `paper` convention (no rotation for the single punch).
+    #[test]
+    fn single_punch_is_self_similar() {
+        let s = setting((3, 10), 0.2, true, true);
+        let m = march(&s, &MarchOptions::NOMINAL, MarchEnd::Size(1.0)).unwrap();
+        let (r1, p1) = (m.gamma(1.0), m.load(1.0));
+        for lam in [0.13, 0.37, 0.5, 0.81] {
+            assert!((m.gamma(lam) / lam - r1).abs() < 1e-13, "c/l at {lam}: {} vs {r1}", m.gamma(lam) / lam);
+            assert!((m.load(lam) / (lam * lam) - p1).abs() < 1e-13 * p1, "P at {lam}");
+        }
+        assert!(r1 < -0.01, "the contact shifts: {r1}");
+    }
+
+    /// The prototype case against the MPFR collocation's values at Lambda = pi/6, n = 1/5, nu = 0.3,
+    /// paper (`cargo test --release --lib loading_law::collocation::tests::tangential -- --nocapture`:
+    /// P = 0.48588839465251704, c/l = -0.04180946173701047), both discretisations.
+    #[test]
+    fn matches_the_collocation_values() {
+        let s = setting((3, 10), 0.2, false, false);
+        for o in [MarchOptions::NOMINAL, MarchOptions::NOMINAL.refined()] {
+            let m = march(&s, &o, MarchEnd::Size(PI / 6.0)).unwrap();
+            let lam = m.end;
+            assert!((m.load(lam) - 0.485_888_394_652_517_04).abs() < 2e-15, "{}", m.load(lam));
+            assert!((m.gamma(lam) / lam + 0.041_809_461_737_010_47).abs() < 2e-15, "{}", m.gamma(lam) / lam);
+        }
+    }
+}

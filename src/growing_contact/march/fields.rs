@@ -1,0 +1,102 @@
+//! The march's fields (module doc of [`super`], "Fields"): the entry size of a point of the final
+//! contact, psi_hat and its integral, and the stresses sigma_hat, from the blocks of a finished
+//! march.
+
+use super::{Block, March, NEAR_END};
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel_f64::{Side, C64};
+
+impl March {
+    /// The side and the entry size eta_x of the point chi of the final contact: gamma(eta) +- eta
+    /// = chi, by bisection (monotone: both ends advance).
+    pub fn entry(&self, chi: f64) -> (Side, f64) {
+        let (side, sg) = if chi >= 0.0 { (Side::Right, 1.0) } else { (Side::Left, -1.0) };
+        let (mut lo, mut hi) = (0.0, self.end);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if sg * (self.gamma(mid) + sg * mid - chi) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        (side, 0.5 * (lo + hi))
+    }
+
+    /// psi_hat(chi) = Im of the edge integral at the point's entry (module doc).
+    pub fn psi_hat(&self, chi: f64) -> Result<f64, AdhesionError> {
+        let (side, eta_x) = self.entry(chi);
+        if eta_x <= 0.0 {
+            return Ok(0.0);
+        }
+        Ok(self.edge(side, eta_x)?.im)
+    }
+
+    /// int_0^chi psi_hat(chi') d chi' = int_0^(eta_x) psi_hat(chi(eta)) (gamma'(eta) +- 1) d eta,
+    /// Gauss-Legendre on each block's part (module doc).
+    pub fn psi_hat_integral(&self, chi: f64) -> Result<f64, AdhesionError> {
+        let (side, eta_x) = self.entry(chi);
+        let sg = side.sign();
+        let mut acc = 0.0;
+        for b in &self.blocks {
+            let (lo, hi) = (b.start, b.end().min(eta_x));
+            if hi <= lo {
+                break;
+            }
+            let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+            for &(x, w) in &self.rules.gauss {
+                let eta = mid + half * x;
+                acc += w * half * self.edge(side, eta)?.im * (b.gamma_slope(eta) + sg);
+            }
+        }
+        Ok(acc)
+    }
+
+    /// The stress integrand at eta (block `b`) for the point at distance `near` from the end
+    /// that passed it.
+    fn stress_term(&self, b: &Block, side: Side, near: f64, eta: f64) -> C64 {
+        let far = 2.0 * eta - near;
+        let (d_left, d_right) = if side == Side::Right { (far, near) } else { (near, far) };
+        let n = self.ratio_in(b, eta);
+        self.setting.kernel.increment_stress(d_left, d_right, eta, n, self.setting.tilt) * b.p_prime(eta)
+    }
+
+    /// sigma_hat(chi) = int_(eta_x)^Lambda of the increments' stresses at chi (module doc).
+    pub fn sigma_hat(&self, chi: f64) -> Result<C64, AdhesionError> {
+        let (side, eta_x) = self.entry(chi);
+        let sg = side.sign();
+        let k = self.block_left(eta_x);
+        let mut acc = C64::new(0.0, 0.0);
+        // The singular piece from eta_x: tanh-sinh in eta - eta_x over the rest of its block, or
+        // over the next block too when eta_x lies within NEAR_END h of the block's end; the slope
+        // of gamma by the divided difference of the polynomial of each node's block.
+        let b = &self.blocks[k];
+        let two = b.end() - eta_x < NEAR_END * b.h && k + 1 < self.blocks.len() && b.end() < self.end;
+        let last = if two { k + 1 } else { k };
+        let span = self.blocks[last].end().min(self.end) - eta_x;
+        if span > 0.0 {
+            for &(s, _, w) in &self.rules.ts {
+                let gap = span * s;
+                let eta = eta_x + gap;
+                let bj = if eta < b.end() { b } else { &self.blocks[last] };
+                let e = bj.gamma_dd(eta, eta_x);
+                acc += self.stress_term(bj, side, gap * (1.0 + sg * e), eta) * (w * span);
+            }
+        }
+        let gx = self.gamma(eta_x);
+        for b in self.blocks.iter().skip(last + 1) {
+            let hi = b.end().min(self.end);
+            if hi <= b.start {
+                break;
+            }
+            acc += self.graded(b.start, hi, eta_x, &mut |eta| {
+                let e = (b.gamma(eta) - gx) / (eta - eta_x);
+                Ok(self.stress_term(b, side, (eta - eta_x) * (1.0 + sg * e), eta))
+            })?;
+        }
+        Ok(acc)
+    }
+}

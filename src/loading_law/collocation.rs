@@ -1,0 +1,446 @@
+//! The MPFR method for Problem 2 under a linear loading law P1 = n P2 (docs/theory.md section 10,
+//! `paper` convention): the two moving-edge conditions as a nonlinear system of Volterra
+//! equations in the contact size, solved by Chebyshev collocation and a chord-Newton iteration.
+//!
+//! Variables: lambda = pi l/L (l = (a + b)/2, the loading parameter), gamma = pi c/L
+//! (c = (b - a)/2), P2 = E* k (L/pi)^2 P(lambda), dP = (1 + i n) dP2. Every earlier contact
+//! (eta < lambda, centre gamma(eta)) carried the increment dP(eta) and left on the surface outside
+//! it (E*/2)(dv' - i du') = dP K/L ([`crate::growing_contact::kernel::outside_kernel`]). A point enters contact
+//! with the punch's slope, at the leading end chi_b = gamma(lambda) + lambda and at the trailing
+//! end chi_a = gamma(lambda) - lambda:
+//!   Re int_0^lambda (1 + i n) P'(eta) K(chi_e - gamma(eta), eta) d eta = G(chi_e),
+//!   G(chi) = pi^2 g'(L chi/pi)/(2 k L)   (the parabola: G = pi chi; section 4's equation when
+//!   n = 0 and gamma = 0).
+//! Unknowns on [0, Lambda] (Lambda the final size), t = eta/Lambda: P'(eta) = eta Phi(t) and
+//! gamma(eta) = eta Gam(t), both interpolated at N Chebyshev nodes of t (values as unknowns).
+//! With eta = lambda s the distance to the nearer end is
+//!   d = lambda (1 - s) (1 +- E),  E = Gam(t) + s t [Gam(t) - Gam(s t)]/(t - s t),
+//! (+ leading, - trailing), formed from the divided difference so that it keeps its accuracy as
+//! s -> 1 (tanh-sinh in s with the complement 1 - s). Both ends must advance: 1 +- E > 0.
+//! Each equation is divided by lambda (both sides are O(lambda)).
+//! Newton: the closed-form Jacobian (`super::jacobian`) at 64 bits with a coarse rule (one pass
+//! over nodes and rule; the finite-difference Jacobian it replaced took 2N + 1 residuals and was
+//! 4x slower overall: the shipped scene's 20-digit solve 74 s -> 19 s CPU, same output), then
+//! chord steps at the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
+//! matter), until the correction falls below 2^-(target bits).
+
+use super::increment::{advance_factor, divided_difference, times_t};
+pub use super::increment::{Increment, LawSetting};
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel::{outside_kernel, Side, TiltedPunch};
+use crate::numerics::chebyshev;
+use crate::numerics::tanh_sinh::TanhSinh;
+use crate::params::adhesion::AdhesionParamsF64;
+use rug::float::Constant;
+use rug::{Complex, Float};
+
+/// Working data of one precision.
+struct Ctx {
+    prec: u32,
+    inc: Increment,
+    lambda_max: Float,
+    nodes: Vec<Float>,
+    rule: TanhSinh,
+}
+
+impl Ctx {
+    fn new(setting: &LawSetting, nodes: usize, rule_bits: u32, prec: u32) -> Self {
+        Ctx {
+            prec,
+            inc: Increment::new(setting, prec),
+            lambda_max: setting.lambda_max(prec),
+            nodes: chebyshev::nodes(nodes, prec),
+            rule: TanhSinh::new(rule_bits, 1.0, prec),
+        }
+    }
+}
+
+/// int_0^lambda P'(eta) (1 + i n) [L K(chi_e - gamma(eta), eta) + i beta R(chi_e; eta)] d eta at
+/// lambda = Lambda t for the leading (chi_e = gamma + lambda) and the trailing
+/// (chi_e = gamma - lambda) end, from the Chebyshev coefficients of Phi and Gam (module doc), on
+/// `rule`; R = Z(t)(A + B t)/cosh(pi eps) is the tilted punch's slope outside
+/// ([`crate::growing_contact::kernel::TiltedPunch::outside`], `periodic` only: the increment's
+/// i beta dP/L of docs/theory.md section 8, Problem 2, which keeps v and u periodic; its constant
+/// f = 1 cancels against that term of the edge condition).
+///
+/// Both ends when `only` is `None`; with `Some(side)` the kernels of that end only (the other
+/// end's integral is then zero; its advance factor is still checked, so the errors are the same):
+/// the fields need one end per point ([`super::fields`]' psi_hat), and the kernels are the cost.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn edge_integrals(
+    rule: &TanhSinh,
+    inc: &Increment,
+    lambda_max: &Float,
+    phi_c: &[Float],
+    gam_c: &[Float],
+    t: &Float,
+    prec: u32,
+    only: Option<Side>,
+) -> Result<(Complex, Complex), AdhesionError> {
+    let at = |c: &[Float], t: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
+    let lambda = Float::with_val(prec, lambda_max * t);
+    let gam_t = at(gam_c, t);
+    let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
+    let xt = Float::with_val(prec, t * 2u32) - 1u32;
+    let tphi = (!inc.constant_ratio()).then(|| times_t(phi_c, prec));
+    let l2max = Float::with_val(prec, lambda_max.square_ref());
+    let n_const = inc.ratio_at(&Float::with_val(prec, 0));
+    for q in 0..rule.len() {
+        let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
+        let ts = Float::with_val(prec, t * s);
+        let eta = Float::with_val(prec, &lambda * s);
+        let phi = at(phi_c, &ts);
+        // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
+        let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
+        let dd = divided_difference(gam_c, &xt, &xs, prec) * 2u32;
+        let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd));
+        let base = Float::with_val(prec, &lambda * c);
+        let weight = Float::with_val(prec, w * s) * &phi;
+        // n = N'(P2(eta)) (constant for the linear law).
+        let n = match &tphi {
+            Some(tp) => inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max)),
+            None => n_const.clone(),
+        };
+        let one_in = Complex::with_val(prec, (1, &n));
+        let tilt_factor = super::increment::periodic_factor(&inc.beta, &n, prec);
+        // The tilted punch depends on eta only: once for both ends.
+        let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
+        for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
+            let factor = advance_factor(&e, sign, &lambda)?;
+            if only.is_some_and(|o| o != side) {
+                continue;
+            }
+            let d = Float::with_val(prec, &base * &factor);
+            let mut k = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec) * &one_in;
+            if let Some(tilt) = &tilt {
+                k += tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &tilt_factor;
+            }
+            *acc += k * &weight;
+        }
+    }
+    // int_0^lambda P' K d eta = lambda^2 int_0^1 s Phi(t s) K ds.
+    let l2 = Float::with_val(prec, lambda.square_ref());
+    Ok((acc_b * &l2, acc_a * &l2))
+}
+
+/// The residuals (2 per node: leading, trailing) of the state (Phi values, then Gam values),
+/// each divided by lambda.
+fn residual(ctx: &Ctx, state: &[Float]) -> Result<Vec<Float>, AdhesionError> {
+    let prec = ctx.prec;
+    let n_nodes = ctx.nodes.len();
+    let phi_c = chebyshev::coefficients(&state[..n_nodes], prec);
+    let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
+    let pi = Float::with_val(prec, Constant::Pi);
+    let mut out = Vec::with_capacity(2 * n_nodes);
+    for t in &ctx.nodes {
+        let lambda = Float::with_val(prec, &ctx.lambda_max * t);
+        let gam_t = chebyshev::evaluate(&gam_c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
+        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.inc, &ctx.lambda_max, &phi_c, &gam_c, t, prec, None)?;
+        for (acc, sign) in [(acc_b, 1i32), (acc_a, -1)] {
+            let v = acc.real().clone() / &lambda;
+            // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.
+            let g = Float::with_val(prec, &gam_t + sign) * &pi;
+            out.push(v - g);
+        }
+    }
+    Ok(out)
+}
+
+/// The solution of the collocation: Phi and Gam values at the nodes and their Chebyshev
+/// coefficients.
+#[derive(Debug, Clone)]
+pub struct LawCollocation {
+    /// Working precision.
+    pub prec: u32,
+    /// Lambda.
+    pub lambda_max: Float,
+    /// Chebyshev coefficients of Phi(t), P'(eta) = eta Phi(eta/Lambda).
+    pub phi: Vec<Float>,
+    /// Chebyshev coefficients of Gam(t), gamma(eta) = eta Gam(eta/Lambda).
+    pub gam: Vec<Float>,
+    /// Chebyshev coefficients of t Phi(t) ([`times_t`]), for the load along the loading.
+    t_phi: Vec<Float>,
+    /// The material and law constants at `prec`.
+    pub inc: Increment,
+    /// Largest |residual| at the last step.
+    pub residual: f64,
+    /// Chord steps taken.
+    pub steps: usize,
+}
+
+impl LawCollocation {
+    /// P(Lambda t) = int_0^(Lambda t) eta Phi(eta/Lambda) d eta = Lambda^2 int_0^t t' Phi(t') dt'
+    /// (P2 = E* k (L/pi)^2 P), by the Chebyshev integral of t Phi (`times_t`).
+    pub fn load_at(&self, t: &Float) -> Float {
+        let prec = self.prec;
+        chebyshev::integral(&self.t_phi, t, prec) * Float::with_val(prec, self.lambda_max.square_ref())
+    }
+    /// P(Lambda), the final load in units of E* k (L/pi)^2.
+    pub fn load(&self) -> Float {
+        self.load_at(&Float::with_val(self.prec, 1))
+    }
+    /// gamma(Lambda)/Lambda = c/l.
+    pub fn centre_ratio(&self) -> Float {
+        chebyshev::evaluate(&self.gam, &Float::with_val(self.prec, 1), self.prec)
+    }
+}
+
+/// Solves with `nodes` Chebyshev nodes at `prec` bits for 2^-`target_bits`.
+pub fn solve(setting: &LawSetting, nodes: usize, target_bits: u32, prec: u32) -> Result<LawCollocation, AdhesionError> {
+    solve_from(setting, nodes, target_bits, prec, None)
+}
+
+/// [`solve`], its Newton iteration started from `start` (Phi and Gam of another collocation of
+/// the same problem, e.g. a coarser run, interpolated to these nodes) instead of the symmetric
+/// single punch. The iteration still runs to 2^-`target_bits` on its own discretisation: the
+/// start changes the path, not the point it converges to. If it fails from `start`, it is run
+/// again from the single punch.
+pub fn solve_from(
+    setting: &LawSetting,
+    nodes: usize,
+    target_bits: u32,
+    prec: u32,
+    start: Option<&LawCollocation>,
+) -> Result<LawCollocation, AdhesionError> {
+    // From the single punch (Phi = 2 C_P, Gam = 0): Newton at 64 bits on a coarse rule to a first
+    // solution, with the closed-form Jacobian ([`super::jacobian`]) refreshed at every step while
+    // the correction exceeds 1e-8, then kept (chord) at `prec`. From `start`: its Phi and Gam at
+    // these nodes at `prec` bits, the Jacobian there, and the chord iteration at once (the 64-bit
+    // Newton would move a start closer than its coarse rule's accuracy away from the solution).
+    let low = Ctx::new(setting, nodes, 50, 64);
+    let warm: Option<Vec<Float>> = start.map(|s| {
+        let taus = chebyshev::nodes(nodes, prec);
+        let at = |c: &[Float], tau: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, tau * 2u32) - 1u32), prec);
+        let phi: Vec<Float> = taus.iter().map(|t| at(&s.phi, t)).collect();
+        phi.into_iter().chain(taus.iter().map(|t| at(&s.gam, t))).collect()
+    });
+    let state64: Vec<Float> = match &warm {
+        Some(w) => w.iter().map(|v| Float::with_val(64, v)).collect(),
+        None => {
+            let load_constant = AdhesionParamsF64::new(&setting.material).load_constant;
+            (0..2 * nodes).map(|i| Float::with_val(64, if i < nodes { 2.0 * load_constant } else { 0.0 })).collect()
+        }
+    };
+    let warm_start = warm.is_some();
+    match solve_with(setting, &low, state64, warm, nodes, target_bits, prec) {
+        Err(_) if warm_start => solve_from(setting, nodes, target_bits, prec, None),
+        r => r,
+    }
+}
+
+/// The iteration of [`solve_from`] from `state64` (and `warm` at `prec`, if given: no 64-bit
+/// Newton then).
+fn solve_with(
+    setting: &LawSetting,
+    low: &Ctx,
+    mut state64: Vec<Float>,
+    warm: Option<Vec<Float>>,
+    nodes: usize,
+    target_bits: u32,
+    prec: u32,
+) -> Result<LawCollocation, AdhesionError> {
+    let closed_form = |ctx: &Ctx, state: &[Float]| {
+        super::jacobian::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, state, ctx.prec)
+    };
+    let mut jac = closed_form(low, &state64)?;
+    if warm.is_none() {
+        let mut previous = f64::INFINITY;
+        for _ in 0..30 {
+            let r = residual(low, &state64)?;
+            let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
+            let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
+            for (x, d) in state64.iter_mut().zip(&delta) {
+                *x -= *d;
+            }
+            if size < 1e-13 {
+                break;
+            }
+            if size > 1e-8 || size > 1e-3 * previous {
+                jac = closed_form(low, &state64)?;
+            }
+            previous = size;
+        }
+    }
+    let ctx = Ctx::new(setting, nodes, target_bits + 8, prec);
+    let mut state: Vec<Float> = warm.unwrap_or_else(|| state64.iter().map(|v| Float::with_val(prec, v)).collect());
+    let goal = 2f64.powi(-(target_bits as i32));
+    let mut steps = 0;
+    let mut last = f64::INFINITY;
+    for _ in 0..40 {
+        steps += 1;
+        let r = residual(&ctx, &state)?;
+        last = r.iter().fold(0f64, |m, v| m.max(v.to_f64().abs()));
+        let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
+        let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
+        for (x, d) in state.iter_mut().zip(&delta) {
+            *x -= *d;
+        }
+        if size < goal {
+            let lambda_max = Float::with_val(prec, &ctx.lambda_max);
+            let phi = chebyshev::coefficients(&state[..nodes], prec);
+            return Ok(LawCollocation {
+                prec,
+                lambda_max,
+                inc: ctx.inc.clone(),
+                t_phi: times_t(&phi, prec),
+                phi,
+                gam: chebyshev::coefficients(&state[nodes..], prec),
+                residual: last,
+                steps,
+            });
+        }
+    }
+    Err(AdhesionError::NotConverged {
+        what: "loading-law chord iteration",
+        reason: format!("40 steps, residual {last:.1e}"),
+    })
+}
+
+/// J x = r in `f64` (LU with partial pivoting, nalgebra).
+fn solve_f64(jac: &[Vec<f64>], r: &[f64]) -> Result<Vec<f64>, AdhesionError> {
+    let m = r.len();
+    let a = nalgebra::DMatrix::from_fn(m, m, |i, j| jac[i][j]);
+    let b = nalgebra::DVector::from_column_slice(r);
+    a.lu()
+        .solve(&b)
+        .map(|x| x.iter().copied().collect())
+        .ok_or(AdhesionError::NotConverged { what: "loading-law Newton", reason: "singular Jacobian".into() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::growing_contact::kernel::Row;
+    use crate::model::{Convention, Exact, LoadingLaw, Material};
+
+    fn material(nu: (i64, i64)) -> Material {
+        Material::from_contact_modulus(Exact::new(nu.0.into(), nu.1.into()), Exact::from_integer(1.into())).unwrap()
+    }
+
+    /// nu = 1/2 (eps = 0, beta = 0): normal and tangential problems decouple, so for any n the
+    /// contact stays centred and P is Kuznetsov's 2 C_P ln sec(Lambda) = pi ln sec(Lambda).
+    #[test]
+    fn nu_half_decouples() {
+        let setting = LawSetting::linear(
+            material((1, 2)),
+            Exact::new(1.into(), 2.into()),
+            Exact::new(1.into(), 5.into()),
+            Convention::Paper,
+        );
+        let sol = solve(&setting, 16, 100, 140).unwrap();
+        let lam = Float::with_val(140, &sol.lambda_max);
+        let want = Float::with_val(140, lam.cos_ref()).recip().ln() * Float::with_val(140, Constant::Pi);
+        let rel = Float::with_val(140, sol.load() - &want).to_f64() / want.to_f64();
+        eprintln!("nu = 1/2, n = 1/2: P rel {rel:.1e}, c/l {:.1e}", sol.centre_ratio().to_f64());
+        assert!(rel.abs() < 1e-17, "{rel:e}");
+        assert!(sol.centre_ratio().abs().to_f64() < 1e-25);
+    }
+
+    /// n = 1/5, nu = 0.3, l/L = 1/6, the paper's convention: a loading law that shifts the contact.
+    fn shifted_setting() -> LawSetting {
+        LawSetting::linear(
+            material((3, 10)),
+            Exact::new(1.into(), 5.into()),
+            Exact::new(1.into(), 6.into()),
+            Convention::Paper,
+        )
+    }
+
+    /// n = 1/5 at nu = 0.3: the contact shifts (c != 0) and the load differs from the symmetric
+    /// one; printed for inspection.
+    #[test]
+    fn tangential_ratio_shifts_the_contact() {
+        let setting = shifted_setting();
+        let t = std::time::Instant::now();
+        let sol = solve(&setting, 16, 100, 140).unwrap();
+        eprintln!(
+            "{:.2}s, {} steps, residual {:.1e}: P = {}, c/l = {}",
+            t.elapsed().as_secs_f64(),
+            sol.steps,
+            sol.residual,
+            sol.load().to_f64(),
+            sol.centre_ratio().to_f64()
+        );
+        assert!(sol.centre_ratio().abs().to_f64() > 1e-4);
+    }
+
+    /// A warm start ([`solve_from`] from a coarser run, as the verified solve's second run starts
+    /// from its first) converges to the cold start's solution: n = 1/5, nu = 0.3, l/L = 1/6, 24
+    /// nodes from the 16-node solution; load, c/l and every Chebyshev coefficient of Phi and Gam
+    /// within 2^-80 of the cold start's (the iterations stop below 2^-90).
+    #[test]
+    fn a_warm_start_reaches_the_cold_start_solution() {
+        let setting = shifted_setting();
+        let coarse = solve(&setting, 16, 90, 130).unwrap();
+        let t = std::time::Instant::now();
+        let cold = solve(&setting, 24, 90, 130).unwrap();
+        let t_cold = t.elapsed().as_secs_f64();
+        let t = std::time::Instant::now();
+        let warm = solve_from(&setting, 24, 90, 130, Some(&coarse)).unwrap();
+        eprintln!("cold {t_cold:.2}s, warm {:.2}s", t.elapsed().as_secs_f64());
+        let tol = 2f64.powi(-80);
+        let close = |a: &Float, b: &Float| Float::with_val(130, a - b).to_f64().abs() <= tol * (1.0 + b.to_f64().abs());
+        assert!(close(&warm.load(), &cold.load()), "{} vs {}", warm.load(), cold.load());
+        assert!(close(&warm.centre_ratio(), &cold.centre_ratio()));
+        assert_eq!((warm.phi.len(), warm.gam.len()), (24, 24));
+        for (a, b) in warm.phi.iter().zip(&cold.phi).chain(warm.gam.iter().zip(&cold.gam)) {
+            assert!(close(a, b), "{a} vs {b}");
+        }
+    }
+
+    /// The closed-form Jacobian ([`super::super::jacobian`]) equals central differences of the
+    /// residual at 128 bits (step 1e-12: truncation ~1e-24) to 1e-12 relative at an asymmetric
+    /// state (Phi, Gam not constant), in both conventions and for the single punch; for a
+    /// polynomial law, whose n(P2) dependence the closed form leaves out, the difference is that
+    /// term: 6.5e-5 against the largest entry 10.5 at N = P2/5 + P2^2/100, nu = 0, l/L = 1/5
+    /// (`cargo test --release --lib closed_form_jacobian -- --nocapture`).
+    #[test]
+    fn closed_form_jacobian_equals_finite_differences() {
+        let n = Exact::new(1.into(), 5.into());
+        let poly =
+            LoadingLaw::Polynomial(vec![Exact::from_integer(0.into()), n.clone(), Exact::new(1.into(), 100.into())]);
+        let size = Exact::new(1.into(), 5.into());
+        let mut cases = Vec::new();
+        for convention in [Convention::Paper, Convention::PeriodicSurface] {
+            cases.push((LawSetting::linear(material((3, 10)), n.clone(), size.clone(), convention), 1e-12));
+        }
+        let mut law = LawSetting::linear(material((0, 1)), n.clone(), size.clone(), Convention::PeriodicSurface);
+        law.law = poly;
+        cases.push((law, 1e-5));
+        let mut single = LawSetting::linear(material((3, 10)), n, Exact::from_integer(1.into()), Convention::Paper);
+        single.row = Row::Single;
+        cases.push((single, 1e-12));
+        let prec = 128;
+        for (setting, tolerance) in cases {
+            let nodes = 8;
+            let ctx = Ctx::new(&setting, nodes, 50, prec);
+            let state: Vec<Float> = (0..2 * nodes)
+                .map(|i| {
+                    let t = ctx.nodes[i % nodes].to_f64();
+                    Float::with_val(prec, if i < nodes { 2.3 + 0.4 * t * t } else { -0.04 + 0.02 * t })
+                })
+                .collect();
+            let h = 1e-12;
+            let mut worst = 0f64;
+            let exact =
+                super::super::jacobian::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &state, prec)
+                    .unwrap();
+            let scale = exact.iter().flatten().fold(0f64, |m, v| m.max(v.abs()));
+            for j in 0..2 * nodes {
+                let (mut plus, mut minus) = (state.clone(), state.clone());
+                plus[j] += h;
+                minus[j] -= h;
+                let (rp, rm) = (residual(&ctx, &plus).unwrap(), residual(&ctx, &minus).unwrap());
+                for i in 0..2 * nodes {
+                    let fd = Float::with_val(prec, &rp[i] - &rm[i]).to_f64() / (2.0 * h);
+                    worst = worst.max((fd - exact[i][j]).abs());
+                }
+            }
+            eprintln!(
+                "{:?} {:?}: largest |J| {scale:.3}, largest difference {worst:.1e}",
+                setting.row, setting.convention
+            );
+            assert!(worst < tolerance * scale, "{worst} of {scale}");
+        }
+    }
+}

@@ -1,0 +1,119 @@
+//! The Jacobian of the collocation residual ([`super::collocation`]) in closed form, for its
+//! chord Newton: one pass over the nodes and the rule instead of one residual per unknown.
+//!
+//! With the Lagrange cardinal functions l_j of the nodes (barycentric, first-kind Chebyshev
+//! weights w_j = (-1)^j sqrt(t_j (1 - t_j))), Phi(t s) = sum_j l_j(t s) Phi_j, and the residual at
+//! node t_i, side +- (leading, trailing),
+//!   R_i = Re lambda sum_q w_q s_q Phi(t_i s_q) k(d_q) - pi (Gam_i +- 1),
+//!   d_q = lambda c_q (1 +- E_q),  E_q = Gam(t_i) + s_q t_i [Gam(t_i) - Gam(t_i s_q)]/(t_i c_q),
+//! (c_q = 1 - s_q) has
+//!   dR_i/dPhi_j = Re lambda sum_q w_q s_q l_j(t_i s_q) k(d_q),
+//!   dR_i/dGam_j = Re lambda sum_q w_q s_q Phi(t_i s_q) k'(d_q) (+- lambda) [c_q delta_ij
+//!                 + s_q (delta_ij - l_j(t_i s_q))] - pi delta_ij,
+//! where delta_ii - l_i(y) is summed as sum_(k != i) l_k(y) (no cancellation as y -> t_i), and
+//! k' = k d ln k/d d from [`crate::growing_contact::kernel::outside_kernel_log_derivative`] and
+//! [`crate::growing_contact::kernel::TiltedPunch::outside_log_derivative`]. For a polynomial law the dependence of
+//! n = N'(P2) on Phi is left out (a chord Jacobian; the iteration still converges, more slowly
+//! when N'' P2 is not small). Checked against finite differences in the tests.
+
+use super::increment::{divided_difference, Increment};
+use crate::growing_contact::error::AdhesionError;
+use crate::growing_contact::kernel::{outside_kernel, outside_kernel_log_derivative, Side, TiltedPunch};
+use crate::numerics::chebyshev;
+use crate::numerics::tanh_sinh::TanhSinh;
+use rug::float::Constant;
+use rug::{Complex, Float};
+
+/// The cardinal functions l_j(y) of `nodes` (first-kind Chebyshev points on [0, 1]) at y, by the
+/// barycentric formula (exact 1 at a node).
+fn cardinals(nodes: &[Float], y: &Float, prec: u32) -> Vec<Float> {
+    let mut terms = Vec::with_capacity(nodes.len());
+    for (j, t) in nodes.iter().enumerate() {
+        let diff = Float::with_val(prec, y - t);
+        if diff.is_zero() {
+            return (0..nodes.len()).map(|k| Float::with_val(prec, u32::from(k == j))).collect();
+        }
+        let w = Float::with_val(prec, t * Float::with_val(prec, 1u32 - t)).sqrt();
+        let w = if j % 2 == 0 { w } else { -w };
+        terms.push(w / diff);
+    }
+    let total = terms.iter().fold(Float::with_val(prec, 0), |acc, v| acc + v);
+    terms.into_iter().map(|v| v / &total).collect()
+}
+
+/// J (rows: leading then trailing residual per node; columns: Phi values then Gam values) at
+/// `state` (Phi values, then Gam values at `nodes`), on `rule`, at `prec` bits.
+pub(super) fn jacobian(
+    rule: &TanhSinh,
+    inc: &Increment,
+    lambda_max: &Float,
+    nodes: &[Float],
+    state: &[Float],
+    prec: u32,
+) -> Result<Vec<Vec<f64>>, AdhesionError> {
+    let n_nodes = nodes.len();
+    let phi_c = chebyshev::coefficients(&state[..n_nodes], prec);
+    let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
+    let pi = Float::with_val(prec, Constant::Pi);
+    let mut jac = vec![vec![0.0; 2 * n_nodes]; 2 * n_nodes];
+    let tphi = (!inc.constant_ratio()).then(|| super::increment::times_t(&phi_c, prec));
+    let l2max = Float::with_val(prec, lambda_max.square_ref());
+    let n_const = inc.ratio_at(&Float::with_val(prec, 0));
+    for (i, t) in nodes.iter().enumerate() {
+        let lambda = Float::with_val(prec, lambda_max * t);
+        let xt = Float::with_val(prec, t * 2u32) - 1u32;
+        let gam_t = &state[n_nodes + i];
+        let (mut lead, mut trail) = (vec![Complex::new(prec); 2 * n_nodes], vec![Complex::new(prec); 2 * n_nodes]);
+        for q in 0..rule.len() {
+            let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
+            let ts = Float::with_val(prec, t * s);
+            let eta = Float::with_val(prec, &lambda * s);
+            let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
+            let phi = chebyshev::evaluate(&phi_c, &xs, prec);
+            let dd = divided_difference(&gam_c, &xt, &xs, prec) * 2u32;
+            let e = Float::with_val(prec, gam_t + Float::with_val(prec, &ts * &dd));
+            let ell = cardinals(nodes, &ts, prec);
+            let rest: Float =
+                ell.iter().enumerate().filter(|(k, _)| *k != i).fold(Float::with_val(prec, 0), |a, (_, v)| a + v);
+            let n = match &tphi {
+                Some(tp) => inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max)),
+                None => n_const.clone(),
+            };
+            let one_in = Complex::with_val(prec, (1, &n));
+            let tilt_factor = super::increment::periodic_factor(&inc.beta, &n, prec);
+            let ws = Float::with_val(prec, w * s) * &lambda;
+            let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
+            for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
+                let factor = super::increment::advance_factor(&e, sign, &lambda)?;
+                let d = Float::with_val(prec, &lambda * c) * &factor;
+                let kernel = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec);
+                let log_d = outside_kernel_log_derivative(inc.row, side, &d, &eta, &inc.eps, prec);
+                let mut k = Complex::with_val(prec, &kernel * &one_in);
+                let mut dk = Complex::with_val(prec, &k * &log_d);
+                if let Some(tilt) = &tilt {
+                    let value = tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &tilt_factor;
+                    let log_t = tilt.outside_log_derivative(side, &d, &eta, &inc.eps, prec);
+                    dk += Complex::with_val(prec, &value * &log_t);
+                    k += value;
+                }
+                let wk = Complex::with_val(prec, &k * &ws);
+                // d d/d Gam_j = +- lambda [c delta_ij + s (delta_ij - l_j)].
+                let wdk = Complex::with_val(prec, &dk * &ws) * Float::with_val(prec, &phi * &lambda) * sign;
+                for j in 0..n_nodes {
+                    row[j] += Complex::with_val(prec, &wk * &ell[j]);
+                    let de =
+                        if j == i { Float::with_val(prec, s * &rest) + c } else { -Float::with_val(prec, s * &ell[j]) };
+                    row[n_nodes + j] += Complex::with_val(prec, &wdk * &de);
+                }
+            }
+        }
+        // The rule's integral runs over s in (0, 1): d eta = lambda ds, already in ws.
+        for (r, row) in [lead, trail].iter().enumerate() {
+            for (j, v) in row.iter().enumerate() {
+                jac[2 * i + r][j] = v.real().to_f64();
+            }
+            jac[2 * i + r][n_nodes + i] -= pi.to_f64();
+        }
+    }
+    Ok(jac)
+}
