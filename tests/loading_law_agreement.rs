@@ -238,7 +238,8 @@ fn nu_half_decouples() {
         for s in &v.path {
             assert!((s.a - s.b).abs() < 1e-14 * v.l, "{s:?}");
         }
-        assert!(f.digits.headline >= 14.0, "{:?}", f.digits);
+        // The f64 claims carry the march's round-off floor (issue 34): about 12.3 digits here.
+        assert!(f.digits.headline >= 12.0, "{:?}", f.digits);
     }
 }
 
@@ -255,7 +256,8 @@ fn given_load_polynomial_law_and_refusal() {
     let b = solve_law_f64(&by_load, &[]).unwrap();
     assert!((b.values.l - 1.0 / 6.0).abs() < 1e-13, "{}", b.values.l);
     assert!((b.values.c - a.c).abs() < 1e-13 * a.l, "{} vs {}", b.values.c, a.c);
-    assert!(b.digits.headline >= 13.0, "{:?}", b.digits);
+    // The f64 claims carry the march's round-off floor (issue 34): about 12.3 digits here.
+    assert!(b.digits.headline >= 12.0, "{:?}", b.digits);
     let poly = LoadingLaw::Polynomial(vec![q(0, 1), q(1, 5), q(0, 1)]);
     let c = solve_law_f64(&problem(nu.clone(), poly, LawSize::HalfLength(q(1, 6)), Convention::Paper), &[]).unwrap();
     assert!((c.values.p2 - a.p2).abs() < 1e-14 * a.p2 && (c.values.c - a.c).abs() < 1e-14 * a.l);

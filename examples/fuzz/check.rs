@@ -268,8 +268,7 @@ fn truth(scene: &Scene, digits: u32) -> Result<(Value, Truth), Error> {
             (Value::Object(render::adhesion_json(&answer_adhesion::mpfr_answer(p, &v), digits)), Problem::Adhesion)
         }
         SceneProblem::LoadingLaw(p) => {
-            let sol =
-                periodic_contact::adhesion::loading_law::verified::solve_law(p, pts, digits).map_err(Error::from)?;
+            let sol = periodic_contact::loading_law::verified::solve_law(p, pts, digits).map_err(Error::from)?;
             let v = &sol.values;
             let prec = v.l.prec();
             let k = periodic_contact::numerics::exact::to_float(p.k(), prec);

@@ -232,7 +232,7 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<R
         scene.output.points.iter().map(|x| crate::numerics::exact::to_f64(x).unwrap_or(f64::NAN)).collect();
     let sols = collocation_f64::solve_sliding_f64(p, &points, &collocation_f64::SolverOptions::default())?;
     let periodic = matches!(p.period(), Period::Finite(_));
-    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let typed: Vec<_> =
         sols.solutions.iter().map(|s| answer_f64::sliding_answer(s, periodic, p.convention())).collect();
     let Some(first) = typed.first() else {
@@ -287,12 +287,12 @@ fn lambda_h(p: &AdhesionProblem, digits: u32) -> Value {
 
 fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = adhesion::solve_f64(p, &scene.output.points)?;
-    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let answer = answer_adhesion::f64_answer(p, &s, &scene.output.points);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
     f64_digits(&mut m, req.digits);
-    m.insert("lambda_h".into(), lambda_h(p, shown));
+    m.insert("lambda_h".into(), lambda_h(p, req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32)));
     let a = number(&m, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
@@ -342,7 +342,7 @@ fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
-    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS);
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
     f64_digits(&mut m, req.digits);
     law_note(&mut m, p);

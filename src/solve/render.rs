@@ -8,7 +8,9 @@
 //! and the Problem 2 scales of `crate::adhesion`.
 
 use crate::numerics::accuracy::readable_f64;
-use crate::numerics::accuracy::{fmt_f64, fmt_mpfr, held_digits_f64, held_digits_mpfr, print_f64, print_mpfr};
+use crate::numerics::accuracy::{
+    fmt_f64, fmt_mpfr, held_digits_f64, held_digits_mpfr, print_f64, print_mpfr, F64_PRINT_DIGITS,
+};
 use crate::sliding::physicality::Assessment;
 use rug::Float;
 use serde_json::{json, Map, Value};
@@ -58,11 +60,13 @@ impl Measured {
         Measured { pair: ValueAndScale::F64(value, scale), digits }
     }
 
-    /// Printed under the accuracy rule, at most `requested` significant digits.
+    /// Printed under the accuracy rule, at most `requested` + 1 significant digits (a text of exactly
+    /// the requested digits would hold fewer after its rounding; issue 34); an `f64` at most 17.
     pub fn print(&self, requested: u32) -> String {
+        let most = requested.saturating_add(1);
         match &self.pair {
-            ValueAndScale::F64(v, s) => print_f64(*v, *s, self.digits, requested),
-            ValueAndScale::Mpfr(v, s) => print_mpfr(v, s, self.digits, requested),
+            ValueAndScale::F64(v, s) => print_f64(*v, *s, self.digits, most.min(F64_PRINT_DIGITS)),
+            ValueAndScale::Mpfr(v, s) => print_mpfr(v, s, self.digits, most),
         }
     }
 

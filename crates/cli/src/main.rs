@@ -88,7 +88,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
             if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
                 std::fs::create_dir_all(dir)?;
             }
-            std::fs::write(&out, table.to_csv())?;
+            periodic_contact_report::write_whole(&out, table.to_csv().as_bytes())?;
             eprintln!("wrote {} ({} rows); review and commit it, then rebuild", out.display(), table.rows.len());
         }
     }

@@ -160,7 +160,8 @@ fn f64_method_solves_the_shipped_scene() {
     assert_eq!(v["provenance"]["convention"], "paper");
     assert_eq!(v["digits_requested"], "20");
     let d = digits(&v["digits_verified"]);
-    assert!((13.0..=15.0).contains(&d), "{v}");
+    // The f64 claims carry the march's round-off floor (issue 34): about 12.2 digits here.
+    assert!((12.0..=15.0).contains(&d), "{v}");
     for k in ["lambda", "a", "b", "c", "l", "P1", "P2", "friction_needed", "friction_needed_at_xh", "warnings"] {
         assert!(v.get(k).is_some(), "{k}: {v}");
     }

@@ -246,7 +246,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     let md = summary::wrap_long_lines(&summary::front(&body, names.len(), &findings), summary::LONGEST_LINE);
     let write = |files: &mut Vec<PathBuf>, name: &str, text: &str| -> Result<(), ReportError> {
         let p = opts.out.join(name);
-        std::fs::write(&p, text).map_err(io(&p))?;
+        write_whole(&p, text.as_bytes()).map_err(io(&p))?;
         files.push(p);
         Ok(())
     };
@@ -284,4 +284,25 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
     }
     write(&mut files, "timings.md", &t)?;
     Ok(ReportFiles { files, markdown: md })
+}
+
+/// Writes `bytes` to `path` whole or not at all (issue 34): into `.NAME.partial-PID` in the same
+/// directory, flushed to the disk, then renamed over `path` (atomic on one file system). An
+/// interrupted run (Ctrl-C, a kill) leaves `path` as it was; the report writes its files only
+/// after every section is computed, so an interruption during the computation leaves the previous
+/// report intact (test `crates/cli/tests/interrupt.rs`).
+pub fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    use std::io::Write as _;
+    let name = path.file_name().map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
+    let tmp = path.with_file_name(format!(".{name}.partial-{}", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
 }
