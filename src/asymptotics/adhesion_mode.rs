@@ -266,7 +266,7 @@ fn arg_gamma_half_minus_i(y: f64) -> f64 {
 
 /// Digits the incremental solution keeps at size lambda (measured law, docs/theory.md section 11):
 /// two discretisations differ by the mode at about 10^(-R(lambda) + 1) relative, with
-/// R(lambda) = (1/ln 10) int_lambda^(pi/2) [`frozen_growth`](eta) d eta/eta the decades the mode
+/// R(lambda) = (1/ln 10) int_lambda^(pi/2) `frozen_growth(eta)` d eta/eta the decades the mode
 /// still has to grow until full contact; claimed with [`KEPT_MARGIN`]: R(lambda) - KEPT_MARGIN
 /// (infinite at eps = 0). Trapezoid rule in eta, step [`GROWTH_STEP`].
 pub fn digits_kept(eps: f64, b: f64, s: f64, lambda: f64) -> f64 {

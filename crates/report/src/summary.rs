@@ -85,7 +85,7 @@ pub fn front(body: &str, scenes: usize, findings: &[String]) -> String {
 }
 
 /// `md` with every line longer than `limit` that is prose (not a table row, heading or code)
-/// wrapped at spaces to [`WRAP`] characters; a list item's continuation lines are indented.
+/// wrapped at spaces to `WRAP` characters; a list item's continuation lines are indented.
 pub fn wrap_long_lines(md: &str, limit: usize) -> String {
     let mut out = String::with_capacity(md.len());
     let mut code = false;
