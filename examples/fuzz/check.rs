@@ -370,6 +370,38 @@ fn closed_form_exists(st: &Statement) -> Option<bool> {
     }
 }
 
+/// Solves `scene` by every method that takes the case, records each run, and notes a verdict that
+/// contradicts the truth's `tv`; returns the answers.
+fn solve_by_every_method(
+    out: &mut Outcome,
+    case: &Case,
+    budget: &Budget,
+    scene: &periodic_contact::scene::Scene,
+    tv: &Verdict,
+    tag: &dyn Fn(&str) -> String,
+) -> Vec<(Method, Value)> {
+    let mut answers = vec![];
+    for m in methods(&case.statement, case.index, budget) {
+        let (r, secs) = timed(|| solve_scene(scene, request(m, budget)));
+        let v = Verdict::of(&r);
+        let specific = matches!(m, Method::Series | Method::Pade);
+        if contradict(tv, &v, specific) {
+            out.disagreements.push(tag(&format!(
+                "verdicts differ: truth {} vs {} {}{}",
+                tv.label(),
+                m.name(),
+                v.label(),
+                r.as_ref().err().map_or(String::new(), |e| format!(" ({e})"))
+            )));
+        }
+        out.runs.push(Run { method: m.name().into(), verdict: v, seconds: secs });
+        if let Ok(v) = r {
+            answers.push((m, v));
+        }
+    }
+    answers
+}
+
 /// Runs every check of `case` under `budget`.
 pub fn run(case: &Case, budget: &Budget) -> Outcome {
     let mut out = Outcome::default();
@@ -390,21 +422,7 @@ pub fn run(case: &Case, budget: &Budget) -> Outcome {
             // The truth refused: every method must refuse alike (or not reach).
             let tv = Verdict::of(&Err(e.clone()));
             out.runs.push(Run { method: format!("mpfr@{truth_digits} (truth)"), verdict: tv.clone(), seconds: secs });
-            for m in methods(st, case.index, budget) {
-                let (r, secs) = timed(|| solve_scene(&scene, request(m, budget)));
-                let v = Verdict::of(&r);
-                let specific = matches!(m, Method::Series | Method::Pade);
-                if contradict(&tv, &v, specific) {
-                    out.disagreements.push(tag(&format!(
-                        "verdicts differ: truth {} vs {} {}{}",
-                        tv.label(),
-                        m.name(),
-                        v.label(),
-                        r.as_ref().err().map_or(String::new(), |e| format!(" ({e})"))
-                    )));
-                }
-                out.runs.push(Run { method: m.name().into(), verdict: v, seconds: secs });
-            }
+            solve_by_every_method(&mut out, case, budget, &scene, &tv, &tag);
             check_closed_form(&mut out, st, &tag);
             check_twin(&mut out, case, budget, &scene, None, &tag);
             return out;
@@ -412,25 +430,7 @@ pub fn run(case: &Case, budget: &Budget) -> Outcome {
     };
     let tv = Verdict::of(&Ok(truth_json.clone()));
     out.runs.push(Run { method: format!("mpfr@{truth_digits} (truth)"), verdict: tv.clone(), seconds: secs });
-    let mut answers: Vec<(Method, Value)> = vec![];
-    for m in methods(st, case.index, budget) {
-        let (r, secs) = timed(|| solve_scene(&scene, request(m, budget)));
-        let v = Verdict::of(&r);
-        let specific = matches!(m, Method::Series | Method::Pade);
-        if contradict(&tv, &v, specific) {
-            out.disagreements.push(tag(&format!(
-                "verdicts differ: truth {} vs {} {}{}",
-                tv.label(),
-                m.name(),
-                v.label(),
-                r.as_ref().err().map_or(String::new(), |e| format!(" ({e})"))
-            )));
-        }
-        out.runs.push(Run { method: m.name().into(), verdict: v, seconds: secs });
-        if let Ok(v) = r {
-            answers.push((m, v));
-        }
-    }
+    let answers = solve_by_every_method(&mut out, case, budget, &scene, &tv, &tag);
     // Check 2: every printed value holds its claim against the truth.
     for (m, v) in &answers {
         if v.get("solutions").is_some() != truth_json.get("solutions").is_some() {
