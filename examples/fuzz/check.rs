@@ -287,7 +287,7 @@ fn truth(scene: &Scene, digits: u32) -> Result<(Value, Truth), Error> {
                 scales.insert(format!("points[{i}].q1"), Float::with_val(prec, &kl * &e));
                 scales.insert(format!("points[{i}].q2"), Float::with_val(prec, &kl * &e));
             }
-            (Value::Object(answer_law::law_answer_json(p, &sol, digits)), Problem::Law)
+            (Value::Object(answer_law::law_answer_json(p, &sol, digits).0), Problem::Law)
         }
     };
     let claims = claims(&v, problem);

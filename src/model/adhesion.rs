@@ -5,7 +5,7 @@ use super::{error::readable, error::ModelError, Convention, Exact, Material, Per
 use num_traits::{Signed, Zero};
 
 /// What fixes the state of the monotone indentation.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum AdhesionSize {
     /// Given contact half-width a > 0 (the direct problem).
     HalfWidth(Exact),
@@ -14,7 +14,7 @@ pub enum AdhesionSize {
 }
 
 /// A validated statement of Problem 2 (symmetric case, b = a, P1 = 0).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct AdhesionProblem {
     material: Material,
     period: Period,

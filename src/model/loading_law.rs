@@ -10,7 +10,7 @@ use super::{readable, Convention, Exact, Material, ModelError, Period, PunchShap
 use num_traits::{Signed, Zero};
 
 /// The loading law P1 = N(P2).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum LoadingLaw {
     /// P1 = n P2 (scene key `tangential_ratio`).
     Linear(Exact),
@@ -59,7 +59,7 @@ impl LoadingLaw {
 }
 
 /// The size given: the final half-length or the final normal load.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum LawSize {
     /// l = (a + b)/2 (scene key `half_length`), 0 < 2 l < L.
     HalfLength(Exact),
@@ -68,7 +68,7 @@ pub enum LawSize {
 }
 
 /// A validated loading-law problem.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct LoadingLawProblem {
     material: Material,
     period: Period,

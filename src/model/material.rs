@@ -5,7 +5,7 @@ use num_traits::{One, Signed, Zero};
 
 /// Isotropic elastic half-plane: Poisson's ratio `nu` in [0, 1/2] and the contact modulus
 /// `E* = E/(1 - nu^2)` (plane strain), both exact.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Material {
     poisson_ratio: Exact,
     contact_modulus: Exact,

@@ -5,7 +5,7 @@ use super::{error::readable, error::ModelError, Exact, Material, Period, PunchSh
 use num_traits::{Signed, Zero};
 
 /// What fixes the contact size.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum SlidingLoad {
     /// Given normal load per punch P2 > 0 (the inverse problem: find the contact).
     NormalLoad(Exact),
@@ -22,7 +22,7 @@ pub enum SlidingLoad {
 /// to the right side of [2.8], i.e. beta tau0 -> beta tau0 + K in [2.14]. K -> 0 for a single
 /// punch and vanishes when kappa = 0 and tau0 = 0; it is odd in lambda, so the paper's expansions
 /// in even powers of lambda belong to [`Convention::Paper`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Convention {
     /// `paper`: sections 2-3 of docs/theory.md as they stand (no K). The default.
     #[default]
@@ -43,7 +43,7 @@ impl Convention {
 
 /// A validated statement of Problem 1. Built by [`SlidingProblem::builder`]; validated once, when
 /// built; read through its accessors.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct SlidingProblem {
     material: Material,
     period: Period,

@@ -131,7 +131,7 @@ pub struct OutputSpec {
 }
 
 /// The problem a scene describes.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum SceneProblem {
     /// Problem 1.
     Sliding(SlidingProblem),

@@ -568,9 +568,9 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
 pub fn solve_chosen(
     scene: &crate::scene::Scene,
     mut choice: MethodChoice,
-) -> Result<(serde_json::Value, MethodChoice), crate::error::Error> {
+) -> Result<(super::Answer, MethodChoice), crate::error::Error> {
     let mut answer = super::solve_answer(scene, choice.request)?;
-    let Some(target) = choice.target_digits else { return Ok((answer.json, choice)) };
+    let Some(target) = choice.target_digits else { return Ok((answer, choice)) };
     let fallbacks = std::mem::take(&mut choice.fallbacks);
     for next in fallbacks {
         // The typed claim, as printed (one decimal): the answer's own statement of its accuracy.
@@ -593,7 +593,7 @@ pub fn solve_chosen(
         choice.request = next;
         answer = super::solve_answer(scene, next)?;
     }
-    Ok((answer.json, choice))
+    Ok((answer, choice))
 }
 
 /// Digits as the answer prints them (one decimal, [`super::render::digits_text`]): the choice
