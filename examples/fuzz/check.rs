@@ -13,6 +13,7 @@
 use super::generate::{Case, Given, Problem, Shape, Statement, Q};
 use periodic_contact::error::{Error, ErrorKind};
 use periodic_contact::model::Exact;
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::scene::parse::parse_scene;
 use periodic_contact::scene::{Method, Scene, SceneProblem};
 use periodic_contact::solve::{answer_adhesion, answer_law, answer_mpfr, render, solve_scene, SolveRequest};

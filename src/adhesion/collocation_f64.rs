@@ -52,6 +52,7 @@ use super::series_f64::RightSeries;
 use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::kernel_f64::{KernelF64, Side};
 use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;

@@ -9,6 +9,7 @@
 //! circle's cap short of its wall; a polynomial's first bracket, grown as needed).
 
 use super::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, ModelError, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;

@@ -14,6 +14,7 @@
 //! | phi | k a^2 |
 //! | q1, q2 | E* k a |
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize};
 use crate::numerics::exact::{to_f64, to_float};
 use rug::Float;

@@ -69,6 +69,7 @@
 
 use super::loading_law::law_coefficients;
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Material, ModelError};
 use crate::numerics::accuracy::{digits_cap_for_bits, verified_digits_mpfr};
 use crate::numerics::exact::to_float;

@@ -22,6 +22,7 @@ use super::collocation::{solve, solve_from, LawCollocation, LawSetting};
 use super::ends::EndStress;
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel::{Row, Side};
+use crate::model::OnPunchRow;
 use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError, Period};
 use crate::numerics::accuracy::{readable_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::{to_f64, to_float};

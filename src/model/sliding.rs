@@ -1,7 +1,7 @@
 //! Problem 1: steady sliding with Coulomb friction, adhesive friction and linear wear
 //! (docs/theory.md section 3; the paper's (1.3), (2.8)).
 
-use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
+use super::{error::readable, error::ModelError, Exact, Material, OnPunchRow, Period, PunchRow, PunchShape};
 use num_traits::{Signed, Zero};
 
 /// What fixes the contact size.
@@ -45,9 +45,7 @@ impl Convention {
 /// built; read through its accessors.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct SlidingProblem {
-    material: Material,
-    period: Period,
-    shape: PunchShape,
+    row: PunchRow,
     friction: Exact,
     adhesive_friction: Exact,
     wear: Exact,
@@ -142,8 +140,7 @@ impl SlidingProblemBuilder {
         let adhesive_friction = self.adhesive_friction.unwrap_or_else(zero);
         let wear = self.wear.unwrap_or_else(zero);
         let speed = self.speed;
-        shape.validate()?;
-        period.validate()?;
+        let row = PunchRow::new(material, period, shape)?;
         if friction.is_negative() {
             return Err(ModelError::new("friction", readable(&friction), "must be >= 0"));
         }
@@ -167,10 +164,7 @@ impl SlidingProblemBuilder {
             }
             _ => {}
         }
-        if let (PunchShape::Sinusoidal { .. }, Period::Infinite) = (&shape, &period) {
-            return Err(ModelError::new("period", "inf", "a sinusoidal punch needs a finite period"));
-        }
-        if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, &period) {
+        if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, row.period()) {
             if (l + l) >= *big_l {
                 return Err(ModelError::new(
                     "half_length",
@@ -179,17 +173,7 @@ impl SlidingProblemBuilder {
                 ));
             }
         }
-        Ok(SlidingProblem {
-            material,
-            period,
-            shape,
-            friction,
-            adhesive_friction,
-            wear,
-            speed,
-            load,
-            convention: self.convention,
-        })
+        Ok(SlidingProblem { row, friction, adhesive_friction, wear, speed, load, convention: self.convention })
     }
 }
 
@@ -202,9 +186,9 @@ impl SlidingProblem {
     /// A builder holding this problem's values (to change one and rebuild).
     pub fn to_builder(&self) -> SlidingProblemBuilder {
         SlidingProblemBuilder {
-            material: Some(self.material.clone()),
-            period: Some(self.period.clone()),
-            shape: Some(self.shape.clone()),
+            material: Some(self.row.material().clone()),
+            period: Some(self.row.period().clone()),
+            shape: Some(self.row.shape().clone()),
             friction: Some(self.friction.clone()),
             adhesive_friction: Some(self.adhesive_friction.clone()),
             wear: Some(self.wear.clone()),
@@ -214,18 +198,6 @@ impl SlidingProblem {
         }
     }
 
-    /// Half-plane material.
-    pub fn material(&self) -> &Material {
-        &self.material
-    }
-    /// Period L, or a single punch.
-    pub fn period(&self) -> &Period {
-        &self.period
-    }
-    /// Punch shape.
-    pub fn shape(&self) -> &PunchShape {
-        &self.shape
-    }
     /// Coulomb friction coefficient mu >= 0.
     pub fn friction(&self) -> &Exact {
         &self.friction
@@ -261,6 +233,12 @@ impl SlidingProblem {
     /// kappa = E* cW / 2 - beta mu (docs/theory.md section 3, the paper's (2.8)), exact.
     pub fn kappa(&self) -> Exact {
         let two = Exact::from_integer(2.into());
-        self.material.contact_modulus() * &self.wear / two - self.material.beta() * &self.friction
+        self.row.material().contact_modulus() * &self.wear / two - self.row.material().beta() * &self.friction
+    }
+}
+/// The punch row: material, period and shape.
+impl OnPunchRow for SlidingProblem {
+    fn row(&self) -> &PunchRow {
+        &self.row
     }
 }

@@ -4,6 +4,7 @@
 //! ([`slope_warning`], docs/theory.md section 9). Re-exported from [`super::sliding`].
 
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Exact, ModelError, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use std::f64::consts::PI;

@@ -21,6 +21,7 @@ pub use super::profile::{
     check_profile_on_contact, polynomial_derivative, row_height_f64, ShapeF64, CIRCLE_SIZE_CAP, MAX_CONTACT_SLOPE,
 };
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Convention, Exact, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::{to_f64, to_float, SmallRational};
 use rug::float::Constant;

@@ -78,6 +78,7 @@
 pub mod keys;
 pub mod parse;
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Exact, LoadingLawProblem, SlidingProblem};
 
 /// The solution method a scene or the command line asks for.

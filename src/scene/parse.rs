@@ -470,7 +470,7 @@ mod tests {
     /// number nor infinite gets an error that says "inf" is accepted.
     #[test]
     fn the_single_punch_is_inf_or_infinity() {
-        use crate::model::Period;
+        use crate::model::{OnPunchRow, Period};
         use crate::scene::SceneProblem;
         for text in ["\"inf\"", "\"Infinity\"", "\" INF \"", "\"infinity\""] {
             let s = super::parse_scene(&SCENE.replace("PERIOD", text)).unwrap_or_else(|e| panic!("{text}: {e}"));

@@ -4,6 +4,7 @@
 
 use super::render::{AdhesionAnswer, DigitsKind, FieldRow, Measured, Num, Provenance, ZoneRow};
 use crate::adhesion::{AdhesionSolutionF64, Digits, ScalesF64, ScalesMpfr, VerifiedSolution};
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Exact, Period};
 
 fn accuracy(d: &Digits) -> Vec<(String, f64)> {

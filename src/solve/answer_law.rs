@@ -27,6 +27,7 @@ use super::render::{digits_text, DigitsKind, Measured, Provenance};
 use super::values::Values;
 use crate::loading_law::verified::{LawPathPoint, LawPoint, LawSolution, LawValues};
 use crate::loading_law::verified_f64::LawSolutionF64;
+use crate::model::OnPunchRow;
 use crate::model::{Exact, LoadingLaw, LoadingLawProblem};
 use crate::numerics::exact::to_float;
 use rug::Float;

@@ -19,6 +19,7 @@
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 //! The table is read and written with the `csv` crate.
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionSize, LawSize, Period, PunchShape, SlidingLoad};
 use crate::params::sliding::SlidingParamsF64;
 use crate::scene::SceneProblem;

@@ -18,6 +18,7 @@ pub mod values;
 
 use crate::adhesion;
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Convention, LoadingLawProblem, Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64};

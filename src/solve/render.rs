@@ -7,6 +7,7 @@
 //! The scales are fixed per output in one table per problem: [`crate::params::sliding::SlidingScale`]
 //! and the Problem 2 scales of `crate::adhesion`.
 
+pub use super::values::DigitsKind;
 use super::values::{Quantity, Values};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::accuracy::{
@@ -104,15 +105,6 @@ fn held_accuracy(accuracy: &[(String, f64)], printed: impl Fn(&str) -> f64, othe
     let table: Vec<(String, f64)> = accuracy.iter().map(|(k, d)| (k.clone(), d.min(printed(k)))).collect();
     let head = table.iter().map(|(_, d)| *d).fold(others, f64::min);
     (table, head)
-}
-
-/// Whether the digits of an answer were verified (by a second run) or estimated.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DigitsKind {
-    /// Verified by a second run with more precision (MPFR) or more nodes (f64).
-    Verified,
-    /// Estimated (the truncated series' tail bound; the f64 method of Problem 2).
-    Estimated,
 }
 
 /// Where an answer came from.

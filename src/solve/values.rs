@@ -5,7 +5,14 @@
 //! caller of the library reads numbers without parsing the JSON (issue 29). Tests:
 //! `tests/typed_answers.rs` compares every quantity with the JSON text of the same answer.
 
-use super::render::DigitsKind;
+/// Whether the digits of an answer were verified (by a second run) or estimated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DigitsKind {
+    /// Verified by a second run with more precision (MPFR) or more nodes (f64).
+    Verified,
+    /// Estimated (the truncated series' tail bound; the f64 method of Problem 2).
+    Estimated,
+}
 
 /// One printed number with its accuracy: |text - truth| <= 10^-digits |scale|.
 #[derive(Debug, Clone, PartialEq)]

@@ -7,6 +7,7 @@
 
 use periodic_contact::adhesion::{self, volterra_mpfr::VolterraParams};
 use periodic_contact::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, SlidingShape};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{AdhesionProblem, AdhesionSize, Convention, PunchShape, SlidingLoad, SlidingProblem};
 use periodic_contact::scene::SceneProblem;
 use periodic_contact::sliding::series::series_point;

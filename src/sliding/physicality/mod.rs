@@ -34,6 +34,7 @@
 pub mod admissible;
 
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{readable, Convention, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, GaussRule};
