@@ -6,6 +6,12 @@
 //! - [`Method::State`]: the current state with (v0, C) fixed by boundedness and gamma by the
 //!   sign change of |q1| - mu q2 next to the stick edge (`state_f64.rs`).
 //!
+//! The state method enforces boundedness at the contact edge by q2 = 0 on the last element, which
+//! separates the bounded (1 - x)^(1/2 + theta0) from the unbounded (1 - x)^(-1/2 + theta0) ever
+//! less well as theta0 -> 1/2 (mu -> infinity): measured at beta = 1/2, it agrees with the increment
+//! to its estimate up to mu = 5, differs by 1e-3 in gamma and 4e-3 in C_P at mu = 64, and finds no
+//! stick edge at mu = 256 (refused); the increment holds 1e-4 to mu = 1024.
+//!
 //! gamma is searched in the logit y = ln(gamma/(1 - gamma)) by bisection, over
 //! [`GAMMA_MIN`] = 1e-6 <= gamma <= [`GAMMA_MAX`] = 1 - 1e-4; a root outside (a stick zone narrower than
 //! 1e-6 a, a slip zone narrower than 1e-4 a, which the f64 mesh does not resolve) is refused. beta = 0 (nu = 1/2) is

@@ -131,21 +131,34 @@ fn growing_friction_tends_to_complete_adhesion() {
 }
 
 /// The state at the self-similar gamma: q2 >= 0, |q1| <= mu q2 on the stick zone (up to the
-/// discretisation next to its edge), and the slip zones slip inward, against q1 = mu q2.
+/// discretisation next to its edge), and the slip zones slip inward, against q1 = mu q2. q2 >= 0
+/// up to 1e-5 of its maximum: within 1e-7 a of the edge the state's boundedness condition leaves
+/// a residual of the near-bounded mode (1 - x)^(-1/2 + theta0) (q2 = -6e-7 there at mu = 16); the
+/// state superposed from the increments is positive there (measured, 2e-7 .. 8e-10).
 #[test]
 fn the_state_keeps_the_inequalities() {
-    let (beta, mu) = (0.5, 0.5);
+    for mu in [0.5, 5.0, 16.0] {
+        state_keeps_the_inequalities(0.5, mu);
+    }
+}
+
+fn state_keeps_the_inequalities(beta: f64, mu: f64) {
     let r = solve(beta, mu, N, Method::State).unwrap();
     let s = state(beta, mu, r.gamma, 2 * N).unwrap();
     let top = s.q2.iter().cloned().fold(0.0, f64::max);
     for j in 0..s.q2.len() - 1 {
-        assert!(s.q2[j] > 0.0, "q2 < 0 on element {j}");
+        assert!(s.q2[j] > -1e-5 * top, "mu {mu}: q2 = {} on element {j}", s.q2[j]);
     }
     for j in 0..s.mesh.stick {
-        assert!(s.q1[j].abs() <= mu * s.q2[j] + 1e-4 * top, "stick element {j}: {} > {}", s.q1[j], mu * s.q2[j]);
+        assert!(
+            s.q1[j].abs() <= mu * s.q2[j] + 1e-4 * top,
+            "mu {mu}: stick element {j}: {} > {}",
+            s.q1[j],
+            mu * s.q2[j]
+        );
     }
     for j in s.mesh.stick + 1..s.q2.len() {
-        assert!(s.slip_rate(j) < 1e-4 * top, "slip element {j} slips outward: {}", s.slip_rate(j));
+        assert!(s.slip_rate(j) < 1e-4 * top, "mu {mu}: slip element {j} slips outward: {}", s.slip_rate(j));
     }
     // and the increment's defect changes sign at the state's gamma (within its estimate)
     let d = |g: f64| stick_edge_defect(&increment(beta, mu, g, 2 * N, true).unwrap(), beta, mu);
