@@ -50,6 +50,12 @@ fn spence_johnson(ratio: f64) -> f64 {
 #[test]
 fn incompressible_is_hertz() {
     assert_eq!(solve_once(0.0, 0.5, N, Method::Increment, true).unwrap(), (1.0, FRAC_PI_2));
+    // beta = 0 by the equations (17.7): whatever the stick zone, s2 is the flat punch and C_P = pi/2
+    // (to the n = 40 mesh's 4e-4, see `uncoupled_is_spence_johnson`)
+    for (mu, gamma) in [(0.3, 0.2), (3.0, 0.7)] {
+        let cp = super::increment_f64::load_coefficient(&increment(0.0, mu, gamma, N, true).unwrap());
+        assert!((cp - FRAC_PI_2).abs() < 4e-4, "mu {mu}, gamma {gamma}: C_P {cp}");
+    }
     let mut last = (f64::INFINITY, 0.0);
     for beta in [0.5, 0.4, 0.3] {
         let r = solve(beta, 0.5, N, Method::Increment).unwrap();
