@@ -2,10 +2,10 @@
 //! section 17, (17.7)-(17.9)), piecewise-constant collocation of the displacement form on the
 //! graded [`Mesh`], `f64`.
 //!
-//! With a = 1, E* k = 1 and Lambda[f](x) = (1/pi) int f(xi) ln|x - xi| dxi, the increment
+//! With a = 1, E* k = 1 and Lambda\[f\](x) = (1/pi) int f(xi) ln|x - xi| dxi, the increment
 //! s = s2 + i s1 of unit load (s2 even, s1 odd) at stick half-width gamma solves
-//!     Lambda[s2](x) - beta int_0^x s1 = v0      on (0, 1)      (17.7a: dv' = 0, the punch descends),
-//!     Lambda[s1](x) + beta int_0^x s2 = 0       on (0, gamma)  (17.7b: du = 0, stuck points stay),
+//!     Lambda\[s2\](x) - beta int_0^x s1 = v0      on (0, 1)      (17.7a: dv' = 0, the punch descends),
+//!     Lambda\[s1\](x) + beta int_0^x s2 = 0       on (0, gamma)  (17.7b: du = 0, stuck points stay),
 //!     s1 = mu s2 on (gamma, 1),   2 int_0^1 s2 = 1,
 //! v0 the unknown descent. At a generic gamma the solution is unbounded at +-gamma like
 //! |x -+ gamma|^(-1/2 - theta0) (tan(pi theta0) = beta mu, (17.8)); the self-similar gamma is the one

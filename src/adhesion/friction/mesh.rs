@@ -84,8 +84,8 @@ impl Mesh {
     /// The collocation matrix of the displacement forms shared by both methods, with `extra`
     /// columns and rows left zero for the caller's unknowns and conditions. Columns: q2 (or s2)
     /// on every element, then q1 on the stick elements (on the slip ones q1 = mu q2). Rows: at
-    /// every midpoint Lambda[q2] - beta_n int_0^x q1 (the normal equation, (17.4), (17.7)), then at
-    /// every stick midpoint Lambda[q1] + beta int_0^x q2 (the tangential one, (17.5), (17.7)).
+    /// every midpoint Lambda\[q2\] - beta_n int_0^x q1 (the normal equation, (17.4), (17.7)), then at
+    /// every stick midpoint Lambda\[q1\] + beta int_0^x q2 (the tangential one, (17.5), (17.7)).
     pub fn displacement_rows(&self, beta_n: f64, beta: f64, mu: f64, extra: usize) -> DMatrix<f64> {
         let (len, ns) = (self.elements(), self.stick);
         let size = len + ns + extra;
@@ -186,7 +186,7 @@ fn outside_primitive(x: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// The flat punch s = 1/(pi sqrt(1 - x^2)) has int_1^inf H[s](y)/y^2 dy = 1/pi (Hertz's
+    /// The flat punch s = 1/(pi sqrt(1 - x^2)) has int_1^inf H\[s\](y)/y^2 dy = 1/pi (Hertz's
     /// C_P = pi/2): the outside weight integrated against it, element by element on a fine mesh.
     #[test]
     fn outside_weight_of_the_flat_punch_is_one_over_pi() {

@@ -3,8 +3,8 @@
 //! graded [`Mesh`], `f64`; independent of method 1's superposition of increments.
 //!
 //! With a = 1, E* k = 1: the tractions q2 (even), q1 (odd) of the parabola g = k x^2 solve
-//!     Lambda[q2](x) - beta int_0^x q1 = x^2/2 + v0        on (0, 1)      (17.4: v' = g'),
-//!     Lambda[q1](x) + beta int_0^x q2 = -C x^2/2          on (0, gamma)  (17.5: u' = 2 C k |x|),
+//!     Lambda\[q2\](x) - beta int_0^x q1 = x^2/2 + v0        on (0, 1)      (17.4: v' = g'),
+//!     Lambda\[q1\](x) + beta int_0^x q2 = -C x^2/2          on (0, gamma)  (17.5: u' = 2 C k |x|),
 //!     q1 = mu q2 on (gamma, 1),
 //! with (v0, C) fixed by boundedness at 1 and at gamma (q2 and r = q1 - mu q2 vanish on the last
 //! element before each: the bounded solution vanishes there like (1 - x)^(1/2 + theta0) and
