@@ -8,7 +8,7 @@
 //!     Lambda\[s1\](x) + beta int_0^x s2 = 0       on (0, gamma)  (17.7b: du = 0, stuck points stay),
 //!     s1 = mu s2 on (gamma, 1),   2 int_0^1 s2 = 1,
 //! v0 the unknown descent. At a generic gamma the solution is unbounded at +-gamma like
-//! |x -+ gamma|^(-1/2 - theta0) (tan(pi theta0) = beta mu, (17.8)); the self-similar gamma is the one
+//! |x -+ gamma|^(-1/2 - theta0) (tan(pi theta0) = beta mu, (17.3)); the self-similar gamma is the one
 //! where it is bounded, found as the sign change of [`stick_edge_defect`] (r = s1 - mu s2 on the last
 //! stick element times its width^(1/2 + theta0): the singular coefficient up to a positive
 //! factor). The load coefficient of the parabola is C_P = P/(E* k a^2) = 1/(2 I),
