@@ -127,7 +127,9 @@ pub fn max_contact_slope(shape: &PunchShape, period: Option<f64>, left: f64, rig
         }
     };
     let (l, r) = (slope(left).abs(), slope(right).abs());
-    if r >= l {
+    // A tie within rounding (a symmetric contact, whose two ends' slopes differ in the last bits
+    // of their evaluation) goes to the right end.
+    if r >= l * (1.0 - 1e-12) {
         (r, right)
     } else {
         (l, left)
