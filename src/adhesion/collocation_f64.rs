@@ -275,7 +275,7 @@ fn too_large(lambda: f64) -> AdhesionError {
 
 /// Method 2b with estimated digits (module doc): the nominal run's values, digits from the check
 /// run's difference (never more than [`crate::numerics::accuracy::F64_DIGITS_CAP`]).
-pub fn solve_collocation_f64(
+pub(crate) fn solve_collocation_f64(
     problem: &AdhesionProblem,
     points: &[Exact],
 ) -> Result<AdhesionSolutionF64, AdhesionError> {

@@ -121,7 +121,7 @@ pub fn half_width_search(problem: &AdhesionProblem) -> HalfWidthSearch {
 
 /// The refusal of a load whose contact would pass the circle's search cap `a_max` (`load`: the
 /// given P2; `largest`: the load at the cap, when known).
-pub fn circle_cap_error(load: &crate::model::Exact, a_max: f64, largest: Option<String>) -> AdhesionError {
+pub(crate) fn circle_cap_error(load: &crate::model::Exact, a_max: f64, largest: Option<String>) -> AdhesionError {
     ModelError::new(
         "normal_load",
         readable(load),

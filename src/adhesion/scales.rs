@@ -60,7 +60,7 @@ impl ScalesMpfr {
     }
 
     /// The scales of (psi, phi, q1, q2), in the order of [`Digits::from_points`].
-    pub fn point_scales(&self) -> [&Float; 4] {
+    pub(crate) fn point_scales(&self) -> [&Float; 4] {
         [&self.psi, &self.phi, &self.stress, &self.stress]
     }
 }
@@ -99,7 +99,7 @@ impl ScalesF64 {
     }
 
     /// The scales of (psi, phi, q1, q2), in the order of [`Digits::from_points`].
-    pub fn point_scales(&self) -> [f64; 4] {
+    pub(crate) fn point_scales(&self) -> [f64; 4] {
         [self.psi, self.phi, self.stress, self.stress]
     }
 }

@@ -463,7 +463,7 @@ fn with_mode(problem: &LoadingLawProblem, e: AdhesionError) -> AdhesionError {
 /// [`solve_law_sampled`] and the first run's collocation (whose values it returns): for checks
 /// that need the solution as a function, such as the residual of [1.8] in [`super::fields`]'
 /// tests.
-pub fn solve_law_collocation(
+pub(crate) fn solve_law_collocation(
     problem: &LoadingLawProblem,
     xh: &[Exact],
     stress_xh: &[Exact],

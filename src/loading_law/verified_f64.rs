@@ -232,7 +232,7 @@ pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSol
 
 /// [`solve_law_f64`] with the nominal discretisation `options` (the check runs
 /// `options.refined()`).
-pub fn solve_law_f64_with(
+pub(crate) fn solve_law_f64_with(
     problem: &LoadingLawProblem,
     xh: &[Exact],
     options: &MarchOptions,

@@ -96,7 +96,7 @@ impl AdhesionProblem {
     }
     /// Whether the `periodic` convention's lateral term applies: the `periodic` convention on a
     /// finite period (the term beta P2/L vanishes for the single punch).
-    pub fn periodic_surface(&self) -> bool {
+    pub(crate) fn periodic_surface(&self) -> bool {
         self.convention == Convention::PeriodicSurface && matches!(self.row.period(), Period::Finite(_))
     }
 

@@ -20,7 +20,7 @@ pub enum LoadingLaw {
 
 impl LoadingLaw {
     /// N'(P2) coefficients (numpy order): the linear law's \[n\].
-    pub fn derivative(&self) -> Vec<Exact> {
+    pub(crate) fn derivative(&self) -> Vec<Exact> {
         match self {
             LoadingLaw::Linear(n) => vec![n.clone()],
             LoadingLaw::Polynomial(c) => {

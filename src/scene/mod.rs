@@ -195,7 +195,7 @@ impl Scene {
 
 /// The problem with its load or size replaced by `v` (None if the parameter does not apply or the
 /// value is invalid; the parser rejects both).
-pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
+pub(crate) fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
     use crate::model::{AdhesionSize, LawSize, SlidingLoad};
     match (problem, parameter) {
         (SceneProblem::Sliding(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
@@ -230,7 +230,7 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
 
 /// `p` with another size and convention (the model keeps its fields private and validates in
 /// [`LoadingLawProblem::new`]; the rest of the statement is kept).
-pub fn rebuild_law(
+pub(crate) fn rebuild_law(
     p: &LoadingLawProblem,
     size: crate::model::LawSize,
     convention: crate::model::Convention,

@@ -68,7 +68,7 @@ fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
 }
 
 /// A convention by its name: "paper" or "periodic" ([`Convention::name`]).
-pub fn parse_convention_name(name: &str) -> Option<Convention> {
+pub(crate) fn parse_convention_name(name: &str) -> Option<Convention> {
     [Convention::Paper, Convention::PeriodicSurface].into_iter().find(|c| c.name() == name)
 }
 

@@ -76,7 +76,7 @@ fn convention_key(p: &AdhesionProblem) -> Option<&'static str> {
 }
 
 /// The answer of the f64 method at the scene's points `points` (x/a, exact).
-pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]) -> AdhesionAnswer {
+pub(crate) fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]) -> AdhesionAnswer {
     let d = &s.digits_estimated;
     let sc = ScalesF64::new(p, s.half_width, s.normal_load);
     let own = |x: f64| Measured::f64(x, x, d.size);

@@ -35,7 +35,7 @@ use serde_json::{json, Map, Value};
 
 /// The law as the scene gives it: `{"tangential_ratio": "1/5"}` or
 /// `{"loading_law": ["0", "1/5", "1/100"]}` (exact text).
-pub fn law_json(law: &LoadingLaw) -> Value {
+pub(crate) fn law_json(law: &LoadingLaw) -> Value {
     match law {
         LoadingLaw::Linear(n) => json!({"tangential_ratio": exact_series::q_text(n)}),
         LoadingLaw::Polynomial(c) => {
@@ -155,7 +155,7 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
 /// The JSON object of the f64 marching solution: the same keys as [`law_answer_json`], the values
 /// carried exactly into 53-bit numbers and printed under the same rule with the f64 method's
 /// digits; `provenance.nodes` is blocks x points per block.
-pub fn law_answer_json_f64(
+pub(crate) fn law_answer_json_f64(
     p: &LoadingLawProblem,
     sol: &LawSolutionF64,
     requested: u32,

@@ -105,7 +105,7 @@ impl Case {
 
     /// The cases a scene's problem is predicted from: Problem 1 by punch shape; Problem 2 by every
     /// calibrated material (the prediction takes the worst of them: conservative in nu).
-    pub fn for_problem(problem: &SceneProblem) -> Vec<Case> {
+    pub(crate) fn for_problem(problem: &SceneProblem) -> Vec<Case> {
         match problem {
             SceneProblem::Sliding(p) => match p.shape() {
                 PunchShape::Parabolic { .. } => vec![Case::SlidingParabolic],

@@ -264,7 +264,7 @@ fn sliding_keyed(ans: &SlidingAnswer) -> Vec<(String, &Measured)> {
 
 /// The typed values of one Problem 1 answer ([`sliding_json`]'s numbers): the scalars by key,
 /// the pressure's `x` and `p` at `xh`.
-pub fn sliding_values(ans: &SlidingAnswer, requested: u32) -> Values {
+pub(crate) fn sliding_values(ans: &SlidingAnswer, requested: u32) -> Values {
     let mut v = Values::default();
     let par = (requested as usize).min(ans.parameter_digits).max(1);
     for (key, m) in sliding_keyed(ans).into_iter().take_while(|(k, _)| k != "x") {
@@ -380,7 +380,7 @@ pub const ZONE_DELTA_DIGITS: usize = 4;
 /// as many as show [`ZONE_DELTA_DIGITS`] digits of `delta` (issue 30: 1 - 3.1e-11 printed
 /// "1.00000" before). Computed as 1 - delta in MPFR at the precision those digits need, so a
 /// delta below the solution's own 2^-prec still prints (x/a itself rounds to 1 there).
-pub fn zone_end_text(delta: &Num) -> String {
+pub(crate) fn zone_end_text(delta: &Num) -> String {
     let d = match delta {
         Num::F64(x) => Float::with_val(64, *x),
         Num::Mpfr(x) => x.clone(),

@@ -62,7 +62,7 @@ pub fn stick_edge_defect(inc: &Increment, beta: f64, mu: f64) -> f64 {
 }
 
 /// C_P = P/(E* k a^2) = 1/(2 I) (17.9), the element integrals of the outside weight exact.
-pub fn load_coefficient(inc: &Increment) -> f64 {
+pub(crate) fn load_coefficient(inc: &Increment) -> f64 {
     let i: f64 = (0..inc.s2.len()).map(|j| inc.s2[j] * inc.mesh.outside_weight(j)).sum::<f64>() / std::f64::consts::PI;
     1.0 / (2.0 * i)
 }

@@ -56,7 +56,7 @@ impl Mesh {
 
     /// int_0^x f for piecewise-constant f at the midpoint of element i: the weight of element j
     /// (its width for j < i, half of it for j = i, 0 beyond).
-    pub fn running_weight(&self, i: usize, j: usize) -> f64 {
+    pub(crate) fn running_weight(&self, i: usize, j: usize) -> f64 {
         match j.cmp(&i) {
             std::cmp::Ordering::Less => self.width(j),
             std::cmp::Ordering::Equal => 0.5 * self.width(j),
@@ -66,7 +66,7 @@ impl Mesh {
 
     /// (1/pi) int ln|x - xi| over element j and its mirror image, for an even (`odd = false`) or
     /// odd density: the displacement kernel Lambda of docs/theory.md (17.4).
-    pub fn log_weight(&self, x: f64, j: usize, odd: bool) -> f64 {
+    pub(crate) fn log_weight(&self, x: f64, j: usize, odd: bool) -> f64 {
         let (u, v) = (self.nodes[j], self.nodes[j + 1]);
         let mirror = log_panel(x, -v, -u);
         log_panel(x, u, v) + if odd { -mirror } else { mirror }
@@ -74,7 +74,7 @@ impl Mesh {
 
     /// (1/pi) PV int 1/(x - xi) over element j and its mirror image, even or odd density: the
     /// Hilbert operator H of docs/theory.md section 2 (L -> infinity).
-    pub fn cauchy_weight(&self, x: f64, j: usize, odd: bool) -> f64 {
+    pub(crate) fn cauchy_weight(&self, x: f64, j: usize, odd: bool) -> f64 {
         let (u, v) = (self.nodes[j], self.nodes[j + 1]);
         let here = ((x - u) / (x - v)).abs().ln();
         let mirror = ((x + v) / (x + u)).abs().ln();
@@ -86,7 +86,7 @@ impl Mesh {
     /// on every element, then q1 on the stick elements (on the slip ones q1 = mu q2). Rows: at
     /// every midpoint Lambda\[q2\] - beta_n int_0^x q1 (the normal equation, (17.4), (17.7)), then at
     /// every stick midpoint Lambda\[q1\] + beta int_0^x q2 (the tangential one, (17.5), (17.7)).
-    pub fn displacement_rows(&self, beta_n: f64, beta: f64, mu: f64, extra: usize) -> DMatrix<f64> {
+    pub(crate) fn displacement_rows(&self, beta_n: f64, beta: f64, mu: f64, extra: usize) -> DMatrix<f64> {
         let (len, ns) = (self.elements(), self.stick);
         let size = len + ns + extra;
         let mut a = DMatrix::<f64>::zeros(size, size);
@@ -140,7 +140,7 @@ impl Mesh {
     }
 
     /// int over element j of -ln(1 - xi^2)/xi^2 (the outside-slope weight of docs/theory.md (17.9)).
-    pub fn outside_weight(&self, j: usize) -> f64 {
+    pub(crate) fn outside_weight(&self, j: usize) -> f64 {
         outside_primitive(self.nodes[j + 1]) - outside_primitive(self.nodes[j])
     }
 }

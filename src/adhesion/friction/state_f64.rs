@@ -86,7 +86,7 @@ impl State {
     }
 
     /// C_P = P/(E* k a^2) = 2 int_0^1 q2.
-    pub fn load_coefficient(&self) -> f64 {
+    pub(crate) fn load_coefficient(&self) -> f64 {
         2.0 * (0..self.q2.len()).map(|j| self.q2[j] * self.mesh.width(j)).sum::<f64>()
     }
 }

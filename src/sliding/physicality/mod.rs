@@ -219,7 +219,7 @@ pub enum Refusal {
 
 impl Refusal {
     /// Whether this is a finding about the physics (else a numerical failure).
-    pub fn is_physical(&self) -> bool {
+    pub(crate) fn is_physical(&self) -> bool {
         !matches!(self, Refusal::Inconsistent { .. } | Refusal::NonFinite { .. })
     }
 
