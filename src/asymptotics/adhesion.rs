@@ -330,7 +330,7 @@ pub(crate) fn volterra_solution(order: usize, rhs: &[Poly]) -> Result<VolterraSo
 
 impl VolterraSolution {
     /// p_j = n_j/(D_0 ... D_j), reduced.
-    pub(crate) fn volterra(&self) -> Vec<Frac> {
+    pub fn volterra(&self) -> Vec<Frac> {
         (0..=self.jmax).map(|j| frac(self.num[j].clone(), &self.d[..=j])).collect()
     }
 

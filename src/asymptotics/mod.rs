@@ -7,7 +7,7 @@ pub mod adhesion_mode;
 pub mod adhesion_numeric;
 pub mod adhesion_singularity;
 pub mod catalog;
-pub mod jacobi_moments;
+pub(crate) mod jacobi_moments;
 pub mod kernel;
 pub mod loading_law;
 pub mod loading_law_modes;

@@ -8,9 +8,9 @@
 pub mod adhesion;
 pub mod error;
 pub mod loading_law;
-pub mod material;
-pub mod punch;
-pub mod row;
+pub(crate) mod material;
+pub(crate) mod punch;
+pub(crate) mod row;
 pub mod sliding;
 
 pub use adhesion::{AdhesionProblem, AdhesionSize};

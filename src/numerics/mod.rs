@@ -4,10 +4,10 @@
 pub mod accuracy;
 pub mod chebyshev;
 pub mod complex_series;
-pub mod elementary;
+pub(crate) mod elementary;
 pub mod evaluate;
 pub mod exact;
-pub mod fixed_float;
+pub(crate) mod fixed_float;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
 pub mod pade;

@@ -6,15 +6,15 @@
 //! under the accuracy rule of [`crate::numerics::accuracy`].
 
 pub mod answer_adhesion;
-pub mod answer_f64;
+pub(crate) mod answer_f64;
 pub mod answer_law;
 pub mod answer_mpfr;
-pub mod answer_pade;
-pub mod answer_series;
+pub(crate) mod answer_pade;
+pub(crate) mod answer_series;
 pub mod choice;
 pub mod format;
 pub mod render;
-pub mod values;
+pub(crate) mod values;
 
 use crate::adhesion;
 use crate::error::Error;

@@ -3,5 +3,5 @@
 
 pub mod closed_form_load;
 pub mod convergence;
-pub mod law_limits;
+pub(crate) mod law_limits;
 pub mod pade;

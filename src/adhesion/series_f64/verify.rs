@@ -36,7 +36,7 @@ pub fn solve_f64(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhesion
 
 /// Digits of `sol` from its difference to the finer run `fine` (module doc); shared with the
 /// collocation in eta ([`crate::adhesion::collocation_f64`]), whose check run is its `fine`.
-pub(crate) fn estimate(problem: &AdhesionProblem, sol: &AdhesionSolutionF64, fine: &AdhesionSolutionF64) -> Digits {
+pub fn estimate(problem: &AdhesionProblem, sol: &AdhesionSolutionF64, fine: &AdhesionSolutionF64) -> Digits {
     let cap = F64_DIGITS_CAP;
     let scales = ScalesF64::new(problem, fine.half_width, fine.normal_load);
     let (size, value) = match problem.size() {

@@ -44,18 +44,18 @@
 //! equation [2.8] to 1e-30 relative to E* k l (direct tanh-sinh quadrature, no tangent map);
 //! P2 = int p dx by a separate rule; direct vs inverse problem.
 
-pub mod bracket;
+pub(crate) mod bracket;
 mod branches;
 pub mod centre;
 pub mod contact;
 pub mod equation;
 pub mod error;
-pub mod locate_profile;
+pub(crate) mod locate_profile;
 mod nodes;
 pub mod physical;
 pub mod pressure;
 pub mod profile;
-pub mod scan;
+pub(crate) mod scan;
 pub mod setup;
 pub mod solution;
 pub mod solve;
