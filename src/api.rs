@@ -65,6 +65,14 @@ pub enum ApiError {
 impl ApiError {
     /// The kind of failure: [`ErrorKind::Input`] for scene and option errors, the problem's kind
     /// otherwise; `None` for the series engine's errors.
+    ///
+    /// ```
+    /// use periodic_contact::api::{self, ErrorKind, SolveOptions};
+    /// let bad = "[problem]\nkind = \"sliding\"\n[material]\ncontact_modulus = \"1\"\n";
+    /// let e = api::solve_toml(bad, &SolveOptions::default()).unwrap_err();
+    /// assert_eq!(e.kind(), Some(ErrorKind::Input));
+    /// assert!(e.to_string().contains("poisson_ratio"), "{e}");
+    /// ```
     pub fn kind(&self) -> Option<ErrorKind> {
         match self {
             ApiError::Scene(_) => Some(ErrorKind::Input),
@@ -112,6 +120,13 @@ impl Derivation {
     /// "sympy", "mathematica", "coefficients": [{"power", "text", "latex", "sympy"}]}]}`; the
     /// numerical routes' coefficients are `{"power", "value", "digits"}`, the loading law's
     /// answer carries its `mode`.
+    ///
+    /// ```
+    /// use periodic_contact::api::{derive, SeriesRequest};
+    /// let v = derive(&SeriesRequest::new("kernel", 4))?.json();
+    /// assert_eq!(v["parts"][0]["coefficients"][1]["text"], "-1/3"); // z cot z = 1 - z^2/3 - ...
+    /// # Ok::<(), periodic_contact::api::ApiError>(())
+    /// ```
     pub fn json(&self) -> Value {
         match self {
             Derivation::Exact { object, parts, .. } => serde_json::json!({
@@ -128,6 +143,13 @@ impl Derivation {
     }
 
     /// The plain text of `--format text` (with the Pade approximants when they were asked).
+    ///
+    /// ```
+    /// use periodic_contact::api::{derive, SeriesRequest};
+    /// let text = derive(&SeriesRequest::new("kernel", 4))?.text();
+    /// assert!(text.contains("1/3"), "{text}");
+    /// # Ok::<(), periodic_contact::api::ApiError>(())
+    /// ```
     pub fn text(&self) -> String {
         match self {
             Derivation::Exact { object, parts, .. } => {
@@ -140,6 +162,13 @@ impl Derivation {
     }
 
     /// The Pade approximants' text when they were asked (the exact route), else empty.
+    ///
+    /// ```
+    /// use periodic_contact::api::{derive, SeriesRequest};
+    /// assert!(derive(&SeriesRequest::new("kernel", 8))?.pade_text().is_empty());
+    /// assert!(!derive(&SeriesRequest::new("kernel", 8).pade(true))?.pade_text().is_empty());
+    /// # Ok::<(), periodic_contact::api::ApiError>(())
+    /// ```
     pub fn pade_text(&self) -> String {
         match self {
             Derivation::Exact { parts, pade: true, .. } => crate::asymptotics::pade::pade_text(parts),
@@ -282,7 +311,7 @@ fn override_convention(scene: &mut Scene, c: Convention) -> Result<(), ModelErro
 
 /// Solves a parsed scene with the method `choice` names (escalating to dearer methods when the
 /// answer's digits fall short of a `target_digits`): the typed answer, whose JSON is that of
-/// `periodic-contact solve --json` with its `choice`.
+/// `periodic-contact solve --json` with its `choice` (example: [`SolveOptions::choose`]).
 ///
 /// # Errors
 /// [`Error`]: no solution, not physical, no convergence (and input errors of the method).
@@ -388,6 +417,11 @@ pub fn exact(text: &str) -> Result<Exact, ModelError> {
 
 /// The CLI's JSON text of a [`Value`] (`serde_json::to_string_pretty`, a newline at the end),
 /// byte for byte what `periodic-contact solve ... --json` prints.
+///
+/// ```
+/// let text = periodic_contact::api::json_text(&serde_json::json!({"P2": "0.01"}));
+/// assert_eq!(text, "{\n  \"P2\": \"0.01\"\n}\n");
+/// ```
 pub fn json_text(v: &Value) -> String {
     format!("{}\n", serde_json::to_string_pretty(v).expect("a JSON value always serialises"))
 }
