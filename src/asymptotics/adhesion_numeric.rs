@@ -128,8 +128,23 @@ impl AdhesionRun {
     }
 }
 
-/// The recurrence of the module doc through p_jmax and psi_jmax for `material`, at `prec` bits.
-pub fn adhesion_run(material: &Material, jmax: usize, prec: u32) -> AdhesionRun {
+/// The tangent-variable coefficients of one run (module doc): phi_k of Phi(t) = cos(eta) P'(eta)
+/// (index k = power of t; the even ones 0), y_j of Y(T) = Im I, D_j = Re M_(2j+1), |M_(2j+1)|.
+#[derive(Debug, Clone)]
+pub struct TangentRun {
+    /// phi_k, k = 0..=2 jmax + 1 (odd k only non-zero).
+    pub phi: Vec<Float>,
+    /// y_j, j = 0..=jmax.
+    pub y: Vec<Float>,
+    /// D_j = Re M_(2j+1), j = 0..=jmax.
+    pub d: Vec<Float>,
+    /// |M_(2j+1)|, j = 0..=jmax.
+    pub m_abs: Vec<Float>,
+}
+
+/// The recurrence of the module doc in t = tan eta through t^(2 jmax + 1), at `prec` bits: O(jmax^2)
+/// operations. Phi(t) = sum_k phi_k t^k converges for |t| < 1 (module doc, "Precision").
+pub fn tangent_coefficients(material: &Material, jmax: usize, prec: u32) -> TangentRun {
     let kmax = 2 * jmax + 1; // highest power of t
     let moments = half_range_moments(material, kmax + 1, prec);
     let eps = eps_const(material, prec);
@@ -174,6 +189,13 @@ pub fn adhesion_run(material: &Material, jmax: usize, prec: u32) -> AdhesionRun 
         d.push(re_k.clone());
         m_abs.push(Float::with_val(prec, moments[k].abs_ref()));
     }
+    TangentRun { phi, y, d, m_abs }
+}
+
+/// The recurrence of the module doc through p_jmax and psi_jmax for `material`, at `prec` bits.
+pub fn adhesion_run(material: &Material, jmax: usize, prec: u32) -> AdhesionRun {
+    let TangentRun { phi, y, d, m_abs } = tangent_coefficients(material, jmax, prec);
+    let pi = Float::with_val(prec, Constant::Pi);
     // Back to eta and chi by composition with tan (v = z^2).
     let len = jmax + 1;
     let (tau, sigma) = tan_sec_in_square(len, prec);
