@@ -363,6 +363,24 @@ impl AdhesionNumeric {
         }
     }
 
+    /// lambda_h(nu, digits) as printed ([`super::adhesion_mode::horizon`], 3 decimals rounded
+    /// down): the size up to which the incremental solution keeps the digits asked here (issue 31:
+    /// the horizon from a command, `series adhesion --nu R --digits D`).
+    pub fn lambda_h(&self) -> String {
+        let (eps, b, s) = self.f64_constants();
+        super::adhesion_mode::horizon_text(super::adhesion_mode::horizon(eps, b, s, self.digits as f64))
+    }
+
+    fn horizon_sentence(&self) -> String {
+        let (eps, b, s) = self.f64_constants();
+        super::adhesion_mode::horizon_sentence(eps, b, s, self.digits as f64)
+    }
+
+    fn f64_constants(&self) -> (f64, f64, f64) {
+        let [eps, b, s] = &self.constants;
+        (eps.to_f64(), b.to_f64(), s.to_f64())
+    }
+
     fn header(&self) -> Vec<String> {
         let [eps, b, s] = &self.constants;
         let mut h = vec![
@@ -386,6 +404,7 @@ impl AdhesionNumeric {
                 self.min_digits()
             ),
             self.pole_text(),
+            format!("horizon: lambda_h = {} ({})", self.lambda_h(), self.horizon_sentence()),
         ];
         let short = self.short();
         if let Some(worst) = short.iter().min_by(|a, b| a.2.total_cmp(&b.2)) {
@@ -432,6 +451,7 @@ impl AdhesionNumeric {
             "eps": c(eps),
             "B": c(b),
             "S": c(s),
+            "lambda_h": self.lambda_h(),
             "pole": self.pole.as_ref().map(|p| serde_json::json!({
                 "n": p.n,
                 "power": 2 * p.n,
