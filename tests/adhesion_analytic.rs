@@ -86,3 +86,28 @@ fn at_nu_0_lambda_1_2_it_verifies_twenty_digits() {
     );
     assert!(sol.digits >= 20.0, "{}", sol.digits);
 }
+
+/// The cases the method does not take are refused before any run, naming the parameter: the single
+/// punch, the `periodic` convention (the mode is not excited there), a given load, another shape.
+#[test]
+fn what_it_does_not_take_is_refused() {
+    use periodic_contact::error::ErrorKind;
+    use periodic_contact::model::Convention;
+    use periodic_contact::solve::answer_analytic::analytic_answer;
+    let make = |period: Period, shape: PunchShape, size: AdhesionSize| {
+        AdhesionProblem::new(material("0"), period, shape, size).unwrap()
+    };
+    let parabola = || PunchShape::Parabolic { k: q("1") };
+    let a = || AdhesionSize::HalfWidth(q("1/10"));
+    let cases = [
+        (make(Period::Infinite, parabola(), a()), "period"),
+        (make(Period::Finite(q("1")), parabola(), a()).with_convention(Convention::PeriodicSurface), "convention"),
+        (make(Period::Finite(q("1")), parabola(), AdhesionSize::NormalLoad(q("1/100"))), "normal_load"),
+        (make(Period::Finite(q("1")), PunchShape::Circular { radius: q("2") }, a()), "shape"),
+    ];
+    for (p, param) in cases {
+        let e = analytic_answer(&p, 20).err().unwrap_or_else(|| panic!("{param}: not refused"));
+        assert_eq!(e.kind(), ErrorKind::Input, "{param}: {e}");
+        assert!(e.to_string().contains(param), "{param}: {e}");
+    }
+}
