@@ -6,7 +6,8 @@
 //!    e.g. the Problem 1 expansions in $\Lambda = \pi l_s / L$ ([3.7]-[3.12] of the paper),
 //!    $l/l_s = 1 + (\theta^2/3 - 1/12)\Lambda^2 + O(\Lambda^4)$;
 //! 2. **solve a problem** ([`solve_toml`], [`solve_file`], or [`solve`] on a parsed [`Scene`]):
-//!    the JSON of `periodic-contact solve SCENE --json`, every number with its verified digits;
+//!    an [`Answer`], every number typed with its digits and scale ([`Quantity`]), and the JSON of
+//!    `periodic-contact solve SCENE --json`, one rendering of the same numbers;
 //! 3. **check orders** ([`check_orders`]): the remainder of the series truncated after $m$
 //!    corrections against the MPFR solution, observed slope of $\log|r_m|$ against
 //!    $\log\Lambda$ vs the predicted $2m + 2$ (`paper` convention).
@@ -37,7 +38,9 @@ pub use crate::error::{Error, ErrorKind};
 pub use crate::model::ModelError;
 pub use crate::scene::{parse::parse_scene, Method, Scene};
 pub use crate::series_request::{SeriesRequest, ValidSeries, OPTION_NAMES as SERIES_OPTIONS};
-pub use crate::solve::{solve_scene as solve, SolveRequest};
+pub use crate::solve::render::DigitsKind;
+pub use crate::solve::values::{Field, Quantity, Values};
+pub use crate::solve::{Answer, Claim, SolveRequest};
 pub use crate::verification::convergence::{
     parabola_case, sliding_convergence as check_orders, ConvergenceStudy, OrderRow,
 };
@@ -222,7 +225,7 @@ impl SolveOptions {
     /// let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
     /// let choice = opts.choose(&mut scene)?;
     /// assert_eq!(choice.reason, "forced by --method");
-    /// let v = solve_with_choice(&scene, choice)?;
+    /// let v = solve_with_choice(&scene, choice)?.json;
     /// assert_eq!(v["choice"]["method"], "f64");
     /// # Ok::<(), periodic_contact::api::ApiError>(())
     /// ```
@@ -279,34 +282,60 @@ fn override_convention(scene: &mut Scene, c: Convention) -> Result<(), ModelErro
 }
 
 /// Solves a parsed scene with the method `choice` names (escalating to dearer methods when the
-/// answer's digits fall short of a `target_digits`), and returns the JSON of `periodic-contact
-/// solve --json` with its `choice`.
+/// answer's digits fall short of a `target_digits`): the typed answer, whose JSON is that of
+/// `periodic-contact solve --json` with its `choice`.
 ///
 /// # Errors
 /// [`Error`]: no solution, not physical, no convergence (and input errors of the method).
-pub fn solve_with_choice(scene: &Scene, choice: MethodChoice) -> Result<Value, Error> {
-    let (mut v, choice) = crate::solve::choice::solve_chosen(scene, choice)?;
-    if let Some(m) = v.as_object_mut() {
+pub fn solve_with_choice(scene: &Scene, choice: MethodChoice) -> Result<Answer, Error> {
+    let (mut answer, choice) = crate::solve::choice::solve_chosen(scene, choice)?;
+    if let Some(m) = answer.json.as_object_mut() {
         m.insert("choice".into(), choice.json());
     }
-    Ok(v)
+    Ok(answer)
 }
 
-/// Solves the scene file at `path` as `periodic-contact solve PATH --json [flags]` does and returns
-/// its JSON (string values; keys in docs/theory.md section 14).
+/// Solves a parsed scene under `options` ([`SolveOptions::choose`], then
+/// [`solve_with_choice`]): the one path of [`solve_toml`], [`solve_file`] and the command line.
+///
+/// ```
+/// use periodic_contact::api::{self, SolveOptions};
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/kuznetsov_parabola.toml");
+/// let scene = api::parse_scene(&std::fs::read_to_string(path).unwrap())?;
+/// let answer = api::solve(&scene, &SolveOptions { digits: Some(20), ..Default::default() })?;
+/// let l = answer.get("l").unwrap();
+/// // The number, its text as `solve --json` prints it, and the digits of its scale the text holds.
+/// assert_eq!(l.text, answer.json["l"].as_str().unwrap());
+/// assert!(l.digits >= 20.0, "{l:?}");
+/// # Ok::<(), api::ApiError>(())
+/// ```
+///
+/// # Errors
+/// As [`solve_toml`].
+pub fn solve(scene: &Scene, options: &SolveOptions) -> Result<Answer, ApiError> {
+    let mut scene = scene.clone();
+    let choice = options.choose(&mut scene)?;
+    Ok(solve_with_choice(&scene, choice)?)
+}
+
+/// Solves the scene file at `path` as `periodic-contact solve PATH --json [flags]` does: the typed
+/// answer, whose `json` is what the command prints (string values; keys in docs/theory.md
+/// section 14).
 ///
 /// ```
 /// use periodic_contact::api::{solve_file, SolveOptions};
 /// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
-/// let v = solve_file(path.as_ref(), &SolveOptions { method: Some("f64".into()), ..Default::default() })?;
-/// assert_eq!(v["problem"], "sliding");
+/// let answer = solve_file(path.as_ref(), &SolveOptions { method: Some("f64".into()), ..Default::default() })?;
+/// assert_eq!(answer.json["problem"], "sliding");
+/// let p2 = answer.get("P2").unwrap();
+/// assert!((p2.value - 0.01).abs() < 1e-14 && p2.digits > 12.0, "{p2:?}");
 /// # Ok::<(), periodic_contact::api::ApiError>(())
 /// ```
 ///
 /// # Errors
 /// [`ApiError::Scene`] for an invalid scene, [`ApiError::Problem`] otherwise (an unreadable file,
 /// an invalid option, no solution, not physical, no convergence), each with the CLI's message.
-pub fn solve_file(path: &Path, options: &SolveOptions) -> Result<Value, ApiError> {
+pub fn solve_file(path: &Path, options: &SolveOptions) -> Result<Answer, ApiError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| ModelError::new("SCENE", path.display(), format!("cannot be read: {e}")))?;
     solve_toml(&text, options)
@@ -333,13 +362,15 @@ pub fn solve_file(path: &Path, options: &SolveOptions) -> Result<Value, ApiError
 /// friction = "0.3"
 /// "#;
 /// let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
-/// let v = solve_toml(scene, &opts)?;
+/// let answer = solve_toml(scene, &opts)?;
 /// // l = 0.0794891890084214444... (`solve scenes/sliding_friction.toml`, MPFR, 34 digits).
-/// let l: f64 = v["l"].as_str().unwrap().parse().unwrap();
-/// assert!((l - 0.0794891890084214444).abs() < 1e-14 * l);
+/// let l = answer.get("l").unwrap();
+/// assert!((l.value - 0.0794891890084214444).abs() < 1e-14 * l.value);
+/// // It holds the digits it claims, of its scale.
+/// assert!((l.value - 0.0794891890084214444).abs() <= 10f64.powf(-l.digits) * l.scale);
 /// # Ok::<(), periodic_contact::api::ApiError>(())
 /// ```
-pub fn solve_toml(scene: &str, options: &SolveOptions) -> Result<Value, ApiError> {
+pub fn solve_toml(scene: &str, options: &SolveOptions) -> Result<Answer, ApiError> {
     let mut scene = parse_scene(scene).map_err(ApiError::Scene)?;
     let choice = options.choose(&mut scene)?;
     Ok(solve_with_choice(&scene, choice)?)

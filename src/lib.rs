@@ -47,8 +47,9 @@
 //! // 2. A scene file solved as `periodic-contact solve FILE --json --method f64` does.
 //! let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sliding_friction.toml");
 //! let opts = SolveOptions { method: Some("f64".into()), ..Default::default() };
-//! let v = api::solve_file(scene.as_ref(), &opts)?;
-//! println!("l = {} ({} digits)", v["l"], v["digits_verified"]);
+//! let answer = api::solve_file(scene.as_ref(), &opts)?;
+//! let l = answer.get("l").unwrap(); // typed: text, value, digits held, scale
+//! println!("l = {} ({:.1} digits of {:e})", l.text, l.digits, l.scale);
 //! # Ok::<(), api::ApiError>(())
 //! ```
 //!

@@ -17,6 +17,7 @@
 
 use periodic_contact::loading_law::verified::{solve_law, LawSolution};
 use periodic_contact::loading_law::verified_f64::{solve_law_f64, LawSolutionF64};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{
     Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem, Material, Period, PunchShape,
 };

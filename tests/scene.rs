@@ -1,6 +1,7 @@
 //! The scene parser: exact numbers, strict keys, clear errors.
 
 use exact_series::Q;
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{Period, PunchShape, SlidingLoad};
 use periodic_contact::scene::{parse::parse_scene, SceneProblem};
 

@@ -13,6 +13,7 @@
 use super::generate::{Case, Given, Problem, Shape, Statement, Q};
 use periodic_contact::error::{Error, ErrorKind};
 use periodic_contact::model::Exact;
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::scene::parse::parse_scene;
 use periodic_contact::scene::{Method, Scene, SceneProblem};
 use periodic_contact::solve::{answer_adhesion, answer_law, answer_mpfr, render, solve_scene, SolveRequest};
@@ -287,7 +288,7 @@ fn truth(scene: &Scene, digits: u32) -> Result<(Value, Truth), Error> {
                 scales.insert(format!("points[{i}].q1"), Float::with_val(prec, &kl * &e));
                 scales.insert(format!("points[{i}].q2"), Float::with_val(prec, &kl * &e));
             }
-            (Value::Object(answer_law::law_answer_json(p, &sol, digits)), Problem::Law)
+            (Value::Object(answer_law::law_answer_json(p, &sol, digits).0), Problem::Law)
         }
     };
     let claims = claims(&v, problem);

@@ -93,7 +93,7 @@ fn solve_json(
 ) -> PyResult<String> {
     interruptible(py, move || {
         let opts = SolveOptions { digits, method, order, convention };
-        api::solve_toml(&scene, &opts).map(|v| api::json_text(&v))
+        api::solve_toml(&scene, &opts).map(|a| api::json_text(&a.json))
     })?
     .map_err(to_py)
 }

@@ -52,6 +52,7 @@ use super::series_f64::RightSeries;
 use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::kernel_f64::{KernelF64, Side};
 use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
@@ -274,7 +275,7 @@ fn too_large(lambda: f64) -> AdhesionError {
 
 /// Method 2b with estimated digits (module doc): the nominal run's values, digits from the check
 /// run's difference (never more than [`crate::numerics::accuracy::F64_DIGITS_CAP`]).
-pub fn solve_collocation_f64(
+pub(crate) fn solve_collocation_f64(
     problem: &AdhesionProblem,
     points: &[Exact],
 ) -> Result<AdhesionSolutionF64, AdhesionError> {

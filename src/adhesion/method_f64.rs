@@ -11,6 +11,7 @@
 use super::collocation_f64::solve_collocation_f64;
 use super::error::AdhesionError;
 use super::series_f64::solution::AdhesionSolutionF64;
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Exact, Period, PunchShape};
 
 /// Estimated digits above which the series' answer is kept without trying the collocation.

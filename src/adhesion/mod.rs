@@ -11,6 +11,9 @@
 //! - [`collocation_f64`] (method 2b): collocation in eta, `f64`, one block of the loading law's
 //!   march with N = 0, where the series stops (issue 13); [`method_f64`] picks between 2 and 2b.
 //!
+//! - [`friction`]: finite friction (docs/theory.md section 17), so far the single punch's
+//!   self-similar stick/slip solution by two `f64` methods (not yet reachable from scenes).
+//!
 //! Both surface conventions (docs/theory.md section 8, Problem 2; [`crate::model::AdhesionProblem::convention`]):
 //! `paper` (the Flamant far field) and `periodic` (u periodic; the MPFR kernel's factor
 //! [`volterra_mpfr::kernel::LateralShift`], the f64 collocation's tilted punch; the lambda^2 series
@@ -39,6 +42,7 @@
 
 pub mod analytic;
 pub mod collocation_f64;
+pub mod friction;
 pub mod method_f64;
 pub mod points;
 pub mod profile;

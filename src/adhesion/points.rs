@@ -4,7 +4,7 @@ use super::error::AdhesionError;
 use crate::model::{readable, Exact};
 
 /// Validates the points (x/a in [0, 1]).
-pub fn check_points(points: &[Exact]) -> Result<(), AdhesionError> {
+pub(crate) fn check_points(points: &[Exact]) -> Result<(), AdhesionError> {
     for p in points {
         if p < &Exact::from_integer(0.into()) || p > &Exact::from_integer(1.into()) {
             return Err(AdhesionError::InvalidArgument {

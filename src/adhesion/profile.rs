@@ -9,6 +9,7 @@
 //! circle's cap short of its wall; a polynomial's first bracket, grown as needed).
 
 use super::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, ModelError, PunchShape};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::exact::to_f64;
@@ -120,7 +121,7 @@ pub fn half_width_search(problem: &AdhesionProblem) -> HalfWidthSearch {
 
 /// The refusal of a load whose contact would pass the circle's search cap `a_max` (`load`: the
 /// given P2; `largest`: the load at the cap, when known).
-pub fn circle_cap_error(load: &crate::model::Exact, a_max: f64, largest: Option<String>) -> AdhesionError {
+pub(crate) fn circle_cap_error(load: &crate::model::Exact, a_max: f64, largest: Option<String>) -> AdhesionError {
     ModelError::new(
         "normal_load",
         readable(load),

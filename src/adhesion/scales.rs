@@ -14,6 +14,7 @@
 //! | phi | k a^2 |
 //! | q1, q2 | E* k a |
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize};
 use crate::numerics::exact::{to_f64, to_float};
 use rug::Float;
@@ -59,7 +60,7 @@ impl ScalesMpfr {
     }
 
     /// The scales of (psi, phi, q1, q2), in the order of [`Digits::from_points`].
-    pub fn point_scales(&self) -> [&Float; 4] {
+    pub(crate) fn point_scales(&self) -> [&Float; 4] {
         [&self.psi, &self.phi, &self.stress, &self.stress]
     }
 }
@@ -98,7 +99,7 @@ impl ScalesF64 {
     }
 
     /// The scales of (psi, phi, q1, q2), in the order of [`Digits::from_points`].
-    pub fn point_scales(&self) -> [f64; 4] {
+    pub(crate) fn point_scales(&self) -> [f64; 4] {
         [self.psi, self.phi, self.stress, self.stress]
     }
 }

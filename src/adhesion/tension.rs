@@ -41,7 +41,7 @@ pub struct TensionReport {
 /// where q2 < 0, `q2_near_edge(ln delta)` the dimensionless q2/(E* k a) at 1 - x/a = delta (a
 /// cheap evaluation: a few digits suffice), called only when a zone is refined; `prec` the
 /// precision of the returned ends.
-pub fn tension_report(
+pub(crate) fn tension_report(
     edge_factor: Complex,
     eps: f64,
     at_points: Vec<usize>,

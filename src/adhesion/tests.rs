@@ -5,6 +5,7 @@
 use super::series_f64::{self, kernel::flat_punch_stress};
 use super::volterra_mpfr::{self, VolterraParams};
 use super::{solve_f64, solve_mpfr, solve_verified, AdhesionError, F64Route};
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape};
 use crate::numerics::exact::to_f64;
 use crate::numerics::tanh_sinh::tanh_sinh_f64;

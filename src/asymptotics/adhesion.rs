@@ -195,7 +195,7 @@ pub fn kernel_factor(prec: usize, u: &Poly, v: &Poly) -> Result<Series<GPoly>, S
 }
 
 /// The half-range moments M_0..M_{count-1} over Q(i)[eps, B, S] (docs/theory.md sections 4, 5).
-pub fn half_range_moments(count: usize) -> Result<Vec<GPoly>, SeriesError> {
+pub(crate) fn half_range_moments(count: usize) -> Result<Vec<GPoly>, SeriesError> {
     let eps = Poly::symbol(symbol(EPS)?);
     let b = Poly::symbol(symbol(B)?);
     let s = Poly::symbol(symbol(S)?);

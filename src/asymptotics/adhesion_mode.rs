@@ -152,7 +152,7 @@ pub fn symmetric_mode_exponent_refined(eps: f64, b: f64, s: f64, m_max: usize) -
 /// The frozen symbol's phase at size eta (docs/theory.md section 11): the kernel's prefactor
 /// cosh(2 eps eta) + i tan(eta) sinh(2 eps eta) frozen at chi = eta has argument
 /// alpha(eta) = arg(cosh 2 eps eta + i tan eta sinh 2 eps eta).
-pub fn frozen_phase(eps: f64, eta: f64) -> f64 {
+pub(crate) fn frozen_phase(eps: f64, eta: f64) -> f64 {
     (eta.tan() * (2.0 * eps * eta).sinh()).atan2((2.0 * eps * eta).cosh())
 }
 
@@ -236,7 +236,7 @@ pub fn asymptotic_frozen_exponent(eps: f64, eta: f64) -> Option<f64> {
 
 /// The n-th real zero of Re[e^(i alpha) M_m] by the large-m form (see
 /// [`asymptotic_frozen_exponent`]): phase pi/2 + n pi, m_n = m_0 e^(n pi/eps).
-pub fn asymptotic_zero(eps: f64, alpha: f64, n: u32) -> Option<f64> {
+pub(crate) fn asymptotic_zero(eps: f64, alpha: f64, n: u32) -> Option<f64> {
     if eps <= 0.0 {
         return None;
     }

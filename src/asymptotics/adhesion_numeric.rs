@@ -123,7 +123,7 @@ impl AdhesionRun {
         self.p.iter().enumerate().map(|(j, pj)| Float::with_val(self.prec, pj / p0) / (j as u32 + 1)).collect()
     }
     /// C_P/pi = p_0/2.
-    pub fn load_constant_over_pi(&self) -> Float {
+    pub(crate) fn load_constant_over_pi(&self) -> Float {
         Float::with_val(self.prec, &self.p[0] / 2u32)
     }
 }
@@ -313,7 +313,7 @@ type Part<'a> = (&'static str, &'static str, &'static str, &'a [Coefficient]);
 
 impl AdhesionNumeric {
     /// Least verified digits over the printed coefficients.
-    pub fn min_digits(&self) -> f64 {
+    pub(crate) fn min_digits(&self) -> f64 {
         std::iter::once(&self.load_constant)
             .chain(&self.load)
             .chain(&self.slope)
@@ -343,7 +343,7 @@ impl AdhesionNumeric {
     }
 
     /// The sentence on the sign change of D_N (module doc, "The pole"), or on its absence.
-    pub fn pole_text(&self) -> String {
+    pub(crate) fn pole_text(&self) -> String {
         match &self.pole {
             None => format!(
                 "no pole: D_N = Re M_(2N+1) > 0 for every N <= {} (the exact coefficients have no pole in nu between this nu and 1/2 through this order)",

@@ -301,7 +301,7 @@ impl SeriesObject {
     /// [`SeriesObject::derive`] in the surface `convention` (docs/theory.md section 8): the
     /// Problem 1 expansions (`sliding`, the polynomial punch's) depend on it, the other objects do
     /// not. What `series OBJECT --convention C` and `api::derive` print.
-    pub fn derive_in(
+    pub(crate) fn derive_in(
         self,
         convention: Convention,
         order: usize,

@@ -14,7 +14,7 @@ pub fn jacobi_moments(n: usize) -> Result<Series<Poly>, SeriesError> {
 
 /// j_0 .. j_n with an arbitrary polynomial in place of theta (e.g. `-theta` for the moments of
 /// the weight omega itself: int y^n omega(y) dy = (pi / cos(pi theta)) (j_n(-theta) - j_{n+2}(-theta))).
-pub fn jacobi_moments_at(n: usize, theta: &Poly) -> Series<Poly> {
+pub(crate) fn jacobi_moments_at(n: usize, theta: &Poly) -> Series<Poly> {
     let two_theta = theta.mul_int(2);
     let mut j: Vec<Poly> = Vec::with_capacity(n + 1);
     j.push(Poly::one());

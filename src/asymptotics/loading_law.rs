@@ -403,7 +403,7 @@ impl LawExpansion {
         self.g.clone()
     }
     /// b/a = (1 + c/l)/(1 - c/l), coefficient of lambda^(2j).
-    pub fn end_ratio(&self) -> Vec<Float> {
+    pub(crate) fn end_ratio(&self) -> Vec<Float> {
         let p = self.prec;
         let g = ComplexSeries::from_real(&self.g, p);
         let one = Complex::with_val(p, 1);
@@ -560,7 +560,7 @@ pub fn loading_law_series(nu: &Q, ratio: &Q, order: usize, digits: u32) -> Resul
 
 impl LawSeries {
     /// Least verified digits over the printed coefficients.
-    pub fn min_digits(&self) -> f64 {
+    pub(crate) fn min_digits(&self) -> f64 {
         self.parts.iter().flat_map(|p| p.coefficients.iter().map(|c| c.2)).fold(f64::INFINITY, f64::min)
     }
 

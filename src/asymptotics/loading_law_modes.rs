@@ -69,6 +69,7 @@
 
 use super::loading_law::law_coefficients;
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Material, ModelError};
 use crate::numerics::accuracy::{digits_cap_for_bits, verified_digits_mpfr};
 use crate::numerics::exact::to_float;
@@ -189,7 +190,7 @@ impl Symbol {
     }
 
     /// det M(mu) at a complex mu (the weights are real: the real part is taken before s^mu).
-    pub fn det_complex(&self, mu: &Complex) -> Complex {
+    pub(crate) fn det_complex(&self, mu: &Complex) -> Complex {
         let p = self.prec;
         let zero = || Complex::new(p);
         let mut m = [[zero(), zero()], [zero(), zero()]];
@@ -353,7 +354,7 @@ pub const MODE_DIGITS: u32 = 12;
 
 /// The mode of a loading-law problem: at its nu and n = N'(0) (the self-similar start's ratio),
 /// to [`MODE_DIGITS`] digits.
-pub fn problem_mode(problem: &crate::model::LoadingLawProblem) -> Result<ModeExponent, Error> {
+pub(crate) fn problem_mode(problem: &crate::model::LoadingLawProblem) -> Result<ModeExponent, Error> {
     mode_exponent(problem.material().poisson_ratio(), &problem.law().initial_ratio(), MODE_DIGITS)
 }
 

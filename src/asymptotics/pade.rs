@@ -32,7 +32,7 @@ fn numbers(d: &Derived) -> Result<(Vec<Q>, String), String> {
 }
 
 /// The near-diagonal pairs (L, M), L + M = n, M >= 1, diagonal first.
-pub fn near_diagonal(n: usize) -> Vec<(usize, usize)> {
+pub(crate) fn near_diagonal(n: usize) -> Vec<(usize, usize)> {
     let mut pairs: Vec<(usize, usize)> =
         (1..=n).map(|m| (n - m, m)).filter(|(l, m)| l.abs_diff(*m) <= SPREAD).collect();
     pairs.sort_by_key(|(l, m)| (l.abs_diff(*m), std::cmp::Reverse(*l)));

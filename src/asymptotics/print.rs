@@ -43,7 +43,7 @@ fn map_identifiers(text: &str, rename: impl Fn(&str) -> String) -> String {
 }
 
 /// A name as SymPy's `sympify` must see it.
-pub fn sympy_name(name: &str) -> String {
+pub(crate) fn sympy_name(name: &str) -> String {
     if SYMPY_RENAMED.contains(&name) {
         format!("{name}_")
     } else {
@@ -52,17 +52,17 @@ pub fn sympy_name(name: &str) -> String {
 }
 
 /// A name as Mathematica must see it (no underscores).
-pub fn mathematica_name(name: &str) -> String {
+pub(crate) fn mathematica_name(name: &str) -> String {
     name.replace('_', "")
 }
 
 /// An expression in the engine's text form, as SymPy reads it.
-pub fn sympy_text(text: &str) -> String {
+pub(crate) fn sympy_text(text: &str) -> String {
     map_identifiers(text, sympy_name).replace('^', "**")
 }
 
 /// An expression in the engine's text form, as Mathematica reads it.
-pub fn mathematica_text(text: &str) -> String {
+pub(crate) fn mathematica_text(text: &str) -> String {
     map_identifiers(text, mathematica_name)
 }
 
@@ -77,7 +77,7 @@ fn content(p: &Poly, lcm: &mut num_bigint::BigInt, gcd: &mut num_bigint::BigInt)
 /// A coefficient as a paper prints it: a polynomial with rational coefficients when the
 /// denominator is a constant; else one fraction of two polynomials with coprime integer
 /// coefficients, the sign in front.
-pub fn coefficient_latex(c: &Frac) -> String {
+pub(crate) fn coefficient_latex(c: &Frac) -> String {
     let (num, den) = (c.numer(), c.denom());
     if let Some(d) = den.as_q() {
         return num.scale(&d.recip()).latex();
@@ -111,7 +111,7 @@ pub fn coefficient_latex(c: &Frac) -> String {
 
 /// One term `c v^k` of a series in LaTeX, with its sign as a separate `+`/`-` (first term: no
 /// `+`). Sums in parentheses.
-pub fn term_latex(c: &Frac, var: &str, k: usize, first: bool) -> String {
+pub(crate) fn term_latex(c: &Frac, var: &str, k: usize, first: bool) -> String {
     let power = match k {
         0 => String::new(),
         1 => var.to_string(),

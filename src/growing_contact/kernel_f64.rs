@@ -90,7 +90,7 @@ impl KernelF64 {
 
     /// L sigma_flat at the contact point with distances `d_left`, `d_right` to the trailing and
     /// leading ends (module doc).
-    pub fn flat_stress(&self, d_left: f64, d_right: f64, eta: f64) -> C64 {
+    pub(crate) fn flat_stress(&self, d_left: f64, d_right: f64, eta: f64) -> C64 {
         let chi = 0.5 * (d_left - d_right);
         let (sl, sr) = (self.s(d_left), self.s(d_right));
         let phase = C64::from_polar(self.cosh_pi_eps / (sl * sr).sqrt(), self.eps * (sl / sr).ln());
@@ -106,7 +106,7 @@ impl KernelF64 {
     }
 
     /// The rotation's stress rho on the contact (module doc); zero for the single punch.
-    pub fn tilt_stress(&self, d_left: f64, d_right: f64, eta: f64) -> C64 {
+    pub(crate) fn tilt_stress(&self, d_left: f64, d_right: f64, eta: f64) -> C64 {
         if self.single {
             return C64::new(0.0, 0.0);
         }
@@ -118,7 +118,7 @@ impl KernelF64 {
     }
 
     /// The rotation's slope R outside (module doc); zero for the single punch.
-    pub fn tilt_outside(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+    pub(crate) fn tilt_outside(&self, side: Side, d_near: f64, eta: f64) -> C64 {
         if self.single {
             return C64::new(0.0, 0.0);
         }
@@ -139,7 +139,7 @@ impl KernelF64 {
     /// `periodic` convention or not: (1 + i n) (L K + i beta R) ([`crate::loading_law::collocation`]'s
     /// edge integrand; docs/theory.md section 8, Problem 2: the increment's i beta dP/L keeps v and
     /// u periodic).
-    pub fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
+    pub(crate) fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
         let mut k = self.outside(side, d_near, eta);
         if tilt {
             k += self.tilt_outside(side, d_near, eta) * C64::new(0.0, self.beta);
@@ -148,7 +148,7 @@ impl KernelF64 {
     }
 
     /// The stress of the same increment on the contact: (1 + i n) (L sigma_flat + i beta rho).
-    pub fn increment_stress(&self, d_left: f64, d_right: f64, eta: f64, n: f64, tilt: bool) -> C64 {
+    pub(crate) fn increment_stress(&self, d_left: f64, d_right: f64, eta: f64, n: f64, tilt: bool) -> C64 {
         let mut s = self.flat_stress(d_left, d_right, eta);
         if tilt {
             s += self.tilt_stress(d_left, d_right, eta) * C64::new(0.0, self.beta);

@@ -277,7 +277,7 @@ impl March {
         self.blocks.partition_point(|b| b.end() <= eta).min(self.blocks.len() - 1)
     }
     /// P'(eta).
-    pub fn p_prime(&self, eta: f64) -> f64 {
+    pub(crate) fn p_prime(&self, eta: f64) -> f64 {
         self.blocks[self.block_right(eta)].p_prime(eta)
     }
     /// gamma(eta) = pi c/L at size eta.

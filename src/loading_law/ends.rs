@@ -43,7 +43,7 @@ pub struct EndStress {
 
 impl LawCollocation {
     /// sigma_hat at distance `rel` l from the end on `side` (Right: leading end b), inside.
-    pub fn sigma_near_end(&self, side: Side, rel: &Float, rule: &TanhSinh) -> Complex {
+    pub(crate) fn sigma_near_end(&self, side: Side, rel: &Float, rule: &TanhSinh) -> Complex {
         let p = self.prec;
         let lambda = &self.lambda_max;
         let gamma = self.centre_at(lambda);

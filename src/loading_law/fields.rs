@@ -28,7 +28,7 @@ impl LawCollocation {
     }
 
     /// gamma(eta) = eta Gam(eta/Lambda).
-    pub fn centre_at(&self, eta: &Float) -> Float {
+    pub(crate) fn centre_at(&self, eta: &Float) -> Float {
         let t = Float::with_val(self.prec, eta / &self.lambda_max);
         self.at(&self.gam, &t) * eta
     }
@@ -96,7 +96,7 @@ impl LawCollocation {
     }
 
     /// sigma_hat at chi (module doc).
-    pub fn sigma_hat(&self, chi: &Float, rule: &TanhSinh) -> Complex {
+    pub(crate) fn sigma_hat(&self, chi: &Float, rule: &TanhSinh) -> Complex {
         let p = self.prec;
         let (side, eta_x) = self.entry(chi);
         let span = Float::with_val(p, &self.lambda_max - &eta_x);

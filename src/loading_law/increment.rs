@@ -101,17 +101,17 @@ impl Increment {
         }
     }
     /// Whether n = N' is constant along the loading (linear law).
-    pub fn constant_ratio(&self) -> bool {
+    pub(crate) fn constant_ratio(&self) -> bool {
         self.slope.len() <= 1
     }
     /// n = N'(P2) at P2 = p2_per_p `p`.
-    pub fn ratio_at(&self, p: &Float) -> Float {
+    pub(crate) fn ratio_at(&self, p: &Float) -> Float {
         let prec = p.prec();
         let p2 = Float::with_val(prec, p * &self.p2_per_p);
         self.slope.iter().rev().fold(Float::with_val(prec, 0), |acc, c| acc * &p2 + c)
     }
     /// N(P2) at P2 = p2_per_p `p`, in units of p2_per_p (i.e. P1/p2_per_p).
-    pub fn law_at(&self, p: &Float) -> Float {
+    pub(crate) fn law_at(&self, p: &Float) -> Float {
         let prec = p.prec();
         let p2 = Float::with_val(prec, p * &self.p2_per_p);
         self.law.iter().rev().fold(Float::with_val(prec, 0), |acc, c| acc * &p2 + c) / &self.p2_per_p

@@ -22,6 +22,7 @@ use super::collocation::{solve, solve_from, LawCollocation, LawSetting};
 use super::ends::EndStress;
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel::{Row, Side};
+use crate::model::OnPunchRow;
 use crate::model::{readable, Exact, LawSize, LoadingLawProblem, ModelError, Period};
 use crate::numerics::accuracy::{readable_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::{to_f64, to_float};
@@ -462,7 +463,7 @@ fn with_mode(problem: &LoadingLawProblem, e: AdhesionError) -> AdhesionError {
 /// [`solve_law_sampled`] and the first run's collocation (whose values it returns): for checks
 /// that need the solution as a function, such as the residual of [1.8] in [`super::fields`]'
 /// tests.
-pub fn solve_law_collocation(
+pub(crate) fn solve_law_collocation(
     problem: &LoadingLawProblem,
     xh: &[Exact],
     stress_xh: &[Exact],

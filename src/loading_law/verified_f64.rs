@@ -14,6 +14,7 @@ use super::verified::LawDigits;
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel_f64::KernelF64;
 use crate::growing_contact::march::{march, March, MarchEnd, MarchOptions, MarchSetting};
+use crate::model::OnPunchRow;
 use crate::model::{readable, Convention, Exact, LawSize, LoadingLaw, LoadingLawProblem};
 use crate::numerics::accuracy::{f64_digits_nodes, F64_DIGITS_CAP};
 use crate::numerics::exact::to_f64;
@@ -231,7 +232,7 @@ pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSol
 
 /// [`solve_law_f64`] with the nominal discretisation `options` (the check runs
 /// `options.refined()`).
-pub fn solve_law_f64_with(
+pub(crate) fn solve_law_f64_with(
     problem: &LoadingLawProblem,
     xh: &[Exact],
     options: &MarchOptions,

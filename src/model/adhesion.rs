@@ -1,11 +1,13 @@
 //! Problem 2: monotone indentation of periodic punches with complete adhesion
 //! (docs/theory.md section 4; the paper's (1.4), (2.18)-(2.26)).
 
-use super::{error::readable, error::ModelError, Convention, Exact, Material, Period, PunchShape};
+use super::{
+    error::readable, error::ModelError, Convention, Exact, Material, OnPunchRow, Period, PunchRow, PunchShape,
+};
 use num_traits::{Signed, Zero};
 
 /// What fixes the state of the monotone indentation.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum AdhesionSize {
     /// Given contact half-width a > 0 (the direct problem).
     HalfWidth(Exact),
@@ -14,11 +16,9 @@ pub enum AdhesionSize {
 }
 
 /// A validated statement of Problem 2 (symmetric case, b = a, P1 = 0).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct AdhesionProblem {
-    material: Material,
-    period: Period,
-    shape: PunchShape,
+    row: PunchRow,
     size: AdhesionSize,
     reference_curvature: Exact,
     convention: Convention,
@@ -54,8 +54,8 @@ impl AdhesionProblem {
                 ))
             }
         }
-        shape.validate()?;
-        period.validate()?;
+        let row = PunchRow::new(material, period, shape)?;
+        let (period, shape) = (row.period(), row.shape());
         match &size {
             AdhesionSize::HalfWidth(a) if !a.is_positive() => {
                 return Err(ModelError::new("half_width", readable(a), "must be > 0"))
@@ -65,7 +65,7 @@ impl AdhesionProblem {
             }
             _ => {}
         }
-        if let (AdhesionSize::HalfWidth(a), Period::Finite(l)) = (&size, &period) {
+        if let (AdhesionSize::HalfWidth(a), Period::Finite(l)) = (&size, period) {
             if (a + a) >= *l {
                 return Err(ModelError::new(
                     "half_width",
@@ -74,22 +74,10 @@ impl AdhesionProblem {
                 ));
             }
         }
-        let reference_curvature = reference_curvature(&shape, &period, &size);
-        Ok(AdhesionProblem { material, period, shape, size, reference_curvature, convention: Convention::Paper })
+        let reference_curvature = reference_curvature(shape, period, &size);
+        Ok(AdhesionProblem { row, size, reference_curvature, convention: Convention::Paper })
     }
 
-    /// Half-plane material.
-    pub fn material(&self) -> &Material {
-        &self.material
-    }
-    /// Period L, or a single punch.
-    pub fn period(&self) -> &Period {
-        &self.period
-    }
-    /// Punch shape (parabolic, even polynomial or circular).
-    pub fn shape(&self) -> &PunchShape {
-        &self.shape
-    }
     /// Half-width or load.
     pub fn size(&self) -> &AdhesionSize {
         &self.size
@@ -108,8 +96,8 @@ impl AdhesionProblem {
     }
     /// Whether the `periodic` convention's lateral term applies: the `periodic` convention on a
     /// finite period (the term beta P2/L vanishes for the single punch).
-    pub fn periodic_surface(&self) -> bool {
-        self.convention == Convention::PeriodicSurface && matches!(self.period, Period::Finite(_))
+    pub(crate) fn periodic_surface(&self) -> bool {
+        self.convention == Convention::PeriodicSurface && matches!(self.row.period(), Period::Finite(_))
     }
 
     /// The reference curvature k of the scalings P2 = E* k (L/pi)^2 P, psi ~ k a, phi ~ k a^2,
@@ -120,6 +108,13 @@ impl AdhesionProblem {
     /// the parabola's k exactly.
     pub fn curvature(&self) -> &Exact {
         &self.reference_curvature
+    }
+}
+
+/// The punch row: material, period and shape (parabolic, even polynomial or circular).
+impl OnPunchRow for AdhesionProblem {
+    fn row(&self) -> &PunchRow {
+        &self.row
     }
 }
 

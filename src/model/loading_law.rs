@@ -6,11 +6,11 @@
 //! N(P2) = sum_j c_j P2^j (numpy order, c_0 = 0, N' >= 0 checked on the loading path by the
 //! solver), given the final half-length l = (a + b)/2 or the final load P2.
 
-use super::{readable, Convention, Exact, Material, ModelError, Period, PunchShape};
+use super::{readable, Convention, Exact, Material, ModelError, OnPunchRow, Period, PunchRow, PunchShape};
 use num_traits::{Signed, Zero};
 
 /// The loading law P1 = N(P2).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum LoadingLaw {
     /// P1 = n P2 (scene key `tangential_ratio`).
     Linear(Exact),
@@ -20,7 +20,7 @@ pub enum LoadingLaw {
 
 impl LoadingLaw {
     /// N'(P2) coefficients (numpy order): the linear law's \[n\].
-    pub fn derivative(&self) -> Vec<Exact> {
+    pub(crate) fn derivative(&self) -> Vec<Exact> {
         match self {
             LoadingLaw::Linear(n) => vec![n.clone()],
             LoadingLaw::Polynomial(c) => {
@@ -59,7 +59,7 @@ impl LoadingLaw {
 }
 
 /// The size given: the final half-length or the final normal load.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum LawSize {
     /// l = (a + b)/2 (scene key `half_length`), 0 < 2 l < L.
     HalfLength(Exact),
@@ -68,10 +68,10 @@ pub enum LawSize {
 }
 
 /// A validated loading-law problem.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct LoadingLawProblem {
-    material: Material,
-    period: Period,
+    row: PunchRow,
+    /// The row's parabola's k (kept apart: the shape is the parabola by construction).
     k: Exact,
     law: LoadingLaw,
     size: LawSize,
@@ -90,8 +90,8 @@ impl LoadingLawProblem {
         size: LawSize,
         convention: Convention,
     ) -> Result<Self, ModelError> {
-        let k = match shape {
-            PunchShape::Parabolic { k } => k,
+        let k = match &shape {
+            PunchShape::Parabolic { k } => k.clone(),
             other => {
                 return Err(ModelError::new(
                     "shape",
@@ -100,6 +100,8 @@ impl LoadingLawProblem {
                 ))
             }
         };
+        let row = PunchRow::new(material, period, shape)?;
+        let period = row.period();
         if let LoadingLaw::Polynomial(c) = &law {
             if c.is_empty() {
                 return Err(ModelError::new("loading_law", "[]", "at least [\"0\", n]: N(P2) = sum_j c_j P2^j"));
@@ -114,12 +116,12 @@ impl LoadingLawProblem {
         }
         match &size {
             LawSize::HalfLength(l) => {
-                let too_big = match &period {
+                let too_big = match period {
                     Period::Finite(big_l) => (l + l) >= *big_l,
                     Period::Infinite => false,
                 };
                 if !l.is_positive() || too_big {
-                    let range = match &period {
+                    let range = match period {
                         Period::Finite(big_l) => format!("0 < 2 l < L = {}", readable(big_l)),
                         Period::Infinite => "l > 0".into(),
                     };
@@ -132,18 +134,10 @@ impl LoadingLawProblem {
                 }
             }
         }
-        Ok(LoadingLawProblem { material, period, k, law, size, convention })
+        Ok(LoadingLawProblem { row, k, law, size, convention })
     }
 
-    /// Material.
-    pub fn material(&self) -> &Material {
-        &self.material
-    }
-    /// Period L (or the single punch).
-    pub fn period(&self) -> &Period {
-        &self.period
-    }
-    /// Curvature k of g = k x^2.
+    /// Curvature k of g = k x^2 (the row's parabola).
     pub fn k(&self) -> &Exact {
         &self.k
     }
@@ -158,6 +152,13 @@ impl LoadingLawProblem {
     /// Surface convention.
     pub fn convention(&self) -> Convention {
         self.convention
+    }
+}
+
+/// The punch row: material, period and the parabola g = k x^2.
+impl OnPunchRow for LoadingLawProblem {
+    fn row(&self) -> &PunchRow {
+        &self.row
     }
 }
 

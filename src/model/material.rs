@@ -5,7 +5,7 @@ use num_traits::{One, Signed, Zero};
 
 /// Isotropic elastic half-plane: Poisson's ratio `nu` in [0, 1/2] and the contact modulus
 /// `E* = E/(1 - nu^2)` (plane strain), both exact.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Material {
     poisson_ratio: Exact,
     contact_modulus: Exact,
@@ -22,7 +22,7 @@ impl Material {
     }
 
     /// From nu and Young's modulus E: E* = E/(1 - nu^2), exactly.
-    pub fn from_youngs_modulus(nu: Exact, e: Exact) -> Result<Self, ModelError> {
+    pub(crate) fn from_youngs_modulus(nu: Exact, e: Exact) -> Result<Self, ModelError> {
         check_nu(&nu)?;
         if !e.is_positive() {
             return Err(ModelError::new("youngs_modulus", super::readable(&e), "must be > 0"));
@@ -49,7 +49,7 @@ impl Material {
     }
 
     /// 3 - 4 nu, the argument of eps = ln(3 - 4 nu)/(2 pi) (docs/theory.md section 1), exact.
-    pub fn kolosov(&self) -> Exact {
+    pub(crate) fn kolosov(&self) -> Exact {
         Exact::from_integer(3.into()) - Exact::from_integer(4.into()) * &self.poisson_ratio
     }
 }

@@ -10,6 +10,7 @@ pub mod error;
 pub mod loading_law;
 pub mod material;
 pub mod punch;
+pub mod row;
 pub mod sliding;
 
 pub use adhesion::{AdhesionProblem, AdhesionSize};
@@ -17,6 +18,7 @@ pub use error::{readable, ModelError};
 pub use loading_law::{LawSize, LoadingLaw, LoadingLawProblem};
 pub use material::Material;
 pub use punch::{Period, PunchShape};
+pub use row::{OnPunchRow, PunchRow};
 pub use sliding::{Convention, SlidingLoad, SlidingProblem, SlidingProblemBuilder};
 
 /// Exact input number (a reduced rational).

@@ -4,7 +4,7 @@ use super::{error::ModelError, Exact};
 use num_traits::{Signed, Zero};
 
 /// Distance between neighbouring punches.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum Period {
     /// Period L > 0.
     Finite(Exact),
@@ -31,7 +31,7 @@ impl Period {
 }
 
 /// Shape of one punch, y = g(x), g(0) = 0.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum PunchShape {
     /// g = k x^2, k > 0.
     Parabolic {

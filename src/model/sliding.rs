@@ -1,11 +1,11 @@
 //! Problem 1: steady sliding with Coulomb friction, adhesive friction and linear wear
 //! (docs/theory.md section 3; the paper's (1.3), (2.8)).
 
-use super::{error::readable, error::ModelError, Exact, Material, Period, PunchShape};
+use super::{error::readable, error::ModelError, Exact, Material, OnPunchRow, Period, PunchRow, PunchShape};
 use num_traits::{Signed, Zero};
 
 /// What fixes the contact size.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum SlidingLoad {
     /// Given normal load per punch P2 > 0 (the inverse problem: find the contact).
     NormalLoad(Exact),
@@ -22,7 +22,7 @@ pub enum SlidingLoad {
 /// to the right side of [2.8], i.e. beta tau0 -> beta tau0 + K in [2.14]. K -> 0 for a single
 /// punch and vanishes when kappa = 0 and tau0 = 0; it is odd in lambda, so the paper's expansions
 /// in even powers of lambda belong to [`Convention::Paper`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Convention {
     /// `paper`: sections 2-3 of docs/theory.md as they stand (no K). The default.
     #[default]
@@ -43,11 +43,9 @@ impl Convention {
 
 /// A validated statement of Problem 1. Built by [`SlidingProblem::builder`]; validated once, when
 /// built; read through its accessors.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct SlidingProblem {
-    material: Material,
-    period: Period,
-    shape: PunchShape,
+    row: PunchRow,
     friction: Exact,
     adhesive_friction: Exact,
     wear: Exact,
@@ -142,8 +140,7 @@ impl SlidingProblemBuilder {
         let adhesive_friction = self.adhesive_friction.unwrap_or_else(zero);
         let wear = self.wear.unwrap_or_else(zero);
         let speed = self.speed;
-        shape.validate()?;
-        period.validate()?;
+        let row = PunchRow::new(material, period, shape)?;
         if friction.is_negative() {
             return Err(ModelError::new("friction", readable(&friction), "must be >= 0"));
         }
@@ -167,10 +164,7 @@ impl SlidingProblemBuilder {
             }
             _ => {}
         }
-        if let (PunchShape::Sinusoidal { .. }, Period::Infinite) = (&shape, &period) {
-            return Err(ModelError::new("period", "inf", "a sinusoidal punch needs a finite period"));
-        }
-        if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, &period) {
+        if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, row.period()) {
             if (l + l) >= *big_l {
                 return Err(ModelError::new(
                     "half_length",
@@ -179,17 +173,7 @@ impl SlidingProblemBuilder {
                 ));
             }
         }
-        Ok(SlidingProblem {
-            material,
-            period,
-            shape,
-            friction,
-            adhesive_friction,
-            wear,
-            speed,
-            load,
-            convention: self.convention,
-        })
+        Ok(SlidingProblem { row, friction, adhesive_friction, wear, speed, load, convention: self.convention })
     }
 }
 
@@ -202,9 +186,9 @@ impl SlidingProblem {
     /// A builder holding this problem's values (to change one and rebuild).
     pub fn to_builder(&self) -> SlidingProblemBuilder {
         SlidingProblemBuilder {
-            material: Some(self.material.clone()),
-            period: Some(self.period.clone()),
-            shape: Some(self.shape.clone()),
+            material: Some(self.row.material().clone()),
+            period: Some(self.row.period().clone()),
+            shape: Some(self.row.shape().clone()),
             friction: Some(self.friction.clone()),
             adhesive_friction: Some(self.adhesive_friction.clone()),
             wear: Some(self.wear.clone()),
@@ -214,18 +198,6 @@ impl SlidingProblem {
         }
     }
 
-    /// Half-plane material.
-    pub fn material(&self) -> &Material {
-        &self.material
-    }
-    /// Period L, or a single punch.
-    pub fn period(&self) -> &Period {
-        &self.period
-    }
-    /// Punch shape.
-    pub fn shape(&self) -> &PunchShape {
-        &self.shape
-    }
     /// Coulomb friction coefficient mu >= 0.
     pub fn friction(&self) -> &Exact {
         &self.friction
@@ -261,6 +233,12 @@ impl SlidingProblem {
     /// kappa = E* cW / 2 - beta mu (docs/theory.md section 3, the paper's (2.8)), exact.
     pub fn kappa(&self) -> Exact {
         let two = Exact::from_integer(2.into());
-        self.material.contact_modulus() * &self.wear / two - self.material.beta() * &self.friction
+        self.row.material().contact_modulus() * &self.wear / two - self.row.material().beta() * &self.friction
+    }
+}
+/// The punch row: material, period and shape.
+impl OnPunchRow for SlidingProblem {
+    fn row(&self) -> &PunchRow {
+        &self.row
     }
 }

@@ -176,7 +176,7 @@ pub fn held_digits_mpfr(printed: &str, value: &Float, scale: &Float, digits: f64
 }
 
 /// [`held_digits_mpfr`] for an `f64` value and scale.
-pub fn held_digits_f64(printed: &str, value: f64, scale: f64, digits: f64) -> f64 {
+pub(crate) fn held_digits_f64(printed: &str, value: f64, scale: f64, digits: f64) -> f64 {
     if !value.is_finite() {
         return 0.0;
     }
@@ -192,7 +192,7 @@ pub fn significant_digits(value: f64, scale: f64, digits: f64, requested: u32) -
 }
 
 /// [`Printed`] for an MPFR value (module doc).
-pub fn significant_digits_mpfr(value: &Float, scale: &Float, digits: f64, requested: u32) -> Printed {
+pub(crate) fn significant_digits_mpfr(value: &Float, scale: &Float, digits: f64, requested: u32) -> Printed {
     let log = |x: &Float| (x.is_normal()).then(|| Float::with_val(64, x.abs_ref()).log10().to_f64());
     significant(log(value), log(scale), digits, requested)
 }
@@ -214,7 +214,7 @@ pub fn fmt_f64(value: f64, sig: usize) -> String {
 }
 
 /// An `f64` value printed under the rule of the module doc.
-pub fn print_f64(value: f64, scale: f64, digits: f64, requested: u32) -> String {
+pub(crate) fn print_f64(value: f64, scale: f64, digits: f64, requested: u32) -> String {
     match significant_digits(value, scale, digits, requested) {
         Printed::Zero => "0".to_string(),
         Printed::Significant(n) => fmt_f64(value, n),
@@ -250,7 +250,7 @@ pub fn readable_f64(value: f64) -> String {
 }
 
 /// [`readable_f64`] for an MPFR value (values beyond the `f64` range in scientific notation).
-pub fn readable_mpfr(value: &Float) -> String {
+pub(crate) fn readable_mpfr(value: &Float) -> String {
     let v = value.to_f64();
     if value.is_zero() || (v.is_finite() && v.abs() >= 1e-300) {
         readable_f64(v)

@@ -57,7 +57,7 @@ impl Clenshaw {
     }
 
     /// sum_j c_j T_j(x) into `out` (rounded to `prec` bits, the precision `out` is set to).
-    pub fn evaluate_into(&mut self, coeffs: &[Float], x: &Float, out: &mut Float) {
+    pub(crate) fn evaluate_into(&mut self, coeffs: &[Float], x: &Float, out: &mut Float) {
         let prec = self.prec;
         let Clenshaw { b0, b1, b2, two_x, .. } = self;
         b1.assign(0);

@@ -25,7 +25,7 @@ impl ComplexSeries {
         ComplexSeries { coeffs }
     }
     /// From real coefficients.
-    pub fn from_real(coeffs: &[Float], prec: u32) -> Self {
+    pub(crate) fn from_real(coeffs: &[Float], prec: u32) -> Self {
         ComplexSeries { coeffs: coeffs.iter().map(|c| Complex::with_val(prec, c)).collect() }
     }
     /// The constant `c` + O(t^len).
@@ -80,7 +80,7 @@ impl ComplexSeries {
         }
     }
     /// self + c (added to the constant term).
-    pub fn add_constant(&self, c: &Complex) -> Self {
+    pub(crate) fn add_constant(&self, c: &Complex) -> Self {
         let mut out = self.clone();
         if let Some(c0) = out.coeffs.first_mut() {
             *c0 += c;
@@ -92,7 +92,7 @@ impl ComplexSeries {
         ComplexSeries { coeffs: self.coeffs.iter().map(|a| Complex::with_val(self.prec(), a * c)).collect() }
     }
     /// x self, x real.
-    pub fn scale_real(&self, x: &Float) -> Self {
+    pub(crate) fn scale_real(&self, x: &Float) -> Self {
         ComplexSeries { coeffs: self.coeffs.iter().map(|a| Complex::with_val(self.prec(), a * x)).collect() }
     }
     /// t self (the length is kept: the top coefficient is dropped).
@@ -194,12 +194,12 @@ impl ComplexSeries {
 }
 
 /// The coefficients of sinc(z) = sin(z)/z as a series in u = z^2: (-1)^k/(2k+1)!, k < `len`.
-pub fn sinc_in_square(len: usize, prec: u32) -> Vec<Complex> {
+pub(crate) fn sinc_in_square(len: usize, prec: u32) -> Vec<Complex> {
     alternating_factorials(len, 1, prec)
 }
 
 /// The coefficients of cos(z) as a series in u = z^2: (-1)^k/(2k)!, k < `len`.
-pub fn cos_in_square(len: usize, prec: u32) -> Vec<Complex> {
+pub(crate) fn cos_in_square(len: usize, prec: u32) -> Vec<Complex> {
     alternating_factorials(len, 0, prec)
 }
 

@@ -4,7 +4,7 @@
 /// `y = 2 asin(sqrt(-expm1(-t)/2))`. The textbook form is `acos(1) = 0` once `t < 2^-53`, and loses
 /// half its digits well above that (issue 34: Kuznetsov's first guess cos(lambda) = exp(-t) [2.15]
 /// at P2 = 1e-20 gave lambda = 0). NaN for a negative or NaN `t`; pi/2 (to round-off) for `t = inf`.
-pub fn acos_exp_neg(t: f64) -> f64 {
+pub(crate) fn acos_exp_neg(t: f64) -> f64 {
     if t.is_nan() || t < 0.0 {
         return f64::NAN;
     }

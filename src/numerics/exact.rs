@@ -7,7 +7,7 @@ use num_rational::BigRational;
 use rug::{Float, Integer, Rational};
 
 /// Converts a num-bigint integer to a GMP integer exactly.
-pub fn to_integer(n: &num_bigint::BigInt) -> Integer {
+pub(crate) fn to_integer(n: &num_bigint::BigInt) -> Integer {
     let (sign, digits) = n.to_u32_digits();
     let mut z = Integer::from_digits(&digits, rug::integer::Order::Lsf);
     if sign == num_bigint::Sign::Minus {
@@ -139,7 +139,7 @@ impl SmallRational {
     }
 
     /// The same value as a [`BigRational`].
-    pub fn to_big(self) -> BigRational {
+    pub(crate) fn to_big(self) -> BigRational {
         BigRational::new_raw(self.num.into(), self.den.into())
     }
 

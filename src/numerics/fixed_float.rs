@@ -72,14 +72,14 @@ impl<const L: usize> Fixed<L> {
 
     /// -self.
     #[inline(always)]
-    pub fn negated(mut self) -> Self {
+    pub(crate) fn negated(mut self) -> Self {
         self.neg = !self.neg;
         self
     }
 
     /// 2^k self (exact).
     #[inline(always)]
-    pub fn mul_2exp(mut self, k: i64) -> Self {
+    pub(crate) fn mul_2exp(mut self, k: i64) -> Self {
         if !self.is_zero() {
             self.exp += k;
         }
@@ -87,7 +87,7 @@ impl<const L: usize> Fixed<L> {
     }
 
     /// |self| against |b|.
-    pub fn cmp_abs(&self, b: &Self) -> std::cmp::Ordering {
+    pub(crate) fn cmp_abs(&self, b: &Self) -> std::cmp::Ordering {
         match (self.is_zero(), b.is_zero()) {
             (true, true) => std::cmp::Ordering::Equal,
             (true, false) => std::cmp::Ordering::Less,

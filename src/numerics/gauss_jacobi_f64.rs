@@ -57,7 +57,7 @@ pub enum QuadratureError {
 
 /// Monic Jacobi recurrence coefficients: p_{k+1} = (u - a_k) p_k - b_k p_{k-1}, k = 0..n-1,
 /// b_0 = mu0 (Gautschi 2004, Table 1.1). Returns (a, b) with `b[0]` = mu0.
-pub fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>) {
+pub(crate) fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>) {
     let s = alpha + beta;
     let mut a = Vec::with_capacity(n);
     let mut b = Vec::with_capacity(n);
@@ -83,7 +83,7 @@ pub fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>
 /// s = 1: 2 pi alpha (1 - alpha)/sin(pi alpha); s = 0: 2 pi alpha / sin(pi alpha); s = -1: pi / sin(pi (alpha + 1)).
 /// With alpha = 1/2 - theta, s = 1: mu0 = pi (1/2 - 2 theta^2)/cos(pi theta); s = -1 (1/omega):
 /// mu0 = pi/cos(pi theta) = J_0 (docs/theory.md [3.5]).
-pub fn jacobi_mass(alpha: f64, beta: f64) -> f64 {
+pub(crate) fn jacobi_mass(alpha: f64, beta: f64) -> f64 {
     let s = alpha + beta;
     let sinc_pi = |z: f64| {
         if z == 0.0 {

@@ -220,7 +220,7 @@ pub fn clear_cache() {
 }
 
 /// $\mu_0 = \int_{-1}^1 (1-u)^\alpha (1+u)^\beta du = 2^{\alpha+\beta+1}\Gamma(\alpha+1)\Gamma(\beta+1)/\Gamma(\alpha+\beta+2)$ (DLMF 5.12.1).
-pub fn jacobi_mu0(alpha: &Float, beta: &Float, prec: u32) -> Float {
+pub(crate) fn jacobi_mu0(alpha: &Float, beta: &Float, prec: u32) -> Float {
     let ap1 = Float::with_val(prec, alpha + 1u32);
     let bp1 = Float::with_val(prec, beta + 1u32);
     let abp2 = Float::with_val(prec, &ap1 + &bp1);

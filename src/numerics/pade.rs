@@ -119,7 +119,7 @@ fn value_of(p: &Pade<Q>, w: &Float, prec: u32) -> Float {
 
 /// The complex zeros of a polynomial with exact coefficients (low to high, the last non-zero),
 /// by the Aberth-Ehrlich iteration at `ROOT_BITS` bits. Empty for a constant.
-pub fn polynomial_roots(c: &[Q]) -> Vec<Complex> {
+pub(crate) fn polynomial_roots(c: &[Q]) -> Vec<Complex> {
     let prec = ROOT_BITS;
     let mut c: Vec<Float> = c.iter().map(|a| to_float(a, prec)).collect();
     while c.last().is_some_and(|a| a.is_zero()) {
@@ -179,7 +179,7 @@ pub fn polynomial_roots(c: &[Q]) -> Vec<Complex> {
 }
 
 /// A complex number as `1.23456` or `1.23456 + 0.5i` (6 significant digits).
-pub fn complex_text(z: &Complex) -> String {
+pub(crate) fn complex_text(z: &Complex) -> String {
     let (re, im) = (z.real().to_f64(), z.imag().to_f64());
     let scale = re.abs().max(im.abs());
     if im.abs() <= 1e-12 * scale {
@@ -341,7 +341,7 @@ pub struct Conformal {
 
 impl Conformal {
     /// z(w); `None` when w lies on the cut (or beyond the branch point of a real cut).
-    pub fn z_of(&self, w: &Float) -> Option<Float> {
+    pub(crate) fn z_of(&self, w: &Float) -> Option<Float> {
         let prec = w.prec().max(self.radius.prec());
         let u = Float::with_val(prec, w / &self.radius);
         match self.cut {

@@ -27,7 +27,7 @@ pub fn precision_for(digits: u32) -> u32 {
 }
 
 /// ceil(digits log2 10): the bits that hold `digits` decimal digits.
-pub fn bits_for_digits(digits: u32) -> u32 {
+pub(crate) fn bits_for_digits(digits: u32) -> u32 {
     (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32
 }
 

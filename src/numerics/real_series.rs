@@ -17,7 +17,7 @@ use rug::Float;
 
 /// `a b` truncated to `len` terms (missing coefficients of a shorter operand are unknown, so
 /// `len` must not exceed either length).
-pub fn mul_trunc(a: &[Float], b: &[Float], len: usize, prec: u32) -> Vec<Float> {
+pub(crate) fn mul_trunc(a: &[Float], b: &[Float], len: usize, prec: u32) -> Vec<Float> {
     assert!(len <= a.len() && len <= b.len(), "mul_trunc: {len} terms from operands of {} and {}", a.len(), b.len());
     (0..len)
         .map(|k| {
@@ -128,7 +128,7 @@ pub fn compose_several(fs: &[&[Float]], g: &[Float], len: usize, prec: u32) -> O
 
 /// The coefficients of tan(z)/z and sec(z) as series in v = z^2, `len` terms each:
 /// tan(z)/z = sinc(z)/cos(z), sec(z) = 1/cos(z), from (-1)^k/(2k+1)! and (-1)^k/(2k)!.
-pub fn tan_sec_in_square(len: usize, prec: u32) -> (Vec<Float>, Vec<Float>) {
+pub(crate) fn tan_sec_in_square(len: usize, prec: u32) -> (Vec<Float>, Vec<Float>) {
     let mut sinc = Vec::with_capacity(len);
     let mut cos = Vec::with_capacity(len);
     let mut term = Float::with_val(prec, 1);

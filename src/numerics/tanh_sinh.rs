@@ -69,7 +69,7 @@ impl TanhSinh {
 }
 
 /// The same rule in `f64`: (s, 1 - s, weight) triples.
-pub fn tanh_sinh_f64(bits: u32, refine: f64) -> Vec<(f64, f64, f64)> {
+pub(crate) fn tanh_sinh_f64(bits: u32, refine: f64) -> Vec<(f64, f64, f64)> {
     let (h, t_max) = step(bits, refine);
     let n = (t_max / h).ceil() as i64;
     let pi = std::f64::consts::PI;

@@ -100,7 +100,7 @@ pub fn eps(material: &Material, prec: u32) -> Float {
 }
 
 /// cosh(pi eps) = (kappa + 1)/(2 sqrt(kappa)), kappa = 3 - 4 nu.
-pub fn cosh_pi_eps(material: &Material, prec: u32) -> Float {
+pub(crate) fn cosh_pi_eps(material: &Material, prec: u32) -> Float {
     let w = prec + CONSTANT_GUARD_BITS;
     let kappa = to_float(&material.kolosov(), w);
     let s = Float::with_val(w, kappa.sqrt_ref());
@@ -108,7 +108,7 @@ pub fn cosh_pi_eps(material: &Material, prec: u32) -> Float {
 }
 
 /// B = pi/cosh(pi eps) [docs/theory.md section 5].
-pub fn b_const(material: &Material, prec: u32) -> Float {
+pub(crate) fn b_const(material: &Material, prec: u32) -> Float {
     let w = prec + CONSTANT_GUARD_BITS;
     let pi = Float::with_val(w, Constant::Pi);
     Float::with_val(prec, pi / cosh_pi_eps(material, w))
@@ -179,7 +179,7 @@ pub fn s_const_f64(eps: f64) -> f64 {
 /// [docs/theory.md sections 4, 5]: M_0 = B/2 + i S, M_1 = 1 + 2 i eps M_0,
 /// (m+1) M_{m+1} = m M_{m-1} + 2 i eps M_m. The recurrence is neutrally stable (both solutions
 /// grow like m^{-1/2}); a few guard bits suffice for m up to thousands.
-pub fn half_range_moments(material: &Material, count: usize, prec: u32) -> Vec<Complex> {
+pub(crate) fn half_range_moments(material: &Material, count: usize, prec: u32) -> Vec<Complex> {
     let w = prec + CONSTANT_GUARD_BITS;
     let e = eps(material, w);
     let m0 = Complex::with_val(w, (b_const(material, w) / 2u32, s_const(&e, w)));

@@ -4,6 +4,7 @@
 //! ([`slope_warning`], docs/theory.md section 9). Re-exported from [`super::sliding`].
 
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Exact, ModelError, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use std::f64::consts::PI;
@@ -99,7 +100,7 @@ pub const MAX_CONTACT_SLOPE: f64 = 0.5;
 /// punch), and where: (|g'|, x). At the ends for the parabola, a convex polynomial (g' increasing)
 /// and the circle; the sinusoid's g' = (2 pi D/L) sin(2 pi x/L) peaks at x = +-L/4 when the contact
 /// holds it. `f64` from the exact parameters (a warning's figure, not a printed result).
-pub fn max_contact_slope(shape: &PunchShape, period: Option<f64>, left: f64, right: f64) -> (f64, f64) {
+pub(crate) fn max_contact_slope(shape: &PunchShape, period: Option<f64>, left: f64, right: f64) -> (f64, f64) {
     let f = |q: &Exact| to_f64(q).unwrap_or(f64::NAN);
     let slope: Box<dyn Fn(f64) -> f64> = match shape {
         PunchShape::Parabolic { k } => {
@@ -126,7 +127,9 @@ pub fn max_contact_slope(shape: &PunchShape, period: Option<f64>, left: f64, rig
         }
     };
     let (l, r) = (slope(left).abs(), slope(right).abs());
-    if r >= l {
+    // A tie within rounding (a symmetric contact, whose two ends' slopes differ in the last bits
+    // of their evaluation) goes to the right end.
+    if r >= l * (1.0 - 1e-12) {
         (r, right)
     } else {
         (l, left)

@@ -21,6 +21,7 @@ pub use super::profile::{
     check_profile_on_contact, polynomial_derivative, row_height_f64, ShapeF64, CIRCLE_SIZE_CAP, MAX_CONTACT_SLOPE,
 };
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Convention, Exact, ModelError, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::exact::{to_f64, to_float, SmallRational};
 use rug::float::Constant;
@@ -33,12 +34,12 @@ use std::f64::consts::PI;
 pub const THETA_MARGIN: f64 = 1e-6;
 
 /// theta = arctan(kappa)/pi (docs/theory.md section 3), `f64`.
-pub fn theta_f64(kappa: f64) -> f64 {
+pub(crate) fn theta_f64(kappa: f64) -> f64 {
     kappa.atan() / PI
 }
 
 /// theta = arctan(kappa)/pi (docs/theory.md section 3), MPFR at the precision of `kappa`.
-pub fn theta_mpfr(kappa: &Float) -> Float {
+pub(crate) fn theta_mpfr(kappa: &Float) -> Float {
     let prec = kappa.prec();
     Float::with_val(prec, kappa.atan_ref()) / Float::with_val(prec, Constant::Pi)
 }
@@ -49,7 +50,7 @@ pub fn hertz_half_width_f64(p2: f64, e_star: f64, k: f64) -> f64 {
 }
 
 /// Hertz half-width a0 = sqrt(2 P2/(pi E* k)) (docs/theory.md section 6), MPFR.
-pub fn hertz_half_width_mpfr(p2: &Float, e_star: &Float, k: &Float) -> Float {
+pub(crate) fn hertz_half_width_mpfr(p2: &Float, e_star: &Float, k: &Float) -> Float {
     let prec = p2.prec();
     let pi = Float::with_val(prec, Constant::Pi);
     let den = Float::with_val(prec, &pi * e_star) * k;
@@ -62,7 +63,7 @@ pub fn single_punch_half_length_f64(a0: f64, theta: f64) -> f64 {
 }
 
 /// Single-punch half-length l_s = a0/sqrt(1 - 4 theta^2) [3.10], MPFR.
-pub fn single_punch_half_length_mpfr(a0: &Float, theta: &Float) -> Float {
+pub(crate) fn single_punch_half_length_mpfr(a0: &Float, theta: &Float) -> Float {
     let prec = a0.prec();
     let t2 = Float::with_val(prec, theta * theta) * 4u32;
     Float::with_val(prec, a0 / Float::with_val(prec, 1u32 - t2).sqrt())
@@ -70,7 +71,7 @@ pub fn single_punch_half_length_mpfr(a0: &Float, theta: &Float) -> Float {
 
 /// Osculating curvature k = g''(0)/2 (docs/theory.md section 9), `f64`: k for g = k x^2,
 /// 2 pi^2 D/L^2 for the sinusoid [2.16], c_2 for a polynomial, 1/(2 R) for the circle.
-pub fn osculating_k_f64(shape: &ShapeF64, period: Option<f64>) -> f64 {
+pub(crate) fn osculating_k_f64(shape: &ShapeF64, period: Option<f64>) -> f64 {
     match (shape, period) {
         (ShapeF64::Parabolic { k }, _) => *k,
         (ShapeF64::Sinusoidal { d }, Some(l)) => 2.0 * PI * PI * d / (l * l),
@@ -82,7 +83,7 @@ pub fn osculating_k_f64(shape: &ShapeF64, period: Option<f64>) -> f64 {
 
 /// Osculating curvature k = g''(0)/2 (docs/theory.md section 9), MPFR: k for g = k x^2,
 /// 2 pi^2 D/L^2 for the sinusoid [2.16], c_2 for a polynomial, 1/(2 R) for the circle.
-pub fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
+pub(crate) fn osculating_k_mpfr(shape: &ShapeMpfr, period: Option<&Float>) -> Float {
     match (shape, period) {
         (ShapeMpfr::Parabolic { k }, _) => k.clone(),
         (ShapeMpfr::Sinusoidal { d }, Some(l)) => {
@@ -528,7 +529,7 @@ impl SlidingParamsMpfr {
     }
 
     /// Exponents (alpha, beta) of omega = (1-u)^{1/2-theta} (1+u)^{1/2+theta} (docs/theory.md section 2).
-    pub fn weight_exponents(&self) -> (Float, Float) {
+    pub(crate) fn weight_exponents(&self) -> (Float, Float) {
         let a = Float::with_val(self.prec, 0.5f64 - Float::with_val(self.prec, &self.theta));
         let b = Float::with_val(self.prec, &self.theta + 0.5f64);
         (a, b)

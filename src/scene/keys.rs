@@ -168,7 +168,7 @@ pub fn allowed(table: &str, kind: Kind, shape: &str) -> Vec<&'static str> {
 }
 
 /// The keys of `table` whatever the shape (for tables without shape-specific keys).
-pub fn allowed_any(table: &str, kind: Kind) -> Vec<&'static str> {
+pub(crate) fn allowed_any(table: &str, kind: Kind) -> Vec<&'static str> {
     allowed(table, kind, "")
 }
 

@@ -78,6 +78,7 @@
 pub mod keys;
 pub mod parse;
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Exact, LoadingLawProblem, SlidingProblem};
 
 /// The solution method a scene or the command line asks for.
@@ -135,7 +136,7 @@ pub struct OutputSpec {
 }
 
 /// The problem a scene describes.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum SceneProblem {
     /// Problem 1.
     Sliding(SlidingProblem),
@@ -198,7 +199,7 @@ impl Scene {
 
 /// The problem with its load or size replaced by `v` (None if the parameter does not apply or the
 /// value is invalid; the parser rejects both).
-pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
+pub(crate) fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) -> Option<SceneProblem> {
     use crate::model::{AdhesionSize, LawSize, SlidingLoad};
     match (problem, parameter) {
         (SceneProblem::Sliding(p), SweepParameter::NormalLoad | SweepParameter::HalfLength) => {
@@ -233,7 +234,7 @@ pub fn with_value(problem: &SceneProblem, parameter: SweepParameter, v: &Exact) 
 
 /// `p` with another size and convention (the model keeps its fields private and validates in
 /// [`LoadingLawProblem::new`]; the rest of the statement is kept).
-pub fn rebuild_law(
+pub(crate) fn rebuild_law(
     p: &LoadingLawProblem,
     size: crate::model::LawSize,
     convention: crate::model::Convention,

@@ -68,7 +68,7 @@ fn parse_convention(problem: &Table) -> Result<Convention, ModelError> {
 }
 
 /// A convention by its name: "paper" or "periodic" ([`Convention::name`]).
-pub fn parse_convention_name(name: &str) -> Option<Convention> {
+pub(crate) fn parse_convention_name(name: &str) -> Option<Convention> {
     [Convention::Paper, Convention::PeriodicSurface].into_iter().find(|c| c.name() == name)
 }
 
@@ -470,7 +470,7 @@ mod tests {
     /// number nor infinite gets an error that says "inf" is accepted.
     #[test]
     fn the_single_punch_is_inf_or_infinity() {
-        use crate::model::Period;
+        use crate::model::{OnPunchRow, Period};
         use crate::scene::SceneProblem;
         for text in ["\"inf\"", "\"Infinity\"", "\" INF \"", "\"infinity\""] {
             let s = super::parse_scene(&SCENE.replace("PERIOD", text)).unwrap_or_else(|e| panic!("{text}: {e}"));

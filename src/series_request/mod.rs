@@ -113,7 +113,7 @@ pub fn max_order(object: SeriesObject) -> usize {
 
 /// What each object's order limit is, as the `--order` error states it (issue 30: the limit of the
 /// object and route asked, not another object's).
-pub fn order_limit_text(object: SeriesObject) -> &'static str {
+pub(crate) fn order_limit_text(object: SeriesObject) -> &'static str {
     match object {
         SeriesObject::Kernel => "the kernel series' limit",
         SeriesObject::Jacobi => "the Jacobi moments' limit",
@@ -141,7 +141,7 @@ pub fn parse_order(flag: &str, text: &str, max: usize) -> Result<usize, ModelErr
 }
 
 /// Parses an exact rational option.
-pub fn parse_exact(flag: &str, text: &str) -> Result<Q, ModelError> {
+pub(crate) fn parse_exact(flag: &str, text: &str) -> Result<Q, ModelError> {
     parse_rational(text).map_err(|_| {
         ModelError::new(flag, text, "must be an exact number: an integer, a ratio like 1/10, or a decimal like 0.25")
     })

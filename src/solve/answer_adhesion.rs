@@ -4,6 +4,7 @@
 
 use super::render::{AdhesionAnswer, DigitsKind, FieldRow, Measured, Num, Provenance, ZoneRow};
 use crate::adhesion::{AdhesionSolutionF64, Digits, ScalesF64, ScalesMpfr, VerifiedSolution};
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Exact, Period};
 
 fn accuracy(d: &Digits) -> Vec<(String, f64)> {
@@ -75,7 +76,7 @@ fn convention_key(p: &AdhesionProblem) -> Option<&'static str> {
 }
 
 /// The answer of the f64 method at the scene's points `points` (x/a, exact).
-pub fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]) -> AdhesionAnswer {
+pub(crate) fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &[Exact]) -> AdhesionAnswer {
     let d = &s.digits_estimated;
     let sc = ScalesF64::new(p, s.half_width, s.normal_load);
     let own = |x: f64| Measured::f64(x, x, d.size);

@@ -23,9 +23,11 @@
 //! (null inside the tension zone): the friction complete adhesion needs grows without bound
 //! toward the ends, so it is given against the distance.
 
-use super::render::{digits_text, Measured, Provenance};
+use super::render::{digits_text, DigitsKind, Measured, Provenance};
+use super::values::Values;
 use crate::loading_law::verified::{LawPathPoint, LawPoint, LawSolution, LawValues};
 use crate::loading_law::verified_f64::LawSolutionF64;
+use crate::model::OnPunchRow;
 use crate::model::{Exact, LoadingLaw, LoadingLawProblem};
 use crate::numerics::exact::to_float;
 use rug::Float;
@@ -33,7 +35,7 @@ use serde_json::{json, Map, Value};
 
 /// The law as the scene gives it: `{"tangential_ratio": "1/5"}` or
 /// `{"loading_law": ["0", "1/5", "1/100"]}` (exact text).
-pub fn law_json(law: &LoadingLaw) -> Value {
+pub(crate) fn law_json(law: &LoadingLaw) -> Value {
     match law {
         LoadingLaw::Linear(n) => json!({"tangential_ratio": exact_series::q_text(n)}),
         LoadingLaw::Polynomial(c) => {
@@ -136,8 +138,10 @@ fn path_json_held(path: &[LawPathPoint], digits: f64, requested: u32) -> (Value,
     (v, held.get())
 }
 
-/// The JSON object of a verified loading-law solution at `requested` digits.
-pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32) -> Map<String, Value> {
+/// The JSON object of a verified loading-law solution at `requested` digits, and its typed values
+/// (the scalars `lambda`, `a`, `b`, `c`, `l`, `P1`, `P2`, `friction_needed`; the fields `x`, `psi`,
+/// `phi`, `q1`, `q2` at `xh`).
+pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32) -> (Map<String, Value>, Values) {
     let prov = Provenance {
         method: "mpfr",
         bits: Some(sol.values.l.prec()),
@@ -151,7 +155,11 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
 /// The JSON object of the f64 marching solution: the same keys as [`law_answer_json`], the values
 /// carried exactly into 53-bit numbers and printed under the same rule with the f64 method's
 /// digits; `provenance.nodes` is blocks x points per block.
-pub fn law_answer_json_f64(p: &LoadingLawProblem, sol: &LawSolutionF64, requested: u32) -> Map<String, Value> {
+pub(crate) fn law_answer_json_f64(
+    p: &LoadingLawProblem,
+    sol: &LawSolutionF64,
+    requested: u32,
+) -> (Map<String, Value>, Values) {
     let v = &sol.values;
     let f = |x: f64| Float::with_val(53, x);
     let values = LawValues {
@@ -183,7 +191,12 @@ pub fn law_answer_json_f64(p: &LoadingLawProblem, sol: &LawSolutionF64, requeste
     answer_json(p, &LawSolution { values, digits: sol.digits }, requested, prov)
 }
 
-fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: Provenance) -> Map<String, Value> {
+fn answer_json(
+    p: &LoadingLawProblem,
+    sol: &LawSolution,
+    requested: u32,
+    prov: Provenance,
+) -> (Map<String, Value>, Values) {
     let v = &sol.values;
     let d = &sol.digits;
     let sc = LawScales::new(p, sol);
@@ -191,29 +204,43 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     // digits claimed for it): ends (lambda, a, b, c, l, x), loads, fields (with the friction needed).
     let held = [d.ends, d.loads, d.fields].map(std::cell::Cell::new);
     let (ends_g, loads_g, fields_g) = (&held[0], &held[1], &held[2]);
-    let print_in = |group: &std::cell::Cell<f64>, x: &Float, scale: &Float, digits: f64| {
-        let m = Measured::mpfr(x.clone(), scale, digits);
-        group.set(group.get().min(m.held(requested)));
-        m.print(requested)
+    // Every printed number is also recorded, typed, under its key (and point).
+    let values = std::cell::RefCell::new(Values::default());
+    let print_at =
+        |group: &std::cell::Cell<f64>, key: &str, at: Option<&Exact>, x: &Float, scale: &Float, digits: f64| {
+            let m = Measured::mpfr(x.clone(), scale, digits);
+            group.set(group.get().min(m.held(requested)));
+            let q = m.quantity(requested, DigitsKind::Verified);
+            let text = q.text.clone();
+            match at {
+                None => values.borrow_mut().push(key, q),
+                Some(xh) => values.borrow_mut().push_point(key, "xh", exact_series::q_text(xh), q),
+            }
+            text
+        };
+    let print_in = |group: &std::cell::Cell<f64>, key: &str, x: &Float, scale: &Float, digits: f64| {
+        print_at(group, key, None, x, scale, digits)
     };
     let mut m = Map::new();
     m.insert("problem".into(), json!("adhesion"));
     m.insert("law".into(), law_json(p.law()));
     // lambda = pi l/L: none for the single punch.
     let lambda = match p.period() {
-        crate::model::Period::Finite(_) => json!(print_in(ends_g, &v.lambda, &v.lambda, d.ends)),
+        crate::model::Period::Finite(_) => json!(print_in(ends_g, "lambda", &v.lambda, &v.lambda, d.ends)),
         crate::model::Period::Infinite => Value::Null,
     };
     m.insert("lambda".into(), lambda);
     for (key, x) in [("a", &v.a), ("b", &v.b), ("c", &v.c), ("l", &v.l)] {
-        m.insert(key.into(), json!(print_in(ends_g, x, &sc.length, d.ends)));
+        m.insert(key.into(), json!(print_in(ends_g, key, x, &sc.length, d.ends)));
     }
-    m.insert("P1".into(), json!(print_in(loads_g, &v.p1, &sc.load, d.loads)));
-    m.insert("P2".into(), json!(print_in(loads_g, &v.p2, &sc.load, d.loads)));
+    m.insert("P1".into(), json!(print_in(loads_g, "P1", &v.p1, &sc.load, d.loads)));
+    m.insert("P2".into(), json!(print_in(loads_g, "P2", &v.p2, &sc.load, d.loads)));
     let friction = friction_needed(&v.points, &sc.stress, d.fields);
     m.insert(
         "friction_needed".into(),
-        friction.as_ref().map_or(Value::Null, |(r, scale, _)| json!(print_in(fields_g, r, scale, d.fields))),
+        friction
+            .as_ref()
+            .map_or(Value::Null, |(r, scale, _)| json!(print_in(fields_g, "friction_needed", r, scale, d.fields))),
     );
     m.insert("friction_needed_at_xh".into(), friction.as_ref().map_or(Value::Null, |(_, _, xh)| json!(xh)));
     let ends = if v.ends.is_empty() { Value::Null } else { end_stress_json(sol, requested) };
@@ -225,11 +252,11 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
         .map(|pt| {
             json!({
                 "xh": exact_series::q_text(&pt.xh),
-                "x": print_in(ends_g, &pt.x, &sc.length, d.ends),
-                "psi": print_in(fields_g, &pt.psi, &sc.psi, d.fields),
-                "phi": print_in(fields_g, &pt.phi, &sc.phi, d.fields),
-                "q1": print_in(fields_g, &pt.q1, &sc.stress, d.fields),
-                "q2": print_in(fields_g, &pt.q2, &sc.stress, d.fields),
+                "x": print_at(ends_g, "x", Some(&pt.xh), &pt.x, &sc.length, d.ends),
+                "psi": print_at(fields_g, "psi", Some(&pt.xh), &pt.psi, &sc.psi, d.fields),
+                "phi": print_at(fields_g, "phi", Some(&pt.xh), &pt.phi, &sc.phi, d.fields),
+                "q1": print_at(fields_g, "q1", Some(&pt.xh), &pt.q1, &sc.stress, d.fields),
+                "q2": print_at(fields_g, "q2", Some(&pt.xh), &pt.q2, &sc.stress, d.fields),
             })
         })
         .collect();
@@ -293,7 +320,7 @@ fn answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32, prov: P
     }
     m.insert("warnings".into(), Value::Array(warnings));
     m.insert("provenance".into(), prov.json());
-    m
+    (m, values.into_inner())
 }
 
 /// The ends' phases, tension zones and needed friction against the distance (module doc).

@@ -19,6 +19,7 @@
 //! Candidates are sorted by cost (ties: table order); the first predicted to meet the target wins.
 //! The table is read and written with the `csv` crate.
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionSize, LawSize, Period, PunchShape, SlidingLoad};
 use crate::params::sliding::SlidingParamsF64;
 use crate::scene::SceneProblem;
@@ -104,7 +105,7 @@ impl Case {
 
     /// The cases a scene's problem is predicted from: Problem 1 by punch shape; Problem 2 by every
     /// calibrated material (the prediction takes the worst of them: conservative in nu).
-    pub fn for_problem(problem: &SceneProblem) -> Vec<Case> {
+    pub(crate) fn for_problem(problem: &SceneProblem) -> Vec<Case> {
         match problem {
             SceneProblem::Sliding(p) => match p.shape() {
                 PunchShape::Parabolic { .. } => vec![Case::SlidingParabolic],
@@ -583,9 +584,9 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
 pub fn solve_chosen(
     scene: &crate::scene::Scene,
     mut choice: MethodChoice,
-) -> Result<(serde_json::Value, MethodChoice), crate::error::Error> {
+) -> Result<(super::Answer, MethodChoice), crate::error::Error> {
     let mut answer = super::solve_answer(scene, choice.request)?;
-    let Some(target) = choice.target_digits else { return Ok((answer.json, choice)) };
+    let Some(target) = choice.target_digits else { return Ok((answer, choice)) };
     let fallbacks = std::mem::take(&mut choice.fallbacks);
     for next in fallbacks {
         // The typed claim, as printed (one decimal): the answer's own statement of its accuracy.
@@ -609,7 +610,7 @@ pub fn solve_chosen(
         choice.request = next;
         answer = super::solve_answer(scene, next)?;
     }
-    Ok((answer.json, choice))
+    Ok((answer, choice))
 }
 
 /// Digits as the answer prints them (one decimal, [`super::render::digits_text`]): the choice

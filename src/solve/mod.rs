@@ -15,9 +15,11 @@ pub mod answer_series;
 pub mod choice;
 pub mod format;
 pub mod render;
+pub mod values;
 
 use crate::adhesion;
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Convention, LoadingLawProblem, Period, SlidingProblem};
 use crate::scene::{Method, Scene, SceneProblem};
 use crate::sliding::{self, collocation_f64};
@@ -49,14 +51,31 @@ pub struct Claim {
 }
 
 /// One solved scene: the typed claim of its accuracy, which the method choice reads to decide
-/// whether a dearer method must run ([`choice::solve_chosen`]), and the rendered JSON of
-/// `periodic-contact solve --json` (string values; docs/theory.md section 14).
+/// whether a dearer method must run ([`choice::solve_chosen`]), the typed values of each solution
+/// ([`values::Values`]: every printed number with its digits and scale) and the rendered JSON of
+/// `periodic-contact solve --json` (string values; docs/theory.md section 14), one rendering of
+/// the same numbers.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {
     /// The accuracy claimed.
     pub claim: Claim,
+    /// The values of each solution (Problem 1 may have several physical contacts; the first is the
+    /// one the JSON's top level prints).
+    pub solutions: Vec<values::Values>,
     /// The JSON.
     pub json: Value,
+}
+
+impl Answer {
+    /// The first solution's quantity printed under `key` (`"P2"`, `"l"`, `"half_width"`, ...).
+    pub fn get(&self, key: &str) -> Option<&values::Quantity> {
+        self.solutions.first().and_then(|v| v.get(key))
+    }
+
+    /// The first solution's field `name` at the requested points (`"p"`, `"q2"`, ...).
+    pub fn field(&self, name: &str) -> Option<&values::Field> {
+        self.solutions.first().and_then(|v| v.field(name))
+    }
 }
 
 /// Runs the scene and renders the JSON result ([`solve_answer`] without its claim).
@@ -67,7 +86,7 @@ pub fn solve_scene(scene: &Scene, req: SolveRequest) -> Result<Value, Error> {
 /// Runs the scene: the answer with its claimed accuracy. A non-finite number anywhere in the
 /// result is refused ([`Error::NoConvergence`]) rather than printed.
 pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
-    let (v, claim) = match &scene.problem {
+    let (v, claim, solutions) = match &scene.problem {
         SceneProblem::Sliding(p) => match req.method {
             Method::Mpfr => sliding_mpfr(p, scene, req),
             Method::F64 => sliding_f64(p, scene, req),
@@ -107,11 +126,12 @@ pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
             what: format!("the {} method produced a non-finite value at {path}", req.method.name()),
         });
     }
-    Ok(Answer { claim, json: v })
+    Ok(Answer { claim, solutions, json: v })
 }
 
-/// What a method returns here: the JSON and the claim of its (first) answer.
-type Rendered = (Value, Claim);
+/// What a method returns here: the JSON, the claim of its (first) answer and the typed values of
+/// each solution.
+type Rendered = (Value, Claim, Vec<values::Values>);
 
 /// The claim of a Problem 1 answer.
 fn sliding_claim(a: &render::SlidingAnswer) -> Claim {
@@ -137,9 +157,9 @@ fn with_periodic_hint(e: Error, p: &SlidingProblem) -> Error {
     }
 }
 
-/// The number a JSON answer prints under `key` (NaN when absent: no warning is then made).
-fn number(m: &Map<String, Value>, key: &str) -> f64 {
-    m.get(key).and_then(Value::as_str).and_then(|t| t.parse::<f64>().ok()).unwrap_or(f64::NAN)
+/// The value of the quantity printed under `key` (NaN when absent: no warning is then made).
+fn number(v: &values::Values, key: &str) -> f64 {
+    v.get(key).map_or(f64::NAN, |q| q.value)
 }
 
 /// Appends the small-slope warning of the contact [`left`, `right`] to the answer's `warnings`
@@ -201,14 +221,14 @@ pub const PAPER_CONVENTION_NOTE: &str =
 /// only when several contacts are physical); each answer's provenance names the punch
 /// ([`punch_json`]); `convention_note` ([`PAPER_CONVENTION_NOTE`]) where `paper` is solved with
 /// kappa != 0 or tau0 != 0 over a finite period.
-fn sliding_top(mut answers: Vec<Map<String, Value>>, p: &SlidingProblem) -> Value {
+fn sliding_top(mut answers: Vec<Map<String, Value>>, values: &[values::Values], p: &SlidingProblem) -> Value {
     for a in answers.iter_mut() {
         if let Some(Value::Object(prov)) = a.get_mut("provenance") {
             prov.insert("punch".into(), punch_json(p.shape()));
         }
     }
-    for a in answers.iter_mut() {
-        let (left, right) = (-number(a, "a"), number(a, "b"));
+    for (a, v) in answers.iter_mut().zip(values) {
+        let (left, right) = (-number(v, "a"), number(v, "b"));
         slope_warning(a, p.shape(), p.period(), left, right);
     }
     let mut top = Map::new();
@@ -232,7 +252,8 @@ fn sliding_mpfr(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<
         return Err(Error::NotPhysical { why: "no physical contact was found".into() });
     };
     let claim = sliding_claim(first);
-    Ok((sliding_top(answers.iter().map(|a| render::sliding_json(a, req.digits)).collect(), p), claim))
+    let values: Vec<_> = answers.iter().map(|a| render::sliding_values(a, req.digits)).collect();
+    Ok((sliding_top(answers.iter().map(|a| render::sliding_json(a, req.digits)).collect(), &values, p), claim, values))
 }
 
 fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
@@ -255,19 +276,22 @@ fn sliding_f64(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<R
             m
         })
         .collect();
-    Ok((sliding_top(answers, p), claim))
+    let values: Vec<_> = typed.iter().map(|a| render::sliding_values(a, shown)).collect();
+    Ok((sliding_top(answers, &values, p), claim, values))
 }
 
 fn sliding_series(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = sliding::series::solve_series(p, &scene.output.points, req.series_order, req.digits)?;
     let answer = answer_series::sliding_answer(&s, req.digits, p.convention());
-    Ok((sliding_top(vec![render::sliding_json(&answer, req.digits)], p), sliding_claim(&answer)))
+    let values = vec![render::sliding_values(&answer, req.digits)];
+    Ok((sliding_top(vec![render::sliding_json(&answer, req.digits)], &values, p), sliding_claim(&answer), values))
 }
 
 fn sliding_pade(p: &SlidingProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let s = sliding::series::pade::solve_pade(p, &scene.output.points, req.series_order, req.digits)?;
     let (m, answer) = answer_pade::sliding_json(&s, req.digits, p.convention());
-    Ok((sliding_top(vec![m], p), sliding_claim(&answer)))
+    let values = vec![render::sliding_values(&answer, req.digits)];
+    Ok((sliding_top(vec![m], &values, p), sliding_claim(&answer), values))
 }
 
 fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
@@ -275,10 +299,11 @@ fn adhesion_mpfr(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Resul
     let answer = answer_adhesion::mpfr_answer(p, &v);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, req.digits);
+    let values = render::adhesion_values(&answer, req.digits);
     m.insert("lambda_h".into(), lambda_h(p, req.digits));
-    let a = number(&m, "half_width");
+    let a = number(&values, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
-    Ok((Value::Object(m), claim))
+    Ok((Value::Object(m), claim, vec![values]))
 }
 
 /// `lambda_h`: the largest lambda at which complete adhesion keeps `digits` (the homogeneous mode's
@@ -307,28 +332,29 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     let answer = answer_adhesion::f64_answer(p, &s, &scene.output.points);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
+    let values = render::adhesion_values(&answer, shown);
     f64_digits(&mut m, req.digits);
     m.insert("lambda_h".into(), lambda_h(p, req.digits.min(crate::numerics::accuracy::F64_DIGITS_CAP as u32)));
-    let a = number(&m, "half_width");
+    let a = number(&values, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
-    Ok((Value::Object(m), claim))
+    Ok((Value::Object(m), claim, vec![values]))
 }
 
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
     let claim = Claim { digits: sol.digits.headline, kind: DigitsKind::Verified };
-    let mut m = answer_law::law_answer_json(p, &sol, req.digits);
-    law_note(&mut m, p);
-    Ok((Value::Object(m), claim))
+    let (mut m, values) = answer_law::law_answer_json(p, &sol, req.digits);
+    law_note(&mut m, &values, p);
+    Ok((Value::Object(m), claim, vec![values]))
 }
 
 /// The loading law's notes: the small-slope warning of its parabola, and in the `paper`
 /// convention with a tangential load (P1 != 0, so K != 0) `convention_note`, as for Problem 1.
-fn law_note(m: &mut Map<String, Value>, p: &LoadingLawProblem) {
+fn law_note(m: &mut Map<String, Value>, values: &values::Values, p: &LoadingLawProblem) {
     let parabola = crate::model::PunchShape::Parabolic { k: p.k().clone() };
-    let (left, right) = (-number(m, "a"), number(m, "b"));
+    let (left, right) = (-number(values, "a"), number(values, "b"));
     slope_warning(m, &parabola, p.period(), left, right);
     let tangential = match p.law() {
         crate::model::LoadingLaw::Linear(n) => !num_traits::Zero::is_zero(n),
@@ -359,8 +385,8 @@ fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
     let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
-    let mut m = answer_law::law_answer_json_f64(p, &sol, shown);
+    let (mut m, values) = answer_law::law_answer_json_f64(p, &sol, shown);
     f64_digits(&mut m, req.digits);
-    law_note(&mut m, p);
-    Ok((Value::Object(m), Claim { digits: sol.digits.headline, kind: DigitsKind::Verified }))
+    law_note(&mut m, &values, p);
+    Ok((Value::Object(m), Claim { digits: sol.digits.headline, kind: DigitsKind::Verified }, vec![values]))
 }

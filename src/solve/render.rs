@@ -7,6 +7,8 @@
 //! The scales are fixed per output in one table per problem: [`crate::params::sliding::SlidingScale`]
 //! and the Problem 2 scales of `crate::adhesion`.
 
+pub use super::values::DigitsKind;
+use super::values::{Quantity, Values};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::accuracy::{
     fmt_f64, fmt_mpfr, held_digits_f64, held_digits_mpfr, print_f64, print_mpfr, F64_PRINT_DIGITS,
@@ -70,6 +72,16 @@ impl Measured {
         }
     }
 
+    /// The typed value of the text [`Measured::print`] gives: its text, value, held digits
+    /// ([`Measured::held`]) and scale.
+    pub fn quantity(&self, requested: u32, kind: DigitsKind) -> Quantity {
+        let (value, scale) = match &self.pair {
+            ValueAndScale::F64(v, s) => (*v, *s),
+            ValueAndScale::Mpfr(v, s) => (v.to_f64(), s.to_f64()),
+        };
+        Quantity { text: self.print(requested), value, digits: self.held(requested), kind, scale: scale.abs() }
+    }
+
     /// The digits of its scale that the text [`Measured::print`] gives holds (its own digits
     /// less what the rounding of the text costs: [`held_digits_mpfr`]).
     pub fn held(&self, requested: u32) -> f64 {
@@ -93,15 +105,6 @@ fn held_accuracy(accuracy: &[(String, f64)], printed: impl Fn(&str) -> f64, othe
     let table: Vec<(String, f64)> = accuracy.iter().map(|(k, d)| (k.clone(), d.min(printed(k)))).collect();
     let head = table.iter().map(|(_, d)| *d).fold(others, f64::min);
     (table, head)
-}
-
-/// Whether the digits of an answer were verified (by a second run) or estimated.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DigitsKind {
-    /// Verified by a second run with more precision (MPFR) or more nodes (f64).
-    Verified,
-    /// Estimated (the truncated series' tail bound; the f64 method of Problem 2).
-    Estimated,
 }
 
 /// Where an answer came from.
@@ -233,6 +236,47 @@ fn opt(m: &Option<Measured>, requested: u32) -> Value {
     m.as_ref().map_or(Value::Null, |x| Value::String(x.print(requested)))
 }
 
+/// Every printed value of a Problem 1 answer under the key of the accuracy table that claims its
+/// digits ("p" or "p[i]" for the pressure, "x" for its points), or none (then the headline
+/// claims them).
+fn sliding_keyed(ans: &SlidingAnswer) -> Vec<(String, &Measured)> {
+    [
+        ("lambda", ans.lambda.as_ref()),
+        ("l", Some(&ans.l)),
+        ("a", Some(&ans.a)),
+        ("b", Some(&ans.b)),
+        ("c", Some(&ans.c)),
+        ("P1", Some(&ans.p1)),
+        ("P2", Some(&ans.p2)),
+        ("F_def", Some(&ans.f_def)),
+        ("wear_per_distance", ans.wear_per_distance.as_ref()),
+        ("wear_rate", ans.wear_rate.as_ref()),
+        ("worn_area_per_distance", ans.worn_area_per_distance.as_ref()),
+    ]
+    .into_iter()
+    .filter_map(|(k, m)| m.map(|m| (k.to_string(), m)))
+    .chain(ans.pressure.iter().enumerate().flat_map(|(i, r)| {
+        let p_key = if ans.accuracy.iter().any(|(k, _)| k == "p") { "p".to_string() } else { format!("p[{i}]") };
+        [("x".to_string(), &r.x), (p_key, &r.p)]
+    }))
+    .collect()
+}
+
+/// The typed values of one Problem 1 answer ([`sliding_json`]'s numbers): the scalars by key,
+/// the pressure's `x` and `p` at `xh`.
+pub(crate) fn sliding_values(ans: &SlidingAnswer, requested: u32) -> Values {
+    let mut v = Values::default();
+    let par = (requested as usize).min(ans.parameter_digits).max(1);
+    for (key, m) in sliding_keyed(ans).into_iter().take_while(|(k, _)| k != "x") {
+        v.push(&key, m.quantity(requested, ans.kind));
+    }
+    for r in &ans.pressure {
+        v.push_point("x", "xh", r.xh.fmt(par), r.x.quantity(requested, ans.kind));
+        v.push_point("p", "xh", r.xh.fmt(par), r.p.quantity(requested, ans.kind));
+    }
+    v
+}
+
 /// The JSON object of one Problem 1 answer (string values; `digits_verified` or
 /// `digits_estimated` by [`DigitsKind`]).
 pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
@@ -254,28 +298,7 @@ pub fn sliding_json(ans: &SlidingAnswer, requested: u32) -> Map<String, Value> {
         m.insert(k.clone(), v.clone());
     }
     m.insert("digits_requested".into(), json!(requested.to_string()));
-    // Every printed value under the key of the accuracy table that claims its digits ("p" or
-    // "p[i]" for the pressure), or none (then the headline claims them).
-    let keyed: Vec<(String, &Measured)> = [
-        ("lambda", ans.lambda.as_ref()),
-        ("l", Some(&ans.l)),
-        ("a", Some(&ans.a)),
-        ("b", Some(&ans.b)),
-        ("c", Some(&ans.c)),
-        ("P1", Some(&ans.p1)),
-        ("P2", Some(&ans.p2)),
-        ("F_def", Some(&ans.f_def)),
-        ("wear_per_distance", ans.wear_per_distance.as_ref()),
-        ("wear_rate", ans.wear_rate.as_ref()),
-        ("worn_area_per_distance", ans.worn_area_per_distance.as_ref()),
-    ]
-    .into_iter()
-    .filter_map(|(k, m)| m.map(|m| (k.to_string(), m)))
-    .chain(ans.pressure.iter().enumerate().flat_map(|(i, r)| {
-        let p_key = if ans.accuracy.iter().any(|(k, _)| k == "p") { "p".to_string() } else { format!("p[{i}]") };
-        [("x".to_string(), &r.x), (p_key, &r.p)]
-    }))
-    .collect();
+    let keyed = sliding_keyed(ans);
     let in_table = |k: &str| ans.accuracy.iter().any(|(t, _)| t == k);
     let printed = |key: &str| held_min(keyed.iter().filter(|(k, _)| k == key).map(|(_, m)| *m), requested);
     let others = held_min(keyed.iter().filter(|(k, _)| !in_table(k)).map(|(_, m)| *m), requested);
@@ -357,7 +380,7 @@ pub const ZONE_DELTA_DIGITS: usize = 4;
 /// as many as show [`ZONE_DELTA_DIGITS`] digits of `delta` (issue 30: 1 - 3.1e-11 printed
 /// "1.00000" before). Computed as 1 - delta in MPFR at the precision those digits need, so a
 /// delta below the solution's own 2^-prec still prints (x/a itself rounds to 1 there).
-pub fn zone_end_text(delta: &Num) -> String {
+pub(crate) fn zone_end_text(delta: &Num) -> String {
     let d = match delta {
         Num::F64(x) => Float::with_val(64, *x),
         Num::Mpfr(x) => x.clone(),
@@ -397,6 +420,23 @@ impl AdhesionAnswer {
     pub fn headline(&self) -> f64 {
         self.accuracy.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min)
     }
+}
+
+/// The typed values of one Problem 2 answer ([`adhesion_json`]'s numbers): `lambda`, `P2`,
+/// `half_width` and the fields at `x_over_a`.
+pub fn adhesion_values(ans: &AdhesionAnswer, requested: u32) -> Values {
+    let mut v = Values::default();
+    if let Some(l) = &ans.lambda {
+        v.push("lambda", l.quantity(requested, ans.kind));
+    }
+    v.push("P2", ans.p2.quantity(requested, ans.kind));
+    v.push("half_width", ans.half_width.quantity(requested, ans.kind));
+    for (name, rows) in &ans.fields {
+        for r in rows {
+            v.push_point(name, "x_over_a", r.x_over_a.clone(), r.value.quantity(requested, ans.kind));
+        }
+    }
+    v
 }
 
 /// The JSON object of one Problem 2 answer.

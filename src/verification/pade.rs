@@ -76,7 +76,7 @@ pub type AdhesionReference<'a> = &'a (dyn Fn(&AdhesionProblem, u32) -> Result<st
          + Sync);
 
 /// [`adhesion::solve_verified`] as an [`AdhesionReference`] without a memo.
-pub fn solve_adhesion_reference(
+pub(crate) fn solve_adhesion_reference(
     p: &AdhesionProblem,
     digits: u32,
 ) -> Result<std::sync::Arc<adhesion::VerifiedSolution>, adhesion::AdhesionError> {

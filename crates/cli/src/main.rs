@@ -37,7 +37,7 @@ fn run(config: RunConfig) -> anyhow::Result<()> {
                 choice.request.digits,
                 choice.reason
             );
-            let v = with_progress(&what, || periodic_contact::api::solve_with_choice(&scene, choice))?;
+            let v = with_progress(&what, || periodic_contact::api::solve_with_choice(&scene, choice))?.json;
             let text = match format {
                 Format::Json => json_text(&v),
                 _ => periodic_contact::solve::format::text(&v),

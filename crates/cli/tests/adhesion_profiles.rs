@@ -7,6 +7,7 @@
 
 use periodic_contact::adhesion::volterra_mpfr::VolterraParams;
 use periodic_contact::adhesion::{solve_f64, solve_mpfr, AdhesionError};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape};
 use rug::float::Constant;
 use rug::Float;

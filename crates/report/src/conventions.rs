@@ -21,6 +21,7 @@ use super::chart::{Chart, Curve, Draw, Legend};
 use super::runner::RunCache;
 use super::section::{fmt_digits, Ctx, Profile, Section};
 use periodic_contact::asymptotics::sliding::SlidingShape;
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{Convention, Exact, Period, PunchShape, SlidingLoad, SlidingProblem};
 use periodic_contact::numerics::accuracy::{print_mpfr, readable_f64};
 use periodic_contact::numerics::evaluate;

@@ -23,6 +23,7 @@
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::section::{fmt_digits, Ctx, Profile, Section};
 use periodic_contact::loading_law::verified::{solve_law_sampled, LawPathPoint, LawSolution, LawValues, PATH_STEPS};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{Exact, LawSize, LoadingLaw, LoadingLawProblem};
 use periodic_contact::numerics::accuracy::{print_mpfr, verified_digits_mpfr};
 use periodic_contact::numerics::exact::{to_f64, to_float};

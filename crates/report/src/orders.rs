@@ -7,6 +7,7 @@
 //! (as in `tests/convergence_orders_periodic.rs`). Reuses [`periodic_contact::verification::convergence`].
 
 use super::section::{Ctx, Profile, Section};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{Convention, Period, PunchShape, SlidingLoad};
 use periodic_contact::scene::{Scene, SceneProblem};
 use periodic_contact::verification::convergence::sliding_convergence;

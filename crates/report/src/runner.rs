@@ -7,6 +7,7 @@
 
 use periodic_contact::adhesion::{self, volterra_mpfr::VolterraParams};
 use periodic_contact::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, SlidingShape};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{AdhesionProblem, AdhesionSize, Convention, PunchShape, SlidingLoad, SlidingProblem};
 use periodic_contact::scene::SceneProblem;
 use periodic_contact::sliding::series::series_point;
@@ -86,9 +87,9 @@ pub fn given_size(p: &SceneProblem) -> bool {
 #[derive(Default)]
 pub struct RunCache {
     expansions: Mutex<HashMap<(bool, bool), ExpansionSlot>>,
-    runs: Memo<(String, Knob), Result<Outcome, String>>,
-    verified: Memo<(String, u32), Result<VerifiedRun, String>>,
-    adhesion_verified: Memo<(String, u32), (AdhesionVerifiedResult, f64)>,
+    runs: Memo<(SceneProblem, Knob), Result<Outcome, String>>,
+    verified: Memo<(SlidingProblem, u32), Result<VerifiedRun, String>>,
+    adhesion_verified: Memo<(AdhesionProblem, u32), (AdhesionVerifiedResult, f64)>,
 }
 
 type AdhesionVerifiedResult = Result<Arc<adhesion::VerifiedSolution>, adhesion::AdhesionError>;
@@ -112,11 +113,6 @@ impl<K: std::hash::Hash + Eq, V: Clone> Memo<K, V> {
     }
 }
 
-/// The exact key of a problem: its full `Debug` text (every field, exact rationals).
-fn problem_key(p: &impl std::fmt::Debug) -> String {
-    format!("{p:?}")
-}
-
 /// A verified MPFR solution of Problem 1 (the first, smallest physical contact) with the wall time
 /// of the solve.
 #[derive(Debug, Clone)]
@@ -130,7 +126,7 @@ pub struct VerifiedRun {
 /// [`sliding::solve_verified`] at `digits` (the first physical solution), once per (problem, digits)
 /// in `cache`; errors as the report states them.
 pub fn verified_sliding(cache: &RunCache, p: &SlidingProblem, digits: u32) -> Result<VerifiedRun, String> {
-    cache.verified.get_or((problem_key(p), digits), || {
+    cache.verified.get_or((p.clone(), digits), || {
         let start = Instant::now();
         let sols = sliding::solve_verified(p, &[], digits).map_err(why)?;
         let seconds = start.elapsed().as_secs_f64();
@@ -143,7 +139,7 @@ pub fn verified_sliding(cache: &RunCache, p: &SlidingProblem, digits: u32) -> Re
 /// time of the solve: the stability map's cells and the Pade section's Problem 2 references share
 /// it. The error is the solver's own (each caller words it as before).
 pub fn verified_adhesion_timed(cache: &RunCache, p: &AdhesionProblem, digits: u32) -> (AdhesionVerifiedResult, f64) {
-    cache.adhesion_verified.get_or((problem_key(p), digits), || {
+    cache.adhesion_verified.get_or((p.clone(), digits), || {
         let start = Instant::now();
         let r = adhesion::solve_verified(p, &[], digits).map(Arc::new);
         (r, start.elapsed().as_secs_f64())
@@ -203,7 +199,7 @@ pub const LOADING_LAW_NOT_IN_REPORT: &str =
 /// Runs `knob` on `problem`, once per (problem, knob) in `cache`. Errors are the method's own (no
 /// solution, no convergence, not applicable), as text for the report.
 pub fn run(problem: &SceneProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {
-    cache.runs.get_or((problem_key(problem), knob), || run_uncached(problem, knob, cache))
+    cache.runs.get_or((problem.clone(), knob), || run_uncached(problem, knob, cache))
 }
 
 fn run_uncached(problem: &SceneProblem, knob: Knob, cache: &RunCache) -> Result<Outcome, String> {

@@ -27,6 +27,7 @@ use super::chart::{Chart, Curve, Draw, Legend};
 use super::runner::{self, Knob, Outcome, RunCache, COMPARE_BITS};
 use super::section::{fmt_digits, Ctx, Profile, Section};
 use num_traits::Zero;
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{AdhesionProblem, AdhesionSize, Exact, Material, Period, PunchShape, SlidingProblem};
 use periodic_contact::numerics::accuracy::{fmt_mpfr, print_mpfr, readable_f64, verified_digits_mpfr, F64_DIGITS_CAP};
 use periodic_contact::numerics::exact::{to_f64, to_float};

@@ -10,6 +10,7 @@ use super::chart::{Chart, Curve, Draw, Legend};
 use super::choice::target_of;
 use super::runner::{self, Knob};
 use super::section::{Ctx, Section};
+use periodic_contact::model::OnPunchRow;
 use periodic_contact::model::{Exact, Period, PunchShape};
 use periodic_contact::numerics::exact::to_f64;
 use periodic_contact::params::sliding::{hertz_half_width_f64, SlidingParamsF64};

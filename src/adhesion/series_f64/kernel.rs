@@ -16,7 +16,7 @@ fn rotate(mag: f64, theta: f64, cr: f64, ci: f64) -> (f64, f64) {
 }
 
 /// s w(s) (no G): the lambda -> 0 factor, with complement c.
-pub fn weight_s(s: f64, c: f64, eps: f64) -> (f64, f64) {
+pub(crate) fn weight_s(s: f64, c: f64, eps: f64) -> (f64, f64) {
     let one_p = 1.0 + s;
     let mag = s / (one_p * c).sqrt();
     let theta = eps * (one_p.ln() - c.ln());

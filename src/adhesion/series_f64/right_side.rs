@@ -13,6 +13,7 @@
 //! curvature ([`crate::model::AdhesionProblem::curvature`]).
 
 use crate::growing_contact::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, PunchShape};
 use crate::numerics::exact::to_f64;
 

@@ -7,6 +7,7 @@ use super::solve::{solve_rhs, SeriesSolution, SERIES_LAMBDA_MAX};
 use crate::adhesion::profile::{check_profile_on_contact, circle_cap_error, half_width_search, HalfWidthSearch};
 use crate::adhesion::scales::Digits;
 use crate::growing_contact::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::exact::to_f64;
 use crate::numerics::roots::increasing_root;

@@ -140,7 +140,7 @@ impl SeriesSolution {
         -2.0 * sigma / std::f64::consts::PI * self.integral_i(sigma).im
     }
     /// phi/(k a^2) = -(1/pi) sum Im C_n sigma^(2n+2)/(n+1).
-    pub fn phi_ratio(&self, sigma: f64) -> f64 {
+    pub(crate) fn phi_ratio(&self, sigma: f64) -> f64 {
         let s2 = sigma * sigma;
         let mut p = s2;
         let mut acc = 0.0;

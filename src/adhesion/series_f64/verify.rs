@@ -13,6 +13,7 @@ use super::solution::{solve_run, AdhesionSolutionF64};
 use crate::adhesion::points::check_points;
 use crate::adhesion::scales::{Digits, ScalesF64};
 use crate::growing_contact::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{f64_digits, F64_DIGITS_CAP};
 use crate::params::adhesion::AdhesionParamsF64;

@@ -13,6 +13,7 @@
 //! The parabola keeps the constant pi unchanged (bit-identical to the earlier solver); a
 //! polynomial g = k x^2 has the single weight 1 and gives the same pi.
 
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, Exact, PunchShape};
 use crate::numerics::exact::to_float;
 use rug::float::Constant;

@@ -9,6 +9,7 @@ use crate::adhesion::points::check_points;
 use crate::adhesion::profile::{check_profile_on_contact, circle_cap_error, half_width_search, HalfWidthSearch};
 use crate::adhesion::tension::{tension_report, TensionReport};
 use crate::growing_contact::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period};
 use crate::numerics::chebyshev;
 use crate::numerics::exact::to_float;

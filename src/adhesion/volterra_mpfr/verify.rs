@@ -11,6 +11,7 @@ use super::solve::VolterraParams;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
 use crate::asymptotics::adhesion_mode::{mode_sentence, valid_sizes};
 use crate::growing_contact::error::AdhesionError;
+use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
 use crate::params::adhesion::AdhesionParamsF64;

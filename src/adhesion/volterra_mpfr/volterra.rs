@@ -98,7 +98,7 @@ impl VolterraSolution {
     /// The solution at a smaller lambda' <= lambda without re-solving: f(t) does not depend on
     /// lambda, so F'(tau) = F(tau lambda'^2/lambda^2) and J'(tau) = J(tau lambda'^2/lambda^2)
     /// (I depends on chi only); both re-interpolated at the same number of Chebyshev nodes.
-    pub fn restrict(&self, lambda_new: &Float) -> VolterraSolution {
+    pub(crate) fn restrict(&self, lambda_new: &Float) -> VolterraSolution {
         let prec = self.prec;
         let n = self.f_coeffs.len();
         let ratio = if self.lambda.is_zero() {
@@ -181,7 +181,7 @@ impl VolterraSolution {
 
     /// The interpolation variable at sigma = eta/lambda given sigma^2: sigma^2 (`paper`) or
     /// sigma (`periodic`).
-    pub fn variable_of_square(&self, sigma_sq: &Float) -> Float {
+    pub(crate) fn variable_of_square(&self, sigma_sq: &Float) -> Float {
         if self.periodic() {
             Float::with_val(self.prec, sigma_sq.sqrt_ref())
         } else {
@@ -228,7 +228,7 @@ impl VolterraSolution {
 
     /// The load at the contact sigma lambda in units of E* k a^2 (a of this solution):
     /// (1/2) int_0^(sigma^2) F(tau) d tau (`paper`), int_0^sigma s F(s) ds (`periodic`).
-    pub fn load_ratio_to(&self, sigma: &Float) -> Float {
+    pub(crate) fn load_ratio_to(&self, sigma: &Float) -> Float {
         if self.periodic() {
             chebyshev::integral(&times_t(&self.f_coeffs, self.prec), sigma, self.prec)
         } else {
@@ -252,7 +252,7 @@ impl VolterraSolution {
     }
 
     /// phi/(k a^2) at sigma: -(1/pi) int_0^{sigma^2} J (`periodic`: -(2/pi) int_0^sigma s J(s) ds).
-    pub fn phi_ratio(&self, sigma: &Float) -> Float {
+    pub(crate) fn phi_ratio(&self, sigma: &Float) -> Float {
         let pi = Float::with_val(self.prec, Constant::Pi);
         if self.periodic() {
             let sj = times_t(self.j_coeffs(), self.prec);
@@ -274,7 +274,7 @@ impl VolterraSolution {
     }
 
     /// (q2, q1)/(E* k a) at distance delta = 1 - x/a from the edge, 0 < delta <= 1.
-    pub fn stress_ratio_near_edge(&self, delta: &Float) -> (Float, Float) {
+    pub(crate) fn stress_ratio_near_edge(&self, delta: &Float) -> (Float, Float) {
         let prec = self.prec;
         let sigma = Float::with_val(prec, 1u32) - delta;
         let omss = Float::with_val(prec, 2u32) - delta;
@@ -334,7 +334,7 @@ impl VolterraSolution {
     ///     sinc(2 lambda)^{i eps - 1/2} F(1)
     /// (leading term of the stress integral at the edge, derived from [`super::kernel`];
     /// `periodic`: cosh(pi eps) cos(lambda (1 - 2 i eps)) -> cos(lambda - i eps (2 lambda - pi))).
-    pub fn edge_stress_factor(&self) -> Complex {
+    pub(crate) fn edge_stress_factor(&self) -> Complex {
         let prec = self.prec;
         let one = Float::with_val(prec, 1u32);
         let f1 = self.f_at(&one);

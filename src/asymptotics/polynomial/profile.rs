@@ -109,13 +109,13 @@ impl PolynomialProfile {
     }
 
     /// The reference degree r (module doc).
-    pub fn reference_degree(&self) -> usize {
+    pub(crate) fn reference_degree(&self) -> usize {
         self.reference
     }
 
     /// Whether every odd coefficient is a known zero (g even: Problem 2 applies, and the
     /// frictionless Problem 1 is symmetric).
-    pub fn is_even(&self) -> bool {
+    pub(crate) fn is_even(&self) -> bool {
         self.coefficients.iter().skip(1).step_by(2).all(|c| c.as_ref().is_some_and(Zero::is_zero))
     }
 
@@ -154,7 +154,7 @@ impl PolynomialProfile {
     }
 
     /// What each sigma_j stands for (Problem 2), for printed headers.
-    pub fn period_ratio_definitions(&self) -> Vec<String> {
+    pub(crate) fn period_ratio_definitions(&self) -> Vec<String> {
         let r = self.reference;
         self.coefficients
             .iter()
@@ -166,7 +166,7 @@ impl PolynomialProfile {
     }
 
     /// What each rho_j stands for, for printed headers: `rho_4 = c_4 l_s^2/c_2`, ...
-    pub fn ratio_definitions(&self) -> Vec<String> {
+    pub(crate) fn ratio_definitions(&self) -> Vec<String> {
         let r = self.reference;
         let mut out = Vec::new();
         for (j, c) in self.coefficients.iter().enumerate().skip(1) {
@@ -186,7 +186,7 @@ impl PolynomialProfile {
 }
 
 /// The profile's coefficient list as text, `[0, 0, 1, 0, 1/10]` (`?` for a symbol).
-pub fn coefficients_text(p: &PolynomialProfile) -> String {
+pub(crate) fn coefficients_text(p: &PolynomialProfile) -> String {
     let parts: Vec<String> =
         p.coefficients.iter().map(|x| x.as_ref().map_or("?".to_string(), exact_series::q_text)).collect();
     format!("[{}]", parts.join(", "))

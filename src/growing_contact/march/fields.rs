@@ -37,7 +37,7 @@ impl March {
 
     /// int_0^chi psi_hat(chi') d chi' = int_0^(eta_x) psi_hat(chi(eta)) (gamma'(eta) +- 1) d eta,
     /// Gauss-Legendre on each block's part (module doc).
-    pub fn psi_hat_integral(&self, chi: f64) -> Result<f64, AdhesionError> {
+    pub(crate) fn psi_hat_integral(&self, chi: f64) -> Result<f64, AdhesionError> {
         let (side, eta_x) = self.entry(chi);
         let sg = side.sign();
         let mut acc = 0.0;
@@ -65,7 +65,7 @@ impl March {
     }
 
     /// sigma_hat(chi) = int_(eta_x)^Lambda of the increments' stresses at chi (module doc).
-    pub fn sigma_hat(&self, chi: f64) -> Result<C64, AdhesionError> {
+    pub(crate) fn sigma_hat(&self, chi: f64) -> Result<C64, AdhesionError> {
         let (side, eta_x) = self.entry(chi);
         let sg = side.sign();
         let k = self.block_left(eta_x);

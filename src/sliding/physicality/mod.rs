@@ -34,6 +34,7 @@
 pub mod admissible;
 
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{readable, Convention, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::accuracy::readable_f64;
 use crate::numerics::gauss_jacobi_f64::{gauss_jacobi, GaussRule};
@@ -218,7 +219,7 @@ pub enum Refusal {
 
 impl Refusal {
     /// Whether this is a finding about the physics (else a numerical failure).
-    pub fn is_physical(&self) -> bool {
+    pub(crate) fn is_physical(&self) -> bool {
         !matches!(self, Refusal::Inconsistent { .. } | Refusal::NonFinite { .. })
     }
 

@@ -81,7 +81,7 @@ impl Size {
     }
 
     /// Derivatives (B0', B1') at u, at precision `wp`.
-    pub fn basis_derivative(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> [Float; 2] {
+    pub(crate) fn basis_derivative(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> [Float; 2] {
         match (&params.shape, &self.m) {
             (ShapeMpfr::Parabolic { .. }, Some(m)) => {
                 let l = params.period.as_ref().expect("periodic");
@@ -107,7 +107,7 @@ impl Size {
     }
 
     /// x(u) - c.
-    pub fn offset(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+    pub(crate) fn offset(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
         match &self.m {
             Some(m) => {
                 let l = params.period.as_ref().expect("periodic");
@@ -132,7 +132,7 @@ impl Size {
 
     /// Inverse map: u(x) = tan(pi (x - c)/L)/m (periodic) or (x - c)/l. For periodic rows
     /// x - c must lie in (-L/2, L/2).
-    pub fn u_of(&self, params: &SlidingParamsMpfr, x_minus_c: &Float, wp: u32) -> Float {
+    pub(crate) fn u_of(&self, params: &SlidingParamsMpfr, x_minus_c: &Float, wp: u32) -> Float {
         match &self.m {
             Some(m) => {
                 let l = params.period.as_ref().expect("periodic");
@@ -176,7 +176,7 @@ impl Contact {
     }
 
     /// F'(u) at precision `wp`.
-    pub fn f_prime(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
+    pub(crate) fn f_prime(&self, params: &SlidingParamsMpfr, u: &Float, wp: u32) -> Float {
         if is_general(&params.shape) {
             let x = Float::with_val(wp, self.size.offset(params, u, wp) + &self.c);
             let g2 = profile_curvature(&params.shape, &x, wp);

@@ -50,7 +50,7 @@ pub fn equation_terms(params: &SlidingParamsMpfr, size: &Size, rule: &GaussJacob
 /// integrands `values(u, prec)` evaluated at the nodes of `rule` (weight 1/omega) in place of
 /// g'(x(u)): the slope basis of the parabola and the sinusoid, or (g', g'') of a general profile
 /// at one centre ([`super::centre`]).
-pub fn kernel_sums(
+pub(crate) fn kernel_sums(
     params: &SlidingParamsMpfr,
     size: &Size,
     rule: &GaussJacobiRule,

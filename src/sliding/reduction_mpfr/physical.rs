@@ -105,7 +105,7 @@ pub fn physicality(
 
 /// [`physicality`] with the closure check's relative tolerance `closure_tol` (for a contact that
 /// solves the equations only to an estimated accuracy).
-pub fn physicality_with(
+pub(crate) fn physicality_with(
     params: &SlidingParamsMpfr,
     contact: &Contact,
     pressure: &Pressure<'_>,

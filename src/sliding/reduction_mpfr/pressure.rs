@@ -189,7 +189,7 @@ impl<'a> Pressure<'a> {
 
     /// (P2, F_def) = (int p dx, int p g' dx) over the contact, by the n-point rule `rule_omega`
     /// for the weight omega: int p x'(u) du = cos^2(pi theta)/pi sum_i w_i D(u_i) x'(u_i).
-    pub fn load_and_deformation_force(&self, rule_omega: &GaussJacobiRule) -> (Float, Float) {
+    pub(crate) fn load_and_deformation_force(&self, rule_omega: &GaussJacobiRule) -> (Float, Float) {
         let s = self.params;
         let p = s.prec;
         let mut p2 = Float::with_val(p, 0);

@@ -11,7 +11,7 @@ use crate::params::sliding::{ShapeMpfr, SlidingParamsMpfr};
 use rug::Float;
 
 /// A polynomial or circular profile (evaluated directly; no slope basis).
-pub fn is_general(shape: &ShapeMpfr) -> bool {
+pub(crate) fn is_general(shape: &ShapeMpfr) -> bool {
     matches!(shape, ShapeMpfr::Polynomial { .. } | ShapeMpfr::Circular { .. })
 }
 
@@ -27,7 +27,7 @@ fn horner(c: &[Float], x: &Float, wp: u32) -> Float {
 /// g'(x) at precision `wp` (the analytic profile, not reduced to the cell): sum_j slope_j x^j,
 /// or x/sqrt(R^2 - x^2) (NaN for |x| >= R, where the circle has no real continuation).
 /// The parabola and the sinusoid use their slope basis ([`super::contact`]); here they give NaN.
-pub fn profile_slope(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
+pub(crate) fn profile_slope(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
     match shape {
         ShapeMpfr::Polynomial { slope, .. } => horner(slope, x, wp),
         ShapeMpfr::Circular { r } => {
@@ -39,7 +39,7 @@ pub fn profile_slope(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
 }
 
 /// g''(x) at precision `wp`: sum_j curvature_j x^j, or R^2/(R^2 - x^2)^(3/2) (NaN for |x| >= R).
-pub fn profile_curvature(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
+pub(crate) fn profile_curvature(shape: &ShapeMpfr, x: &Float, wp: u32) -> Float {
     match shape {
         ShapeMpfr::Polynomial { curvature, .. } => horner(curvature, x, wp),
         ShapeMpfr::Circular { r } => {

@@ -8,6 +8,7 @@
 //! here, by [`SlidingParamsMpfr::new`].
 
 use super::error::SlidingError;
+use crate::model::OnPunchRow;
 use crate::model::{SlidingLoad, SlidingProblem};
 use crate::numerics::exact::to_f64;
 use crate::params::sliding::SlidingParamsMpfr;

@@ -201,13 +201,47 @@ pub(super) fn admissible_range(params: &SlidingParamsMpfr) -> Result<Admissible,
     admissible_memo().get_or(admissible_key(params, s_max), || admissible_scan(params, s_max))
 }
 
-/// The key of [`admissible_range`]: `params` with the target blanked (the scan never reads it;
-/// [`scan_max`] does, for a single punch, and is keyed apart), every value printed exactly
-/// (MPFR's shortest round-trip text, and the precision).
-pub(super) fn admissible_key(params: &SlidingParamsMpfr, s_max: f64) -> String {
-    let mut p = params.clone();
-    p.target = TargetMpfr::HalfLength(Float::new(params.prec));
-    format!("{p:?} scan to {s_max:e}")
+/// The key of [`admissible_range`]: every parameter the scan reads, exactly (each MPFR value as
+/// its integer mantissa and exponent, the precision, the shape's kind, the convention), without
+/// the target (the scan never reads it; [`scan_max`] does, for a single punch, and is keyed apart
+/// by `s_max`).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub(super) struct AdmissibleKey {
+    prec: u32,
+    shape: &'static str,
+    convention: crate::model::Convention,
+    values: Vec<Option<(rug::Integer, i32)>>,
+    s_max: u64,
+}
+
+pub(super) fn admissible_key(params: &SlidingParamsMpfr, s_max: f64) -> AdmissibleKey {
+    let p = params;
+    let mut floats: Vec<&Float> =
+        vec![&p.pi, &p.unit, &p.beta, &p.mu, &p.tau0, &p.wear, &p.kappa, &p.theta, &p.cos_pi_theta, &p.k];
+    floats.extend(p.speed.iter().chain(&p.period));
+    let shape = match &p.shape {
+        ShapeMpfr::Parabolic { k } => {
+            floats.push(k);
+            "parabolic"
+        }
+        ShapeMpfr::Sinusoidal { d } => {
+            floats.push(d);
+            "sinusoidal"
+        }
+        ShapeMpfr::Circular { r } => {
+            floats.push(r);
+            "circular"
+        }
+        ShapeMpfr::Polynomial { slope, curvature } => {
+            floats.extend(slope.iter().chain(curvature));
+            "polynomial"
+        }
+    };
+    // The counts keep (speed, period) and (slope, curvature) apart.
+    let counts = [p.speed.is_some() as usize, p.period.is_some() as usize, floats.len()];
+    let mut values: Vec<_> = floats.into_iter().map(Float::to_integer_exp).collect();
+    values.extend(counts.map(|n| Some((rug::Integer::from(n), 0))));
+    AdmissibleKey { prec: p.prec, shape, convention: p.convention, values, s_max: s_max.to_bits() }
 }
 
 /// Most entries the memo of [`admissible_range`] keeps (it is emptied when full: a long sweep over
@@ -216,10 +250,10 @@ const ADMISSIBLE_MEMO_CAP: usize = 4096;
 
 /// A memo of one value per key, computed once (a second thread asking the same key waits for the
 /// first one's value).
-struct Memo<V>(std::sync::Mutex<std::collections::HashMap<String, Arc<std::sync::OnceLock<V>>>>);
+struct Memo<V>(std::sync::Mutex<std::collections::HashMap<AdmissibleKey, Arc<std::sync::OnceLock<V>>>>);
 
 impl<V: Clone> Memo<V> {
-    fn get_or(&self, key: String, f: impl FnOnce() -> V) -> V {
+    fn get_or(&self, key: AdmissibleKey, f: impl FnOnce() -> V) -> V {
         let slot = {
             let mut map = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
             if map.len() >= ADMISSIBLE_MEMO_CAP && !map.contains_key(&key) {

@@ -7,6 +7,7 @@ use super::pressure::Pressure;
 use super::setup::Setup;
 use super::solve::{solve_located, Checks};
 use super::*;
+use crate::model::OnPunchRow;
 use crate::model::{Exact, Material, Period, PunchShape, SlidingLoad, SlidingProblem};
 use crate::numerics::accuracy::agreement_mpfr;
 use crate::numerics::gauss_jacobi_mpfr::{gauss_jacobi, GaussJacobiRule};

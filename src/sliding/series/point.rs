@@ -91,7 +91,7 @@ impl SeriesPoint {
     /// # Panics
     /// When `s` holds a symbol other than theta, T, kappa, invpi (a bug: the expansions' l/l_s,
     /// rbar - rbar_s and F_def series hold only these).
-    pub fn eval(&self, s: &Series<Poly>, order: usize) -> Float {
+    pub(crate) fn eval(&self, s: &Series<Poly>, order: usize) -> Float {
         evaluate::series_mpfr(&s.truncate(order + 1), &self.big_lambda, &self.bindings(), self.prec)
             .expect("the expansions hold only theta, T, kappa and invpi")
     }

@@ -7,6 +7,7 @@ use super::partial::{partial, Partial};
 use super::point::SeriesPoint;
 use crate::asymptotics::sliding::{sliding_expansion_with, SlidingExpansion, SlidingShape};
 use crate::error::Error;
+use crate::model::OnPunchRow;
 use crate::model::{Exact, PunchShape, SlidingProblem};
 use crate::numerics::accuracy::{readable_f64, readable_mpfr, verified_digits_mpfr};
 use crate::numerics::exact::to_float;
