@@ -322,8 +322,9 @@ fn adhesion_analytic(p: &AdhesionProblem, req: SolveRequest) -> Result<Rendered,
     let (answer, _) = answer_analytic::analytic_answer(p, req.digits)?;
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, req.digits);
+    let values = render::adhesion_values(&answer, req.digits);
     m.insert("lambda_h".into(), lambda_h(p, req.digits));
-    Ok((Value::Object(m), claim))
+    Ok((Value::Object(m), claim, vec![values]))
 }
 
 fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
