@@ -72,7 +72,8 @@ fn at_lambda_0_8_it_equals_the_default_method() {
     assert!(agree >= ref_digits - 0.5, "agreement {agree}, default keeps {ref_digits}");
 }
 
-/// nu = 0, lambda = 1.2: >= 20 verified digits (two eta0, two precisions).
+/// nu = 0, lambda = 1.2: >= 20 verified digits (two eta0, two precisions). Measured once: P =
+/// 7.267031970225463569118926 with 34.9 digits, A = 10^104, 1435 s (machine loaded 8 deep).
 #[test]
 #[ignore]
 fn at_nu_0_lambda_1_2_it_verifies_twenty_digits() {
