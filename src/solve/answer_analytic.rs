@@ -57,7 +57,7 @@ pub fn analytic_answer(p: &AdhesionProblem, digits: u32) -> Result<(AdhesionAnsw
     };
     let prec = crate::numerics::precision::bits_for_digits(digits) + 64;
     let pi = Float::with_val(prec, Constant::Pi);
-    let (a_f, l_f) = (to_float(a, prec), to_float(&l, prec));
+    let (a_f, l_f) = (to_float(a, prec), to_float(l, prec));
     let lambda = Float::with_val(prec, &pi * &a_f) / &l_f;
     let sol = continue_to(p.material(), &lambda, digits)?;
     // P2 = E* k (L/pi)^2 P.
