@@ -56,7 +56,8 @@ fn below_the_horizon_it_equals_the_default_method() {
 }
 
 /// nu = 0, lambda = 0.8 (a = 0.8/pi to 16 digits), beyond lambda_h(0, 20) = 0.766: the analytic method verifies >= 20 digits and
-/// equals the verified MPFR method to every digit that method keeps there (about 17).
+/// equals the verified MPFR method to every digit that method keeps there (about 17). Measured
+/// once: analytic 31.0 digits (A = 10^86), default 17.5, agreement 18.9, 261 s.
 #[test]
 #[ignore]
 fn at_lambda_0_8_it_equals_the_default_method() {
