@@ -281,7 +281,8 @@ impl SolveOptions {
             Some("f64") => Some(Method::F64),
             Some("series") => Some(Method::Series),
             Some("pade") => Some(Method::Pade),
-            Some(other) => return Err(Error::input("--method", other, "must be mpfr, f64, series or pade")),
+            Some("analytic") => Some(Method::Analytic),
+            Some(other) => return Err(Error::input("--method", other, "must be mpfr, f64, series, pade or analytic")),
         };
         if let Some(o) = self.order.filter(|o| *o > 24) {
             return Err(Error::input(

@@ -40,6 +40,7 @@
 //! to docs/theory.md was needed. Additions: the conditioning limits of the incremental method at small
 //! nu ([`volterra_mpfr`], Conditioning) and the behaviour of the lambda^2 series ([`series_f64`]).
 
+pub mod analytic;
 pub mod collocation_f64;
 pub mod friction;
 pub mod method_f64;

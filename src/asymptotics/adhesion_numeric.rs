@@ -128,8 +128,23 @@ impl AdhesionRun {
     }
 }
 
-/// The recurrence of the module doc through p_jmax and psi_jmax for `material`, at `prec` bits.
-pub fn adhesion_run(material: &Material, jmax: usize, prec: u32) -> AdhesionRun {
+/// The tangent-variable coefficients of one run (module doc): phi_k of Phi(t) = cos(eta) P'(eta)
+/// (index k = power of t; the even ones 0), y_j of Y(T) = Im I, D_j = Re M_(2j+1), |M_(2j+1)|.
+#[derive(Debug, Clone)]
+pub struct TangentRun {
+    /// phi_k, k = 0..=2 jmax + 1 (odd k only non-zero).
+    pub phi: Vec<Float>,
+    /// y_j, j = 0..=jmax.
+    pub y: Vec<Float>,
+    /// D_j = Re M_(2j+1), j = 0..=jmax.
+    pub d: Vec<Float>,
+    /// |M_(2j+1)|, j = 0..=jmax.
+    pub m_abs: Vec<Float>,
+}
+
+/// The recurrence of the module doc in t = tan eta through t^(2 jmax + 1), at `prec` bits: O(jmax^2)
+/// operations. Phi(t) = sum_k phi_k t^k converges for |t| < 1 (module doc, "Precision").
+pub fn tangent_coefficients(material: &Material, jmax: usize, prec: u32) -> TangentRun {
     let kmax = 2 * jmax + 1; // highest power of t
     let moments = half_range_moments(material, kmax + 1, prec);
     let eps = eps_const(material, prec);
@@ -174,6 +189,13 @@ pub fn adhesion_run(material: &Material, jmax: usize, prec: u32) -> AdhesionRun 
         d.push(re_k.clone());
         m_abs.push(Float::with_val(prec, moments[k].abs_ref()));
     }
+    TangentRun { phi, y, d, m_abs }
+}
+
+/// The recurrence of the module doc through p_jmax and psi_jmax for `material`, at `prec` bits.
+pub fn adhesion_run(material: &Material, jmax: usize, prec: u32) -> AdhesionRun {
+    let TangentRun { phi, y, d, m_abs } = tangent_coefficients(material, jmax, prec);
+    let pi = Float::with_val(prec, Constant::Pi);
     // Back to eta and chi by composition with tan (v = z^2).
     let len = jmax + 1;
     let (tau, sigma) = tan_sec_in_square(len, prec);
@@ -341,6 +363,24 @@ impl AdhesionNumeric {
         }
     }
 
+    /// lambda_h(nu, digits) as printed ([`super::adhesion_mode::horizon`], 3 decimals rounded
+    /// down): the size up to which the incremental solution keeps the digits asked here (issue 31:
+    /// the horizon from a command, `series adhesion --nu R --digits D`).
+    pub fn lambda_h(&self) -> String {
+        let (eps, b, s) = self.f64_constants();
+        super::adhesion_mode::horizon_text(super::adhesion_mode::horizon(eps, b, s, self.digits as f64))
+    }
+
+    fn horizon_sentence(&self) -> String {
+        let (eps, b, s) = self.f64_constants();
+        super::adhesion_mode::horizon_sentence(eps, b, s, self.digits as f64)
+    }
+
+    fn f64_constants(&self) -> (f64, f64, f64) {
+        let [eps, b, s] = &self.constants;
+        (eps.to_f64(), b.to_f64(), s.to_f64())
+    }
+
     fn header(&self) -> Vec<String> {
         let [eps, b, s] = &self.constants;
         let mut h = vec![
@@ -364,6 +404,7 @@ impl AdhesionNumeric {
                 self.min_digits()
             ),
             self.pole_text(),
+            format!("horizon: lambda_h = {} ({})", self.lambda_h(), self.horizon_sentence()),
         ];
         let short = self.short();
         if let Some(worst) = short.iter().min_by(|a, b| a.2.total_cmp(&b.2)) {
@@ -410,6 +451,7 @@ impl AdhesionNumeric {
             "eps": c(eps),
             "B": c(b),
             "S": c(s),
+            "lambda_h": self.lambda_h(),
             "pole": self.pole.as_ref().map(|p| serde_json::json!({
                 "n": p.n,
                 "power": 2 * p.n,

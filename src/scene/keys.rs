@@ -109,7 +109,7 @@ pub const SERIES_ORDER_RANGE: &str = "an integer in [0, 24]";
 /// Largest `[output] series_order`.
 pub const MAX_SERIES_ORDER: usize = 24;
 /// Range text of `[output] method`.
-pub const METHOD_RANGE: &str = "\"mpfr\", \"f64\", \"series\" or \"pade\"";
+pub const METHOD_RANGE: &str = "\"mpfr\", \"f64\", \"series\", \"pade\" or \"analytic\"";
 /// Range text of `[problem] convention`.
 pub const CONVENTION_RANGE: &str = "\"paper\" or \"periodic\"";
 /// Range text of `[problem] kind`.
@@ -155,8 +155,8 @@ pub const KEYS: &[Key] = &[
     key("output", "digits", All, "digits requested: forces the verified MPFR method at this working precision (`solve --digits` overrides it)", "digits", DIGITS_RANGE, "30", Commented),
     key("output", "target_digits", All, "accuracy target: `solve` and the report run the cheapest method predicted to meet it (calibration/methods.csv), e.g. 8 for a fast f64 answer. Optional: without it and without digits `solve` runs verified MPFR at 30 digits", "digits", DIGITS_RANGE, "8", Commented),
     key("output", "points", All, "points where the fields are printed: Problem 1 and the loading law xh = (x - c)/l in (-1, 1); Problem 2 x/a in [0, 1]", "-", "exact numbers in (-1, 1) (xh) or [0, 1] (x/a)", "[\"-0.5\", \"0\", \"0.5\"]", Set),
-    key("output", "method", All, "forces a method: \"mpfr\" (verified high precision), \"f64\" (fast, estimated digits), \"series\" (truncated exact series: Problem 1, parabolic or sinusoidal punch, a given normal_load and a finite period; a polynomial or circular punch is refused), \"pade\" (Pade approximants of that series, docs/theory.md section 11); `solve --method` overrides it", "-", METHOD_RANGE, "\"f64\"", Commented),
-    key("output", "series_order", All, "order N of the series and pade methods: every term through Lambda^N. Optional, default 12; `solve --order` overrides it", "-", SERIES_ORDER_RANGE, "12", Commented),
+    key("output", "method", All, "forces a method: \"mpfr\" (verified high precision), \"f64\" (fast, estimated digits), \"series\" (truncated exact series: Problem 1, parabolic or sinusoidal punch, a given normal_load and a finite period; a polynomial or circular punch is refused), \"pade\" (Pade approximants of that series, docs/theory.md section 11), \"analytic\" (Problem 2, parabolic punch, `paper` convention, a given half_width: the member analytic at zero size continued past lambda_h, docs/theory.md section 11); `solve --method` overrides it", "-", METHOD_RANGE, "\"f64\"", Commented),
+    key("output", "series_order", All, "order N of the series and pade methods: every term through Lambda^N. Optional, default 12 (series) and 24 (pade); `solve --order` overrides it", "-", SERIES_ORDER_RANGE, "12", Commented),
     key("sweep", "normal_load", All, "load-size curve for the report: the scene's load replaced by each value in turn (one sweep key per scene; `solve` ignores the sweep)", "force/length", "a list of 1 to 64 exact numbers, each valid for the problem", "[\"0.001\", \"0.003\", \"0.005\"]", Set),
     key("sweep", "half_length", SlidingOrLaw, "load-size curve over the half-length l instead of the load", "length", "a list of 1 to 64 exact numbers, each valid for the problem", "[\"0.02\", \"0.05\"]", Commented),
     key("sweep", "half_width", Adhesion, "load-size curve over the half-width a instead of the load", "length", "a list of 1 to 64 exact numbers, each valid for the problem", "[\"0.05\", \"0.1\"]", Commented),

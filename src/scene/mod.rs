@@ -92,6 +92,8 @@ pub enum Method {
     Series,
     /// The Pade approximants of the same series (docs/theory.md section 11).
     Pade,
+    /// Problem 2: the member analytic at zero size, continued (crate::adhesion::analytic).
+    Analytic,
 }
 
 impl Method {
@@ -102,6 +104,7 @@ impl Method {
             "f64" => Some(Method::F64),
             "series" => Some(Method::Series),
             "pade" => Some(Method::Pade),
+            "analytic" => Some(Method::Analytic),
             _ => None,
         }
     }
@@ -112,6 +115,7 @@ impl Method {
             Method::F64 => "f64",
             Method::Series => "series",
             Method::Pade => "pade",
+            Method::Analytic => "analytic",
         }
     }
 }

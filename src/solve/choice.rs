@@ -492,6 +492,13 @@ pub struct Forced {
 /// Default series order of the series method.
 pub const DEFAULT_SERIES_ORDER: usize = 12;
 
+/// Default series order of the pade method (issue 31): the conformal map of Kuznetsov's cuts
+/// needs more than the 7 coefficients in w of order 12 to gain 5 digits (at lambda = 1.2, order
+/// 12: 7.0 true digits against the series method's 4.9; order 24: 13.7), and the approximant is
+/// then chosen among all [L/M] by its own error estimate. Cost measured in
+/// `the_pade_method_maps_kuznetsovs_cuts` (crates/cli/tests/pade.rs).
+pub const DEFAULT_PADE_ORDER: usize = 24;
+
 /// The method `solve` runs: a forced method (`--method`, then `[output] method`) or forced digits
 /// (`--digits`, then `[output] digits`: verified MPFR) first; else, with `[output] target_digits`,
 /// the cheapest method predicted to meet it by the committed calibration table ([`choose`], as in
@@ -501,7 +508,8 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
     use super::{SolveRequest, DEFAULT_DIGITS};
     use crate::scene::Method;
     let out = &scene.output;
-    let series_order = forced.series_order.or(out.series_order).unwrap_or(DEFAULT_SERIES_ORDER);
+    let given_order = forced.series_order.or(out.series_order);
+    let series_order = given_order.unwrap_or(DEFAULT_SERIES_ORDER);
     let asked = forced.digits.or(out.digits).or(out.target_digits);
     let digits = asked.unwrap_or(DEFAULT_DIGITS);
     // A forced method without any digits asked: f64 is asked for what it can carry (issue 30: its
@@ -510,7 +518,14 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
         (None, Method::F64) => crate::numerics::accuracy::F64_DIGITS_CAP as u32,
         _ => digits,
     };
-    let req = |method, digits| SolveRequest { method, digits, series_order };
+    let req = |method, digits| SolveRequest {
+        method,
+        digits,
+        series_order: match method {
+            Method::Pade => given_order.unwrap_or(DEFAULT_PADE_ORDER),
+            _ => series_order,
+        },
+    };
     let fixed = |method, digits, reason: &str| MethodChoice {
         request: req(method, digits),
         reason: reason.to_string(),
@@ -583,6 +598,7 @@ pub fn solve_chosen(
             crate::scene::Method::Series => format!("series order {}", r.series_order),
             crate::scene::Method::Pade => format!("Pade of the series order {}", r.series_order),
             crate::scene::Method::F64 => "f64".to_string(),
+            crate::scene::Method::Analytic => format!("analytic at {} digits", r.digits),
             crate::scene::Method::Mpfr => format!("MPFR verified at {} digits", r.digits),
         };
         let _ = write!(

@@ -6,6 +6,7 @@
 //! under the accuracy rule of [`crate::numerics::accuracy`].
 
 pub mod answer_adhesion;
+pub mod answer_analytic;
 pub(crate) mod answer_f64;
 pub mod answer_law;
 pub mod answer_mpfr;
@@ -91,22 +92,29 @@ pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
             Method::F64 => sliding_f64(p, scene, req),
             Method::Series => sliding_series(p, scene, req),
             Method::Pade => sliding_pade(p, scene, req),
+            Method::Analytic => Err(Error::input(
+                "--method",
+                "analytic",
+                "the analytic method takes Problem 2 (complete adhesion); Problem 1 is solved by \"mpfr\", \"f64\", \
+                 \"series\" or \"pade\"",
+            )),
         }
         .map_err(|e| with_periodic_hint(e, p)),
         SceneProblem::Adhesion(p) => match req.method {
             Method::Mpfr => adhesion_mpfr(p, scene, req),
             Method::F64 => adhesion_f64(p, scene, req),
+            Method::Analytic => adhesion_analytic(p, req),
             Method::Series | Method::Pade => Err(Error::input(
                 "--method",
                 req.method.name(),
-                "the adhesion problem is solved by \"mpfr\" or \"f64\" (its series and their Pade approximants: \
-                 `periodic-contact series adhesion --nu R --pade`)",
+                "the adhesion problem is solved by \"mpfr\", \"f64\" or \"analytic\" (its series and their Pade \
+                 approximants: `periodic-contact series adhesion --nu R --pade`)",
             )),
         },
         SceneProblem::LoadingLaw(p) => match req.method {
             Method::Mpfr => law_mpfr(p, scene, req),
             Method::F64 => law_f64(p, scene, req),
-            Method::Series | Method::Pade => Err(Error::input(
+            Method::Series | Method::Pade | Method::Analytic => Err(Error::input(
                 "--method",
                 req.method.name(),
                 "the loading-law problem is solved by \"mpfr\" or \"f64\" (no series method yet)",
@@ -308,6 +316,15 @@ fn lambda_h(p: &AdhesionProblem, digits: u32) -> Value {
         )),
         _ => Value::Null,
     }
+}
+
+fn adhesion_analytic(p: &AdhesionProblem, req: SolveRequest) -> Result<Rendered, Error> {
+    let (answer, _) = answer_analytic::analytic_answer(p, req.digits)?;
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, req.digits);
+    let values = render::adhesion_values(&answer, req.digits);
+    m.insert("lambda_h".into(), lambda_h(p, req.digits));
+    Ok((Value::Object(m), claim, vec![values]))
 }
 
 fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {

@@ -99,6 +99,9 @@ pub enum MethodName {
     Series,
     /// Pade approximants of that series (Problem 1; docs/theory.md section 11).
     Pade,
+    /// Problem 2 (complete adhesion): the member analytic at zero size, the paper's series continued
+    /// past lambda_h (docs/theory.md section 11).
+    Analytic,
 }
 
 /// Surface conventions of Problems 1 and 2 (docs/theory.md section 8).

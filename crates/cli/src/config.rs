@@ -172,6 +172,7 @@ impl RunConfig {
                             MethodName::F64 => "f64",
                             MethodName::Series => "series",
                             MethodName::Pade => "pade",
+                            MethodName::Analytic => "analytic",
                         }
                         .to_string()
                     }),

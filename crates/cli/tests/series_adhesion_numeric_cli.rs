@@ -104,3 +104,26 @@ fn routes_and_refusals() {
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
 }
+
+/// Issue 31: lambda_h(nu, digits) from a command: `series adhesion --nu R --digits D` prints the
+/// horizon (text line `horizon:` and JSON key `lambda_h`, 3 decimals rounded down), rising with
+/// nu: at 20 digits 0.766 (nu = 0), 0.951 (1/10: 0.9519, printed rounded down), 1.333 (3/10)
+/// (docs/theory.md section 11).
+#[test]
+fn the_horizon_from_a_command() {
+    let mut last = 0.0;
+    for (nu, want) in [("0", "0.766"), ("1/10", "0.951"), ("3/10", "1.333")] {
+        let (code, out, err) =
+            run(&["series", "adhesion", "--order", "4", "--nu", nu, "--digits", "20", "--format", "json"]);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let h = v["lambda_h"].as_str().unwrap_or_else(|| panic!("lambda_h in {v}"));
+        assert_eq!(h, want, "nu = {nu}");
+        let x: f64 = h.parse().unwrap();
+        assert!(x > last, "lambda_h rises with nu: {x} after {last}");
+        last = x;
+        let (code, text, err) = run(&["series", "adhesion", "--order", "4", "--nu", nu, "--digits", "20"]);
+        assert_eq!(code, 0, "{err}");
+        assert!(text.contains(&format!("horizon: lambda_h = {want} (at nu = ")), "{text}");
+    }
+}

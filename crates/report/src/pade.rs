@@ -3,8 +3,8 @@
 //! size lambda, the digits of the plain partial sum and of the best Padé approximant from the same
 //! coefficients against the full solution, the Padé method's estimate, and every refusal with its
 //! reason ([`periodic_contact::verification::pade`]); for the two closed-form objects also after the
-//! conformal map of their known singularity. One chart (digits against lambda: plain dashed, Padé
-//! solid, conformal + Padé markers) and one table. The default report takes the parabola's series
+//! conformal map of their known singularity. One chart (digits against lambda per object: plain
+//! dashed, Padé solid, conformal + Padé markers where the singularity is known) and one table. The default report takes the parabola's series
 //! through Lambda^16, the sinusoid's through Lambda^12 (its symbolic derivation is the dearest)
 //! and Problem 2's through lambda^12, references at 20 digits; `--fast` every series through order 8,
 //! references at 12 digits, at three sizes. The claim at order 24 (Kuznetsov's l at
@@ -167,6 +167,15 @@ fn chart(rows: &[PadeRow]) -> Chart {
             draw: Draw::Dashed,
             colour: Some(i),
         });
+        // The conformal map where the singularity is known (the two closed-form objects).
+        if rows.iter().any(|r| r.object == *o && r.map.is_some()) {
+            curves.push(Curve {
+                name: format!("{o}, conformal + Pade"),
+                points: of(&|r| r.conformal.map(|p| p.3)),
+                draw: Draw::Markers,
+                colour: Some(i),
+            });
+        }
     }
     Chart {
         stem: "pade".into(),
