@@ -6,7 +6,8 @@
 //!    e.g. the Problem 1 expansions in $\Lambda = \pi l_s / L$ ([3.7]-[3.12] of the paper),
 //!    $l/l_s = 1 + (\theta^2/3 - 1/12)\Lambda^2 + O(\Lambda^4)$;
 //! 2. **solve a problem** ([`solve_toml`], [`solve_file`], or [`solve`] on a parsed [`Scene`]):
-//!    the JSON of `periodic-contact solve SCENE --json`, every number with its verified digits;
+//!    the JSON of `periodic-contact solve SCENE --json`, every number with its verified digits
+//!    (a batch of scenes on every core: [`solve_many`]);
 //! 3. **check orders** ([`check_orders`]): the remainder of the series truncated after $m$
 //!    corrections against the MPFR solution, observed slope of $\log|r_m|$ against
 //!    $\log\Lambda$ vs the predicted $2m + 2$ (`paper` convention).
@@ -37,6 +38,7 @@ pub use crate::error::{Error, ErrorKind};
 pub use crate::model::ModelError;
 pub use crate::scene::{parse::parse_scene, Method, Scene};
 pub use crate::series_request::{SeriesRequest, ValidSeries, OPTION_NAMES as SERIES_OPTIONS};
+pub use crate::solve::batch::solve_many;
 pub use crate::solve::{solve_scene as solve, SolveRequest};
 pub use crate::verification::convergence::{
     parabola_case, sliding_convergence as check_orders, ConvergenceStudy, OrderRow,

@@ -11,6 +11,7 @@ pub mod answer_law;
 pub mod answer_mpfr;
 pub mod answer_pade;
 pub mod answer_series;
+pub mod batch;
 pub mod choice;
 pub mod format;
 pub mod render;
