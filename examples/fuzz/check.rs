@@ -428,7 +428,8 @@ pub fn run(case: &Case, budget: &Budget) -> Outcome {
             out.runs.push(Run { method: format!("mpfr@{truth_digits} (truth)"), verdict: tv.clone(), seconds: secs });
             let results = solve_by_every_method(&mut out, case, budget, &scene, &tv, &tag);
             check_closed_form(&mut out, st, &tag);
-            check_twin(&mut out, case, budget, &results, None, &tag);
+            let ((), secs) = timed(|| check_twin(&mut out, case, budget, &results, None, &tag));
+            out.twin_seconds = secs;
             return out;
         }
     };
@@ -459,7 +460,8 @@ pub fn run(case: &Case, budget: &Budget) -> Outcome {
         }
     }
     check_closed_form(&mut out, st, &tag);
-    check_twin(&mut out, case, budget, &results, Some((&truth_json, &truth)), &tag);
+    let ((), secs) = timed(|| check_twin(&mut out, case, budget, &results, Some((&truth_json, &truth)), &tag));
+    out.twin_seconds = secs;
     out
 }
 
@@ -545,19 +547,6 @@ fn check_twin(
     if !budget.twin {
         return;
     }
-    let start = std::time::Instant::now();
-    check_twin_runs(out, case, budget, results, truth, tag);
-    out.twin_seconds = start.elapsed().as_secs_f64();
-}
-
-fn check_twin_runs(
-    out: &mut Outcome,
-    case: &Case,
-    budget: &Budget,
-    results: &[(Method, Result<Value, Error>)],
-    truth: Option<(&Value, &Truth)>,
-    tag: &dyn Fn(&str) -> String,
-) {
     let st = &case.statement;
     let twin = st.scaled(&case.scaling);
     let Ok(twin_scene) = parse_scene(&twin.toml()) else {
