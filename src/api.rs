@@ -7,7 +7,8 @@
 //!    $l/l_s = 1 + (\theta^2/3 - 1/12)\Lambda^2 + O(\Lambda^4)$;
 //! 2. **solve a problem** ([`solve_toml`], [`solve_file`], or [`solve`] on a parsed [`Scene`]):
 //!    an [`Answer`], every number typed with its digits and scale ([`Quantity`]), and the JSON of
-//!    `periodic-contact solve SCENE --json`, one rendering of the same numbers;
+//!    `periodic-contact solve SCENE --json`, one rendering of the same numbers (a batch of scenes
+//!    on every core: [`solve_many`]);
 //! 3. **check orders** ([`check_orders`]): the remainder of the series truncated after $m$
 //!    corrections against the MPFR solution, observed slope of $\log|r_m|$ against
 //!    $\log\Lambda$ vs the predicted $2m + 2$ (`paper` convention).
@@ -38,6 +39,7 @@ pub use crate::error::{Error, ErrorKind};
 pub use crate::model::ModelError;
 pub use crate::scene::{parse::parse_scene, Method, Scene};
 pub use crate::series_request::{SeriesRequest, ValidSeries, OPTION_NAMES as SERIES_OPTIONS};
+pub use crate::solve::batch::solve_many;
 pub use crate::solve::render::DigitsKind;
 pub use crate::solve::values::{Field, Quantity, Values};
 pub use crate::solve::{Answer, Claim, SolveRequest};

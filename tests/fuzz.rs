@@ -1,11 +1,13 @@
-//! The differential fuzzer in CI (issue 34): cases 0..100 of seed 34 under the CI budget
-//! (`examples/fuzz`: MPFR at 12 digits against verified MPFR at 24, the f64, series and Pade
-//! methods, the loading law's f64 method against its MPFR at 12; every case's scaled twin), on two
-//! threads. Every disagreement fails the test, printed with its scene. The issue asked for 300
-//! cases within 60 s: on this machine (2 logical CPUs shared) a case takes 0.6 s of wall time on two
-//! threads (the truth, a verified MPFR solve at 24 digits, dominates; a loading-law case takes
-//! several seconds), so 300 cases take about 3 minutes and the test runs the first 100 (about 60
-//! s). The 300 run from the command line: `cargo run --release --example fuzz -- 300 34 --ci --jobs 2`.
+//! The differential fuzzer in CI (issue 34): cases 0..300 of seed 34 under the CI budget
+//! (`examples/fuzz`: MPFR at 12 digits against verified MPFR at 18, the f64, series and Pade
+//! methods, the loading law's f64 method against its MPFR at 10; every case's scaled twin), on
+//! two threads. Every disagreement fails the test, printed with its scene. The issue asked for
+//! 300 cases within 60 s; measured on this machine (2 logical CPUs shared with other sessions) in
+//! docs/fuzzing.md, "Cost of a case": about 310 CPU seconds for the 300 in release (the loading
+//! law's verified MPFR solves, 8 % of the cases, are a third of it), 157 s of wall time on two
+//! threads; this test 7 min 13 s (3 min 49 s of CPU) at a load average of 6-7: it is in the long
+//! tier (`scripts/test --long`). The same cases from the command line: `cargo run --release --example fuzz -- 300 34
+//! --ci --jobs 2`.
 
 #[allow(dead_code)]
 #[path = "../examples/fuzz/check.rs"]
@@ -18,11 +20,12 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 
 /// Cases and seed of the CI run.
-const CASES: u64 = 100;
+const CASES: u64 = 300;
 const SEED: u64 = 34;
 
 #[test]
-fn fuzz_100_cases_agree() {
+#[ignore = "long tier (2.5 to 8 minutes on 2 shared CPUs): scripts/test --long"]
+fn fuzz_300_cases_agree() {
     let next = AtomicU64::new(0);
     let found = Mutex::new(Vec::<String>::new());
     let values = AtomicU64::new(0);

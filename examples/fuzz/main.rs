@@ -20,7 +20,7 @@ use std::sync::Mutex;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: fuzz N SEED [--ci] [--jobs J] [--from I] [--show I] [--tally FILE]";
+    let usage = "usage: fuzz N SEED [--ci] [--jobs J] [--from I] [--show I] [--tally FILE] [--times FILE]";
     let n: u64 = args.first().and_then(|s| s.parse().ok()).unwrap_or_else(|| {
         eprintln!("{usage}");
         std::process::exit(2)
@@ -39,10 +39,22 @@ fn main() {
     }
     let flag =
         |name: &str| args.iter().position(|a| a == name).and_then(|i| args.get(i + 1)).and_then(|s| s.parse().ok());
-    let budget = if args.iter().any(|a| a == "--ci") { check::Budget::CI } else { check::Budget::FULL };
+    let mut budget = if args.iter().any(|a| a == "--ci") { check::Budget::CI } else { check::Budget::FULL };
+    // Overrides of the budget (for profiling): --digits D --truth T --law L --series-every K.
+    let digits = |name: &str, d: u32| flag(name).map_or(d, |x: u64| x as u32);
+    budget.digits = digits("--digits", budget.digits);
+    budget.truth_digits = digits("--truth", budget.truth_digits);
+    budget.law_digits = digits("--law", budget.law_digits);
+    budget.series_every = flag("--series-every").unwrap_or(budget.series_every);
     let jobs: u64 = flag("--jobs").unwrap_or(1).max(1);
     let from: u64 = flag("--from").unwrap_or(0);
     let tally_path: Option<String> = args.iter().position(|a| a == "--tally").and_then(|i| args.get(i + 1)).cloned();
+    // `--times FILE`: one line per case (index, problem, note, seconds in all and per run).
+    let times: Option<Mutex<std::fs::File>> = args
+        .iter()
+        .position(|a| a == "--times")
+        .and_then(|i| args.get(i + 1))
+        .map(|p| Mutex::new(std::fs::File::create(p).expect("--times FILE can be created")));
     let start = std::time::Instant::now();
     let next = AtomicU64::new(from);
     let tally = Mutex::new(Tally::default());
@@ -57,6 +69,18 @@ fn main() {
                 let t = std::time::Instant::now();
                 let out = check::run(&case, &budget);
                 let secs = t.elapsed().as_secs_f64();
+                if let Some(f) = &times {
+                    use std::io::Write as _;
+                    let runs: Vec<String> = out.runs.iter().map(|r| format!("{}={:.3}", r.method, r.seconds)).collect();
+                    let line = format!(
+                        "{i}\t{secs:.3}\t{:?}\ttwin={:.3} {}\t{}\n",
+                        case.statement.problem,
+                        out.twin_seconds,
+                        runs.join(" "),
+                        case.statement.note
+                    );
+                    let _ = f.lock().unwrap().write_all(line.as_bytes());
+                }
                 let mut tally = tally.lock().unwrap();
                 for d in &out.disagreements {
                     println!("DISAGREEMENT {d}\n  scene:\n{}", indent(&case.statement.toml()));

@@ -55,9 +55,13 @@ pub fn row_height_f64(shape: &ShapeF64, period: Option<f64>, x: f64) -> f64 {
         // Beyond the wall: no punch. At the wall (|x| = R up to the rounding of the point, e.g.
         // the middle of the free arc of a circle with R = L/2 filling its cell): the height R.
         ShapeF64::Circular { r } if xr.abs() > *r * (1.0 + 4.0 * f64::EPSILON) => f64::INFINITY,
+        // R - sqrt(R^2 - x^2) in the form without cancellation, x^2/(R + sqrt(R^2 - x^2)): the
+        // difference lost eps R, which near a large circle's contact exceeded the gap test's
+        // tolerance (issue 34, fuzz seed 2026 cases 497 and 1192: R = 818 and x = 0.015, a gap
+        // of -1.1e-13 against a tolerance of 2e-14, refused in one scaling and not in the other).
         ShapeF64::Circular { r } => {
             let d = (r - xr.abs()).max(0.0);
-            r - (d * (r + xr.abs())).sqrt()
+            xr * xr / (r + (d * (r + xr.abs())).sqrt())
         }
     }
 }

@@ -12,6 +12,7 @@ pub mod answer_law;
 pub mod answer_mpfr;
 pub(crate) mod answer_pade;
 pub(crate) mod answer_series;
+pub mod batch;
 pub mod choice;
 pub mod format;
 pub mod render;

@@ -376,6 +376,10 @@ pub struct ZoneRow {
 /// Significant digits of 1 - x/a printed beside a zone.
 pub const ZONE_DELTA_DIGITS: usize = 4;
 
+/// The most nines [`zone_end_text`] prints after "0." (a zone nearer the edge than 10^-1000 of a
+/// prints its 1 - x/a beside it, as every zone does).
+pub const MAX_ZONE_NINES: usize = 1000;
+
 /// x/a = 1 - `delta` printed with the digits that separate it from 1: six significant digits, or
 /// as many as show [`ZONE_DELTA_DIGITS`] digits of `delta` (issue 30: 1 - 3.1e-11 printed
 /// "1.00000" before). Computed as 1 - delta in MPFR at the precision those digits need, so a
@@ -385,8 +389,16 @@ pub(crate) fn zone_end_text(delta: &Num) -> String {
         Num::F64(x) => Float::with_val(64, *x),
         Num::Mpfr(x) => x.clone(),
     };
-    // delta = m 10^-e with m in [1, 10): x/a = 0.99..9 (e - 1 nines) then delta's digits.
-    let e = if d.is_zero() { 0 } else { (-d.to_f64().log10()).floor().max(0.0) as usize + 1 };
+    // delta = m 10^-e with m in [1, 10): x/a = 0.99..9 (e - 1 nines) then delta's digits. The
+    // logarithm in MPFR: a delta below f64's range (1e-400 from an MPFR solution) made
+    // log10(0) = -inf and the count overflow (issue 34, fuzz seed 34 in the debug build); at most
+    // MAX_ZONE_NINES nines are printed.
+    let e = if d.is_zero() {
+        0
+    } else {
+        let log = Float::with_val(64, d.abs_ref()).log10();
+        (-log.to_f64()).floor().clamp(0.0, MAX_ZONE_NINES as f64) as usize + 1
+    };
     let sig = 6usize.max(e - 1 + ZONE_DELTA_DIGITS);
     let bits = (sig as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 16;
     fmt_mpfr(&(Float::with_val(bits, 1u32) - Float::with_val(bits, &d)), sig)
@@ -501,6 +513,22 @@ mod tests {
         let v = Measured::f64(0.123456789, 0.5, 6.0);
         assert_eq!(v.print(15), "1.2345679e-1");
         assert!(v.held(15) > 5.99 && v.held(15) <= 6.0);
+    }
+
+    /// Issue 34: a zone end below f64's range (1 - x/a = 1.2345e-400, from an MPFR solution)
+    /// overflowed the count of nines (a panic in the debug build); it now prints the digits that
+    /// separate it from 1, and a delta of 1e-5000 prints without a panic (MAX_ZONE_NINES nines at
+    /// most).
+    #[test]
+    fn zone_ends_below_the_f64_range_print() {
+        let delta = Float::with_val(256, Float::parse("1.2345e-400").unwrap());
+        let text = zone_end_text(&Num::Mpfr(delta.clone()));
+        let x = Float::with_val(2000, Float::parse(&text).unwrap());
+        let back = Float::with_val(2000, Float::with_val(2000, 1u32) - x);
+        let rel = Float::with_val(64, Float::with_val(2000, back - &delta) / &delta).abs().to_f64();
+        assert!(rel < 1e-3, "{rel}");
+        let text = zone_end_text(&Num::Mpfr(Float::with_val(256, Float::parse("1e-5000").unwrap())));
+        assert!(text.len() > MAX_ZONE_NINES, "{text}");
     }
 
     /// Issue 30: a tension zone near the edge printed "1.00000 to 1.00000"; its ends now show the

@@ -79,6 +79,21 @@ pub fn parse_jobs(text: &str) -> Result<usize, ModelError> {
 }
 
 impl RunConfig {
+    /// The directories this run writes files into (the report's folder, the calibration file's):
+    /// where an interrupted run's temporary files are looked for.
+    pub fn output_dirs(&self) -> Vec<PathBuf> {
+        match self {
+            RunConfig::Report { out, .. } => vec![out.clone()],
+            RunConfig::Calibrate { out } => {
+                vec![out
+                    .parent()
+                    .filter(|d| !d.as_os_str().is_empty())
+                    .map_or_else(|| PathBuf::from("."), PathBuf::from)]
+            }
+            _ => vec![],
+        }
+    }
+
     /// Validates raw arguments.
     pub fn from_args(args: RawArgs) -> Result<RunConfig, ModelError> {
         match args.command {

@@ -128,6 +128,29 @@ fn with_progress<T>(what: &str, work: impl FnOnce() -> T) -> T {
     out
 }
 
+/// Exit status after Ctrl-C (SIGINT): 128 + 2, as a shell reports a process ended by it.
+const INTERRUPTED: i32 = 130;
+
+/// Ctrl-C (SIGINT) stops the run (issue 34): a watcher thread waits for the signal, removes this
+/// process's temporary files from `dirs` (the report's output directory, the calibration file's;
+/// every file is written whole under a temporary name and renamed, so a finished file is never
+/// partial and the previous one stays until its successor is complete) and exits with status 130.
+/// Nothing is printed to stdout before a solve or a series is complete, so an interrupted one
+/// leaves no partial output either. Test: `crates/cli/tests/interrupt.rs`.
+fn exit_on_interrupt(dirs: Vec<std::path::PathBuf>) -> std::io::Result<()> {
+    let mut signals = signal_hook::iterator::Signals::new([signal_hook::consts::SIGINT])?;
+    std::thread::spawn(move || {
+        if signals.forever().next().is_some() {
+            let removed: usize = dirs.iter().map(|d| periodic_contact_report::remove_partial_files(d)).sum();
+            eprintln!(
+                "interrupted (Ctrl-C): stopped; {removed} temporary file(s) removed, finished files left as they were"
+            );
+            std::process::exit(INTERRUPTED);
+        }
+    });
+    Ok(())
+}
+
 /// The one mapping from errors to exit codes: 2 for invalid input, 1 for everything else (no
 /// solution, not physical, no convergence, I/O).
 fn exit_code(e: &anyhow::Error) -> u8 {
@@ -158,6 +181,10 @@ fn main() -> ExitCode {
             return ExitCode::from(exit_code(&e));
         }
     };
+    if let Err(e) = exit_on_interrupt(config.output_dirs()) {
+        eprintln!("error: cannot install the Ctrl-C handler: {e}");
+        return ExitCode::from(1);
+    }
     match run(config) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -294,7 +294,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
 pub fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
     use std::io::Write as _;
     let name = path.file_name().map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = path.with_file_name(format!(".{name}.partial-{}", std::process::id()));
+    let tmp = path.with_file_name(format!(".{name}{}", partial_suffix()));
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
         f.write_all(bytes)?;
@@ -305,4 +305,25 @@ pub fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> 
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// The ending of this process's temporary names in [`write_whole`]: `.partial-PID`.
+fn partial_suffix() -> String {
+    format!(".partial-{}", std::process::id())
+}
+
+/// Removes this process's temporary files of [`write_whole`] from `dir` (the CLI's Ctrl-C handler
+/// calls it before it exits): the files `.NAME.partial-PID` of this process id; returns how many were
+/// removed. Other processes' temporary files are left alone.
+pub fn remove_partial_files(dir: &std::path::Path) -> usize {
+    let suffix = partial_suffix();
+    let Ok(entries) = std::fs::read_dir(dir) else { return 0 };
+    entries
+        .filter_map(Result::ok)
+        .filter(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            name.starts_with('.') && name.ends_with(&suffix)
+        })
+        .filter(|e| std::fs::remove_file(e.path()).is_ok())
+        .count()
 }

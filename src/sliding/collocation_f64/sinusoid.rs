@@ -184,5 +184,14 @@ pub(super) fn sinusoid_scan(
     if out.is_empty() {
         return Err(SlidingF64Error::NoRoot { load: p2, largest: max_load });
     }
+    // One root found from two neighbouring intervals (h = 0 at a scan point, or the refinement
+    // from the midpoint of each reaching the same root) is one solution (issue 34, fuzz seed 2026
+    // case 1249: the same contact printed twice at lambda = 4.1e-8); distinct roots of P2(lambda)
+    // lie apart by far more than the refinement's tolerance.
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    out.dedup_by(|x, y| (x.0 - y.0).abs() <= SAME_ROOT * x.0.abs().max(y.0.abs()));
     Ok(out)
 }
+
+/// Roots of the scan closer than this, relative, are one root ([`sinusoid_scan`]).
+const SAME_ROOT: f64 = 1e-8;
