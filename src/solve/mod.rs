@@ -331,8 +331,7 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 /// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 method
 /// ([`answer_friction`]); the refusals of what is not solved with friction yet first.
 fn adhesion_friction(p: &AdhesionProblem, mu: &crate::model::Exact, req: SolveRequest) -> Result<Rendered, Error> {
-    answer_friction::check_solvable(p, req.method)?;
-    let answer = answer_friction::friction_answer(p, mu)?;
+    let answer = answer_friction::friction_answer(p, mu, req.method)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
