@@ -10,7 +10,7 @@ mod generate;
 
 use periodic_contact::error::{Error, ErrorKind};
 use periodic_contact::scene::parse::parse_scene;
-use periodic_contact::scene::Method;
+use periodic_contact::scene::{Method, SceneProblem};
 use periodic_contact::solve::{solve_scene, SolveRequest};
 use serde_json::Value;
 
@@ -103,6 +103,11 @@ fn r34_printed_f64_values_hold_their_claimed_digits() {
     files.sort();
     for path in files {
         let scene = parse_scene(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        // Finite friction has no MPFR method to check against: its f64 claim is checked against a
+        // mesh twice as fine in tests/friction_scene.rs.
+        if matches!(&scene.problem, SceneProblem::Adhesion(p) if p.friction().is_some()) {
+            continue;
+        }
         // The loading law's verified MPFR at 30 digits takes minutes: 20 (the f64 method claims at most 15).
         let truth = if check::problem_of(&scene) == generate::Problem::Law { 20 } else { 30 };
         match check::printed_values_hold(&scene, Method::F64, 30, truth) {

@@ -89,3 +89,28 @@ fn single_punch_and_sinusoid() {
     let SceneProblem::Sliding(p) = &s.problem else { panic!("sliding") };
     assert_eq!(*p.shape(), PunchShape::Sinusoidal { amplitude: q(1, 100) });
 }
+
+/// `[adhesion] friction` (issue 32): absent is complete adhesion, "1/2" is read exactly, mu <= 0
+/// and a loading-law scene are refused naming the key.
+#[test]
+fn adhesion_friction_key() {
+    let scene = |extra: &str| {
+        format!(
+            "[problem]\nkind = \"adhesion\"\n[material]\npoisson_ratio = \"0\"\ncontact_modulus = \"1\"\n[punch]\n\
+             shape = \"parabolic\"\nk = \"1\"\nperiod = \"inf\"\n[adhesion]\nhalf_width = \"1\"\n{extra}"
+        )
+    };
+    let friction = |text: &str| match parse_scene(text).unwrap().problem {
+        SceneProblem::Adhesion(p) => p.friction().cloned(),
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(friction(&scene("")), None);
+    assert_eq!(friction(&scene("friction = \"1/2\"")), Some(q(1, 2)));
+    for bad in ["0", "-1/2"] {
+        let e = err(&scene(&format!("friction = \"{bad}\"")));
+        assert!(e.contains("adhesion.friction") && e.contains(bad) && e.contains("> 0"), "{e}");
+    }
+    let law =
+        scene("friction = \"1/2\"").replace("half_width = \"1\"", "tangential_ratio = \"1/5\"\nhalf_length = \"1\"");
+    assert!(err(&law).contains("friction"), "{}", err(&law));
+}

@@ -114,6 +114,14 @@ def test_solve_reproduces_the_cli_json():
     assert pc.solve(text).keys() == list(want), "same keys in the same order"
 
 
+def test_finite_friction_scene_gives_the_stick_half_width():
+    """Issue 32: the single punch with mu = 1/2 at nu = 0, c/a = 0.5219(1) by boundary elements."""
+    d = pc.solve(ROOT / "scenes" / "adhesion_friction_single.toml").to_dict()
+    c, a = float(d["stick_half_width"]), float(d["half_width"])
+    assert abs(c / a - 0.5219) <= 1e-4 + 10 ** -float(d["accuracy"]["stick"])
+    assert d["provenance"]["method"] == "f64" and d["friction"] == "1/2"
+
+
 def test_solve_flags_are_the_cli_flags():
     code, out, _ = run_cli("solve", str(SCENE), "--json", "--method", "f64", "--digits", "12")
     assert code == 0

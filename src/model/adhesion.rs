@@ -22,6 +22,7 @@ pub struct AdhesionProblem {
     size: AdhesionSize,
     reference_curvature: Exact,
     convention: Convention,
+    friction: Option<Exact>,
 }
 
 impl AdhesionProblem {
@@ -75,7 +76,7 @@ impl AdhesionProblem {
             }
         }
         let reference_curvature = reference_curvature(shape, period, &size);
-        Ok(AdhesionProblem { row, size, reference_curvature, convention: Convention::Paper })
+        Ok(AdhesionProblem { row, size, reference_curvature, convention: Convention::Paper, friction: None })
     }
 
     /// Half-width or load.
@@ -94,6 +95,20 @@ impl AdhesionProblem {
         self.convention = c;
         self
     }
+    /// The Coulomb friction coefficient mu of finite friction (docs/theory.md section 17: a central
+    /// stick zone, slip |q1| = mu q2 at the ends); None: complete adhesion (mu -> infinity).
+    pub fn friction(&self) -> Option<&Exact> {
+        self.friction.as_ref()
+    }
+    /// The same problem with finite friction mu; mu must be > 0 (mu = 0 is the frictionless
+    /// contact, not an adhesion problem), refused naming `friction`.
+    pub fn with_friction(mut self, mu: Exact) -> Result<Self, ModelError> {
+        if !mu.is_positive() {
+            return Err(ModelError::new("friction", readable(&mu), FRICTION_RANGE));
+        }
+        self.friction = Some(mu);
+        Ok(self)
+    }
     /// Whether the `periodic` convention's lateral term applies: the `periodic` convention on a
     /// finite period (the term beta P2/L vanishes for the single punch).
     pub(crate) fn periodic_surface(&self) -> bool {
@@ -110,6 +125,9 @@ impl AdhesionProblem {
         &self.reference_curvature
     }
 }
+
+/// Range text of `[adhesion] friction` (the key table's and the model's message).
+pub const FRICTION_RANGE: &str = "an exact number > 0 (a Coulomb friction coefficient mu; absent: complete adhesion)";
 
 /// The punch row: material, period and shape (parabolic, even polynomial or circular).
 impl OnPunchRow for AdhesionProblem {
@@ -171,7 +189,14 @@ mod tests {
         let s = PunchShape::sinusoidal(q(1, 1)).unwrap();
         let e = AdhesionProblem::new(mat(), l, s, AdhesionSize::HalfWidth(q(1, 4))).unwrap_err();
         assert_eq!(e.parameter, "shape");
-        assert!(AdhesionProblem::new(mat(), Period::Infinite, k, AdhesionSize::HalfWidth(q(7, 1))).is_ok());
+        let single = AdhesionProblem::new(mat(), Period::Infinite, k, AdhesionSize::HalfWidth(q(7, 1))).unwrap();
+        assert_eq!(single.friction(), None);
+        assert_eq!(single.clone().with_friction(q(1, 2)).unwrap().friction(), Some(&q(1, 2)));
+        for bad in [q(0, 1), q(-1, 2)] {
+            let e = single.clone().with_friction(bad).unwrap_err();
+            assert_eq!(e.parameter, "friction");
+            assert!(e.expected.contains("> 0"), "{e}");
+        }
     }
 
     #[test]

@@ -13,7 +13,7 @@ pub(crate) mod punch;
 pub(crate) mod row;
 pub mod sliding;
 
-pub use adhesion::{AdhesionProblem, AdhesionSize};
+pub use adhesion::{AdhesionProblem, AdhesionSize, FRICTION_RANGE};
 pub use error::{readable, ModelError};
 pub use loading_law::{LawSize, LoadingLaw, LoadingLawProblem};
 pub use material::Material;

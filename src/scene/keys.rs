@@ -148,6 +148,7 @@ pub const KEYS: &[Key] = &[
     key("sliding", "wear", Sliding, "linear wear coefficient cW (dW/dt = cW V p). Optional, default 0", "1/stress", "an exact number >= 0", "\"0\"", Commented),
     key("sliding", "speed", Sliding, "sliding speed V, for the wear rate cW V P2/L. Optional", "length/time", "an exact number > 0", "\"1\"", Commented),
     key("adhesion", "half_width", Adhesion, "half-width a of the symmetric contact (give it or normal_load)", "length", "an exact number > 0 with the contact inside its cell", "\"0.1\"", Set),
+    key("adhesion", "friction", Adhesion, "Coulomb friction coefficient mu of the contact (docs/theory.md section 17): a central stick zone |x| < c and slip |q1| = mu q2 at the ends; solved for the single punch (period \"inf\") with the parabola by the f64 method, 4-5 digits. Optional, absent: complete adhesion", "-", crate::model::FRICTION_RANGE, "\"1/2\"", Commented),
     key("adhesion", "tangential_ratio", Law, "linear loading law P1 = n P2: the ratio n (give it or loading_law)", "-", "an exact number >= 0", "\"1/5\"", Set),
     key("adhesion", "loading_law", Law, "polynomial loading law P1 = sum_j c_j P2^j, numpy order, c_0 = 0, with N' >= 0 along the loading (give it or tangential_ratio)", "force^(1-j)", "a list of exact numbers with c_0 = 0", "[\"0\", \"1/5\", \"1/100\"]", Commented),
     key("adhesion", "half_length", Law, "half-length l = (a + b)/2 of the asymmetric contact [-a, b] (give it or normal_load)", "length", "an exact number > 0 with the contact inside its cell", "\"0.05\"", Set),

@@ -260,9 +260,14 @@ fn parse_adhesion(root: &Table, convention: Convention) -> Result<AdhesionProble
         (None, Some(p)) => AdhesionSize::NormalLoad(p),
         (None, None) => return Err(ModelError::new("adhesion", "(missing)", "give half_width or normal_load")),
     };
-    AdhesionProblem::new(material, period, shape, size)
+    let friction = exact_opt(s, "adhesion", "friction")?;
+    let p = AdhesionProblem::new(material, period, shape, size)
         .map(|p| p.with_convention(convention))
-        .map_err(|e| prefixed(e, "adhesion"))
+        .map_err(|e| prefixed(e, "adhesion"))?;
+    match friction {
+        Some(mu) => p.with_friction(mu).map_err(|e| prefixed(e, "adhesion")),
+        None => Ok(p),
+    }
 }
 
 /// The keys of `[adhesion]` that make it the loading-law problem (docs/theory.md section 10).

@@ -65,6 +65,7 @@ pub fn mpfr_answer(p: &AdhesionProblem, v: &VerifiedSolution) -> AdhesionAnswer 
                 .collect(),
         ),
         warnings: v.warnings.clone(),
+        stick: None,
     }
 }
 
@@ -110,5 +111,6 @@ pub(crate) fn f64_answer(p: &AdhesionProblem, s: &AdhesionSolutionF64, points: &
         ],
         tension_zones: None,
         warnings: s.warnings.clone(),
+        stick: None,
     }
 }

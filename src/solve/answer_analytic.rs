@@ -116,6 +116,7 @@ pub fn analytic_answer(p: &AdhesionProblem, digits: u32) -> Result<(AdhesionAnsw
         accuracy: vec![("size".to_string(), d)],
         fields: Vec::new(),
         tension_zones: None,
+        stick: None,
         warnings,
     };
     Ok((answer, sol))

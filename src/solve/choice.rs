@@ -535,6 +535,14 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
     if let Some(m) = forced.method {
         return Ok(fixed(m, digits_of(m), "forced by --method"));
     }
+    if matches!(&scene.problem, SceneProblem::Adhesion(p) if p.friction().is_some()) {
+        let m = out.method.unwrap_or(Method::F64);
+        return Ok(fixed(
+            m,
+            digits_of(m),
+            "finite friction ([adhesion] friction) is solved by the f64 method only so far",
+        ));
+    }
     if let Some(d) = forced.digits {
         return Ok(fixed(Method::Mpfr, d, "--digits forces verified MPFR at that precision"));
     }

@@ -8,6 +8,7 @@
 pub mod answer_adhesion;
 pub mod answer_analytic;
 pub(crate) mod answer_f64;
+pub mod answer_friction;
 pub mod answer_law;
 pub mod answer_mpfr;
 pub(crate) mod answer_pade;
@@ -101,11 +102,12 @@ pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
             )),
         }
         .map_err(|e| with_periodic_hint(e, p)),
-        SceneProblem::Adhesion(p) => match req.method {
-            Method::Mpfr => adhesion_mpfr(p, scene, req),
-            Method::F64 => adhesion_f64(p, scene, req),
-            Method::Analytic => adhesion_analytic(p, req),
-            Method::Series | Method::Pade => Err(Error::input(
+        SceneProblem::Adhesion(p) => match (p.friction(), req.method) {
+            (Some(mu), _) => adhesion_friction(p, mu, req),
+            (None, Method::Mpfr) => adhesion_mpfr(p, scene, req),
+            (None, Method::F64) => adhesion_f64(p, scene, req),
+            (None, Method::Analytic) => adhesion_analytic(p, req),
+            (None, Method::Series | Method::Pade) => Err(Error::input(
                 "--method",
                 req.method.name(),
                 "the adhesion problem is solved by \"mpfr\", \"f64\" or \"analytic\" (its series and their Pade \
@@ -341,6 +343,21 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
     // Which f64 method answered: the lambda^2 series, or the collocation in eta beyond its radius.
     m.insert("route".into(), json!(s.route.name()));
+    Ok((Value::Object(m), claim, vec![values]))
+}
+
+/// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 method
+/// ([`answer_friction`]); the refusals of what is not solved with friction yet first.
+fn adhesion_friction(p: &AdhesionProblem, mu: &crate::model::Exact, req: SolveRequest) -> Result<Rendered, Error> {
+    let answer = answer_friction::friction_answer(p, mu, req.method)?;
+    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, shown);
+    let values = render::adhesion_values(&answer, shown);
+    f64_digits(&mut m, req.digits);
+    m.insert("lambda_h".into(), Value::Null);
+    let a = number(&values, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
     Ok((Value::Object(m), claim, vec![values]))
 }
 

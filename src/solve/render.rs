@@ -62,6 +62,15 @@ impl Measured {
         Measured { pair: ValueAndScale::F64(value, scale), digits }
     }
 
+    /// -value on the same scale and digits (the left end of a symmetric zone).
+    pub fn negated(&self) -> Self {
+        let pair = match &self.pair {
+            ValueAndScale::F64(v, s) => ValueAndScale::F64(-v, *s),
+            ValueAndScale::Mpfr(v, s) => ValueAndScale::Mpfr(Float::with_val(v.prec(), -v), s.clone()),
+        };
+        Measured { pair, digits: self.digits }
+    }
+
     /// Printed under the accuracy rule, at most `requested` + 1 significant digits (a text of exactly
     /// the requested digits would hold fewer after its rounding; issue 34); an `f64` at most 17.
     pub fn print(&self, requested: u32) -> String {
@@ -425,6 +434,20 @@ pub struct AdhesionAnswer {
     pub tension_zones: Option<Vec<ZoneRow>>,
     /// Warnings (conditioning, tension).
     pub warnings: Vec<String>,
+    /// Stick and slip with finite friction (None: complete adhesion).
+    pub stick: Option<StickSlip>,
+}
+
+/// The stick zone |x| < c of finite friction (docs/theory.md section 17); the slip zones are
+/// c < |x| < a.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StickSlip {
+    /// The friction coefficient mu as the scene gives it (exact text).
+    pub friction: String,
+    /// c, on the scale a.
+    pub stick_half_width: Measured,
+    /// What the model is (printed as `friction_note`).
+    pub note: &'static str,
 }
 
 impl AdhesionAnswer {
@@ -443,6 +466,9 @@ pub fn adhesion_values(ans: &AdhesionAnswer, requested: u32) -> Values {
     }
     v.push("P2", ans.p2.quantity(requested, ans.kind));
     v.push("half_width", ans.half_width.quantity(requested, ans.kind));
+    if let Some(st) = &ans.stick {
+        v.push("stick_half_width", st.stick_half_width.quantity(requested, ans.kind));
+    }
     for (name, rows) in &ans.fields {
         for r in rows {
             v.push_point(name, "x_over_a", r.x_over_a.clone(), r.value.quantity(requested, ans.kind));
@@ -461,6 +487,7 @@ pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value>
     m.insert("digits_requested".into(), json!(requested.to_string()));
     let printed = |key: &str| match key {
         "size" => held_min([&ans.p2, &ans.half_width].into_iter().chain(&ans.lambda), requested),
+        "stick" => held_min(ans.stick.as_ref().map(|st| &st.stick_half_width), requested),
         k => ans
             .fields
             .iter()
@@ -490,6 +517,19 @@ pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value>
             })
             .collect();
         m.insert("tension_zones".into(), Value::Array(z));
+    }
+    if let Some(st) = &ans.stick {
+        let (c, a) = (&st.stick_half_width, &ans.half_width);
+        m.insert("friction".into(), json!(st.friction));
+        m.insert("stick_half_width".into(), json!(c.print(requested)));
+        m.insert(
+            "slip_zones".into(),
+            json!([
+                {"from": a.negated().print(requested), "to": c.negated().print(requested)},
+                {"from": c.print(requested), "to": a.print(requested)}
+            ]),
+        );
+        m.insert("friction_note".into(), json!(st.note));
     }
     m.insert("warnings".into(), Value::Array(ans.warnings.iter().map(|w| json!(w)).collect()));
     m.insert("provenance".into(), ans.provenance.json());

@@ -165,11 +165,12 @@ fn every_solve_json_key_is_defined() {
         ("scenes/sliding_friction.toml", "series"),
         ("scenes/adhesion_nu03.toml", "f64"),
         ("scenes/adhesion_loading_law.toml", "f64"),
+        ("scenes/adhesion_friction_single.toml", "f64"),
     ] {
         let path = format!("{}/{scene}", concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
         keys(&json(&["solve", &path, "--method", method, "--json"]), &mut found);
     }
-    for k in ["theta", "P2", "psi", "end_stress", "digits_verified", "provenance"] {
+    for k in ["theta", "P2", "psi", "end_stress", "digits_verified", "provenance", "stick_half_width"] {
         assert!(found.contains(k), "{k} not collected");
     }
     let missing: Vec<_> = found.iter().filter(|k| !doc.contains(k)).collect();

@@ -10,7 +10,9 @@
 //! c/a = 0.5219(1) at nu = 0, mu = 1/2, the two methods against each other, the approach to complete
 //! adhesion's C_P as mu grows, and the inequalities of the state.
 //!
-//! Not built (issue 32): the MPFR method with verified digits, the periodic row, scene keys.
+//! Scenes with `[adhesion] friction` reach [`single_punch`] through `solve`
+//! (`src/solve/answer_friction.rs`, docs/theory.md section 17.5). Not built (issue 32): the MPFR
+//! method with verified digits, the periodic row.
 
 pub mod increment_f64;
 pub mod mesh;

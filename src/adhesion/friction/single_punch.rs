@@ -126,7 +126,7 @@ fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Res
 }
 
 /// (gamma, C_P) of one method on one mesh of `n` stick elements.
-pub(crate) fn solve_once(
+pub fn solve_once(
     beta: f64,
     mu: f64,
     n: usize,

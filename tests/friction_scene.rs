@@ -1,0 +1,68 @@
+//! `[adhesion] friction` through `solve` (issue 32, docs/theory.md section 17): the single
+//! parabolic punch by the f64 method. The digits the answer claims for `stick_half_width`,
+//! `half_width` and `P2` are checked against a finer run of the same method (n = 160 stick
+//! elements against the answer's 80), with that run's own error allowed for: the increment
+//! converges about like 1/n (section 17.4), so the error of n = 80 is about twice its difference
+//! from n = 160, and the claim must cover [`FIRST_ORDER`] times that difference.
+
+use periodic_contact::adhesion::friction::single_punch::{solve_once, Method};
+use periodic_contact::api::{self, SolveOptions};
+
+/// err(80) ~ |x(80) - x(160)| / (1 - 2^-p) with p >= 1: at most twice the difference.
+const FIRST_ORDER: f64 = 2.0;
+
+fn scene(nu: &str, mu: &str, size: &str) -> String {
+    format!(
+        "[problem]\nkind = \"adhesion\"\n[material]\npoisson_ratio = \"{nu}\"\ncontact_modulus = \"2\"\n[punch]\n\
+         shape = \"parabolic\"\nk = \"1/2\"\nperiod = \"inf\"\n[adhesion]\n{size}\nfriction = \"{mu}\"\n"
+    )
+}
+
+#[test]
+fn claimed_digits_hold_against_a_finer_mesh() {
+    // (nu, mu, size key and value): E* = 2, k = 1/2, so E* k = 1.
+    let cases = [
+        (0.0, "1/2", "half_width = \"1\""),
+        (0.0, "5/3", "normal_load = \"2\""),
+        (0.2, "1/2", "half_width = \"1/3\""),
+        (0.1, "1", "normal_load = \"1/10\""),
+        (0.0, "1/5", "half_width = \"2\""),
+    ];
+    for (nu, mu, size) in cases {
+        let text = scene(&nu.to_string(), mu, size);
+        // no --method: the choice must be f64 for a friction scene
+        let a = api::solve_toml(&text, &SolveOptions::default()).unwrap_or_else(|e| panic!("{text}: {e}"));
+        assert_eq!(a.json["provenance"]["method"], "f64", "{}", a.json);
+        assert_eq!(a.json["choice"]["method"], "f64", "{}", a.json);
+        let beta = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
+        let mu_f: f64 = match mu.split_once('/') {
+            Some((n, d)) => n.parse::<f64>().unwrap() / d.parse::<f64>().unwrap(),
+            None => mu.parse().unwrap(),
+        };
+        let (g80, cp80) = solve_once(beta, mu_f, 80, Method::Increment, true).unwrap();
+        let (g160, cp160) = solve_once(beta, mu_f, 160, Method::Increment, true).unwrap();
+        let half_width = a.get("half_width").unwrap();
+        let (stick, p2) = (a.get("stick_half_width").unwrap(), a.get("P2").unwrap());
+        // the answer is the n = 80 mesh's
+        assert!((stick.value / half_width.value - g80).abs() < 1e-9, "{}", a.json);
+        // the reference: the given size exact, the other from the n = 160 load coefficient
+        let (ref_a, ref_p2) = match size.split_once(" = ").unwrap().0 {
+            "half_width" => (half_width.value, cp160 * half_width.value.powi(2)),
+            _ => ((p2.value / cp160).sqrt(), p2.value),
+        };
+        let ref_c = g160 * ref_a;
+        for (name, q, truth) in
+            [("stick_half_width", stick, ref_c), ("half_width", half_width, ref_a), ("P2", p2, ref_p2)]
+        {
+            let error = FIRST_ORDER * (q.value - truth).abs();
+            let claimed = 10f64.powf(-q.digits) * q.scale;
+            println!(
+                "nu {nu} mu {mu} {size}: {name} = {} ({} digits), error vs n = 160 x {FIRST_ORDER}: {error:.2e}, claimed {claimed:.2e}",
+                q.text, q.digits
+            );
+            assert!(error <= claimed, "{name}: error {error:e} > claimed {claimed:e} ({})", a.json);
+        }
+        assert!(a.claim.digits >= 3.5 && a.claim.digits <= 6.0, "{:?}", a.claim);
+        assert!((p2.value / half_width.value.powi(2) - cp80).abs() < 1e-8, "{}", a.json);
+    }
+}
