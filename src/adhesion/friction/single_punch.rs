@@ -126,13 +126,7 @@ fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Res
 }
 
 /// (gamma, C_P) of one method on one mesh of `n` stick elements.
-pub fn solve_once(
-    beta: f64,
-    mu: f64,
-    n: usize,
-    method: Method,
-    coupled: bool,
-) -> Result<(f64, f64), AdhesionError> {
+pub fn solve_once(beta: f64, mu: f64, n: usize, method: Method, coupled: bool) -> Result<(f64, f64), AdhesionError> {
     check(beta, mu, n)?;
     if beta == 0.0 {
         return Ok((1.0, std::f64::consts::FRAC_PI_2));
