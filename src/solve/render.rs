@@ -393,7 +393,7 @@ pub const MAX_ZONE_NINES: usize = 1000;
 /// as many as show [`ZONE_DELTA_DIGITS`] digits of `delta` (issue 30: 1 - 3.1e-11 printed
 /// "1.00000" before). Computed as 1 - delta in MPFR at the precision those digits need, so a
 /// delta below the solution's own 2^-prec still prints (x/a itself rounds to 1 there).
-pub(crate) fn zone_end_text(delta: &Num) -> String {
+pub fn zone_end_text(delta: &Num) -> String {
     let d = match delta {
         Num::F64(x) => Float::with_val(64, *x),
         Num::Mpfr(x) => x.clone(),
