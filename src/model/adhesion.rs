@@ -75,7 +75,7 @@ impl AdhesionProblem {
                 ));
             }
         }
-        let reference_curvature = reference_curvature(shape, period, &size);
+        let reference_curvature = reference_curvature(shape, period, &size, row.material().contact_modulus());
         Ok(AdhesionProblem { row, size, reference_curvature, convention: Convention::Paper, friction: None })
     }
 
@@ -118,7 +118,10 @@ impl AdhesionProblem {
     /// The reference curvature k of the scalings P2 = E* k (L/pi)^2 P, psi ~ k a, phi ~ k a^2,
     /// q ~ E* k a (exact): the parabola's k; for the circle 1/(2R) (its osculating parabola);
     /// for an even polynomial the secant curvature g'(l)/(2 l) = sum_m m c_2m l^(2m-2) at l = a
-    /// (given half-width) or l = L/4 (given load, finite period). Any positive value is a valid
+    /// (given half-width), l = L/4 (given load, finite period) or, for the single punch under a
+    /// given load, l = (P2/(E* |c_2m|))^(1/(2m)) of the first non-zero c_2m (a length that scales
+    /// with the problem, so the digits' scales follow its scaling laws; issue 34's fuzz case 815
+    /// found l = 1 there, which did not). Any positive value is a valid
     /// scale: it only sets the units of F and of the digits' scales. A polynomial g = k x^2 gives
     /// the parabola's k exactly.
     pub fn curvature(&self) -> &Exact {
@@ -139,7 +142,7 @@ impl OnPunchRow for AdhesionProblem {
 /// See [`AdhesionProblem::curvature`]. A non-positive secant curvature (a non-convex
 /// polynomial) falls back to |c_j| of the first non-zero j >= 2 so the scale stays positive; the
 /// solver then refuses the profile as not convex.
-fn reference_curvature(shape: &PunchShape, period: &Period, size: &AdhesionSize) -> Exact {
+fn reference_curvature(shape: &PunchShape, period: &Period, size: &AdhesionSize, e_star: &Exact) -> Exact {
     let one = Exact::from_integer(1.into());
     match shape {
         PunchShape::Parabolic { k } => k.clone(),
@@ -149,7 +152,7 @@ fn reference_curvature(shape: &PunchShape, period: &Period, size: &AdhesionSize)
             let l = match (size, period) {
                 (AdhesionSize::HalfWidth(a), _) => a.clone(),
                 (AdhesionSize::NormalLoad(_), Period::Finite(l)) => l / Exact::from_integer(4.into()),
-                (AdhesionSize::NormalLoad(_), Period::Infinite) => one.clone(),
+                (AdhesionSize::NormalLoad(p2), Period::Infinite) => load_length(coefficients, p2, e_star),
             };
             let l2 = &l * &l;
             let mut pow = one.clone();
@@ -165,6 +168,19 @@ fn reference_curvature(shape: &PunchShape, period: &Period, size: &AdhesionSize)
             }
         }
     }
+}
+
+/// The single punch's length for a given load P2 on g = sum c_j x^j: l = (P2/(E* |c_2m|))^(1/(2m))
+/// with c_2m the first non-zero even coefficient (j >= 2), rounded once from f64 to an exact
+/// rational (it only sets a scale); 1 when there is none or f64 cannot carry it.
+fn load_length(coefficients: &[Exact], p2: &Exact, e_star: &Exact) -> Exact {
+    let one = Exact::from_integer(1.into());
+    let Some((j, c)) = coefficients.iter().enumerate().skip(2).step_by(2).find(|(_, c)| !c.is_zero()) else {
+        return one;
+    };
+    let ratio = p2 / (e_star * c.abs());
+    let l = num_traits::ToPrimitive::to_f64(&ratio).map(|r| r.powf(1.0 / j as f64));
+    l.filter(|l| l.is_finite() && *l > 0.0).and_then(Exact::from_float).unwrap_or(one)
 }
 
 #[cfg(test)]
@@ -219,5 +235,26 @@ mod tests {
         // A single punch under a given load: every even profile (the solvers search the half-width).
         let p = AdhesionProblem::new(mat(), Period::Infinite, circle, AdhesionSize::NormalLoad(q(1, 1))).unwrap();
         assert_eq!(p.curvature(), &q(1, 4));
+    }
+
+    /// Issue 34, fuzz case 815: the single polynomial punch under a given load has a reference
+    /// curvature that follows the scaling laws: lengths x s, stresses x t (c_j x s^(1-j), P2 x t s,
+    /// E* x t) divide it by s, so every printed digit's scale scales as the problem does.
+    #[test]
+    fn single_punch_reference_curvature_follows_the_scaling() {
+        let poly = |c2: Exact, c4: Exact| PunchShape::polynomial(vec![q(0, 1), q(0, 1), c2, q(0, 1), c4]).unwrap();
+        let solve = |e: Exact, c2: Exact, c4: Exact, p: Exact| {
+            let m = Material::from_contact_modulus(q(1, 2), e).unwrap();
+            let k = AdhesionProblem::new(m, Period::Infinite, poly(c2, c4), AdhesionSize::NormalLoad(p)).unwrap();
+            num_traits::ToPrimitive::to_f64(k.curvature()).unwrap()
+        };
+        let (s, t) = (q(1, 1000), q(1, 100));
+        let base = solve(q(1, 1), q(28, 5), q(2688, 625), q(3, 100));
+        let s3 = &s * &s * &s;
+        let twin = solve(t.clone(), q(28, 5) / &s, q(2688, 625) / s3, q(3, 100) * &t * &s);
+        assert!((twin * 1e-3 / base - 1.0).abs() < 1e-12, "{base} {twin}");
+        // The length is (P2/(E* c_2))^(1/2) = (3/100 / (28/5))^(1/2); k = c_2 + 2 c_4 l^2.
+        let l2 = 0.03 / 5.6;
+        assert!((base - (5.6 + 2.0 * 2688.0 / 625.0 * l2)).abs() < 1e-12 * base, "{base}");
     }
 }
