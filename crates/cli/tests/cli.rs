@@ -1,7 +1,7 @@
 //! The command line as a user meets it: exit codes and messages (0 ok, 2 invalid input).
 
 mod common;
-use common::run;
+use common::{assert_usage_error, run};
 
 #[test]
 fn series_json_has_the_documented_layout() {
@@ -36,11 +36,7 @@ fn bad_input_is_exit_code_2_with_a_message_naming_the_parameter() {
         (vec!["series", "adhesion", "--order", "2", "--nu", "0.6"], "--nu = 3/5: must lie in [0, 1/2]"),
         (vec!["series", "kernel", "--order", "2", "--nu", "0.3"], "only the adhesion series"),
     ] {
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty(), "{args:?} printed {out}");
-        assert!(err.contains(needle), "{args:?}: {err}");
-        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert_usage_error(&args, needle);
     }
 }
 

@@ -4,7 +4,7 @@
 //! pole at nu = 0, and the refusals.
 
 mod common;
-use common::run;
+use common::{assert_usage_error, run};
 
 /// The `[v^k] value` lines of a text output as (part, power, value): every such line when
 /// `marker` is empty, else only those after a line starting with `marker` within each part.
@@ -97,11 +97,7 @@ fn routes_and_refusals() {
         (vec!["series", "adhesion", "--order", "40", "--nu", "0.3", "--pade"], "built by the exact route"),
         (vec!["series", "loading-law", "--order", "4", "--nu", "0.3", "--ratio", "0", "--digits", "9"], "--digits"),
     ] {
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty(), "{args:?} printed {out}");
-        assert!(err.contains(needle), "{args:?}: {err}");
-        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert_usage_error(&args, needle);
     }
 }
 

@@ -4,7 +4,7 @@
 //! refusals of bad input (exit code 2, the flag named).
 
 mod common;
-use common::run;
+use common::{assert_usage_error, run};
 use periodic_contact::loading_law::collocation::{solve, LawSetting};
 use periodic_contact::model::{Convention, Exact, Material};
 use periodic_contact::numerics::tanh_sinh::TanhSinh;
@@ -105,11 +105,7 @@ fn loading_law_series_refuses_bad_input() {
         (vec!["series", "loading-law", "--order", "4", "--nu", "0.3", "--ratio", "1/5", "--theta", "0"], "--theta"),
         (vec!["series", "adhesion", "--order", "4", "--nu", "0.3", "--ratio", "1/5"], "only the loading-law series"),
     ] {
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty(), "{args:?} printed {out}");
-        assert!(err.contains(needle), "{args:?}: {err}");
-        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert_usage_error(&args, needle);
     }
 }
 

@@ -38,3 +38,13 @@ pub fn scene_file(name: &str, text: &str) -> String {
     std::fs::File::create(&p).unwrap().write_all(text.as_bytes()).unwrap();
     p.display().to_string()
 }
+
+/// Runs `periodic-contact ARGS` and asserts a usage error: exit code 2, nothing on stdout, a
+/// message containing `needle`, no panic.
+pub fn assert_usage_error(args: &[&str], needle: &str) {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 2, "{args:?}: {err}");
+    assert!(out.is_empty(), "{args:?} printed {out}");
+    assert!(err.contains(needle), "{args:?}: {err}");
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+}
