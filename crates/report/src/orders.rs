@@ -81,57 +81,41 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
         let (lams, corr, dig) =
             if periodic { (p_lambdas, p_corrections, p_digits) } else { (lambdas, corrections, digits) };
         match sliding_convergence(name, p, lams, corr, dig) {
-            Ok(study) if periodic => {
-                let _ = writeln!(
-                    md,
-                    "### Scene `{name}`, convention `periodic` (theta = {:.6}, T = {:.6})\n\n\
-                     | m (through Lambda^m) | predicted (c) | observed (c) | predicted (l) | observed (l) | remainder of l / l_s |\n\
-                     |---:|---:|---:|---:|---:|---|",
-                    study.theta, study.t
-                );
-                for r in &study.rows {
-                    rows += 1;
-                    note(&mut worst_l, name, r.corrections, r.observed_l, r.predicted_l);
-                    if let Some(c) = r.observed_c {
-                        note(&mut worst_c, name, r.corrections, c, r.predicted);
-                    }
-                    let _ = writeln!(
-                        md,
-                        "| {} | {} | {} | {} | {:.3} | {:.1e} .. {:.1e} |",
-                        r.corrections,
-                        r.predicted,
-                        r.observed_c.map_or("-".into(), |c| format!("{c:.3}")),
-                        r.predicted_l,
-                        r.observed_l,
-                        r.remainder_range.0,
-                        r.remainder_range.1
-                    );
-                }
-                md.push('\n');
-            }
             Ok(study) => {
-                let _ = writeln!(
-                    md,
-                    "### Scene `{name}` (theta = {:.6}, T = {:.6})\n\n\
-                     | m | predicted order | observed (l) | observed (c) | remainder of l / l_s |\n|---:|---:|---:|---:|---|",
-                    study.theta, study.t
-                );
+                // `periodic`: every power of Lambda, both predicted orders; `paper`: even powers.
+                let _ = if periodic {
+                    writeln!(
+                        md,
+                        "### Scene `{name}`, convention `periodic` (theta = {:.6}, T = {:.6})\n\n\
+                         | m (through Lambda^m) | predicted (c) | observed (c) | predicted (l) | observed (l) | remainder of l / l_s |\n\
+                         |---:|---:|---:|---:|---:|---|",
+                        study.theta, study.t
+                    )
+                } else {
+                    writeln!(
+                        md,
+                        "### Scene `{name}` (theta = {:.6}, T = {:.6})\n\n\
+                         | m | predicted order | observed (l) | observed (c) | remainder of l / l_s |\n|---:|---:|---:|---:|---|",
+                        study.theta, study.t
+                    )
+                };
                 for r in &study.rows {
                     rows += 1;
                     note(&mut worst_l, name, r.corrections, r.observed_l, r.predicted_l);
                     if let Some(c) = r.observed_c {
                         note(&mut worst_c, name, r.corrections, c, r.predicted);
                     }
-                    let _ = writeln!(
-                        md,
-                        "| {} | {} | {:.3} | {} | {:.1e} .. {:.1e} |",
-                        r.corrections,
-                        r.predicted,
-                        r.observed_l,
-                        r.observed_c.map_or("-".into(), |c| format!("{c:.3}")),
-                        r.remainder_range.0,
-                        r.remainder_range.1
-                    );
+                    let (m, predicted, (lo, hi)) = (r.corrections, r.predicted, r.remainder_range);
+                    let c = r.observed_c.map_or("-".into(), |c| format!("{c:.3}"));
+                    let _ = if periodic {
+                        writeln!(
+                            md,
+                            "| {m} | {predicted} | {c} | {} | {:.3} | {lo:.1e} .. {hi:.1e} |",
+                            r.predicted_l, r.observed_l
+                        )
+                    } else {
+                        writeln!(md, "| {m} | {predicted} | {:.3} | {c} | {lo:.1e} .. {hi:.1e} |", r.observed_l)
+                    };
                 }
                 md.push('\n');
             }
