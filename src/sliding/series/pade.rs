@@ -122,27 +122,21 @@ fn resummed(
     })?;
     let conformal = map.and_then(|(m, text)| Some((resum_conformal(&cw, m, &w, scale, cap, prec)?, *text)));
     let mapped = conformal.as_ref().and_then(|(rc, text)| Some((rc.best()?, *text)));
-    if let Some((b, text)) = mapped {
-        if r.best().is_none_or(|p| b.digits > p.digits) {
-            let chosen = Chosen {
-                quantity: name.to_string(),
-                l: b.l,
-                m: b.m,
-                digits: b.digits,
-                poles: b.poles.iter().map(complex_text).collect(),
-                map: Some(text),
+    // The conformal map's best approximant where it beats the plain one, else the plain one.
+    let (b, map) = match mapped {
+        Some((b, text)) if r.best().is_none_or(|p| b.digits > p.digits) => (b, Some(text)),
+        _ => {
+            let Some(b) = r.best() else {
+                return Err(Error::NoConvergence {
+                    what: format!(
+                        "every Pade approximant of {name} at Lambda = pi l_s/L = {} is refused: {}",
+                        readable_mpfr(&sp.big_lambda),
+                        r.refusals().join("; ")
+                    ),
+                });
             };
-            return Ok((b.value.clone(), b.digits, chosen));
+            (b, None)
         }
-    }
-    let Some(b) = r.best() else {
-        return Err(Error::NoConvergence {
-            what: format!(
-                "every Pade approximant of {name} at Lambda = pi l_s/L = {} is refused: {}",
-                readable_mpfr(&sp.big_lambda),
-                r.refusals().join("; ")
-            ),
-        });
     };
     let chosen = Chosen {
         quantity: name.to_string(),
@@ -150,7 +144,7 @@ fn resummed(
         m: b.m,
         digits: b.digits,
         poles: b.poles.iter().map(complex_text).collect(),
-        map: None,
+        map,
     };
     Ok((b.value.clone(), b.digits, chosen))
 }
