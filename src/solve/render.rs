@@ -249,6 +249,18 @@ fn opt(m: &Option<Measured>, requested: u32) -> Value {
 /// digits ("p" or "p[i]" for the pressure, "x" for its points), or none (then the headline
 /// claims them).
 fn sliding_keyed(ans: &SlidingAnswer) -> Vec<(String, &Measured)> {
+    sliding_scalars(ans)
+        .into_iter()
+        .map(|(k, m)| (k.to_string(), m))
+        .chain(ans.pressure.iter().enumerate().flat_map(|(i, r)| {
+            let p_key = if ans.accuracy.iter().any(|(k, _)| k == "p") { "p".to_string() } else { format!("p[{i}]") };
+            [("x".to_string(), &r.x), (p_key, &r.p)]
+        }))
+        .collect()
+}
+
+/// The scalars a Problem 1 answer prints, by JSON key (the optional ones where present).
+fn sliding_scalars(ans: &SlidingAnswer) -> Vec<(&'static str, &Measured)> {
     [
         ("lambda", ans.lambda.as_ref()),
         ("l", Some(&ans.l)),
@@ -263,11 +275,7 @@ fn sliding_keyed(ans: &SlidingAnswer) -> Vec<(String, &Measured)> {
         ("worn_area_per_distance", ans.worn_area_per_distance.as_ref()),
     ]
     .into_iter()
-    .filter_map(|(k, m)| m.map(|m| (k.to_string(), m)))
-    .chain(ans.pressure.iter().enumerate().flat_map(|(i, r)| {
-        let p_key = if ans.accuracy.iter().any(|(k, _)| k == "p") { "p".to_string() } else { format!("p[{i}]") };
-        [("x".to_string(), &r.x), (p_key, &r.p)]
-    }))
+    .filter_map(|(k, m)| m.map(|m| (k, m)))
     .collect()
 }
 
@@ -276,8 +284,8 @@ fn sliding_keyed(ans: &SlidingAnswer) -> Vec<(String, &Measured)> {
 pub(crate) fn sliding_values(ans: &SlidingAnswer, requested: u32) -> Values {
     let mut v = Values::default();
     let par = (requested as usize).min(ans.parameter_digits).max(1);
-    for (key, m) in sliding_keyed(ans).into_iter().take_while(|(k, _)| k != "x") {
-        v.push(&key, m.quantity(requested, ans.kind));
+    for (key, m) in sliding_scalars(ans) {
+        v.push(key, m.quantity(requested, ans.kind));
     }
     for r in &ans.pressure {
         v.push_point("x", "xh", r.xh.fmt(par), r.x.quantity(requested, ans.kind));
