@@ -91,24 +91,52 @@ pub fn symmetric_mode_exponent(eps: f64, b: f64, s: f64, m_max: usize) -> Option
     None
 }
 
+/// One node of the tanh-sinh rule of [`half_range_moment`] with its logarithms, which do not
+/// depend on eps or the index.
+struct MomentNode {
+    /// ln y.
+    ln_y: f64,
+    /// (ln(1 + y) + ln(1 - y))/2.
+    half_log_sum: f64,
+    /// ln(1 + y) - ln(1 - y).
+    log_ratio: f64,
+    /// The weight.
+    w: f64,
+}
+
+/// The nodes of [`half_range_moment`]'s rule (53 bits, refinement 2), built once per process.
+fn moment_nodes() -> &'static [MomentNode] {
+    static NODES: std::sync::OnceLock<Vec<MomentNode>> = std::sync::OnceLock::new();
+    NODES.get_or_init(|| {
+        crate::numerics::tanh_sinh::tanh_sinh_f64(53, 2.0)
+            .into_iter()
+            .filter(|&(y, c, _)| y > 0.0 && c > 0.0)
+            .map(|(y, c, w)| MomentNode {
+                ln_y: y.ln(),
+                half_log_sum: 0.5 * (y.ln_1p() + c.ln()),
+                log_ratio: y.ln_1p() - c.ln(),
+                w,
+            })
+            .collect()
+    })
+}
+
 /// M_x at a real x >= 1 (complex, as (re, im)): M_(x0 - 1) and M_x0, x0 = 1 + frac(x), by
 /// tanh-sinh quadrature of the definition (the endpoint factor (1 - y)^(-1/2 - i eps) from
 /// 1 - y held exactly by the rule), then the recurrence up to x (it holds at every real index
 /// > 0: integrate d/dy [y^x (1 + y)^(1/2 + i eps) (1 - y)^(1/2 - i eps)] over (0, 1)).
 pub fn half_range_moment(eps: f64, x: f64) -> (f64, f64) {
     let x0 = 1.0 + x.fract();
-    let rule = crate::numerics::tanh_sinh::tanh_sinh_f64(53, 2.0);
+    let nodes = moment_nodes();
+    // The phase eps (ln(1 + y) - ln(1 - y)) does not depend on the index: its cosine and sine once.
+    let trig: Vec<(f64, f64)> = nodes.iter().map(|n| (eps * n.log_ratio).sin_cos()).collect();
     let moment = |m: f64| {
         let (mut re, mut im) = (0.0, 0.0);
-        for &(y, c, w) in &rule {
-            if y <= 0.0 || c <= 0.0 {
-                continue;
-            }
+        for (n, &(sin, cos)) in nodes.iter().zip(&trig) {
             // y^m (1 + y)^(-1/2) (1 - y)^(-1/2) e^(i eps (ln(1 + y) - ln(1 - y))).
-            let modulus = (m * y.ln() - 0.5 * (y.ln_1p() + c.ln())).exp();
-            let phase = eps * (y.ln_1p() - c.ln());
-            re += w * modulus * phase.cos();
-            im += w * modulus * phase.sin();
+            let modulus = (m * n.ln_y - n.half_log_sum).exp();
+            re += n.w * modulus * cos;
+            im += n.w * modulus * sin;
         }
         (re, im)
     };
@@ -214,6 +242,29 @@ pub fn frozen_growth(eps: f64, b: f64, s: f64, eta: f64) -> f64 {
     if eps <= 0.0 {
         return 0.0;
     }
+    let key = [eps.to_bits(), b.to_bits(), s.to_bits(), eta.to_bits()];
+    let cache = GROWTH_CACHE.get_or_init(Default::default);
+    if let Some(&g) = cache.lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&key) {
+        return g;
+    }
+    let g = frozen_growth_uncached(eps, b, s, eta);
+    let mut map = cache.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if map.len() >= GROWTH_CACHE_ENTRIES {
+        map.clear();
+    }
+    map.insert(key, g);
+    g
+}
+
+/// The process cache of [`frozen_growth`], keyed by the bits of (eps, B, S, eta): the horizon of
+/// a material is read by every Problem 2 answer and refusal (docs/development.md, "Process caches").
+static GROWTH_CACHE: std::sync::OnceLock<std::sync::Mutex<std::collections::HashMap<[u64; 4], f64>>> =
+    std::sync::OnceLock::new();
+
+/// Entries of [`GROWTH_CACHE`] before it is emptied (a horizon reads about 700).
+const GROWTH_CACHE_ENTRIES: usize = 65_536;
+
+fn frozen_growth_uncached(eps: f64, b: f64, s: f64, eta: f64) -> f64 {
     let m = match frozen_exponent(eps, b, s, eta, ASYMPTOTIC_FROM) {
         Some(m) => m,
         None => match asymptotic_frozen_exponent(eps, eta) {
@@ -270,6 +321,14 @@ fn arg_gamma_half_minus_i(y: f64) -> f64 {
 /// still has to grow until full contact; claimed with [`KEPT_MARGIN`]: R(lambda) - KEPT_MARGIN
 /// (infinite at eps = 0). Trapezoid rule in eta, step [`GROWTH_STEP`].
 pub fn digits_kept(eps: f64, b: f64, s: f64, lambda: f64) -> f64 {
+    digits_kept_up_to(eps, b, s, lambda, f64::INFINITY)
+}
+
+/// [`digits_kept`] where it is below `cap`; otherwise some value >= `cap`: the integral from pi/2
+/// down stops once it has reached `cap` (R only grows as lambda falls, and at small lambda and
+/// larger nu each step costs a scan of the symbol up to m = [`ASYMPTOTIC_FROM`]). Below `cap` the
+/// value is [`digits_kept`]'s to the last bit (the same sum in the same order).
+pub fn digits_kept_up_to(eps: f64, b: f64, s: f64, lambda: f64, cap: f64) -> f64 {
     if eps <= 0.0 {
         return f64::INFINITY;
     }
@@ -283,6 +342,9 @@ pub fn digits_kept(eps: f64, b: f64, s: f64, lambda: f64) -> f64 {
         r += 0.5 * (hi - lo) * (g_hi + g_lo);
         hi = lo;
         g_hi = g_lo;
+        if r / std::f64::consts::LN_10 - KEPT_MARGIN >= cap {
+            break;
+        }
     }
     r / std::f64::consts::LN_10 - KEPT_MARGIN
 }
@@ -560,6 +622,27 @@ mod tests {
         // Relative to P'(x0) = pi x0/Re M_1, after 5% further growth: about 1e12 delta.
         let relative = k * (1.0 - 2.0 * c.eps * c.s) / std::f64::consts::PI * 1.05f64.powf(m);
         assert!((-2e12..-5e11).contains(&relative), "{relative:e}");
+    }
+
+    /// The capped digits kept equal the full integral to the bit below the cap and are at least the
+    /// cap above it (nu = 0, 3/10 at lambda = 0.2 .. 1.45; the solver's refusal reads only whether
+    /// they fall below 2 digits).
+    #[test]
+    fn capped_digits_kept_are_the_digits_kept_below_the_cap() {
+        for nu in [(0, 1), (3, 10)] {
+            let c = params(nu);
+            for lam in [0.2, 0.8, 1.2, 1.39, 1.45] {
+                let full = digits_kept(c.eps, c.b, c.s, lam);
+                for cap in [2.0, 20.0] {
+                    let capped = digits_kept_up_to(c.eps, c.b, c.s, lam, cap);
+                    if full < cap {
+                        assert_eq!(capped.to_bits(), full.to_bits(), "nu {nu:?}, lambda {lam}, cap {cap}");
+                    } else {
+                        assert!(capped >= cap && capped <= full, "nu {nu:?}, lambda {lam}: {capped} vs {full}");
+                    }
+                }
+            }
+        }
     }
 
     /// lambda_h(nu, 20) rises with nu (0, 1/10, 1/5, 3/10, 2/5, 9/20), stays below pi/2 while eps > 0,

@@ -9,7 +9,7 @@
 use super::solution::{solve_mpfr_with, AdhesionSolution, TensionZones};
 use super::solve::VolterraParams;
 use crate::adhesion::scales::{Digits, ScalesMpfr};
-use crate::asymptotics::adhesion_mode::{digits_kept, mode_sentence, valid_sizes};
+use crate::asymptotics::adhesion_mode::{digits_kept_up_to, mode_sentence, valid_sizes};
 use crate::growing_contact::error::AdhesionError;
 use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
@@ -109,7 +109,7 @@ pub fn solve_verified(
         f64::INFINITY
     } else {
         let c = AdhesionParamsF64::new(problem.material());
-        digits_kept(c.eps, c.b, c.s, lam)
+        digits_kept_up_to(c.eps, c.b, c.s, lam, MIN_DIGITS)
     };
     if headline < MIN_DIGITS || kept < MIN_DIGITS {
         let agree = if headline < MIN_DIGITS {
