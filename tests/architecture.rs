@@ -364,3 +364,46 @@ fn derived_parameters_have_one_definition() {
     }
     assert!(found.is_empty(), "derived parameters computed outside params:\n{}", found.join("\n"));
 }
+
+/// Every test marked `#[ignore = "long tier ..."]` anywhere in the workspace is named in the LONG
+/// list of `scripts/test` (so `scripts/test --long`, which CI runs, runs it: slow tests move to the
+/// long tier, never away), and every name in that list is such a test.
+#[test]
+fn every_long_tier_test_is_in_the_long_list() {
+    let top = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = Vec::new();
+    for dir in ["src", "tests", "series", "crates", "python/src"] {
+        if top.join(dir).is_dir() {
+            rust_files(&top.join(dir), &mut files);
+        }
+    }
+    let mut marked = BTreeSet::new();
+    for f in files.iter().filter(|f| !f.components().any(|c| c.as_os_str() == "target")) {
+        let text = std::fs::read_to_string(f).unwrap();
+        let mut pending = false;
+        for line in text.lines().map(str::trim) {
+            if line.starts_with("#[ignore = \"long tier") {
+                pending = true;
+            } else if pending {
+                if let Some(rest) = line.strip_prefix("fn ").or_else(|| line.strip_prefix("pub fn ")) {
+                    marked.insert(rest.split('(').next().unwrap().to_string());
+                    pending = false;
+                }
+            }
+        }
+    }
+    let script = std::fs::read_to_string(top.join("scripts/test")).unwrap();
+    let list = script.split("LONG=(").nth(1).and_then(|s| s.split(')').next()).expect("LONG=( ... ) in scripts/test");
+    let listed: BTreeSet<String> = list
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix('"')?.strip_suffix('"').map(str::to_string))
+        .flat_map(|entry| {
+            entry.split_whitespace().skip(2).map(|n| n.rsplit("::").next().unwrap().to_string()).collect::<Vec<_>>()
+        })
+        .collect();
+    assert!(!marked.is_empty() && !listed.is_empty());
+    let missing: Vec<_> = marked.difference(&listed).collect();
+    let stale: Vec<_> = listed.difference(&marked).collect();
+    assert!(missing.is_empty(), "long-tier tests not in scripts/test LONG: {missing:?}");
+    assert!(stale.is_empty(), "scripts/test LONG names no long-tier test: {stale:?}");
+}

@@ -625,13 +625,14 @@ mod tests {
     }
 
     /// The capped digits kept equal the full integral to the bit below the cap and are at least the
-    /// cap above it (nu = 0, 3/10 at lambda = 0.2 .. 1.45; the solver's refusal reads only whether
+    /// cap above it (nu = 0 at lambda = 0.5 .. 1.45, nu = 3/10 at 1.2 .. 1.45, where the symbol's
+    /// exponents stay small enough for a fast debug test; the solver's refusal reads only whether
     /// they fall below 2 digits).
     #[test]
     fn capped_digits_kept_are_the_digits_kept_below_the_cap() {
-        for nu in [(0, 1), (3, 10)] {
+        for (nu, lambdas) in [((0, 1), &[0.5, 0.8, 1.2, 1.39, 1.45][..]), ((3, 10), &[1.2, 1.39, 1.45][..])] {
             let c = params(nu);
-            for lam in [0.2, 0.8, 1.2, 1.39, 1.45] {
+            for &lam in lambdas {
                 let full = digits_kept(c.eps, c.b, c.s, lam);
                 for cap in [2.0, 20.0] {
                     let capped = digits_kept_up_to(c.eps, c.b, c.s, lam, cap);
