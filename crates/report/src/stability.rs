@@ -584,3 +584,28 @@ fn mode_table(cells: &[Cell]) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 31: the Problem 2 map (nu on x) draws lambda_h(nu, d), d = 12, 6, 2, as dashed curves
+    /// over nu = 0 .. 1/2 in steps of 0.01, each rising with nu to pi/2 at nu = 1/2, the 12-digit
+    /// curve from 0.84 at nu = 0 (inside the map's lambda grid 0.2 .. 1.4); the Problem 1 maps do not.
+    #[test]
+    fn the_problem_2_map_draws_the_horizon() {
+        let knob = Knob::MpfrVerified(30);
+        let chart = map_chart("p2", "Problem 2", "nu", &knob, 0, &[]);
+        let dashed: Vec<&Curve> = chart.curves.iter().filter(|c| c.draw == Draw::Dashed).collect();
+        assert_eq!(dashed.len(), 3, "{:?}", chart.curves.iter().map(|c| &c.name).collect::<Vec<_>>());
+        for c in &dashed {
+            assert_eq!(c.points.len(), 51, "{}", c.name);
+            assert!(c.points.windows(2).all(|w| w[1].1 >= w[0].1), "{} does not rise with nu", c.name);
+            assert_eq!(c.points[50], (0.5, std::f64::consts::FRAC_PI_2), "{}", c.name);
+        }
+        let first = dashed[0].points[0].1;
+        assert!(dashed[0].name.contains("lambda_h(nu, 12)") && (0.8..0.9).contains(&first), "{first}");
+        let p1 = map_chart("p1", "Problem 1", "theta", &knob, 0, &[]);
+        assert!(p1.curves.iter().all(|c| c.draw != Draw::Dashed));
+    }
+}

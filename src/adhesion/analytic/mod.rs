@@ -10,17 +10,21 @@
 //! ([`continuation`]). The forward solve amplifies every error of the history and of the
 //! interpolant by the mode's growth from eta0 to lambda: a run's error is its interpolant's tail
 //! times an amplification A, measured here as the two runs' difference over the first run's tail
-//! (nu = 0, eta0 = 0.45, lambda = 1: A ~ 10^95; nu = 3/10, lambda = 1.35: 10^28). So the runs carry
-//! digits + log10 A + [`GUARD_DIGITS`] digits and enough nodes for the tail to fall below
-//! 10^-(digits + 2)/A.
+//! (nu = 0, eta0 = 0.45, lambda = 1: A ~ 10^95). So the runs carry digits + log10 A +
+//! [`GUARD_DIGITS`] digits and enough nodes for the tail to fall below 10^-(digits + 2)/A. This
+//! holds while the mode's growth G from eta0 to lambda (frozen symbol) is representable, up to
+//! [`GROWTH_CAP`] decades; beyond it (nu = 3/10: G = 2.3e5 from 0.45 to 1.35) the history does not
+//! fix C, the runs agree only to the digits the mode leaves until full contact, whatever their
+//! nodes, bits and eta0, and one attempt is made ([`reach`]: where the method holds the digits).
 //!
 //! # Verification
 //! Three runs: A (eta0 = [`ETA0`], its precision and n nodes), B (the same eta0, 64 more bits and
 //! 9/8 the nodes) and C (eta0 = [`ETA0_ALT`], A's precision and nodes). The digits are the smaller
 //! agreement of B and of C with A (two precisions, two eta0, two node counts). When A and B agree
 //! to fewer digits than asked, A's node count is raised by 30% and its precision by the measured A,
-//! up to [`MAX_NODES`]; beyond that the method refuses with the amplification
-//! it measured.
+//! up to [`MAX_NODES`] (only where G <= [`GROWTH_CAP`]); then the method refuses with the
+//! amplification it measured, the mode's growth, R(lambda) where the history does not fix C, and
+//! the largest lambda that holds the digits asked at that nu ([`reach::Reach`]).
 //!
 //! The series part costs O(J^2) for J = [`continuation::SERIES_POWERS`], the collocation about
 //! n^2 (n + quadrature nodes) multiplications per run.
@@ -33,14 +37,17 @@
 //! 178 s, where the verified MPFR method keeps about 17 (long tier:
 //! `at_lambda_0_8_it_equals_the_default_method`); lambda = 1.2: P = 7.2670319702254635691189 with
 //! 34.9 verified digits, A = 10^104, 1435 s on a machine loaded 8 deep (long tier:
-//! `at_nu_0_lambda_1_2_it_verifies_twenty_digits`). nu = 3/10, lambda = 1.35: with 263 nodes two
-//! runs agree to 14.3 digits only, A = 10^46 (it grows with the node count), so 20 digits are
-//! refused there with that measured amplification.
+//! `at_nu_0_lambda_1_2_it_verifies_twenty_digits`). nu = 3/10: lambda = 1.3, 37.0 digits asked 30;
+//! lambda = 1.333 (the reach for 20 digits), 21.2 digits, 3.5 s; 1.337: 19.8; lambda = 1.35: two
+//! runs agree to 13.9 digits (75 nodes; 12.7-15 with 75-240 nodes, 200-500 bits, eta0 0.42-0.6;
+//! R(1.35) = 14.1), refused with the reach 1.333 (tests `at_nu_0_3_its_reach_holds_twenty_digits`,
+//! `at_nu_0_3_lambda_1_5_the_refusal_names_its_reach`).
 
 pub mod continuation;
 pub mod product;
+pub mod reach;
 
-use crate::asymptotics::adhesion_mode::digits_kept;
+use crate::asymptotics::adhesion_mode::{digits_kept, KEPT_MARGIN};
 use crate::error::Error;
 use crate::model::Material;
 use crate::numerics::accuracy::verified_digits_mpfr;
@@ -60,12 +67,14 @@ pub const MAX_NODES: usize = 640;
 pub const FIRST_NODES: usize = 60;
 /// Attempts (node and precision raises) before refusing.
 pub const ATTEMPTS: usize = 3;
-/// The first attempt carries GROWTH_FACTOR times the frozen symbol's decades of growth from eta0 to
-/// lambda ([`digits_kept`]; nu = 0, lambda = 0.8: 75 against 86 measured), at most
-/// [`GROWTH_CAP`] (beyond, the mode is not representable by [`MAX_NODES`] nodes: nu = 3/10,
-/// lambda = 1.35 measures 10^28 with 150 nodes and 10^46 with 263).
+/// The first attempt carries GROWTH_FACTOR times the frozen symbol's decades of growth G from eta0
+/// to lambda ([`reach::history_growth`]; nu = 0, lambda = 0.8: 75 against 86 measured) when G is
+/// at most [`GROWTH_CAP`].
 pub const GROWTH_FACTOR: f64 = 1.2;
-/// See [`GROWTH_FACTOR`].
+/// The largest growth G (decades) through which the history fixes C ([`reach`]): beyond it the
+/// mode is not representable by [`MAX_NODES`] nodes, and the runs, one attempt without raises, agree
+/// only to the digits the mode leaves (nu = 3/10, lambda = 1.35: G = 2.3e5; 12.7-15 digits with
+/// 75-240 nodes at 200-500 bits).
 pub const GROWTH_CAP: f64 = 150.0;
 /// Decay of the interpolant's tail per node (measured: 0.42 at nu = 0, lambda = 0.8; 0.18 at
 /// nu = 3/10, lambda = 1.35), for the first node count.
@@ -116,15 +125,13 @@ pub fn continue_to(material: &Material, lambda: &Float, digits: u32) -> Result<A
     let (e_a, e_c) = (eta0_for(lam, false), eta0_for(lam, true));
     // First guess from the frozen symbol: the mode's decades of growth from eta0 to lambda.
     let c = AdhesionParamsF64::new(material);
-    let growth = if c.eps > 0.0 {
-        (digits_kept(c.eps, c.b, c.s, e_a) - digits_kept(c.eps, c.b, c.s, lam)).clamp(0.0, GROWTH_CAP)
-    } else {
-        0.0
-    };
-    let mut amp = GROWTH_FACTOR * growth;
+    let growth = reach::history_growth(c.eps, c.b, c.s, e_a, lam, GROWTH_CAP);
+    let pinned = growth <= GROWTH_CAP;
+    let mut amp = if pinned { GROWTH_FACTOR * growth } else { 0.0 };
+    let attempts = if pinned { ATTEMPTS } else { 1 };
     let mut n = (((digits as f64 + amp + 10.0) / DIGITS_PER_NODE).ceil() as usize).clamp(FIRST_NODES, MAX_NODES);
     let mut last = None;
-    for _ in 0..ATTEMPTS {
+    for _ in 0..attempts {
         let prec = bits_for_digits(digits + amp.ceil() as u32 + GUARD_DIGITS);
         let lam_p = Float::with_val(prec + 64, lambda);
         let a = continuation::run(material, &lam_p, e_a, prec, n)?;
@@ -153,11 +160,24 @@ pub fn continue_to(material: &Material, lambda: &Float, digits: u32) -> Result<A
         amp = amp.max(measured + 5.0);
     }
     let (ab, measured, nodes) = last.expect("at least one attempt");
+    let r = reach::reach(material, digits as f64, ETA0, GROWTH_CAP);
+    let why = if pinned {
+        format!("{MAX_NODES} nodes are the most this method takes")
+    } else {
+        format!(
+            "the mode grows by more than 10^{GROWTH_CAP:.0} from eta0 = {e_a} to lambda (frozen symbol), so the series \
+             history does not fix C and no node count or precision adds digits beyond those the mode leaves until full \
+             contact, R(lambda) = {:.1} here (docs/theory.md section 11)",
+            digits_kept(c.eps, c.b, c.s, lam) + KEPT_MARGIN
+        )
+    };
     Err(Error::NoConvergence {
         what: format!(
             "analytic continuation at lambda = {lam}: with {nodes} Chebyshev nodes two runs agree to {ab:.1} of the \
-             {digits} digits asked; the forward solve amplifies the interpolation error by 10^{measured:.0} (measured), \
-             and {MAX_NODES} nodes are the most this method takes"
+             {digits} digits asked; the forward solve amplifies the interpolation error by 10^{measured:.0} (measured: \
+             the runs' difference over the first run's Chebyshev tail), and {why}; this method holds {digits} digits \
+             at this nu {}",
+            r.text()
         ),
     })
 }
