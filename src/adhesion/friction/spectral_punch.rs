@@ -40,6 +40,8 @@ pub struct VerifiedPunch {
     pub gamma_f64: f64,
     /// The `f64` method's C_P.
     pub load_f64: f64,
+    /// Working precision of the finer run (bits).
+    pub bits: u32,
 }
 
 /// The scan's range in the logit y = ln(gamma/(1 - gamma)): gamma from 0.0025 to 1 - 1.2e-4.
@@ -139,6 +141,7 @@ pub fn verified(beta: &Float, mu: &Float, digits: u32) -> Result<VerifiedPunch, 
             load_digits: digits_cap_for_bits(prec + 32),
             gamma_f64: 1.0,
             load_f64: std::f64::consts::FRAC_PI_2,
+            bits: prec + 32,
         });
     }
     let n = (digits as usize).saturating_sub(2).max(8);
@@ -153,5 +156,6 @@ pub fn verified(beta: &Float, mu: &Float, digits: u32) -> Result<VerifiedPunch, 
         load_coefficient: p2,
         gamma_f64,
         load_f64,
+        bits: prec + 32,
     })
 }
