@@ -45,10 +45,14 @@ impl<T: Real> DoubleExp<T> {
             let sinh = (et.clone() - one.clone() / et.clone()) * one.lit(0.5);
             let cosh = (et.clone() + one.clone() / et) * one.lit(0.5);
             let u = pi.clone() * one.lit(0.5) * sinh;
-            let e2 = (u.clone() * one.lit(2.0)).exp();
-            let sk = e2.clone() / (one.clone() + e2.clone());
-            let ck = one.clone() / (one.clone() + e2);
+            // e^(-2 |u|) <= 1: no overflow; s and 1 - s each from the side where it is small
+            let e = (-(u.abs()) * one.lit(2.0)).exp();
+            let (big, small) = (one.clone() / (one.clone() + e.clone()), e.clone() / (one.clone() + e));
+            let (sk, ck) = if u > one.lit(0.0) { (big, small) } else { (small, big) };
             let wk = hh.clone() * pi.clone() * cosh * sk.clone() * ck.clone();
+            if wk.partial_cmp(&one.lit(0.0)) != Some(std::cmp::Ordering::Greater) {
+                continue; // underflow at the far tail (f64): the node adds nothing
+            }
             s.push(sk);
             c.push(ck);
             w.push(wk);
