@@ -47,9 +47,9 @@ fn agrees_with_the_increment_method_at_three_friction_ratios() {
         assert!((g14 - f.gamma).abs() < tol_g, "mu = {mu}: c/a {g14} vs {} ({tol_g:e})", f.gamma);
         assert!((p14 - f.load_coefficient).abs() < tol_p, "mu = {mu}: C_P {p14} vs {}", f.load_coefficient);
     }
-    // beta/mu = 0.1 (theta0 = 0.38): the f64 spectral runs scatter by 7e-5 in c/a over n = 10..22
-    // and differ from the increment method's 0.992723 (2e-5), 1.947208 (8e-5) by about 1.1e-4 and
-    // 6e-4 (docs/theory.md section 17.7: not resolved); bounded at the measured size
+    // beta/mu = 0.1 (theta0 = 0.38): the f64 spectral runs are off by about 1.1e-4 in c/a and 6e-4
+    // in C_P (rounding; MPFR at n = 14 gives 0.9927170, 1.9472330, within the increment method's
+    // 0.992723 (2e-5), 1.947208 (8e-5); docs/theory.md section 17.7); bounded at the measured size
     let f = solve(0.5, 5.0, 40, Method::Increment).unwrap();
     let (g, p) = stick_ratio_f64(0.5, 5.0, 14, true).unwrap();
     assert!((g - f.gamma).abs() < 3e-4 && (p - f.load_coefficient).abs() < 1.5e-3, "c/a {g}, C_P {p} vs {f:?}");
