@@ -10,12 +10,17 @@
 //! [`ESTIMATE_SAFETY`]; `tests/friction_scene.rs` checks in five cases that the claimed error
 //! covers twice the difference from n = 160 (the error of n = 80 for an order >= 1).
 //!
-//! Refused with an input error ([`solvable_parabola`]): a method other than f64 (no MPFR method
-//! for friction yet), a finite period (the periodic row with stick and slip is not solved yet), a
-//! punch other than the parabola.
+//! `--method mpfr` ([`mpfr_answer`]): gamma and C_P by the spectral method with verified digits
+//! ([`crate::adhesion::friction::spectral_punch::verified`], docs/theory.md section 17.7), the
+//! digits of a, P2 and c propagated through the same formulas.
+//!
+//! Refused with an input error ([`solvable_parabola`]): a method other than f64 and mpfr, a finite
+//! period (the periodic row with stick and slip is not solved yet), a punch other than the
+//! parabola.
 
 use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance};
 use crate::adhesion::friction::single_punch::{self, Method};
+use crate::adhesion::friction::spectral_punch;
 use crate::error::Error;
 use crate::model::{AdhesionProblem, AdhesionSize, OnPunchRow, Period, PunchShape};
 use crate::numerics::exact::to_f64;
@@ -36,14 +41,14 @@ pub const FRICTION_NOTE: &str = "finite friction (docs/theory.md section 17): Co
      by the f64 unit-increment method on 40 and 80 stick elements; about 4-5 digits";
 
 /// The parabola's k, after the refusals of what is not solved with finite friction: `--method`
-/// other than f64, a finite period, a punch other than the parabola.
+/// other than f64 and mpfr, a finite period, a punch other than the parabola.
 pub fn solvable_parabola(p: &AdhesionProblem, method: crate::scene::Method) -> Result<&crate::model::Exact, Error> {
-    if method != crate::scene::Method::F64 {
+    if !matches!(method, crate::scene::Method::F64 | crate::scene::Method::Mpfr) {
         return Err(Error::input(
             "--method",
             method.name(),
-            "finite friction ([adhesion] friction) is solved by the f64 method only so far (4-5 digits): \
-             --method f64, or no --method",
+            "finite friction ([adhesion] friction) is solved by the f64 method (4-5 digits) and the mpfr \
+             method (verified digits): --method f64, --method mpfr, or no --method",
         ));
     }
     if let Period::Finite(l) = p.period() {
@@ -62,13 +67,17 @@ pub fn solvable_parabola(p: &AdhesionProblem, method: crate::scene::Method) -> R
 }
 
 /// The answer of the single parabolic punch with friction coefficient `mu_exact` by `method`
-/// (refused unless f64, see [`solvable_parabola`]).
+/// (f64 or mpfr with `digits` asked, see [`solvable_parabola`]).
 pub fn friction_answer(
     p: &AdhesionProblem,
     mu_exact: &crate::model::Exact,
     method: crate::scene::Method,
+    digits: u32,
 ) -> Result<AdhesionAnswer, Error> {
     let k = solvable_parabola(p, method)?;
+    if method == crate::scene::Method::Mpfr {
+        return mpfr_answer(p, mu_exact, k, digits);
+    }
     let f = |x: &crate::model::Exact, what: &str| {
         to_f64(x)
             .filter(|v| v.is_finite())
@@ -119,3 +128,62 @@ pub fn friction_answer(
         warnings: Vec::new(),
     })
 }
+
+/// The answer by the spectral method in MPFR: gamma and C_P with verified digits, a, P2 and c by
+/// the formulas of the module doc at the same precision.
+pub fn mpfr_answer(
+    p: &AdhesionProblem,
+    mu_exact: &crate::model::Exact,
+    k: &crate::model::Exact,
+    digits: u32,
+) -> Result<AdhesionAnswer, Error> {
+    use crate::numerics::exact::to_float;
+    use rug::Float;
+    let prec = (3.33 * (digits + 14) as f64).ceil() as u32 + 64;
+    let v = spectral_punch::verified(&to_float(&p.material().beta(), prec), &to_float(mu_exact, prec), digits)?;
+    let (gamma, cp) = (&v.gamma, &v.load_coefficient);
+    let ek = to_float(p.material().contact_modulus(), prec) * to_float(k, prec);
+    // relative digits of a and P2
+    let (a, p2, size_digits) = match p.size() {
+        AdhesionSize::HalfWidth(a) => {
+            let a = to_float(a, prec);
+            let p2 = Float::with_val(prec, cp * &ek) * &a * &a;
+            (a, p2, v.load_digits)
+        }
+        AdhesionSize::NormalLoad(p2) => {
+            let p2 = to_float(p2, prec);
+            let a = (Float::with_val(prec, &p2 / cp) / &ek).sqrt();
+            (a, p2, v.load_digits + std::f64::consts::LOG10_2)
+        }
+    };
+    // c = gamma a on the scale a: dc/a = dgamma + gamma da/a
+    let rel_a = match p.size() {
+        AdhesionSize::HalfWidth(_) => 0.0,
+        AdhesionSize::NormalLoad(_) => 10f64.powf(-size_digits),
+    };
+    let stick_digits = -(10f64.powf(-v.gamma_digits) + gamma.to_f64() * rel_a).log10();
+    let c = Float::with_val(prec, gamma * &a);
+    Ok(AdhesionAnswer {
+        provenance: Provenance { method: "mpfr", bits: Some(v.bits), nodes: None, order: None, convention: None },
+        kind: DigitsKind::Verified,
+        lambda: None,
+        p2: Measured::mpfr(p2.clone(), &p2, size_digits),
+        half_width: Measured::mpfr(a.clone(), &a, size_digits),
+        stick: Some(super::render::StickSlip {
+            friction: exact_series::q_text(mu_exact),
+            stick_half_width: Measured::mpfr(c, &a, stick_digits),
+            note: FRICTION_NOTE_MPFR,
+        }),
+        accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
+        fields: Vec::new(),
+        tension_zones: None,
+        warnings: Vec::new(),
+    })
+}
+
+/// [`FRICTION_NOTE`] of the mpfr method.
+pub const FRICTION_NOTE_MPFR: &str = "finite friction (docs/theory.md section 17): Coulomb slip |q1| = mu q2 in the \
+     slip zones c < |x| < a at the ends, stick in the middle |x| < c; under monotone normal loading of the single \
+     parabolic punch the solution is self-similar and c/a is constant during loading (D.A. Spence, J. Elasticity 5 \
+     (1975) 297-319), here with the shear's effect on the normal displacement kept (the coupled problem). Solved \
+     by the spectral method in MPFR (section 17.7), digits verified by two discretisations at two precisions";

@@ -346,15 +346,18 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
     Ok((Value::Object(m), claim, vec![values]))
 }
 
-/// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 method
-/// ([`answer_friction`]); the refusals of what is not solved with friction yet first.
+/// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 or the mpfr
+/// method ([`answer_friction`]); the refusals of what is not solved with friction yet first.
 fn adhesion_friction(p: &AdhesionProblem, mu: &crate::model::Exact, req: SolveRequest) -> Result<Rendered, Error> {
-    let answer = answer_friction::friction_answer(p, mu, req.method)?;
-    let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
+    let answer = answer_friction::friction_answer(p, mu, req.method, req.digits)?;
+    let mpfr = req.method == crate::scene::Method::Mpfr;
+    let shown = if mpfr { req.digits } else { req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1) };
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
     let values = render::adhesion_values(&answer, shown);
-    f64_digits(&mut m, req.digits);
+    if !mpfr {
+        f64_digits(&mut m, req.digits);
+    }
     m.insert("lambda_h".into(), Value::Null);
     let a = number(&values, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);

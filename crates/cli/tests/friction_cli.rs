@@ -43,9 +43,9 @@ fn shipped_scene_gives_the_boundary_element_stick_ratio() {
 
 #[test]
 fn what_friction_does_not_solve_is_refused_naming_it() {
-    let (code, _, err) = run(&["solve", SCENE, "--method", "mpfr"]);
+    let (code, _, err) = run(&["solve", SCENE, "--method", "series"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("--method") && err.contains("f64 method only") && err.contains("4-5 digits"), "{err}");
+    assert!(err.contains("--method") && err.contains("--method mpfr") && err.contains("4-5 digits"), "{err}");
     let text = std::fs::read_to_string(format!("{}/{SCENE}", common::ROOT)).unwrap();
     let periodic = scene_file("friction_period.toml", &text.replace("period = \"inf\"", "period = \"8\""));
     let (code, _, err) = run(&["solve", &periodic]);
@@ -62,4 +62,16 @@ fn what_friction_does_not_solve_is_refused_naming_it() {
     let (code, _, err) = run(&["solve", &zero]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("adhesion.friction") && err.contains("> 0"), "{err}");
+}
+
+#[test]
+fn mpfr_gives_verified_digits_of_the_spectral_method() {
+    // docs/theory.md section 17.7: c/a = 0.5219076749221461 (16.2 digits), C_P = 1.800911965200506302
+    let w = json(&["solve", SCENE, "--method", "mpfr", "--digits", "10", "--json"]);
+    assert!((num(&w, "stick_half_width") - 0.5219076749221461).abs() < 1e-10, "{w}");
+    assert!((num(&w, "P2") - 1.800911965200506).abs() < 1e-9, "{w}");
+    assert!(
+        w["digits_verified"].is_object() || w["digits_verified"].is_number() || w["digits_verified"].is_string(),
+        "{w}"
+    );
 }

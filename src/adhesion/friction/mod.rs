@@ -10,14 +10,25 @@
 //! c/a = 0.5219(1) at nu = 0, mu = 1/2, the two methods against each other, the approach to complete
 //! adhesion's C_P as mu grows, and the inequalities of the state.
 //!
+//! The spectral method ([`spectral`], generic over `f64` and MPFR through [`real`], with the
+//! composite tanh-sinh rules and least squares of [`quadrature`]; driver [`spectral_punch`]) solves
+//! the same increment with the exponents (17.3) in its basis: gamma and C_P with verified digits
+//! (docs/theory.md section 17.7; checks in `spectral_tests.rs`).
+//!
 //! Scenes with `[adhesion] friction` reach [`single_punch`] through `solve`
-//! (`src/solve/answer_friction.rs`, docs/theory.md section 17.5). Not built (issue 32): the MPFR
-//! method with verified digits, the periodic row.
+//! (`src/solve/answer_friction.rs`, docs/theory.md section 17.5). Not built (issue 32): the
+//! periodic row; `solve --method mpfr` does not use the spectral method yet.
 
 pub mod increment_f64;
 pub mod mesh;
+pub mod quadrature;
+pub mod real;
 pub mod single_punch;
+pub mod spectral;
+pub mod spectral_punch;
 pub mod state_f64;
 
+#[cfg(test)]
+mod spectral_tests;
 #[cfg(test)]
 mod tests;

@@ -89,7 +89,7 @@ fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Res
     if d_hi <= 0.0 {
         return Err(refuse(format!("> 1 - {:e}", 1.0 - GAMMA_MAX)));
     }
-    let (mut lo, mut d_lo) = loop {
+    let (lo, d_lo) = loop {
         let y = hi - 2.0;
         if y < y_min {
             return Err(refuse(format!("< {GAMMA_MIN:e}")));
@@ -100,29 +100,40 @@ fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Res
         }
         (hi, d_hi) = (y, d);
     };
-    // Illinois (regula falsi with halving of the retained end's value)
+    let y = illinois((lo, d_lo), (hi, d_hi), 1e-10, |y| defect(gamma(y)))?;
+    Ok(gamma(y))
+}
+
+/// The Illinois method (regula falsi with halving of the retained end's value) on a bracket
+/// with f(lo) < 0 <= f(hi), to a bracket narrower than `tol` (at most 100 steps); its middle.
+pub fn illinois<E>(
+    (mut lo, mut f_lo): (f64, f64),
+    (mut hi, mut f_hi): (f64, f64),
+    tol: f64,
+    mut f: impl FnMut(f64) -> Result<f64, E>,
+) -> Result<f64, E> {
     let mut side = 0;
-    for _ in 0..40 {
-        if hi - lo < 1e-10 {
+    for _ in 0..100 {
+        if (hi - lo).abs() < tol {
             break;
         }
-        let y = (lo * d_hi - hi * d_lo) / (d_hi - d_lo);
-        let d = defect(gamma(y))?;
+        let y = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        let d = f(y)?;
         if d < 0.0 {
-            (lo, d_lo) = (y, d);
+            (lo, f_lo) = (y, d);
             if side == -1 {
-                d_hi *= 0.5;
+                f_hi *= 0.5;
             }
             side = -1;
         } else {
-            (hi, d_hi) = (y, d);
+            (hi, f_hi) = (y, d);
             if side == 1 {
-                d_lo *= 0.5;
+                f_lo *= 0.5;
             }
             side = 1;
         }
     }
-    Ok(gamma(0.5 * (lo + hi)))
+    Ok(0.5 * (lo + hi))
 }
 
 /// (gamma, C_P) of one method on one mesh of `n` stick elements.

@@ -1,0 +1,363 @@
+//! The spectral method for the single punch's unit increment (docs/theory.md section 17.7,
+//! equations (17.7), (17.9)), generic over `f64` and MPFR ([`Real`]).
+//!
+//! With a = 1, E* k = 1, H\[f\](x) = (1/pi) PV int_-1^1 f(xi)/(x - xi) dxi, the increment
+//! s = s2 + i s1 (s2 even, s1 odd) at stick half-width gamma solves the derivatives of (17.7),
+//!     H\[s2\] - beta s1 = 0 on (0, 1),   H\[s1\] + beta s2 = 0 on (0, gamma),
+//!     s1 = mu s2 on (gamma, 1),   int_-1^1 s2 = 1,
+//! (the constants of (17.7) are the free descent v0 and, by oddness, zero). The basis carries the
+//! exponents of (17.2)/(17.3) (section 17.7 derives which families occur): with
+//! alpha = -1/2 - theta0, omega = -1/2 + theta0, tan(pi theta0) = beta mu,
+//! - stick zone, z = x/gamma, w = 1 - z^2, u = 2 v^2 - 1 with v = artanh(x)/artanh(gamma):
+//!   s2 = sum P_k T_k(u) + w^alpha sum Q_k T_k(u),   s1 = z (sum R_k T_k(u) + w^alpha sum S_k T_k(u));
+//! - slip zone, zeta = (x - gamma)/(1 - gamma), y = 2 zeta - 1:
+//!   s2 = (1 - zeta)^omega (sum A_k T_k(y) + zeta^alpha sum B_k T_k(y)),
+//!
+//! T_k Chebyshev polynomials, k < n: 6 n unknowns. The equations are collocated at 2 n + 2
+//! Chebyshev points of each zone (both on the stick zone) and solved with the normalisation in the
+//! least-squares sense (Householder QR). The Cauchy integrals are exact up to the quadrature: the
+//! self-zone principal value by subtraction, PV int f/(x - xi) = int (f(xi) - f(x))/(x - xi) +
+//! f(x) ln((x - a)/(b - x)), every integral by composite tanh-sinh graded toward near singularities
+//! (`quadrature.rs`).
+//!
+//! The stick-edge defect is the coefficient of |x - gamma|^alpha in r = s1 - mu s2 on the stick
+//! side, sum S_k - mu sum Q_k (up to the positive factor (2 gamma)^alpha... of r's leading term); the self-similar
+//! gamma is its zero (17.3: the increment bounded at gamma). The load coefficient of the parabola
+//! is C_P = 1/(2 I), I = (1/pi) int_0^1 s2 (-ln(1 - xi^2)/xi^2) dxi (17.9).
+//!
+//! `coupled = false` drops beta s1 from the first equation (the uncoupled problem, theta0 = 0).
+
+use super::quadrature::{graded, least_squares, DoubleExp};
+use super::real::Real;
+
+/// The increment at one gamma, solved.
+#[derive(Debug, Clone)]
+pub struct SpectralIncrement<T> {
+    /// Stick half-width.
+    pub gamma: T,
+    /// Coefficients [P, Q, R, S, A, B], n each.
+    pub coeffs: Vec<T>,
+    n: usize,
+    mu: T,
+    alpha: T,
+    omega: T,
+}
+
+/// The problem's constants at one precision.
+#[derive(Debug, Clone)]
+pub struct Spectral<T> {
+    beta: T,
+    beta_normal: T,
+    mu: T,
+    alpha: T,
+    omega: T,
+    n: usize,
+    rule: DoubleExp<T>,
+}
+
+fn chebyshev<T: Real>(u: &T, n: usize) -> Vec<T> {
+    let mut t = Vec::with_capacity(n);
+    t.push(u.lit(1.0));
+    if n > 1 {
+        t.push(u.clone());
+    }
+    for k in 2..n {
+        let next = u.lit(2.0) * u.clone() * t[k - 1].clone() - t[k - 2].clone();
+        t.push(next);
+    }
+    t
+}
+
+/// A collocation point: x with its distances to gamma (gamma - x, negative on the slip zone) and
+/// to 1, each accurate on its own.
+struct Target<T> {
+    x: T,
+    to_gamma: T,
+    to_one: T,
+}
+
+impl<T: Real> Spectral<T> {
+    /// The method for Poisson parameter `beta`, friction `mu` (given at the working precision)
+    /// with n polynomials per family.
+    pub fn new(beta: T, mu: T, n: usize, coupled: bool) -> Spectral<T> {
+        let beta_normal = if coupled { beta.clone() } else { beta.lit(0.0) };
+        let theta0 = (beta_normal.clone() * mu.clone()).atan() / beta.pi();
+        let half = beta.lit(0.5);
+        let edge = (0.5 - theta0.to_f64()).min(1.0);
+        let rule = DoubleExp::new(&beta.lit(1.0), edge);
+        Spectral { alpha: -half.clone() - theta0.clone(), omega: -half + theta0, beta, beta_normal, mu, n, rule }
+    }
+
+    /// s2 families (P, Q) and s1 families (R, S) of the stick zone at the point with distances
+    /// d_a = x + gamma and d_b = gamma - x.
+    fn stick_values(&self, gamma: &T, d_a: &T, d_b: &T) -> (Vec<T>, Vec<T>) {
+        let n = self.n;
+        let z = (d_a.clone() - d_b.clone()) / (gamma.lit(2.0) * gamma.clone());
+        let w = d_a.clone() * d_b.clone() / (gamma.clone() * gamma.clone());
+        // v = artanh(x)/artanh(gamma): the slip zones' edge singularities at x = +-1 pushed to
+        // infinity (section 17.7)
+        let one_g = gamma.lit(1.0) - gamma.clone();
+        let sigma = ((one_g.clone() + d_a.clone()) / (one_g.clone() + d_b.clone())).ln();
+        let sigma_g = ((gamma.lit(1.0) + gamma.clone()) / one_g).ln();
+        let v = sigma / sigma_g;
+        let u = gamma.lit(2.0) * v.clone() * v - gamma.lit(1.0);
+        let t = chebyshev(&u, n);
+        let wa = w.powr(&self.alpha);
+        let mut s2 = Vec::with_capacity(2 * n);
+        let mut s1 = Vec::with_capacity(2 * n);
+        s2.extend(t.iter().cloned());
+        s2.extend(t.iter().map(|v| wa.clone() * v.clone()));
+        s1.extend(t.iter().map(|v| z.clone() * v.clone()));
+        s1.extend(t.iter().map(|v| z.clone() * wa.clone() * v.clone()));
+        (s2, s1)
+    }
+
+    /// s2 families (A, B) of the slip zone at distances d_a = x - gamma, d_b = 1 - x.
+    fn slip_values(&self, gamma: &T, d_a: &T, d_b: &T) -> Vec<T> {
+        let len = gamma.lit(1.0) - gamma.clone();
+        let zeta = d_a.clone() / len.clone();
+        let zc = d_b.clone() / len.clone();
+        let y = (d_a.clone() - d_b.clone()) / len;
+        let t = chebyshev(&y, self.n);
+        let fo = zc.powr(&self.omega);
+        let fa = fo.clone() * zeta.powr(&self.alpha);
+        let mut g = Vec::with_capacity(2 * self.n);
+        g.extend(t.iter().map(|v| fo.clone() * v.clone()));
+        g.extend(t.iter().map(|v| fa.clone() * v.clone()));
+        g
+    }
+
+    /// pi H[s2](x) and pi H[s1](x) as rows over the 6 n coefficients.
+    fn hilbert_rows(&self, gamma: &T, tg: &Target<T>) -> (Vec<T>, Vec<T>) {
+        let n = self.n;
+        let zero = gamma.lit(0.0);
+        let (mut h2, mut h1) = (vec![zero.clone(); 6 * n], vec![zero.clone(); 6 * n]);
+        let in_stick = tg.to_gamma > zero;
+        // stick zone (-gamma, gamma), offsets from -gamma
+        let len = gamma.lit(2.0) * gamma.clone();
+        if in_stick {
+            let xo = tg.x.clone() + gamma.clone();
+            let (f2, f1) = self.stick_values(gamma, &xo, &tg.to_gamma);
+            let mut pieces = graded(&zero, &xo, None, Some(&tg.to_gamma));
+            pieces.extend(graded(&xo, &len, Some(&xo), None));
+            self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
+                let dx = d_b.clone() - tg.to_gamma.clone();
+                if dx == zero {
+                    return;
+                }
+                let k = w.clone() / dx;
+                let (v2, v1) = self.stick_values(gamma, d_a, d_b);
+                for j in 0..2 * n {
+                    h2[j] = h2[j].clone() + k.clone() * (v2[j].clone() - f2[j].clone());
+                    h1[2 * n + j] = h1[2 * n + j].clone() + k.clone() * (v1[j].clone() - f1[j].clone());
+                }
+            });
+            let lg = (xo / tg.to_gamma.clone()).ln();
+            for j in 0..2 * n {
+                h2[j] = h2[j].clone() + lg.clone() * f2[j].clone();
+                h1[2 * n + j] = h1[2 * n + j].clone() + lg.clone() * f1[j].clone();
+            }
+        } else {
+            let beyond = -tg.to_gamma.clone();
+            let pieces = graded(&zero, &len, None, Some(&beyond));
+            self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
+                let k = w.clone() / (d_b.clone() + beyond.clone());
+                let (v2, v1) = self.stick_values(gamma, d_a, d_b);
+                for j in 0..2 * n {
+                    h2[j] = h2[j].clone() + k.clone() * v2[j].clone();
+                    h1[2 * n + j] = h1[2 * n + j].clone() + k.clone() * v1[j].clone();
+                }
+            });
+        }
+        // slip zones: (gamma, 1) with kernel 1/(x - eta) and its mirror with 1/(x + eta)
+        let len = gamma.lit(1.0) - gamma.clone();
+        let (mut minus, mut plus) = (vec![zero.clone(); 2 * n], vec![zero.clone(); 2 * n]);
+        if in_stick {
+            let pieces = graded(&zero, &len, Some(&tg.to_gamma), None);
+            self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
+                let k = -w.clone() / (tg.to_gamma.clone() + d_a.clone());
+                let v = self.slip_values(gamma, d_a, d_b);
+                for j in 0..2 * n {
+                    minus[j] = minus[j].clone() + k.clone() * v[j].clone();
+                }
+            });
+        } else {
+            let xo = -tg.to_gamma.clone();
+            let g = self.slip_values(gamma, &xo, &tg.to_one);
+            let mut pieces = graded(&zero, &xo, None, Some(&tg.to_one));
+            pieces.extend(graded(&xo, &len, Some(&xo), None));
+            self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
+                let dx = xo.clone() - d_a.clone();
+                if dx == zero {
+                    return;
+                }
+                let k = w.clone() / dx;
+                let v = self.slip_values(gamma, d_a, d_b);
+                for j in 0..2 * n {
+                    minus[j] = minus[j].clone() + k.clone() * (v[j].clone() - g[j].clone());
+                }
+            });
+            let lg = (xo / tg.to_one.clone()).ln();
+            for j in 0..2 * n {
+                minus[j] = minus[j].clone() + lg.clone() * g[j].clone();
+            }
+        }
+        let mirror = tg.x.clone() + gamma.clone();
+        let pieces = graded(&zero, &len, Some(&mirror), None);
+        self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
+            let k = w.clone() / (mirror.clone() + d_a.clone());
+            let v = self.slip_values(gamma, d_a, d_b);
+            for j in 0..2 * n {
+                plus[j] = plus[j].clone() + k.clone() * v[j].clone();
+            }
+        });
+        for j in 0..2 * n {
+            h2[4 * n + j] = minus[j].clone() + plus[j].clone();
+            h1[4 * n + j] = self.mu.clone() * (minus[j].clone() - plus[j].clone());
+        }
+        (h2, h1)
+    }
+
+    /// The collocation points: 2 n + 2 on each zone.
+    fn targets(&self, gamma: &T) -> Vec<Target<T>> {
+        let m = 2 * self.n + 2;
+        let pi = gamma.pi();
+        let mut out = Vec::with_capacity(2 * m);
+        for i in 0..m {
+            let th = pi.clone() * gamma.lit((2 * i + 1) as f64) / gamma.lit((4 * m) as f64);
+            let sh = (th.clone() * gamma.lit(0.5)).sin();
+            let x = gamma.clone() * th.cos();
+            let to_gamma = gamma.lit(2.0) * gamma.clone() * sh.clone() * sh;
+            let to_one = gamma.lit(1.0) - x.clone();
+            out.push(Target { x, to_gamma, to_one });
+        }
+        let len = gamma.lit(1.0) - gamma.clone();
+        for i in 0..m {
+            let th = pi.clone() * gamma.lit((2 * i + 1) as f64) / gamma.lit((2 * m) as f64);
+            let (c, s) = ((th.clone() * gamma.lit(0.5)).cos(), (th * gamma.lit(0.5)).sin());
+            let from_gamma = len.clone() * c.clone() * c;
+            let to_one = len.clone() * s.clone() * s;
+            out.push(Target { x: gamma.clone() + from_gamma.clone(), to_gamma: -from_gamma, to_one });
+        }
+        out
+    }
+
+    /// Solves for the increment at stick half-width `gamma` in (0, 1); None when the
+    /// least-squares system is singular.
+    pub fn solve(&self, gamma: &T) -> Option<SpectralIncrement<T>> {
+        let (rows, rhs) = self.system(gamma);
+        let coeffs = least_squares(rows, rhs)?;
+        Some(self.increment(gamma, coeffs))
+    }
+
+    /// The increment with given coefficients.
+    pub fn increment(&self, gamma: &T, coeffs: Vec<T>) -> SpectralIncrement<T> {
+        SpectralIncrement {
+            gamma: gamma.clone(),
+            coeffs,
+            n: self.n,
+            mu: self.mu.clone(),
+            alpha: self.alpha.clone(),
+            omega: self.omega.clone(),
+        }
+    }
+
+    /// The collocation rows and right side (the normalisation last).
+    pub fn system(&self, gamma: &T) -> (Vec<Vec<T>>, Vec<T>) {
+        let n = self.n;
+        let zero = gamma.lit(0.0);
+        let pi = gamma.pi();
+        let mut rows = Vec::new();
+        let mut rhs = Vec::new();
+        for tg in self.targets(gamma) {
+            let (h2, h1) = self.hilbert_rows(gamma, &tg);
+            let mut ra: Vec<T> = h2.into_iter().map(|v| v / pi.clone()).collect();
+            if tg.to_gamma > zero {
+                let xo = tg.x.clone() + gamma.clone();
+                let (f2, f1) = self.stick_values(gamma, &xo, &tg.to_gamma);
+                for j in 0..2 * n {
+                    ra[2 * n + j] = ra[2 * n + j].clone() - self.beta_normal.clone() * f1[j].clone();
+                }
+                let mut rb: Vec<T> = h1.into_iter().map(|v| v / pi.clone()).collect();
+                for j in 0..2 * n {
+                    rb[j] = rb[j].clone() + self.beta.clone() * f2[j].clone();
+                }
+                rows.push(rb);
+                rhs.push(zero.clone());
+            } else {
+                let g = self.slip_values(gamma, &-tg.to_gamma.clone(), &tg.to_one);
+                for j in 0..2 * n {
+                    ra[4 * n + j] = ra[4 * n + j].clone() - self.beta_normal.clone() * self.mu.clone() * g[j].clone();
+                }
+            }
+            rows.push(ra);
+            rhs.push(zero.clone());
+        }
+        // int_-1^1 s2 = 1
+        let mut norm = vec![zero.clone(); 6 * n];
+        let len = gamma.lit(2.0) * gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            let (v2, _) = self.stick_values(gamma, d_a, d_b);
+            for j in 0..2 * n {
+                norm[j] = norm[j].clone() + w.clone() * v2[j].clone();
+            }
+        });
+        let len = gamma.lit(1.0) - gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            let v = self.slip_values(gamma, d_a, d_b);
+            for j in 0..2 * n {
+                norm[4 * n + j] = norm[4 * n + j].clone() + gamma.lit(2.0) * w.clone() * v[j].clone();
+            }
+        });
+        rows.push(norm);
+        rhs.push(gamma.lit(1.0));
+        (rows, rhs)
+    }
+
+    /// C_P = 1/(2 I) of the parabola (17.9) from a solved increment.
+    pub fn load_coefficient(&self, inc: &SpectralIncrement<T>) -> T {
+        let (n, gamma) = (self.n, &inc.gamma);
+        let zero = gamma.lit(0.0);
+        let one = gamma.lit(1.0);
+        let c = &inc.coeffs;
+        let mut i_stick = zero.clone();
+        let len = gamma.lit(2.0) * gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            let (v2, _) = self.stick_values(gamma, d_a, d_b);
+            let xi = (d_a.clone() - d_b.clone()) * gamma.lit(0.5);
+            let y = xi.clone() * xi;
+            let kern = if y == zero { one.clone() } else { -(-y.clone()).ln_1p() / y };
+            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[j].clone() * v2[j].clone());
+            i_stick = i_stick.clone() + w.clone() * kern * s2;
+        });
+        let mut i_slip = zero.clone();
+        let len = one.clone() - gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            let v = self.slip_values(gamma, d_a, d_b);
+            let eta = gamma.clone() + d_a.clone();
+            let kern = -(d_b.ln() + (one.clone() + eta.clone()).ln()) / (eta.clone() * eta);
+            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[4 * n + j].clone() * v[j].clone());
+            i_slip = i_slip.clone() + w.clone() * kern * s2;
+        });
+        let i = (i_stick * gamma.lit(0.5) + i_slip) / gamma.pi();
+        one / (gamma.lit(2.0) * i)
+    }
+}
+
+impl<T: Real> SpectralIncrement<T> {
+    /// The coefficient of w^alpha in r = s1 - mu s2 on the stick side at gamma (up to a positive
+    /// factor): zero at the self-similar gamma.
+    pub fn stick_edge_defect(&self) -> T {
+        let n = self.n;
+        let c = &self.coeffs;
+        let zero = self.gamma.lit(0.0);
+        let q = (0..n).fold(zero.clone(), |acc, k| acc + c[n + k].clone());
+        let s = (0..n).fold(zero, |acc, k| acc + c[3 * n + k].clone());
+        s - self.mu.clone() * q
+    }
+
+    /// Exponents (alpha, omega) of the basis.
+    pub fn exponents(&self) -> (T, T) {
+        (self.alpha.clone(), self.omega.clone())
+    }
+}

@@ -1,0 +1,161 @@
+//! The single punch's stick ratio gamma = c/a and load coefficient C_P = P/(E* k a^2) by the
+//! spectral method (`spectral.rs`, docs/theory.md section 17.7) in `f64` and in MPFR with
+//! verified digits.
+//!
+//! gamma is the zero of the stick-edge defect D(gamma) (negative below, positive above):
+//! - `f64` ([`stick_ratio_f64`]): scanned upward in the logit y = ln(gamma/(1 - gamma)) from
+//!   gamma = 0.0025 in steps of 1/2 to the first sign change from - to + (up to gamma = 1 - 1.2e-4),
+//!   then the Illinois method to a bracket of 1e-13 in y;
+//! - MPFR ([`stick_ratio_mpfr`]): the secant method from a start (the `f64` root) to a step below
+//!   2^-(bits - 16). C_P is stationary in gamma at the root (measured: dC_P/dgamma changes sign
+//!   there), so the last iterate's C_P carries the root's error squared.
+//!
+//! [`verified`]: two discretisations at two precisions, (n, B) and (n + 6, B + 32) with
+//! n = max(8, digits - 2) polynomials per family and B = 3.33 (digits + 14) + 16 bits (the
+//! collocation loses about 10 digits to rounding, section 17.7); the verified digits are
+//! those where the two agree, for gamma and for C_P (docs/theory.md section 17.7 for the measured
+//! convergence). beta = 0 is exact (gamma = 1, C_P = pi/2).
+
+use rug::ops::Pow;
+use rug::Float;
+
+use super::real::{Mp, Real};
+use super::single_punch::illinois;
+use super::spectral::Spectral;
+use crate::growing_contact::error::AdhesionError;
+use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits};
+
+/// gamma and C_P in MPFR with their verified digits, and the `f64` run of the same method.
+#[derive(Debug, Clone)]
+pub struct VerifiedPunch {
+    /// gamma = c/a (the finer run).
+    pub gamma: Float,
+    /// C_P = P/(E* k a^2) (the finer run).
+    pub load_coefficient: Float,
+    /// Digits where the two runs agree on gamma (scale 1).
+    pub gamma_digits: f64,
+    /// Digits where the two runs agree on C_P (relative).
+    pub load_digits: f64,
+    /// The `f64` method's gamma.
+    pub gamma_f64: f64,
+    /// The `f64` method's C_P.
+    pub load_f64: f64,
+    /// Working precision of the finer run (bits).
+    pub bits: u32,
+}
+
+/// The scan's range in the logit y = ln(gamma/(1 - gamma)): gamma from 0.0025 to 1 - 1.2e-4.
+const Y_MIN: f64 = -6.0;
+/// See [`Y_MIN`].
+const Y_MAX: f64 = 9.0;
+
+fn not_converged(reason: String) -> AdhesionError {
+    AdhesionError::NotConverged { what: "single-punch stick ratio (spectral)", reason }
+}
+
+fn singular(gamma: f64) -> AdhesionError {
+    not_converged(format!("the collocation system is singular at c/a = {gamma}"))
+}
+
+/// (gamma, C_P) in `f64` with `n` polynomials per family.
+pub fn stick_ratio_f64(beta: f64, mu: f64, n: usize, coupled: bool) -> Result<(f64, f64), AdhesionError> {
+    let sp = Spectral::new(beta, mu, n, coupled);
+    let gamma = |y: f64| 1.0 / (1.0 + (-y).exp());
+    let defect = |y: f64| -> Result<f64, AdhesionError> {
+        let g = gamma(y);
+        Ok(sp.solve(&g).ok_or_else(|| singular(g))?.stick_edge_defect())
+    };
+    // the first sign change from - to + upward in y from gamma = 0.0025 to gamma = 1 - 1.2e-4
+    let (mut lo, mut d_lo) = (Y_MIN, defect(Y_MIN)?);
+    let (hi, d_hi) = loop {
+        let y = lo + 0.5;
+        if y > Y_MAX {
+            return Err(AdhesionError::IllConditioned {
+                method: "single-punch stick zone (spectral, f64)",
+                parameter: "c/a",
+                value: "outside [0.0025, 1 - 1.2e-4]".into(),
+                valid: "0.0025 <= c/a <= 1 - 1.2e-4".into(),
+                reason: "the stick-edge defect has no sign change from - to + in this range".into(),
+            });
+        }
+        let d = defect(y)?;
+        if d_lo < 0.0 && d >= 0.0 {
+            break (y, d);
+        }
+        (lo, d_lo) = (y, d);
+    };
+    let g = gamma(illinois((lo, d_lo), (hi, d_hi), 1e-13, defect)?);
+    let inc = sp.solve(&g).ok_or_else(|| singular(g))?;
+    Ok((g, sp.load_coefficient(&inc)))
+}
+
+/// (gamma, C_P) in MPFR at `prec` bits with `n` polynomials per family, by the secant method
+/// from `start` (within about 1e-6 of the root) to a step below 10^-`digits`.
+pub fn stick_ratio_mpfr(
+    beta: &Float,
+    mu: &Float,
+    (n, prec, digits): (usize, u32, u32),
+    start: f64,
+    coupled: bool,
+) -> Result<(Float, Float), AdhesionError> {
+    let at = |x: &Float| Mp(Float::with_val(prec, x));
+    let sp = Spectral::new(at(beta), at(mu), n, coupled);
+    let solve = |g: &Mp| sp.solve(g).ok_or_else(|| singular(g.to_f64()));
+    let mut g0 = Mp::new(prec, start);
+    let mut g1 = Mp::new(prec, start * (1.0 - 1e-8));
+    let (mut d0, mut inc1) = (solve(&g0)?.stick_edge_defect(), solve(&g1)?);
+    let tol = Mp(Float::with_val(prec, 10u32).pow(-(digits as i32)));
+    for _ in 0..30 {
+        let d1 = inc1.stick_edge_defect();
+        let denom = d1.clone() - d0.clone();
+        if denom == g0.lit(0.0) {
+            break;
+        }
+        let g2 = g1.clone() - d1.clone() * (g1.clone() - g0.clone()) / denom;
+        let one = g2.lit(1.0);
+        if !(g2 > g2.lit(0.0) && g2 < one) {
+            return Err(not_converged(format!("the secant step left 0 < c/a < 1 ({})", g2.to_f64())));
+        }
+        let step = (g2.clone() - g1.clone()).abs();
+        (g0, d0) = (g1, d1);
+        g1 = g2;
+        inc1 = solve(&g1)?;
+        if step < tol {
+            let load = sp.load_coefficient(&inc1);
+            return Ok((g1.0, load.0));
+        }
+    }
+    Err(not_converged(format!("the secant iteration did not settle (c/a = {})", g1.to_f64())))
+}
+
+/// gamma and C_P with verified digits (module doc); `beta`, `mu` at a precision of at least
+/// 3.33 digits + 72 bits (exact values of the problem).
+pub fn verified(beta: &Float, mu: &Float, digits: u32) -> Result<VerifiedPunch, AdhesionError> {
+    let prec = (3.33 * (digits + 14) as f64 + 16.0).ceil() as u32;
+    if beta.is_zero() {
+        let pi = Float::with_val(prec + 32, rug::float::Constant::Pi) / 2u32;
+        return Ok(VerifiedPunch {
+            gamma: Float::with_val(prec + 32, 1),
+            load_coefficient: pi,
+            gamma_digits: digits_cap_for_bits(prec + 32),
+            load_digits: digits_cap_for_bits(prec + 32),
+            gamma_f64: 1.0,
+            load_f64: std::f64::consts::FRAC_PI_2,
+            bits: prec + 32,
+        });
+    }
+    let n = (digits as usize).saturating_sub(2).max(8);
+    let (gamma_f64, load_f64) = stick_ratio_f64(beta.to_f64(), mu.to_f64(), 10, true)?;
+    let (g1, p1) = stick_ratio_mpfr(beta, mu, (n, prec, digits + 4), gamma_f64, true)?;
+    let (g2, p2) = stick_ratio_mpfr(beta, mu, (n + 6, prec + 32, digits + 4), g1.to_f64(), true)?;
+    let cap = digits_cap_for_bits(prec);
+    Ok(VerifiedPunch {
+        gamma_digits: agreement_mpfr(&g1, &g2, &Float::with_val(64, 1), cap),
+        load_digits: agreement_mpfr(&p1, &p2, &p2, cap),
+        gamma: g2,
+        load_coefficient: p2,
+        gamma_f64,
+        load_f64,
+        bits: prec + 32,
+    })
+}
