@@ -3,9 +3,13 @@
 //! `half_width` and `P2` are checked against a finer run of the same method (n = 160 stick
 //! elements against the answer's 80), with that run's own error allowed for: the increment
 //! converges about like 1/n (section 17.4), so the error of n = 80 is about twice its difference
-//! from n = 160, and the claim must cover [`FIRST_ORDER`] times that difference.
+//! from n = 160, and the claim must cover [`FIRST_ORDER`] times that difference. The fields q1,
+//! q2, psi at the scene's points the same way (the n = 160 fields at the n = 160 stick ratio and
+//! load), and the `checks` hold: Coulomb's inequality on the stick zone, no tension, no slip
+//! reversal and the two methods' agreement, each within its printed error.
 
-use periodic_contact::adhesion::friction::single_punch::{solve_once, Method};
+use periodic_contact::adhesion::friction::fields::fields;
+use periodic_contact::adhesion::friction::single_punch::{solve_once, solve_pair, Method};
 use periodic_contact::api::{self, SolveOptions};
 
 /// err(80) ~ |x(80) - x(160)| / (1 - 2^-p) with p >= 1: at most twice the difference.
@@ -14,7 +18,8 @@ const FIRST_ORDER: f64 = 2.0;
 fn scene(nu: &str, mu: &str, size: &str) -> String {
     format!(
         "[problem]\nkind = \"adhesion\"\n[material]\npoisson_ratio = \"{nu}\"\ncontact_modulus = \"2\"\n[punch]\n\
-         shape = \"parabolic\"\nk = \"1/2\"\nperiod = \"inf\"\n[adhesion]\n{size}\nfriction = \"{mu}\"\n"
+         shape = \"parabolic\"\nk = \"1/2\"\nperiod = \"inf\"\n[adhesion]\n{size}\nfriction = \"{mu}\"\n\
+         [output]\npoints = [\"0\", \"1/5\", \"1/2\", \"4/5\", \"99/100\", \"1\"]\n"
     )
 }
 
@@ -62,7 +67,38 @@ fn claimed_digits_hold_against_a_finer_mesh() {
             );
             assert!(error <= claimed, "{name}: error {error:e} > claimed {claimed:e} ({})", a.json);
         }
-        assert!(a.claim.digits >= 3.5 && a.claim.digits <= 6.0, "{:?}", a.claim);
+        // the fields against the n = 160 mesh (E* k = 1, so the stress scale is a, psi's a/2)
+        let xs = [0.0, 0.2, 0.5, 0.8, 0.99, 1.0];
+        let fine = fields(beta, mu_f, solve_pair(beta, mu_f, 80, Method::Increment).unwrap(), 80, &xs).unwrap();
+        let a_ref = ref_a;
+        for (name, scale) in [("q1", a_ref), ("q2", a_ref), ("psi", 0.5 * a_ref)] {
+            let field = a.field(name).unwrap_or_else(|| panic!("no {name}: {}", a.json));
+            for ((x, q), f) in field.points.iter().zip(&fine.points) {
+                let truth = scale
+                    * match name {
+                        "q1" => f.q1,
+                        "q2" => f.q2,
+                        _ => f.psi,
+                    };
+                let error = FIRST_ORDER * (q.value - truth).abs();
+                let claimed = 10f64.powf(-q.digits) * q.scale;
+                assert!(error <= claimed, "{name}({x}): error {error:e} > claimed {claimed:e} ({})", a.json);
+            }
+        }
+        // the checks hold within their printed errors
+        let checks = &a.json["checks"];
+        let check = |key: &str| (checks[key]["value"].as_f64().unwrap(), checks[key]["error"].as_f64().unwrap());
+        let (ratio, e) = check("stick_friction_ratio_max");
+        assert!(ratio <= 1.0 + e + 1e-5 && ratio > 0.0, "{checks}");
+        let (low, e) = check("pressure_min_over_max");
+        assert!(low >= -e - 1e-6, "{checks}");
+        let (out, e) = check("outward_slip_rate_max");
+        assert!(out <= e + 1e-6, "{checks}");
+        for key in ["methods_difference_stick_ratio", "methods_difference_load_coefficient"] {
+            let (d, e) = check(key);
+            assert!(d <= e + 1e-5, "{key}: {checks}");
+        }
+        assert!(a.claim.digits >= 2.0 && a.claim.digits <= 6.0, "{:?}", a.claim);
         assert!((p2.value / half_width.value.powi(2) - cp80).abs() < 1e-8, "{}", a.json);
     }
 }

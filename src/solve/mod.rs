@@ -103,7 +103,7 @@ pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
         }
         .map_err(|e| with_periodic_hint(e, p)),
         SceneProblem::Adhesion(p) => match (p.friction(), req.method) {
-            (Some(mu), _) => adhesion_friction(p, mu, req),
+            (Some(mu), _) => adhesion_friction(p, scene, mu, req),
             (None, Method::Mpfr) => adhesion_mpfr(p, scene, req),
             (None, Method::F64) => adhesion_f64(p, scene, req),
             (None, Method::Analytic) => adhesion_analytic(p, req),
@@ -348,8 +348,13 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 
 /// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 method
 /// ([`answer_friction`]); the refusals of what is not solved with friction yet first.
-fn adhesion_friction(p: &AdhesionProblem, mu: &crate::model::Exact, req: SolveRequest) -> Result<Rendered, Error> {
-    let answer = answer_friction::friction_answer(p, mu, req.method)?;
+fn adhesion_friction(
+    p: &AdhesionProblem,
+    scene: &Scene,
+    mu: &crate::model::Exact,
+    req: SolveRequest,
+) -> Result<Rendered, Error> {
+    let answer = answer_friction::friction_answer(p, mu, req.method, &scene.output.points)?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);

@@ -8,12 +8,14 @@
 //! the slip rate, the load by integration). Checked in `tests.rs`: Hertz's pi/2 at beta = 0 and as
 //! mu -> 0, the uncoupled problem against K'(gamma)/K(gamma) = beta/mu, the boundary-element
 //! c/a = 0.5219(1) at nu = 0, mu = 1/2, the two methods against each other, the approach to complete
-//! adhesion's C_P as mu grows, and the inequalities of the state.
+//! adhesion's C_P as mu grows, and the inequalities of the state. [`fields`]: q1, q2, psi at
+//! points, superposed from the unit increments, and the checks of the inequalities from the state.
 //!
 //! Scenes with `[adhesion] friction` reach [`single_punch`] through `solve`
 //! (`src/solve/answer_friction.rs`, docs/theory.md section 17.5). Not built (issue 32): the MPFR
 //! method with verified digits, the periodic row.
 
+pub mod fields;
 pub mod increment_f64;
 pub mod mesh;
 pub mod single_punch;

@@ -146,14 +146,22 @@ pub fn solve_once(beta: f64, mu: f64, n: usize, method: Method, coupled: bool) -
     }
 }
 
+/// (gamma, C_P) of the coupled problem by `method` on n and on 2 n stick elements.
+pub fn solve_pair(beta: f64, mu: f64, n: usize, method: Method) -> Result<[(f64, f64); 2], AdhesionError> {
+    Ok([solve_once(beta, mu, n, method, true)?, solve_once(beta, mu, 2 * n, method, true)?])
+}
+
 /// gamma and C_P of the coupled problem by `method` on n and 2 n stick elements.
 pub fn solve(beta: f64, mu: f64, n: usize, method: Method) -> Result<SinglePunchF64, AdhesionError> {
-    let (g1, p1) = solve_once(beta, mu, n, method, true)?;
-    let (g2, p2) = solve_once(beta, mu, 2 * n, method, true)?;
-    Ok(SinglePunchF64 {
+    Ok(from_pair(solve_pair(beta, mu, n, method)?))
+}
+
+/// The finer mesh's (gamma, C_P) with the differences from the coarser one as their estimates.
+pub fn from_pair([(g1, p1), (g2, p2)]: [(f64, f64); 2]) -> SinglePunchF64 {
+    SinglePunchF64 {
         gamma: g2,
         gamma_error: (g2 - g1).abs(),
         load_coefficient: p2,
         load_coefficient_error: (p2 - p1).abs(),
-    })
+    }
 }
