@@ -18,6 +18,8 @@
 pub mod fields;
 pub mod increment_f64;
 pub mod mesh;
+pub mod row_f64;
+pub mod row_load_f64;
 pub mod single_punch;
 pub mod state_f64;
 

@@ -74,7 +74,7 @@ fn check(beta: f64, mu: f64, n: usize) -> Result<(), AdhesionError> {
 /// positive again, an artefact). Scanned downward in the logit y = ln(gamma/(1 - gamma)) from
 /// [`GAMMA_MAX`] in steps of 2 to the first negative value, then the Illinois method to a bracket
 /// of 1e-10 in y; refused when there is no sign change in [GAMMA_MIN, GAMMA_MAX].
-fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Result<f64, AdhesionError> {
+pub(crate) fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Result<f64, AdhesionError> {
     let gamma = |y: f64| 1.0 / (1.0 + (-y).exp());
     let logit = |g: f64| (g / (1.0 - g)).ln();
     let (y_min, y_max) = (logit(GAMMA_MIN), logit(GAMMA_MAX));
