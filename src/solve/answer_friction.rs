@@ -17,15 +17,14 @@
 //! each with its error and what it means (docs/theory.md section 17.5).
 //!
 //! Refused with an input error: a method other than f64 ([`refuse_method`]: no MPFR method for
-//! friction yet), a finite period (the periodic row with stick and slip is not solved yet) and a
-//! punch other than the parabola ([`solvable_parabola`]).
+//! friction yet) and a punch other than the parabola ([`solvable_parabola`]).
 
 use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance};
 use super::render::{FieldRow, FrictionCheck};
 use crate::adhesion::friction::fields::{fields, FieldsF64};
 use crate::adhesion::friction::single_punch::{self, Method, SinglePunchF64};
 use crate::error::Error;
-use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow, Period, PunchShape};
+use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow, PunchShape};
 use crate::numerics::exact::to_f64;
 
 /// Stick elements of the coarser mesh (the finer has twice as many).
@@ -62,16 +61,22 @@ pub fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
     Ok(())
 }
 
-/// The parabola's k, after the refusals of what is not solved with finite friction: a finite
-/// period, a punch other than the parabola.
+/// The model the periodic row's answer solves, printed as its `friction_note`.
+pub const FRICTION_NOTE_ROW: &str = "finite friction on the periodic row (docs/theory.md section 17): Coulomb slip \
+     |q1| = mu q2 in the slip zones c < |x| < a at the ends of every punch, stick in the middle |x| < c, under \
+     monotone normal loading; c/a depends on lambda = pi a/L (not constant during loading as for the single \
+     punch). Solved by the f64 march in lambda (the unit increment bounded at the stick edge, the load from the \
+     slope at the moving edge) on two discretisations; about 2-3 digits in the load, 4 in c/a";
+
+/// The model of a friction answer at nu = 1/2, printed as its `friction_note`.
+pub const FRICTION_NOTE_INCOMPRESSIBLE: &str = "finite friction at nu = 1/2 (beta = 0; docs/theory.md section 17.3): \
+     the shear does not move the surface normally nor the pressure laterally, nothing drives a slip, the whole \
+     contact sticks (c = a) and the answer is the frictionless one at any mu, solved by the verified MPFR method \
+     (Kuznetsov's load for the periodic row, Hertz's for the single punch)";
+
+/// The parabola's k, after the refusal of a punch other than the parabola (not solved with finite
+/// friction).
 pub fn solvable_parabola(p: &AdhesionProblem) -> Result<&Exact, Error> {
-    if let Period::Finite(l) = p.period() {
-        return Err(Error::input(
-            "period",
-            crate::model::readable(l),
-            "only the single punch (period = \"inf\") is solved with finite friction so far",
-        ));
-    }
     match p.shape() {
         PunchShape::Parabolic { k } => Ok(k),
         other => {
@@ -81,7 +86,7 @@ pub fn solvable_parabola(p: &AdhesionProblem) -> Result<&Exact, Error> {
 }
 
 /// Digits of a relative error (the f64 cap for none).
-fn digits(rel: f64) -> f64 {
+pub(crate) fn digits(rel: f64) -> f64 {
     if rel > 0.0 {
         -rel.log10()
     } else {
@@ -89,8 +94,9 @@ fn digits(rel: f64) -> f64 {
     }
 }
 
-/// The answer of the single parabolic punch with friction coefficient `mu_exact` by `method`
-/// (refused unless f64, see [`refuse_method`]), with the fields at `points` (x/a in [0, 1]).
+/// The answer of the single parabolic punch (`period = "inf"`; a finite period is the row's,
+/// `answer_friction_row.rs`) with friction coefficient `mu_exact` by `method` (refused unless f64,
+/// see [`refuse_method`]), with the fields at `points` (x/a in [0, 1]).
 pub fn friction_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
@@ -191,7 +197,7 @@ pub fn friction_answer(
 fn checks(
     fl: &FieldsF64,
     inc: &SinglePunchF64,
-    state: Result<SinglePunchF64, crate::growing_contact::error::AdhesionError>,
+    state: Result<SinglePunchF64, crate::adhesion::AdhesionError>,
 ) -> Vec<FrictionCheck> {
     let c = &fl.checks;
     let mesh = "the state method (n = 80 stick elements) at the answer's c/a; error: twice its difference from n = 40";

@@ -9,6 +9,7 @@ pub mod answer_adhesion;
 pub mod answer_analytic;
 pub(crate) mod answer_f64;
 pub mod answer_friction;
+pub mod answer_friction_row;
 pub mod answer_law;
 pub mod answer_mpfr;
 pub(crate) mod answer_pade;
@@ -354,12 +355,47 @@ fn adhesion_friction(
     mu: &crate::model::Exact,
     req: SolveRequest,
 ) -> Result<Rendered, Error> {
-    let answer = answer_friction::friction_answer(p, mu, req.method, &scene.output.points)?;
+    if num_traits::Zero::is_zero(&p.material().beta()) {
+        return adhesion_friction_incompressible(p, scene, mu, req);
+    }
+    let answer = match p.period() {
+        Period::Finite(l) => answer_friction_row::row_answer(p, mu, l, req.method)?,
+        Period::Infinite => answer_friction::friction_answer(p, mu, req.method, &scene.output.points)?,
+    };
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
     let values = render::adhesion_values(&answer, shown);
     f64_digits(&mut m, req.digits);
+    m.insert("lambda_h".into(), Value::Null);
+    let a = number(&values, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
+    Ok((Value::Object(m), claim, vec![values]))
+}
+
+/// Finite friction at nu = 1/2 (beta = 0): nothing drives a slip, the whole contact sticks (c = a)
+/// and the problem is the frictionless one (docs/theory.md section 17.3), solved by the verified
+/// MPFR method of complete adhesion (which is frictionless there) at the digits requested, whatever
+/// the method asked (Kuznetsov's closed form for the periodic row, docs/theory.md section 4).
+fn adhesion_friction_incompressible(
+    p: &AdhesionProblem,
+    scene: &Scene,
+    mu: &crate::model::Exact,
+    req: SolveRequest,
+) -> Result<Rendered, Error> {
+    answer_friction::solvable_parabola(p)?;
+    let v = adhesion::solve_verified(p, &scene.output.points, req.digits)?;
+    let mut answer = answer_adhesion::mpfr_answer(p, &v);
+    answer.stick = Some(render::StickSlip {
+        friction: exact_series::q_text(mu),
+        stick_half_width: answer.half_width.clone(),
+        note: answer_friction::FRICTION_NOTE_INCOMPRESSIBLE,
+        checks: Vec::new(),
+    });
+    answer.accuracy.push(("stick".into(), answer.headline()));
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, req.digits);
+    let values = render::adhesion_values(&answer, req.digits);
     m.insert("lambda_h".into(), Value::Null);
     let a = number(&values, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);

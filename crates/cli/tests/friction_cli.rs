@@ -1,6 +1,7 @@
 //! `periodic-contact solve` with `[adhesion] friction` (issue 32, docs/theory.md section 17): the
 //! shipped single-punch scene gives the boundary-element c/a = 0.5219(1) to its digits, and what is
-//! not solved with finite friction is refused as bad input (exit code 2) naming the parameter.
+//! not solved with finite friction is refused as bad input (exit code 2) naming the parameter; a
+//! finite period goes to the periodic row.
 
 mod common;
 use common::{json, run, scene_file};
@@ -62,10 +63,17 @@ fn what_friction_does_not_solve_is_refused_naming_it() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--method") && err.contains("f64 method only") && err.contains("4-5 digits"), "{err}");
     let text = std::fs::read_to_string(format!("{}/{SCENE}", common::ROOT)).unwrap();
+    // a finite period is the periodic row (lambda = pi a/L = 0.39 here), solved; a contact beyond the
+    // march's lambda <= 1.5 is refused naming half_width
     let periodic = scene_file("friction_period.toml", &text.replace("period = \"inf\"", "period = \"8\""));
-    let (code, _, err) = run(&["solve", &periodic]);
+    let (code, out, err) = run(&["solve", &periodic]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("stick_half_width") && out.contains("lambda: 3.92"), "{out}");
+    let unswept = text.split("[sweep]").next().unwrap();
+    let wide = scene_file("friction_wide.toml", &unswept.replace("period = \"inf\"", "period = \"2.05\""));
+    let (code, _, err) = run(&["solve", &wide]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("period") && err.contains("single punch (period = \"inf\")"), "{err}");
+    assert!(err.contains("half_width") && err.contains("lambda = pi a/L <= 1.5"), "{err}");
     let circle = scene_file(
         "friction_circle.toml",
         &text.replace("shape = \"parabolic\"\nk = \"1\"", "shape = \"circular\"\nradius = \"4\""),
