@@ -115,7 +115,9 @@ pub fn row_stick_ratio(beta: f64, mu: f64, lambda: f64, n: usize, periodic: bool
     if beta == 0.0 {
         return Ok(1.0);
     }
-    stick_ratio(|g| Ok(stick_edge_defect(&increment(beta, mu, lambda, g, n, periodic)?, beta, mu)))
+    stick_ratio("periodic-row stick zone (f64)", |g| {
+        Ok(stick_edge_defect(&increment(beta, mu, lambda, g, n, periodic)?, beta, mu))
+    })
 }
 
 /// (E*/2) v'(x) = H\[s2\](x) of the increment at x > a (units L = pi): the outside slope.
