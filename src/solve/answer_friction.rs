@@ -10,19 +10,29 @@
 //! [`ESTIMATE_SAFETY`]; `tests/friction_scene.rs` checks in five cases that the claimed error
 //! covers twice the difference from n = 160 (the error of n = 80 for an order >= 1).
 //!
-//! `--method mpfr` ([`mpfr_answer`]): gamma and C_P by the spectral method with verified digits
-//! ([`crate::adhesion::friction::spectral_punch::verified`], docs/theory.md section 17.7), the
-//! digits of a, P2 and c propagated through the same formulas.
+//! The fields q1, q2, psi at the scene's points are superposed from the unit increments
+//! ([`crate::adhesion::friction::fields`]), their digits from the two meshes as above; `checks`
+//! holds the inequalities of the state method at the answer's stick ratio (|q1|/(mu q2) on the stick
+//! zone, min q2/max q2, the outward slip rate) and the two methods' differences in c/a and C_P,
+//! each with its error and what it means (docs/theory.md section 17.5).
 //!
-//! Refused with an input error ([`solvable_parabola`]): a method other than f64 and mpfr, a finite
-//! period (the periodic row with stick and slip is not solved yet), a punch other than the
-//! parabola.
+//! `--method mpfr` ([`mpfr_answer`], single punch): gamma and C_P by the spectral method with
+//! verified digits ([`crate::adhesion::friction::spectral_punch::verified`], docs/theory.md section
+//! 17.7), at most [`MPFR_MAX_DIGITS`] digits (its cost: about 35 s at 14, a minute at 16, release
+//! build); the digits of a, P2 and c propagated through the same formulas; its `checks` compare it
+//! with the f64 increment method (independent discretisation).
+//!
+//! Refused with an input error: a method other than f64 and mpfr ([`refuse_method`]; the periodic
+//! row takes f64 only), more digits than the mpfr method reaches, and a punch other than the
+//! parabola ([`solvable_parabola`]).
 
 use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance};
-use crate::adhesion::friction::single_punch::{self, Method};
+use super::render::{FieldRow, FrictionCheck};
+use crate::adhesion::friction::fields::{fields, FieldsF64};
+use crate::adhesion::friction::single_punch::{self, Method, SinglePunchF64};
 use crate::adhesion::friction::spectral_punch;
 use crate::error::Error;
-use crate::model::{AdhesionProblem, AdhesionSize, OnPunchRow, Period, PunchShape};
+use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow, PunchShape};
 use crate::numerics::exact::to_f64;
 
 /// Stick elements of the coarser mesh (the finer has twice as many).
@@ -33,6 +43,12 @@ pub const STICK_ELEMENTS: usize = 40;
 /// 0.07-0.69 of that difference; the factor 2 keeps a margin where the order is lower.
 pub const ESTIMATE_SAFETY: f64 = 2.0;
 
+/// Factor on the two meshes' difference of a field: the fields converge irregularly where the mesh
+/// is coarse (q1 at x/a = 0.2, nu = 0, mu = 5/3: 0.30820, 0.30802, 0.30829, 0.30821 on n = 40, 80,
+/// 160, 320 stick elements), so the difference of n = 40 and 80 can undershoot that of 80 and 160
+/// (by 1.5 there); `tests/friction_scene.rs` asks the claim to cover twice the latter.
+pub const FIELD_SAFETY: f64 = 8.0;
+
 /// The model the answer solves, printed as its `friction_note`.
 pub const FRICTION_NOTE: &str = "finite friction (docs/theory.md section 17): Coulomb slip |q1| = mu q2 in the \
      slip zones c < |x| < a at the ends, stick in the middle |x| < c; under monotone normal loading of the single \
@@ -40,24 +56,48 @@ pub const FRICTION_NOTE: &str = "finite friction (docs/theory.md section 17): Co
      (1975) 297-319), here with the shear's effect on the normal displacement kept (the coupled problem). Solved \
      by the f64 unit-increment method on 40 and 80 stick elements; about 4-5 digits";
 
-/// The parabola's k, after the refusals of what is not solved with finite friction: `--method`
-/// other than f64 and mpfr, a finite period, a punch other than the parabola.
-pub fn solvable_parabola(p: &AdhesionProblem, method: crate::scene::Method) -> Result<&crate::model::Exact, Error> {
-    if !matches!(method, crate::scene::Method::F64 | crate::scene::Method::Mpfr) {
-        return Err(Error::input(
+/// The refusal of a method other than f64 (and, for the single punch, `mpfr_too`, mpfr).
+pub fn refuse_method(method: crate::scene::Method, mpfr_too: bool) -> Result<(), Error> {
+    use crate::scene::Method as M;
+    match method {
+        M::F64 => Ok(()),
+        M::Mpfr if mpfr_too => Ok(()),
+        _ if mpfr_too => Err(Error::input(
             "--method",
             method.name(),
-            "finite friction ([adhesion] friction) is solved by the f64 method (4-5 digits) and the mpfr \
-             method (verified digits): --method f64, --method mpfr, or no --method",
-        ));
+            "the single punch with finite friction ([adhesion] friction) is solved by the f64 method (4-5 digits) and \
+             the mpfr method (verified digits): --method f64, --method mpfr, or no --method",
+        )),
+        _ => Err(Error::input(
+            "--method",
+            method.name(),
+            "the periodic row with finite friction ([adhesion] friction) is solved by the f64 method only so far \
+             (2-3 digits in the load; the single punch, period = \"inf\", also by --method mpfr): --method f64, or \
+             no --method",
+        )),
     }
-    if let Period::Finite(l) = p.period() {
-        return Err(Error::input(
-            "period",
-            crate::model::readable(l),
-            "only the single punch (period = \"inf\") is solved with finite friction so far",
-        ));
-    }
+}
+
+/// Most digits the mpfr method is asked for: its two discretisations grow with the digits (n =
+/// digits - 2 and n + 6 basis functions per family), and 16 already take about a minute.
+pub const MPFR_MAX_DIGITS: u32 = 16;
+
+/// The model the periodic row's answer solves, printed as its `friction_note`.
+pub const FRICTION_NOTE_ROW: &str = "finite friction on the periodic row (docs/theory.md section 17): Coulomb slip \
+     |q1| = mu q2 in the slip zones c < |x| < a at the ends of every punch, stick in the middle |x| < c, under \
+     monotone normal loading; c/a depends on lambda = pi a/L (not constant during loading as for the single \
+     punch). Solved by the f64 march in lambda (the unit increment bounded at the stick edge, the load from the \
+     slope at the moving edge) on two discretisations; about 2-3 digits in the load, 4 in c/a";
+
+/// The model of a friction answer at nu = 1/2, printed as its `friction_note`.
+pub const FRICTION_NOTE_INCOMPRESSIBLE: &str = "finite friction at nu = 1/2 (beta = 0; docs/theory.md section 17.3): \
+     the shear does not move the surface normally nor the pressure laterally, nothing drives a slip, the whole \
+     contact sticks (c = a) and the answer is the frictionless one at any mu, solved by the verified MPFR method \
+     (Kuznetsov's load for the periodic row, Hertz's for the single punch)";
+
+/// The parabola's k, after the refusal of a punch other than the parabola (not solved with finite
+/// friction).
+pub fn solvable_parabola(p: &AdhesionProblem) -> Result<&Exact, Error> {
     match p.shape() {
         PunchShape::Parabolic { k } => Ok(k),
         other => {
@@ -66,19 +106,32 @@ pub fn solvable_parabola(p: &AdhesionProblem, method: crate::scene::Method) -> R
     }
 }
 
-/// The answer of the single parabolic punch with friction coefficient `mu_exact` by `method`
-/// (f64 or mpfr with `digits` asked, see [`solvable_parabola`]).
+/// Digits of a relative error (the f64 cap for none).
+pub(crate) fn digits(rel: f64) -> f64 {
+    if rel > 0.0 {
+        -rel.log10()
+    } else {
+        crate::numerics::accuracy::F64_DIGITS_CAP
+    }
+}
+
+/// The answer of the single parabolic punch (`period = "inf"`; a finite period is the row's,
+/// `answer_friction_row.rs`) with friction coefficient `mu_exact` by `method` (f64, or mpfr with
+/// `digits_asked`: [`mpfr_answer`]), with the fields at `points` (x/a in [0, 1]; f64 only).
 pub fn friction_answer(
     p: &AdhesionProblem,
-    mu_exact: &crate::model::Exact,
+    mu_exact: &Exact,
     method: crate::scene::Method,
-    digits: u32,
+    digits_asked: u32,
+    points: &[Exact],
 ) -> Result<AdhesionAnswer, Error> {
-    let k = solvable_parabola(p, method)?;
+    refuse_method(method, true)?;
+    let k = solvable_parabola(p)?;
+    crate::adhesion::points::check_points(points)?;
     if method == crate::scene::Method::Mpfr {
-        return mpfr_answer(p, mu_exact, k, digits);
+        return mpfr_answer(p, mu_exact, k, digits_asked, !points.is_empty());
     }
-    let f = |x: &crate::model::Exact, what: &str| {
+    let f = |x: &Exact, what: &str| {
         to_f64(x)
             .filter(|v| v.is_finite())
             .ok_or_else(|| Error::input(what, crate::model::readable(x), "representable as f64"))
@@ -87,7 +140,10 @@ pub fn friction_answer(
     let mu = f(mu_exact, "friction")?;
     let e_star = f(p.material().contact_modulus(), "material.contact_modulus")?;
     let k = f(k, "punch.k")?;
-    let r = single_punch::solve(beta, mu, STICK_ELEMENTS, Method::Increment)?;
+    let xs = points.iter().map(|x| f(x, "points")).collect::<Result<Vec<_>, _>>()?;
+    let pair = single_punch::solve_pair(beta, mu, STICK_ELEMENTS, Method::Increment)?;
+    let r = single_punch::from_pair(pair);
+    let fl = fields(beta, mu, pair, STICK_ELEMENTS, &xs)?;
     let (gamma, cp) = (r.gamma, r.load_coefficient);
     let (dg, dcp) = (ESTIMATE_SAFETY * r.gamma_error, ESTIMATE_SAFETY * r.load_coefficient_error);
     // relative errors of a and P2
@@ -101,10 +157,32 @@ pub fn friction_answer(
             ((p2 / (cp * e_star * k)).sqrt(), p2, 0.5 * dcp / cp, 0.0)
         }
     };
-    let digits = |rel: f64| if rel > 0.0 { -rel.log10() } else { crate::numerics::accuracy::F64_DIGITS_CAP };
     let size_digits = digits(rel_a.max(rel_p2));
     // c = gamma a on the scale a: dc/a = dgamma + gamma da/a
     let stick_digits = digits(dg + gamma * rel_a);
+    // a field q~(x/a) on its scale (E* k a or k a): the two meshes' difference, plus the relative
+    // error of a times the field (the scale and the point x = (x/a) a move with a)
+    let largest = |get: fn(&crate::adhesion::friction::fields::PointFields) -> f64| {
+        fl.points.iter().map(|q| get(q).abs()).fold(0.0, f64::max)
+    };
+    let field_digits = |err: f64, big: f64| digits(FIELD_SAFETY * err + rel_a * big);
+    let d_q1 = field_digits(fl.errors.q1, largest(|q| q.q1));
+    let d_q2 = field_digits(fl.errors.q2, largest(|q| q.q2));
+    let d_psi = field_digits(fl.errors.psi, largest(|q| q.psi));
+    let (stress, psi_scale) = (e_star * k * a, k * a);
+    let field = |name: &str, get: fn(&crate::adhesion::friction::fields::PointFields) -> f64, scale: f64, d: f64| {
+        let rows = fl
+            .points
+            .iter()
+            .zip(points)
+            .map(|(q, x)| FieldRow {
+                x_over_a: exact_series::q_text(x),
+                value: Measured::f64(get(q) * scale, scale, d),
+            })
+            .collect();
+        (name.to_string(), rows)
+    };
+    let state_method = single_punch::solve(beta, mu, STICK_ELEMENTS, Method::State);
     Ok(AdhesionAnswer {
         provenance: Provenance {
             method: "f64",
@@ -121,24 +199,109 @@ pub fn friction_answer(
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::f64(gamma * a, a, stick_digits),
             note: FRICTION_NOTE,
+            checks: checks(&fl, &r, state_method),
         }),
-        accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
-        fields: Vec::new(),
+        accuracy: vec![
+            ("size".into(), size_digits),
+            ("stick".into(), stick_digits),
+            ("psi".into(), d_psi),
+            ("q1".into(), d_q1),
+            ("q2".into(), d_q2),
+        ],
+        fields: vec![
+            field("psi", |q| q.psi, psi_scale, d_psi),
+            field("q1", |q| q.q1, stress, d_q1),
+            field("q2", |q| q.q2, stress, d_q2),
+        ],
         tension_zones: None,
         warnings: Vec::new(),
     })
+}
+
+/// The `checks` of a single-punch answer (module doc), errors times [`ESTIMATE_SAFETY`].
+fn checks(
+    fl: &FieldsF64,
+    inc: &SinglePunchF64,
+    state: Result<SinglePunchF64, crate::adhesion::AdhesionError>,
+) -> Vec<FrictionCheck> {
+    let c = &fl.checks;
+    let mesh = "the state method (n = 80 stick elements) at the answer's c/a; error: twice its difference from n = 40";
+    let mut out = vec![
+        FrictionCheck {
+            name: "stick_friction_ratio_max",
+            value: Some(c.stick_ratio.value),
+            error: ESTIMATE_SAFETY * c.stick_ratio.error,
+            means: format!(
+                "max over the stick zone |x| < c of |q1|/(mu q2), the element at the stick edge left out: \
+                 Coulomb's inequality holds where it is <= 1 (it tends to 1 at the stick edge); {mesh}"
+            ),
+        },
+        FrictionCheck {
+            name: "pressure_min_over_max",
+            value: Some(c.pressure_min.value),
+            error: ESTIMATE_SAFETY * c.pressure_min.error,
+            means: format!("min q2 / max q2 over the contact: >= 0 is no tension; {mesh}"),
+        },
+        FrictionCheck {
+            name: "outward_slip_rate_max",
+            value: Some(c.outward_slip.value),
+            error: ESTIMATE_SAFETY * c.outward_slip.error,
+            means: format!(
+                "max over the slip zones c < x < a of the slip rate du/da (outward positive) over its largest \
+                 magnitude: <= 0 is inward slip against q1 = mu q2 sign(x) everywhere, no slip reversal; {mesh}"
+            ),
+        },
+    ];
+    let between = "between the increment method (the answer) and the independent state method, each on n = 40 and 80; \
+                   error: twice the sum of their two-mesh differences; agreement is a value below its error";
+    match state {
+        Ok(st) => {
+            out.push(FrictionCheck {
+                name: "methods_difference_stick_ratio",
+                value: Some((inc.gamma - st.gamma).abs()),
+                error: ESTIMATE_SAFETY * (inc.gamma_error + st.gamma_error),
+                means: format!("|difference| of c/a {between}"),
+            });
+            out.push(FrictionCheck {
+                name: "methods_difference_load_coefficient",
+                value: Some((inc.load_coefficient - st.load_coefficient).abs()),
+                error: ESTIMATE_SAFETY * (inc.load_coefficient_error + st.load_coefficient_error),
+                means: format!("|difference| of P2/(E* k a^2) {between}"),
+            });
+        }
+        Err(e) => out.push(FrictionCheck {
+            name: "methods_difference_stick_ratio",
+            value: None,
+            error: 0.0,
+            means: format!(
+                "not computed: the state method (docs/theory.md section 17.4) does not resolve this case ({e})"
+            ),
+        }),
+    }
+    out
 }
 
 /// The answer by the spectral method in MPFR: gamma and C_P with verified digits, a, P2 and c by
 /// the formulas of the module doc at the same precision.
 pub fn mpfr_answer(
     p: &AdhesionProblem,
-    mu_exact: &crate::model::Exact,
-    k: &crate::model::Exact,
+    mu_exact: &Exact,
+    k: &Exact,
     digits: u32,
+    with_points: bool,
 ) -> Result<AdhesionAnswer, Error> {
     use crate::numerics::exact::to_float;
     use rug::Float;
+    if digits > MPFR_MAX_DIGITS {
+        return Err(Error::input(
+            "digits",
+            digits.to_string(),
+            format!(
+                "at most {MPFR_MAX_DIGITS} with finite friction and --method mpfr (the spectral method's two \
+                 discretisations grow with the digits: about 35 s at 14 digits, a minute at 16)"
+            ),
+        ));
+    }
     let prec = (3.33 * (digits + 14) as f64).ceil() as u32 + 64;
     let v = spectral_punch::verified(&to_float(&p.material().beta(), prec), &to_float(mu_exact, prec), digits)?;
     let (gamma, cp) = (&v.gamma, &v.load_coefficient);
@@ -173,12 +336,50 @@ pub fn mpfr_answer(
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::mpfr(c, &a, stick_digits),
             note: FRICTION_NOTE_MPFR,
+            checks: match (to_f64(&p.material().beta()), to_f64(mu_exact)) {
+                (Some(b), Some(m)) if b.is_finite() && m.is_finite() => mpfr_checks(&v, b, m),
+                _ => Vec::new(),
+            },
         }),
         accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
         fields: Vec::new(),
         tension_zones: None,
-        warnings: Vec::new(),
+        warnings: if with_points {
+            vec!["q1, q2 and psi at the points are computed by the f64 method only (--method f64, 4 digits)".into()]
+        } else {
+            Vec::new()
+        },
     })
+}
+
+/// The `checks` of an mpfr answer: its difference from the f64 increment method (an independent
+/// discretisation, n = 40 and 80 stick elements) in c/a and C_P, against that method's error.
+fn mpfr_checks(v: &spectral_punch::VerifiedPunch, beta: f64, mu: f64) -> Vec<FrictionCheck> {
+    let between = "between the spectral method (the answer) and the independent f64 increment method (n = 40 and \
+                   80 stick elements); error: that method's estimate (twice its two-mesh difference); agreement is a \
+                   value below its error";
+    match single_punch::solve(beta, mu, STICK_ELEMENTS, Method::Increment) {
+        Ok(inc) => vec![
+            FrictionCheck {
+                name: "methods_difference_stick_ratio",
+                value: Some((inc.gamma - v.gamma.to_f64()).abs()),
+                error: ESTIMATE_SAFETY * inc.gamma_error,
+                means: format!("|difference| of c/a {between}"),
+            },
+            FrictionCheck {
+                name: "methods_difference_load_coefficient",
+                value: Some((inc.load_coefficient - v.load_coefficient.to_f64()).abs()),
+                error: ESTIMATE_SAFETY * inc.load_coefficient_error,
+                means: format!("|difference| of P2/(E* k a^2) {between}"),
+            },
+        ],
+        Err(e) => vec![FrictionCheck {
+            name: "methods_difference_stick_ratio",
+            value: None,
+            error: 0.0,
+            means: format!("not computed: the f64 increment method does not resolve this case ({e})"),
+        }],
+    }
 }
 
 /// [`FRICTION_NOTE`] of the mpfr method.

@@ -9,6 +9,7 @@ pub mod answer_adhesion;
 pub mod answer_analytic;
 pub(crate) mod answer_f64;
 pub mod answer_friction;
+pub mod answer_friction_row;
 pub mod answer_law;
 pub mod answer_mpfr;
 pub(crate) mod answer_pade;
@@ -103,7 +104,7 @@ pub fn solve_answer(scene: &Scene, req: SolveRequest) -> Result<Answer, Error> {
         }
         .map_err(|e| with_periodic_hint(e, p)),
         SceneProblem::Adhesion(p) => match (p.friction(), req.method) {
-            (Some(mu), _) => adhesion_friction(p, mu, req),
+            (Some(mu), _) => adhesion_friction(p, scene, mu, req),
             (None, Method::Mpfr) => adhesion_mpfr(p, scene, req),
             (None, Method::F64) => adhesion_f64(p, scene, req),
             (None, Method::Analytic) => adhesion_analytic(p, req),
@@ -347,10 +348,22 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 }
 
 /// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 or the mpfr
-/// method ([`answer_friction`]); the refusals of what is not solved with friction yet first.
-fn adhesion_friction(p: &AdhesionProblem, mu: &crate::model::Exact, req: SolveRequest) -> Result<Rendered, Error> {
-    let answer = answer_friction::friction_answer(p, mu, req.method, req.digits)?;
-    let mpfr = req.method == crate::scene::Method::Mpfr;
+/// method ([`answer_friction`]), the periodic row by f64 ([`answer_friction_row`]); nu = 1/2 by the
+/// verified frictionless path.
+fn adhesion_friction(
+    p: &AdhesionProblem,
+    scene: &Scene,
+    mu: &crate::model::Exact,
+    req: SolveRequest,
+) -> Result<Rendered, Error> {
+    if num_traits::Zero::is_zero(&p.material().beta()) {
+        return adhesion_friction_incompressible(p, scene, mu, req);
+    }
+    let answer = match p.period() {
+        Period::Finite(l) => answer_friction_row::row_answer(p, mu, l, req.method)?,
+        Period::Infinite => answer_friction::friction_answer(p, mu, req.method, req.digits, &scene.output.points)?,
+    };
+    let mpfr = answer.provenance.method == "mpfr";
     let shown = if mpfr { req.digits } else { req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1) };
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
     let mut m = render::adhesion_json(&answer, shown);
@@ -358,6 +371,35 @@ fn adhesion_friction(p: &AdhesionProblem, mu: &crate::model::Exact, req: SolveRe
     if !mpfr {
         f64_digits(&mut m, req.digits);
     }
+    m.insert("lambda_h".into(), Value::Null);
+    let a = number(&values, "half_width");
+    slope_warning(&mut m, p.shape(), p.period(), -a, a);
+    Ok((Value::Object(m), claim, vec![values]))
+}
+
+/// Finite friction at nu = 1/2 (beta = 0): nothing drives a slip, the whole contact sticks (c = a)
+/// and the problem is the frictionless one (docs/theory.md section 17.3), solved by the verified
+/// MPFR method of complete adhesion (which is frictionless there) at the digits requested, whatever
+/// the method asked (Kuznetsov's closed form for the periodic row, docs/theory.md section 4).
+fn adhesion_friction_incompressible(
+    p: &AdhesionProblem,
+    scene: &Scene,
+    mu: &crate::model::Exact,
+    req: SolveRequest,
+) -> Result<Rendered, Error> {
+    answer_friction::solvable_parabola(p)?;
+    let v = adhesion::solve_verified(p, &scene.output.points, req.digits)?;
+    let mut answer = answer_adhesion::mpfr_answer(p, &v);
+    answer.stick = Some(render::StickSlip {
+        friction: exact_series::q_text(mu),
+        stick_half_width: answer.half_width.clone(),
+        note: answer_friction::FRICTION_NOTE_INCOMPRESSIBLE,
+        checks: Vec::new(),
+    });
+    answer.accuracy.push(("stick".into(), answer.headline()));
+    let claim = Claim { digits: answer.headline(), kind: answer.kind };
+    let mut m = render::adhesion_json(&answer, req.digits);
+    let values = render::adhesion_values(&answer, req.digits);
     m.insert("lambda_h".into(), Value::Null);
     let a = number(&values, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);

@@ -456,6 +456,28 @@ pub struct StickSlip {
     pub stick_half_width: Measured,
     /// What the model is (printed as `friction_note`).
     pub note: &'static str,
+    /// The checks of the solution (printed under `checks`).
+    pub checks: Vec<FrictionCheck>,
+}
+
+/// One check of a finite-friction answer: a number, its error and what it means (docs/theory.md
+/// section 17.6); printed as `checks.<name>.value` (a JSON number, or null where the check could
+/// not be made), `.error` and `.means`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionCheck {
+    /// The key under `checks`.
+    pub name: &'static str,
+    /// The value (None: not computed, `means` says why).
+    pub value: Option<f64>,
+    /// Its error estimate.
+    pub error: f64,
+    /// What it measures and what a sound solution gives.
+    pub means: String,
+}
+
+/// `x` rounded to `sig` significant digits (a check's value and error as JSON numbers).
+fn round_sig(x: f64, sig: usize) -> f64 {
+    format!("{x:.*e}", sig - 1).parse().unwrap_or(x)
 }
 
 impl AdhesionAnswer {
@@ -538,6 +560,17 @@ pub fn adhesion_json(ans: &AdhesionAnswer, requested: u32) -> Map<String, Value>
             ]),
         );
         m.insert("friction_note".into(), json!(st.note));
+        if !st.checks.is_empty() {
+            let checks: Map<String, Value> = st
+                .checks
+                .iter()
+                .map(|c| {
+                    let value = c.value.map_or(Value::Null, |v| json!(round_sig(v, 4)));
+                    (c.name.to_string(), json!({"value": value, "error": round_sig(c.error, 2), "means": c.means}))
+                })
+                .collect();
+            m.insert("checks".into(), Value::Object(checks));
+        }
     }
     m.insert("warnings".into(), Value::Array(ans.warnings.iter().map(|w| json!(w)).collect()));
     m.insert("provenance".into(), ans.provenance.json());

@@ -16,7 +16,9 @@
 //!    path, stresses and the friction they need ([`loading_law`]; no text when no scene has one);
 //! 10. Pade resummation ([`pade`]);
 //! 11. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
-//!     deterministic and snapshot-tested).
+//!     deterministic and snapshot-tested);
+//! 12. finite friction ([`friction`]: the single punch and the periodic row with stick and slip,
+//!     after the timings so that the sections before it keep their text).
 //!
 //! No line of `report.md` exceeds [`summary::LONGEST_LINE`] characters.
 //!
@@ -28,6 +30,7 @@ pub mod chart;
 pub mod choice;
 pub mod coefficients;
 pub mod conventions;
+pub mod friction;
 pub mod html;
 pub mod loading_law;
 pub mod orders;
@@ -121,9 +124,9 @@ fn io(path: &Path) -> impl Fn(std::io::Error) -> ReportError + '_ {
 }
 
 /// Reads every `*.toml` scene of `dir`, sorted by file name; the name is the file stem. Scenes with
-/// finite friction (`[adhesion] friction`, docs/theory.md section 17) are left out: the report has
-/// no finite-friction section yet (issue 32, item 5) and its sections run the complete-adhesion
-/// methods, which such a scene refuses; `solve` answers them.
+/// finite friction (`[adhesion] friction`, docs/theory.md section 17) are left out: the sections
+/// run the complete-adhesion methods, which such a scene refuses, and section 12 ([`friction`])
+/// computes its own fixed cases; `solve` answers them.
 pub fn load_scenes(dir: &Path) -> Result<Vec<(String, Scene)>, ReportError> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
         .map_err(io(dir))?
@@ -207,6 +210,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
         ("punch shapes", 8.0, plain(shapes::section)),
         ("loading law", 20.0, plain(loading_law::section)),
         ("Pade resummation", 5.0, Box::new(|c: &Ctx| Ok((pade::section(c), String::new())))),
+        ("12. finite friction", 1.0, Box::new(|c: &Ctx| Ok((friction::section(c), String::new())))),
     ];
     let done = parallel::with_jobs(opts.jobs, || {
         parallel::map(
@@ -236,7 +240,13 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
 
     let mut body = String::new();
     let names: Vec<&str> = scenes.iter().map(|s| s.0.as_str()).collect();
-    for (i, s) in sections.iter().enumerate() {
+    // the last section (12, finite friction) follows the timings' pointer: the sections before it
+    // keep their text
+    let (friction_section, numbered) = match sections.split_last() {
+        Some((last, rest)) => (Some(last), rest),
+        None => (None, &sections[..]),
+    };
+    for (i, s) in numbered.iter().enumerate() {
         if i == 0 {
             let _ = writeln!(
                 body,
@@ -248,6 +258,10 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
         body.push_str(&s.markdown);
     }
     let _ = writeln!(body, "## 11. Timings\n\nSee `timings.md`: measured in the run that wrote this report.");
+    if let Some(f) = friction_section {
+        body.push('\n');
+        body.push_str(&f.markdown);
+    }
     let findings: Vec<String> = sections.iter().flat_map(|s| s.findings.iter().cloned()).collect();
     let md = summary::wrap_long_lines(&summary::front(&body, names.len(), &findings), summary::LONGEST_LINE);
     let write = |files: &mut Vec<PathBuf>, name: &str, text: &str| -> Result<(), ReportError> {

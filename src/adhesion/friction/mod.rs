@@ -8,21 +8,29 @@
 //! the slip rate, the load by integration). Checked in `tests.rs`: Hertz's pi/2 at beta = 0 and as
 //! mu -> 0, the uncoupled problem against K'(gamma)/K(gamma) = beta/mu, the boundary-element
 //! c/a = 0.5219(1) at nu = 0, mu = 1/2, the two methods against each other, the approach to complete
-//! adhesion's C_P as mu grows, and the inequalities of the state.
+//! adhesion's C_P as mu grows, and the inequalities of the state. [`fields`]: q1, q2, psi at
+//! points, superposed from the unit increments, and the checks of the inequalities from the state.
 //!
 //! The spectral method ([`spectral`], generic over `f64` and MPFR through [`real`], with the
 //! composite tanh-sinh rules and least squares of [`quadrature`]; driver [`spectral_punch`]) solves
 //! the same increment with the exponents (17.3) in its basis: gamma and C_P with verified digits
 //! (docs/theory.md section 17.7; checks in `spectral_tests.rs`).
 //!
-//! Scenes with `[adhesion] friction` reach [`single_punch`] through `solve`
-//! (`src/solve/answer_friction.rs`, docs/theory.md section 17.5). Not built (issue 32): the
-//! periodic row; `solve --method mpfr` does not use the spectral method yet.
+//! The periodic row ([`row_f64`]: the increment at (lambda, c) on the row's kernel, both
+//! conventions; [`row_load_f64`]: the load marched in lambda on two discretisations).
+//!
+//! Scenes with `[adhesion] friction` reach these through `solve` (`src/solve/answer_friction.rs`,
+//! `src/solve/answer_friction_row.rs`, docs/theory.md section 17.5): the single punch by f64 or by
+//! the spectral method in MPFR (`--method mpfr`), the row by f64. Not built (issue 32): an MPFR
+//! method for the row.
 
+pub mod fields;
 pub mod increment_f64;
 pub mod mesh;
 pub mod quadrature;
 pub mod real;
+pub mod row_f64;
+pub mod row_load_f64;
 pub mod single_punch;
 pub mod spectral;
 pub mod spectral_punch;

@@ -21,6 +21,9 @@ use super::increment_f64::{increment, load_coefficient, stick_edge_defect};
 use super::state_f64::state;
 use crate::growing_contact::error::AdhesionError;
 
+/// What a refusal of the single punch's stick ratio names.
+const SINGLE: &str = "single-punch stick zone (f64)";
+
 /// Smallest stick ratio the f64 meshes resolve.
 pub const GAMMA_MIN: f64 = 1e-6;
 /// Largest stick ratio the f64 meshes resolve (slip zones of 1e-4 a: the smallest slip element is
@@ -69,17 +72,20 @@ fn check(beta: f64, mu: f64, n: usize) -> Result<(), AdhesionError> {
     Ok(())
 }
 
-/// The self-similar gamma: `defect` is positive above it and negative below it (down to
-/// [`GAMMA_MIN`]; on meshes with a stick zone much narrower than that the discrete defect turns
+/// The stick ratio (`what` names it in a refusal): `defect` is positive above it and negative
+/// below it (down to [`GAMMA_MIN`]; on meshes with a stick zone much narrower than that the discrete defect turns
 /// positive again, an artefact). Scanned downward in the logit y = ln(gamma/(1 - gamma)) from
 /// [`GAMMA_MAX`] in steps of 2 to the first negative value, then the Illinois method to a bracket
 /// of 1e-10 in y; refused when there is no sign change in [GAMMA_MIN, GAMMA_MAX].
-fn stick_ratio(mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>) -> Result<f64, AdhesionError> {
+pub(crate) fn stick_ratio(
+    what: &'static str,
+    mut defect: impl FnMut(f64) -> Result<f64, AdhesionError>,
+) -> Result<f64, AdhesionError> {
     let gamma = |y: f64| 1.0 / (1.0 + (-y).exp());
     let logit = |g: f64| (g / (1.0 - g)).ln();
     let (y_min, y_max) = (logit(GAMMA_MIN), logit(GAMMA_MAX));
     let refuse = |value: String| AdhesionError::IllConditioned {
-        method: "single-punch stick zone (f64)",
+        method: what,
         parameter: "c/a",
         value,
         valid: format!("{GAMMA_MIN:e} <= c/a <= 1 - {:e}", 1.0 - GAMMA_MAX),
@@ -144,11 +150,11 @@ pub fn solve_once(beta: f64, mu: f64, n: usize, method: Method, coupled: bool) -
     }
     match method {
         Method::Increment => {
-            let g = stick_ratio(|g| Ok(stick_edge_defect(&increment(beta, mu, g, n, coupled)?, beta, mu)))?;
+            let g = stick_ratio(SINGLE, |g| Ok(stick_edge_defect(&increment(beta, mu, g, n, coupled)?, beta, mu)))?;
             Ok((g, load_coefficient(&increment(beta, mu, g, n, coupled)?)))
         }
         Method::State => {
-            let g = stick_ratio(|g| {
+            let g = stick_ratio(SINGLE, |g| {
                 let s = state(beta, mu, g, n)?;
                 Ok(s.stick_margin())
             })?;
@@ -157,14 +163,22 @@ pub fn solve_once(beta: f64, mu: f64, n: usize, method: Method, coupled: bool) -
     }
 }
 
+/// (gamma, C_P) of the coupled problem by `method` on n and on 2 n stick elements.
+pub fn solve_pair(beta: f64, mu: f64, n: usize, method: Method) -> Result<[(f64, f64); 2], AdhesionError> {
+    Ok([solve_once(beta, mu, n, method, true)?, solve_once(beta, mu, 2 * n, method, true)?])
+}
+
 /// gamma and C_P of the coupled problem by `method` on n and 2 n stick elements.
 pub fn solve(beta: f64, mu: f64, n: usize, method: Method) -> Result<SinglePunchF64, AdhesionError> {
-    let (g1, p1) = solve_once(beta, mu, n, method, true)?;
-    let (g2, p2) = solve_once(beta, mu, 2 * n, method, true)?;
-    Ok(SinglePunchF64 {
+    Ok(from_pair(solve_pair(beta, mu, n, method)?))
+}
+
+/// The finer mesh's (gamma, C_P) with the differences from the coarser one as their estimates.
+pub fn from_pair([(g1, p1), (g2, p2)]: [(f64, f64); 2]) -> SinglePunchF64 {
+    SinglePunchF64 {
         gamma: g2,
         gamma_error: (g2 - g1).abs(),
         load_coefficient: p2,
         load_coefficient_error: (p2 - p1).abs(),
-    })
+    }
 }

@@ -68,6 +68,19 @@ impl State {
     /// point x relative to the punch (self-similarity, u = k a^2 U(x/a)); zero on the stick zone,
     /// negative (inward, x > 0) where the surface slips against q1 = mu q2 > 0.
     pub fn slip_rate(&self, i: usize) -> f64 {
+        let (u, du) = self.lateral(i);
+        2.0 * u - self.mesh.mid(i) * du
+    }
+
+    /// psi/(k a) = u'/(k a) at the midpoint of element i: (E*/2) u' = -H\[q1\] - beta q2
+    /// (docs/theory.md section 2, L -> infinity), the same psi as complete adhesion's (section 4:
+    /// psi = phi', u = phi on the stick zone); 2 C x/a on the stick zone.
+    pub fn psi(&self, i: usize) -> f64 {
+        2.0 * self.lateral(i).1
+    }
+
+    /// ((E*/2) u, (E*/2) u') at the midpoint of element i, on the scales E* k a^2 and E* k a.
+    fn lateral(&self, i: usize) -> (f64, f64) {
         let x = self.mesh.mid(i);
         let (mut u, mut du) = (0.0, 0.0);
         for j in 0..self.q1.len() {
@@ -75,8 +88,7 @@ impl State {
                 self.q1[j] * self.mesh.log_weight(x, j, true) + self.beta * self.q2[j] * self.mesh.running_weight(i, j);
             du -= self.q1[j] * self.mesh.cauchy_weight(x, j, true);
         }
-        du -= self.beta * self.q2[i];
-        2.0 * u - x * du
+        (u, du - self.beta * self.q2[i])
     }
 
     /// r = q1 - mu q2 on the last stick element but one (the sign of b, see the module doc).
