@@ -82,19 +82,23 @@ impl LawCollocation {
             return Float::with_val(p, 0);
         }
         let t = Float::with_val(p, &eta_x / &self.lambda_max);
+        self.psi_hat_at_entry(side, &t, rule).unwrap_or_else(|_| Float::with_val(p, f64::NAN))
+    }
+
+    /// psi_hat of the point that entered on `side` at the size Lambda t: Im of that end's edge
+    /// integral there.
+    fn psi_hat_at_entry(&self, side: Side, t: &Float, rule: &TanhSinh) -> Result<Float, AdhesionError> {
         let (b, a) = super::collocation::edge_integrals(
             rule,
             &self.inc,
             &self.lambda_max,
             &self.phi,
             &self.gam,
-            &t,
-            p,
+            t,
+            self.prec,
             Some(side),
-        )
-        .unwrap_or_else(|_| (Complex::with_val(p, f64::NAN), Complex::with_val(p, f64::NAN)));
-        let acc = if side == Side::Right { b } else { a };
-        acc.imag().clone()
+        )?;
+        Ok(if side == Side::Right { b } else { a }.imag().clone())
     }
 
     /// int_0^chi psi_hat (phi = -(2 k L^2/pi^3) of it) in the entry size: y = gamma(eta) +- eta
@@ -123,17 +127,7 @@ impl LawCollocation {
         let mut acc = Float::with_val(p, 0);
         for (u, w) in legendre.nodes.iter().zip(&legendre.weights) {
             let t = Float::with_val(p, Float::with_val(p, u + 1u32) * &t_x) / 2u32;
-            let (b, a) = super::collocation::edge_integrals(
-                rule,
-                &self.inc,
-                &self.lambda_max,
-                &self.phi,
-                &self.gam,
-                &t,
-                p,
-                Some(side),
-            )?;
-            let psi = if side == Side::Right { b } else { a }.imag().clone();
+            let psi = self.psi_hat_at_entry(side, &t, rule)?;
             // gamma'(eta) = Gam(t) + t Gam'(t); Gam' in t is twice the derivative in x = 2 t - 1
             // (the divided difference at coincident points).
             let x = Float::with_val(p, &t * 2u32) - 1u32;
@@ -195,6 +189,21 @@ mod tests {
     use crate::numerics::precision::bits_for_digits;
     use rug::float::Constant;
 
+    /// n = 1/5, nu = 0.3, E* = k = L = 1, l = 1/6 in `convention`: the contact shifts.
+    fn shifted_problem(convention: Convention) -> LoadingLawProblem {
+        let material =
+            Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
+        LoadingLawProblem::new(
+            material,
+            Period::Finite(Exact::from_integer(1.into())),
+            PunchShape::Parabolic { k: Exact::from_integer(1.into()) },
+            LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
+            LawSize::HalfLength(Exact::new(1.into(), 6.into())),
+            convention,
+        )
+        .unwrap()
+    }
+
     /// The independent residual check of issue 12: the returned stresses put into the original
     /// surface relations [1.8] ((H + i beta) sigma = (E*/2)(g' - i psi) on the contact, H the
     /// cot-kernel operator, taken here by direct principal-value quadrature with no tangent map
@@ -211,18 +220,8 @@ mod tests {
     /// 3.7e-28 .. 3.3e-27 at the three points (26.7 digits or more on that scale).
     #[test]
     fn stresses_satisfy_the_surface_relations() {
-        let material =
-            Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
         for convention in [Convention::Paper, Convention::PeriodicSurface] {
-            let problem = LoadingLawProblem::new(
-                material.clone(),
-                Period::Finite(Exact::from_integer(1.into())),
-                PunchShape::Parabolic { k: Exact::from_integer(1.into()) },
-                LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
-                LawSize::HalfLength(Exact::new(1.into(), 6.into())),
-                convention,
-            )
-            .unwrap();
+            let problem = shifted_problem(convention);
             // The points of the check, so that the claim covers the stresses there.
             let xh: Vec<Exact> =
                 [(-3, 5), (1, 10), (11, 20)].iter().map(|&(n, d)| Exact::new(n.into(), d.into())).collect();
@@ -321,18 +320,8 @@ mod tests {
     /// the scale chi max|psi_hat| (n = 1/5, nu = 0.3, l/L = 1/6, a 20-digit collocation).
     #[test]
     fn psi_hat_integral_equals_the_quadrature_in_x() {
-        let material =
-            Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
         for convention in [Convention::Paper, Convention::PeriodicSurface] {
-            let problem = LoadingLawProblem::new(
-                material.clone(),
-                Period::Finite(Exact::from_integer(1.into())),
-                PunchShape::Parabolic { k: Exact::from_integer(1.into()) },
-                LoadingLaw::Linear(Exact::new(1.into(), 5.into())),
-                LawSize::HalfLength(Exact::new(1.into(), 6.into())),
-                convention,
-            )
-            .unwrap();
+            let problem = shifted_problem(convention);
             let (_, sol) = solve_law_collocation(&problem, &[], &[], 20).unwrap();
             let prec = sol.prec;
             let bits = bits_for_digits(24);
