@@ -179,3 +179,21 @@ fn r34_open_fuzz_cases_agree() {
         assert!(out.disagreements.is_empty(), "case {i}: {:#?}", out.disagreements);
     }
 }
+
+/// Fuzz seed 2026 cases 1692, 1868, 2462 and 2670 (issue 34, the third long run): the loading
+/// law's f64 method under a given normal load at lambda = 2e-4 .. 4e-4 printed
+/// P2 = 4.00000000000214e-7 for the load 4e-7 (81630.0000001333 for 81630, a polynomial law's
+/// 3.07581999999363e-6 for 3.07582e-6, 54999.9999999813 for 55000) claiming 13.0 digits where it
+/// held 12.27 (11.79, 11.68, 12.47):
+/// its check run solves for the same load and cannot see the march's distance from it. The loads'
+/// claim now includes that distance; both cases pass every check of the fuzzer.
+#[test]
+fn r34_f64_law_given_load_claims_its_distance_from_the_load() {
+    for i in [1692, 1868, 2462, 2670] {
+        let case = generate::case(2026, i);
+        let out = check::run(&case, &check::Budget::CI);
+        assert!(out.invalid.is_none(), "{:?}", out.invalid);
+        assert!(out.disagreements.is_empty(), "case {i}: {:#?}", out.disagreements);
+        assert!(out.values_checked > 0, "case {i}: nothing compared");
+    }
+}

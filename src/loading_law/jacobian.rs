@@ -63,7 +63,10 @@ pub(super) fn jacobian(
         let lambda = Float::with_val(prec, lambda_max * t);
         let xt = Float::with_val(prec, t * 2u32) - 1u32;
         let gam_t = &state[n_nodes + i];
-        let (mut lead, mut trail) = (vec![Complex::new(prec); 2 * n_nodes], vec![Complex::new(prec); 2 * n_nodes]);
+        // The rows (real parts: the residual is Re of the edge integral) accumulate in f64: J is
+        // only the chord iteration's matrix, used in f64 (`solve_f64`); the kernels and their
+        // derivatives stay at `prec`.
+        let (mut lead, mut trail) = (vec![0f64; 2 * n_nodes], vec![0f64; 2 * n_nodes]);
         for q in 0..rule.len() {
             let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
             let ts = Float::with_val(prec, t * s);
@@ -72,9 +75,9 @@ pub(super) fn jacobian(
             let phi = chebyshev::evaluate(&phi_c, &xs, prec);
             let dd = divided_difference(&gam_c, &xt, &xs, prec) * 2u32;
             let e = Float::with_val(prec, gam_t + Float::with_val(prec, &ts * &dd));
-            let ell = cardinals(nodes, &ts, prec);
-            let rest: Float =
-                ell.iter().enumerate().filter(|(k, _)| *k != i).fold(Float::with_val(prec, 0), |a, (_, v)| a + v);
+            let ell: Vec<f64> = cardinals(nodes, &ts, prec).iter().map(Float::to_f64).collect();
+            let rest: f64 = ell.iter().enumerate().filter(|(k, _)| *k != i).map(|(_, v)| v).sum();
+            let (s64, c64) = (s.to_f64(), c.to_f64());
             let n = match &tphi {
                 Some(tp) => inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max)),
                 None => n_const.clone(),
@@ -99,18 +102,18 @@ pub(super) fn jacobian(
                 let wk = Complex::with_val(prec, &k * &ws);
                 // d d/d Gam_j = +- lambda [c delta_ij + s (delta_ij - l_j)].
                 let wdk = Complex::with_val(prec, &dk * &ws) * Float::with_val(prec, &phi * &lambda) * sign;
+                let (wk, wdk) = (wk.real().to_f64(), wdk.real().to_f64());
                 for j in 0..n_nodes {
-                    row[j] += Complex::with_val(prec, &wk * &ell[j]);
-                    let de =
-                        if j == i { Float::with_val(prec, s * &rest) + c } else { -Float::with_val(prec, s * &ell[j]) };
-                    row[n_nodes + j] += Complex::with_val(prec, &wdk * &de);
+                    row[j] += wk * ell[j];
+                    let de = if j == i { s64 * rest + c64 } else { -s64 * ell[j] };
+                    row[n_nodes + j] += wdk * de;
                 }
             }
         }
         // The rule's integral runs over s in (0, 1): d eta = lambda ds, already in ws.
         for (r, row) in [lead, trail].iter().enumerate() {
             for (j, v) in row.iter().enumerate() {
-                jac[2 * i + r][j] = v.real().to_f64();
+                jac[2 * i + r][j] = *v;
             }
             jac[2 * i + r][n_nodes + i] -= pi.to_f64();
         }

@@ -15,8 +15,9 @@
 //! Scalings (chi = pi x/L, fields of [`super::fields`]):
 //!   P2 = E* k (L/pi)^2 P(Lambda), P1 = n P2, l = L Lambda/pi, c = (L/pi) gamma(Lambda),
 //!   psi = -(2 k L/pi^2) psi_hat, q2 + i q1 = E* k (L/pi^2) sigma_hat,
-//!   phi(x) = int_0^x psi = -(2 k L^2/pi^3) int_0^chi psi_hat (tanh-sinh; the point x = 0 entered
-//!   first, where the fields are not smooth, is an end of the interval).
+//!   phi(x) = int_0^x psi = -(2 k L^2/pi^3) int_0^chi psi_hat (Gauss–Legendre in the entry size
+//!   eta, where the integrand is analytic: [`LawCollocation::psi_hat_integral`]; the point x = 0
+//!   entered first, where the fields are not smooth in x, is an end of the interval).
 
 use super::collocation::{solve, solve_from, LawCollocation, LawSetting};
 use super::ends::EndStress;
@@ -356,7 +357,10 @@ fn values(
     let p2 = Float::with_val(prec, &p * &sol.inc.p2_per_p);
     let p1 = sol.inc.law_at(&p) * &sol.inc.p2_per_p;
     let rule = TanhSinh::new(target_bits + 8, 1.0, prec);
-    let outer = TanhSinh::new(target_bits + 8, 1.0, prec);
+    // Gauss–Legendre in the entry size for phi ([`LawCollocation::psi_hat_integral`]): the
+    // collocation's n nodes for these bits give rho^-(n - 4) = 2^-bits; Gauss–Legendre's error
+    // rho^(-2 m) with m = (n - 4)/2 + 4 is that times rho^-8.
+    let phi_nodes = (nodes_at(unit, target_bits, lambda.to_f64()) - 4).div_ceil(2) + 4;
     // 2 k L/pi^2 and E* k L/pi^2 with L = pi unit.
     let psi_scale = Float::with_val(prec, &k * &l_over_pi) * 2u32 / &pi;
     let q_scale = Float::with_val(prec, &e_star * &k) * &l_over_pi / &pi;
@@ -367,13 +371,7 @@ fn values(
         let chi = Float::with_val(prec, &x / &l_over_pi);
         let psi = -sol.psi_hat(&chi, &rule) * &psi_scale;
         let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
-        // int_0^chi psi_hat by tanh-sinh on (0, chi).
-        let mut acc = Float::with_val(prec, 0);
-        for q in 0..outer.len() {
-            let y = Float::with_val(prec, &chi * &outer.s[q]);
-            acc += sol.psi_hat(&y, &rule) * &outer.w[q];
-        }
-        let phi = -(acc * &chi) * &phi_scale;
+        let phi = -sol.psi_hat_integral(&chi, &rule, phi_nodes)? * &phi_scale;
         points.push(LawPoint { xh: h.clone(), x, psi, phi, q1: sigma.imag().clone(), q2: sigma.real().clone() });
     }
     let stresses = stress_xh
