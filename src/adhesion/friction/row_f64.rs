@@ -13,7 +13,7 @@
 //! with Lambda the periodic log kernel above, b = 0 (`paper`) or 1 (`periodic`: the uniform lateral
 //! strain of section 8 that makes u periodic enters the stick condition). The mesh is the single
 //! punch's graded [`Mesh`] scaled by lambda; the log part of each element is exact
-//! ([`Mesh::displacement_rows`]) and R is integrated by 3-point Gauss-Legendre per element (R is
+//! (`Mesh::displacement_rows`) and R is integrated by 3-point Gauss-Legendre per element (R is
 //! analytic there: |x -+ xi| <= 2 lambda < pi). c/a is where the increment is bounded at the stick
 //! edge (the sign change of [`super::increment_f64::stick_edge_defect`], searched as for the single
 //! punch); beta = 0 is exact: nothing drives a slip, c = a.
