@@ -384,11 +384,9 @@ fn every_long_tier_test_is_in_the_long_list() {
         for line in text.lines().map(str::trim) {
             if line.starts_with("#[ignore = \"long tier") {
                 pending = true;
-            } else if pending {
-                if let Some(rest) = line.strip_prefix("fn ").or_else(|| line.strip_prefix("pub fn ")) {
-                    marked.insert(rest.split('(').next().unwrap().to_string());
-                    pending = false;
-                }
+            } else if pending && let Some(rest) = line.strip_prefix("fn ").or_else(|| line.strip_prefix("pub fn ")) {
+                marked.insert(rest.split('(').next().unwrap().to_string());
+                pending = false;
             }
         }
     }

@@ -17,12 +17,12 @@ impl<R: Ring> Series<R> {
     pub fn mul_trunc(&self, other: &Self, n: usize) -> Self {
         let (va, vb) = (self.valuation(), other.valuation());
         let p = n.min((self.prec() + vb).min(other.prec() + va));
-        if p >= DENSE_MIN && self.prec().min(other.prec()) >= DENSE_MIN {
-            if let Some(b) = dense_of(other) {
-                if let Some(r) = dense_route(self, |a| a.mullow(&b, p)) {
-                    return r;
-                }
-            }
+        if p >= DENSE_MIN
+            && self.prec().min(other.prec()) >= DENSE_MIN
+            && let Some(b) = dense_of(other)
+            && let Some(r) = dense_route(self, |a| a.mullow(&b, p))
+        {
+            return r;
         }
         self.mul_trunc_generic(other, n)
     }
@@ -56,10 +56,10 @@ impl<R: Ring> Series<R> {
     /// assert!(Series::<Q>::var(4).inv().is_err()); // 1/x is not a power series
     /// ```
     pub fn inv(&self) -> Result<Self, SeriesError> {
-        if self.coeffs.first().is_some_and(|c| !c.is_zero()) {
-            if let Some(r) = dense_route(self, |a| a.inv(self.prec())) {
-                return Ok(r);
-            }
+        if self.coeffs.first().is_some_and(|c| !c.is_zero())
+            && let Some(r) = dense_route(self, |a| a.inv(self.prec()))
+        {
+            return Ok(r);
         }
         self.inv_generic()
     }

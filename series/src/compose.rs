@@ -14,10 +14,10 @@ impl<R: Ring> Series<R> {
     /// assert_eq!(f.coeff(3).unwrap(), &Q::from_integer(0.into()));
     /// ```
     pub fn compose(&self, g: &Self) -> Result<Self, SeriesError> {
-        if let Some(c) = g.coeffs.first() {
-            if !c.is_zero() {
-                return Err(SeriesError::NonZeroInnerConstant { operation: "compose", constant: c.text() });
-            }
+        if let Some(c) = g.coeffs.first()
+            && !c.is_zero()
+        {
+            return Err(SeriesError::NonZeroInnerConstant { operation: "compose", constant: c.text() });
         }
         let vg = g.valuation().max(1);
         let p = (self.prec().saturating_mul(vg)).min(g.prec());
@@ -44,10 +44,11 @@ impl<R: Ring> Series<R> {
     /// assert_eq!(atan.text("x"), "x - 1/3*x^3 + 1/5*x^5 + O(x^6)");
     /// ```
     pub fn revert(&self) -> Result<Self, SeriesError> {
-        if self.coeffs.first().is_some_and(R::is_zero) && self.coeffs.get(1).is_some_and(|c| !c.is_zero()) {
-            if let Some(r) = dense_route(self, |a| a.revert()) {
-                return Ok(r);
-            }
+        if self.coeffs.first().is_some_and(R::is_zero)
+            && self.coeffs.get(1).is_some_and(|c| !c.is_zero())
+            && let Some(r) = dense_route(self, |a| a.revert())
+        {
+            return Ok(r);
         }
         self.revert_generic()
     }
@@ -55,10 +56,10 @@ impl<R: Ring> Series<R> {
     /// [`Series::revert`] by Lagrange inversion with one exp per coefficient, in any ring.
     pub(crate) fn revert_generic(&self) -> Result<Self, SeriesError> {
         let p = self.prec();
-        if let Some(c) = self.coeffs.first() {
-            if !c.is_zero() {
-                return Err(SeriesError::NonZeroInnerConstant { operation: "revert", constant: c.text() });
-            }
+        if let Some(c) = self.coeffs.first()
+            && !c.is_zero()
+        {
+            return Err(SeriesError::NonZeroInnerConstant { operation: "revert", constant: c.text() });
         }
         if p < 2 {
             return Ok(Series::zero(p));

@@ -38,10 +38,10 @@ fn join_terms(terms: Vec<(bool, String)>) -> String {
 
 /// Splits a coefficient's printed form into (negative, magnitude) when it is a single term.
 fn signed<R: Ring>(c: &R, printed: String) -> (bool, String) {
-    if !c.is_sum() {
-        if let Some(rest) = printed.strip_prefix('-') {
-            return (true, rest.to_string());
-        }
+    if !c.is_sum()
+        && let Some(rest) = printed.strip_prefix('-')
+    {
+        return (true, rest.to_string());
     }
     (false, printed)
 }

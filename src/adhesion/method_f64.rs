@@ -42,10 +42,10 @@ fn solve_f64_routes(problem: &AdhesionProblem, points: &[Exact]) -> Result<Adhes
         return solve_collocation_f64(problem, points);
     }
     let series = super::series_f64::verify::solve_f64(problem, points);
-    if let Ok(s) = &series {
-        if s.digits_estimated.headline >= SERIES_ENOUGH {
-            return series;
-        }
+    if let Ok(s) = &series
+        && s.digits_estimated.headline >= SERIES_ENOUGH
+    {
+        return series;
     }
     let served =
         matches!(problem.period(), Period::Finite(_)) && !matches!(problem.shape(), PunchShape::Circular { .. });

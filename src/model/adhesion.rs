@@ -66,14 +66,10 @@ impl AdhesionProblem {
             }
             _ => {}
         }
-        if let (AdhesionSize::HalfWidth(a), Period::Finite(l)) = (&size, period) {
-            if (a + a) >= *l {
-                return Err(ModelError::new(
-                    "half_width",
-                    readable(a),
-                    format!("must satisfy 2 a < L = {}", readable(l)),
-                ));
-            }
+        if let (AdhesionSize::HalfWidth(a), Period::Finite(l)) = (&size, period)
+            && (a + a) >= *l
+        {
+            return Err(ModelError::new("half_width", readable(a), format!("must satisfy 2 a < L = {}", readable(l))));
         }
         let reference_curvature = reference_curvature(shape, period, &size, row.material().contact_modulus());
         Ok(AdhesionProblem { row, size, reference_curvature, convention: Convention::Paper, friction: None })

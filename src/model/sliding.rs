@@ -150,10 +150,10 @@ impl SlidingProblemBuilder {
         if wear.is_negative() {
             return Err(ModelError::new("wear", readable(&wear), "must be >= 0"));
         }
-        if let Some(v) = &speed {
-            if !v.is_positive() {
-                return Err(ModelError::new("speed", readable(v), "must be > 0"));
-            }
+        if let Some(v) = &speed
+            && !v.is_positive()
+        {
+            return Err(ModelError::new("speed", readable(v), "must be > 0"));
         }
         match &load {
             SlidingLoad::NormalLoad(p) if !p.is_positive() => {
@@ -164,14 +164,14 @@ impl SlidingProblemBuilder {
             }
             _ => {}
         }
-        if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, row.period()) {
-            if (l + l) >= *big_l {
-                return Err(ModelError::new(
-                    "half_length",
-                    readable(l),
-                    format!("must satisfy 2 l < L = {}", readable(big_l)),
-                ));
-            }
+        if let (SlidingLoad::HalfLength(l), Period::Finite(big_l)) = (&load, row.period())
+            && (l + l) >= *big_l
+        {
+            return Err(ModelError::new(
+                "half_length",
+                readable(l),
+                format!("must satisfy 2 l < L = {}", readable(big_l)),
+            ));
         }
         Ok(SlidingProblem { row, friction, adhesive_friction, wear, speed, load, convention: self.convention })
     }

@@ -35,10 +35,10 @@ pub fn to_float(q: &BigRational, prec: u32) -> Float {
 /// `the_fast_path_rounds_as_mpfr`).
 pub fn to_f64(q: &BigRational) -> Option<f64> {
     use num_traits::ToPrimitive;
-    if let (Some(n), Some(d)) = (q.numer().to_i128(), q.denom().to_i128()) {
-        if let Some(v) = ratio_to_f64(n, d) {
-            return Some(v);
-        }
+    if let (Some(n), Some(d)) = (q.numer().to_i128(), q.denom().to_i128())
+        && let Some(v) = ratio_to_f64(n, d)
+    {
+        return Some(v);
     }
     let v = Float::with_val(53, to_rational(q)).to_f64();
     v.is_finite().then_some(v)

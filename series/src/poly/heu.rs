@@ -206,14 +206,15 @@ fn heu(a: &[(u64, Integer)], b: &[(u64, Integer)], k: usize) -> Option<(ZPoly, Z
             return None;
         }
         let (ea, eb) = (evaluate(&a1, var, &xi), evaluate(&b1, var, &xi));
-        if !ea.is_empty() && !eb.is_empty() {
-            if let Some((h, _, _)) = heu(&ea, &eb, var) {
-                let g = primitive(&reconstruct(&h, var, &xi)?);
-                if let Some(qa) = divide(&a1, &g, k) {
-                    if let Some(qb) = divide(&b1, &g, k) {
-                        return Some((scaled(g, &gc), scaled(qa, &fa), scaled(qb, &fb)));
-                    }
-                }
+        if !ea.is_empty()
+            && !eb.is_empty()
+            && let Some((h, _, _)) = heu(&ea, &eb, var)
+        {
+            let g = primitive(&reconstruct(&h, var, &xi)?);
+            if let Some(qa) = divide(&a1, &g, k)
+                && let Some(qb) = divide(&b1, &g, k)
+            {
+                return Some((scaled(g, &gc), scaled(qa, &fa), scaled(qb, &fb)));
             }
         }
         // The growth factor of Char, Geddes and Gonnet (about xi^(5/4) times 2.73).

@@ -496,27 +496,27 @@ impl Poly {
             return (self.terms.iter().map(|(m, x)| (m.clone(), x * n)).collect(), den);
         }
         // Univariate in one common symbol: dense convolution by exponent.
-        if let (Ok(sa), Ok(sb)) = (self.univariate_symbol(), other.univariate_symbol()) {
-            if sa.is_none() || sb.is_none() || sa == sb {
-                let s = sa.or(sb).expect("non-constant: handled above");
-                let exp = |m: &Monomial| m.0.first().map_or(0, |&(_, e)| e as usize);
-                let da = self.terms.iter().map(|(m, _)| exp(m)).max().unwrap_or(0);
-                let db = other.terms.iter().map(|(m, _)| exp(m)).max().unwrap_or(0);
-                let mut acc = vec![BigInt::zero(); da + db + 1];
-                for (ma, na) in &self.terms {
-                    let ea = exp(ma);
-                    for (mb, nb) in &other.terms {
-                        acc[ea + exp(mb)] += na * nb;
-                    }
+        if let (Ok(sa), Ok(sb)) = (self.univariate_symbol(), other.univariate_symbol())
+            && (sa.is_none() || sb.is_none() || sa == sb)
+        {
+            let s = sa.or(sb).expect("non-constant: handled above");
+            let exp = |m: &Monomial| m.0.first().map_or(0, |&(_, e)| e as usize);
+            let da = self.terms.iter().map(|(m, _)| exp(m)).max().unwrap_or(0);
+            let db = other.terms.iter().map(|(m, _)| exp(m)).max().unwrap_or(0);
+            let mut acc = vec![BigInt::zero(); da + db + 1];
+            for (ma, na) in &self.terms {
+                let ea = exp(ma);
+                for (mb, nb) in &other.terms {
+                    acc[ea + exp(mb)] += na * nb;
                 }
-                let terms = acc
-                    .into_iter()
-                    .enumerate()
-                    .filter(|(_, n)| !n.is_zero())
-                    .map(|(e, n)| (Monomial::power(s, e as u32), n))
-                    .collect();
-                return (terms, den);
             }
+            let terms = acc
+                .into_iter()
+                .enumerate()
+                .filter(|(_, n)| !n.is_zero())
+                .map(|(e, n)| (Monomial::power(s, e as u32), n))
+                .collect();
+            return (terms, den);
         }
         let terms = self.mul_dense(other).unwrap_or_else(|| self.mul_sparse(other));
         (terms, den)

@@ -210,19 +210,19 @@ fn half_width_for_load(
         return Ok(found);
     }
     let (hi, last_err) = (root.hi, root.last_error);
-    if hi < a_max * (1.0 - 1e-12) {
-        if let Some(e) = last_err {
-            return Err(e);
-        }
+    if hi < a_max * (1.0 - 1e-12)
+        && let Some(e) = last_err
+    {
+        return Err(e);
     }
     let size = readable(match problem.size() {
         AdhesionSize::NormalLoad(p) => p,
         AdhesionSize::HalfWidth(a) => a,
     });
-    if let (HalfWidthSearch::Capped { a_max: cap }, AdhesionSize::NormalLoad(p2)) = (search, problem.size()) {
-        if cap <= a_max {
-            return Err(circle_cap_error(p2, cap, None));
-        }
+    if let (HalfWidthSearch::Capped { a_max: cap }, AdhesionSize::NormalLoad(p2)) = (search, problem.size())
+        && cap <= a_max
+    {
+        return Err(circle_cap_error(p2, cap, None));
     }
     Err(last_err.unwrap_or(AdhesionError::IllConditioned {
         method: "f64-series",

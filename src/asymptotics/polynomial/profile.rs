@@ -73,16 +73,16 @@ impl PolynomialProfile {
                 "needs a non-zero term of degree >= 2 (a flat or tilted punch has no bounded contact)",
             ));
         };
-        if let Some(v) = &c[reference] {
-            if reference % 2 == 1 || !v.is_positive() {
-                return Err(ModelError::new(
+        if let Some(v) = &c[reference]
+            && (reference % 2 == 1 || !v.is_positive())
+        {
+            return Err(ModelError::new(
                     "coefficients",
                     shown(&c),
                     format!(
                         "the lowest term of degree >= 2 (here x^{reference}) must have even degree and a positive coefficient (convex at the vertex)"
                     ),
                 ));
-            }
         }
         Ok(PolynomialProfile { coefficients: c, reference })
     }

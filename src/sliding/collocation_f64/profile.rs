@@ -19,10 +19,10 @@ pub(super) fn slope(prm: &SlidingParamsF64, x: f64) -> f64 {
         (ShapeF64::Sinusoidal { .. }, None) => f64::NAN, // refused by the model: a sinusoid has a period
         (ShapeF64::Polynomial { .. } | ShapeF64::Circular { .. }, period) => {
             let x = period.map_or(x, |l| x - l * (x / l).round());
-            if let ShapeF64::Circular { r } = prm.shape {
-                if x.abs() >= r {
-                    return f64::INFINITY.copysign(x);
-                }
+            if let ShapeF64::Circular { r } = prm.shape
+                && x.abs() >= r
+            {
+                return f64::INFINITY.copysign(x);
             }
             analytic_slope(&prm.shape, x)
         }

@@ -165,19 +165,19 @@ pub(super) fn sinusoid_scan(
             Some((x, y)) => x.hypot(y).ln(),
             None => continue,
         };
-        if let Some((lp, hp)) = prev {
-            if hp * h <= 0.0 {
-                let n = options.nodes.unwrap_or_else(|| collocation_nodes(lam, options));
-                let colr = collocation(prm.theta, n)?;
-                let f = |x: f64| sinusoid_h(&colr, prm, big_l, s, p2, x);
-                let (flo, fhi) = (f(lp)?, f(lam)?);
-                let root = if flo * fhi <= 0.0 {
-                    root_in(f, lp, lam, flo, fhi, 1e-16 * lam)?
-                } else {
-                    refine_sinusoid_lambda(&colr, prm, big_l, s, p2, 0.5 * (lp + lam))?
-                };
-                out.push((root, n));
-            }
+        if let Some((lp, hp)) = prev
+            && hp * h <= 0.0
+        {
+            let n = options.nodes.unwrap_or_else(|| collocation_nodes(lam, options));
+            let colr = collocation(prm.theta, n)?;
+            let f = |x: f64| sinusoid_h(&colr, prm, big_l, s, p2, x);
+            let (flo, fhi) = (f(lp)?, f(lam)?);
+            let root = if flo * fhi <= 0.0 {
+                root_in(f, lp, lam, flo, fhi, 1e-16 * lam)?
+            } else {
+                refine_sinusoid_lambda(&colr, prm, big_l, s, p2, 0.5 * (lp + lam))?
+            };
+            out.push((root, n));
         }
         prev = Some((lam, h));
     }

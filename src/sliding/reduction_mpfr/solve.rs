@@ -492,11 +492,11 @@ pub(super) fn solve_located(
                     let lo = &setup.locate;
                     let n_lo = bucket(nodes_for(lambda_of(lo, s0), LOCATE_DIGITS));
                     let s_lo = Float::with_val(LOCATE_PREC, s0);
-                    if let Some(sol) = branches(lo, &s_lo, n_lo)?.get(br) {
-                        if let Err(r) = physical_at(lo, &s_lo, sol, n_lo)? {
-                            reasons.push(reason_or_error(lambda_of(lo, s0), r)?);
-                            continue;
-                        }
+                    if let Some(sol) = branches(lo, &s_lo, n_lo)?.get(br)
+                        && let Err(r) = physical_at(lo, &s_lo, sol, n_lo)?
+                    {
+                        reasons.push(reason_or_error(lambda_of(lo, s0), r)?);
+                        continue;
                     }
                 }
                 let n = n_for(s0)?;
