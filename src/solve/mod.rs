@@ -365,16 +365,27 @@ fn adhesion_friction(
     };
     let mpfr = answer.provenance.method == "mpfr";
     let shown = if mpfr { req.digits } else { req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1) };
+    Ok(friction_rendered(p, &answer, shown, (!mpfr).then_some(req.digits)))
+}
+
+/// A finite-friction answer printed with `shown` digits (`f64_asked`: the digits an f64 answer was
+/// asked, for its `digits_note`); no horizon (`lambda_h` null: the mode is complete adhesion's).
+fn friction_rendered(
+    p: &AdhesionProblem,
+    answer: &render::AdhesionAnswer,
+    shown: u32,
+    f64_asked: Option<u32>,
+) -> Rendered {
     let claim = Claim { digits: answer.headline(), kind: answer.kind };
-    let mut m = render::adhesion_json(&answer, shown);
-    let values = render::adhesion_values(&answer, shown);
-    if !mpfr {
-        f64_digits(&mut m, req.digits);
+    let mut m = render::adhesion_json(answer, shown);
+    let values = render::adhesion_values(answer, shown);
+    if let Some(asked) = f64_asked {
+        f64_digits(&mut m, asked);
     }
     m.insert("lambda_h".into(), Value::Null);
     let a = number(&values, "half_width");
     slope_warning(&mut m, p.shape(), p.period(), -a, a);
-    Ok((Value::Object(m), claim, vec![values]))
+    (Value::Object(m), claim, vec![values])
 }
 
 /// Finite friction at nu = 1/2 (beta = 0): nothing drives a slip, the whole contact sticks (c = a)
@@ -397,13 +408,7 @@ fn adhesion_friction_incompressible(
         checks: Vec::new(),
     });
     answer.accuracy.push(("stick".into(), answer.headline()));
-    let claim = Claim { digits: answer.headline(), kind: answer.kind };
-    let mut m = render::adhesion_json(&answer, req.digits);
-    let values = render::adhesion_values(&answer, req.digits);
-    m.insert("lambda_h".into(), Value::Null);
-    let a = number(&values, "half_width");
-    slope_warning(&mut m, p.shape(), p.period(), -a, a);
-    Ok((Value::Object(m), claim, vec![values]))
+    Ok(friction_rendered(p, &answer, req.digits, None))
 }
 
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
