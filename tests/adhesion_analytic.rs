@@ -43,7 +43,7 @@ fn lambda_of(a: &str) -> Float {
 /// Below lambda_h both methods compute the same member: at nu = 0, a = 0.13 (lambda = 0.41), the
 /// analytic P (15 digits asked) agrees with the verified MPFR P (20 asked) to the digits both verify.
 #[test]
-#[ignore = "long tier: 22 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 22 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn below_the_horizon_it_equals_the_default_method() {
     let (reference, ref_digits) = default_load("0", "13/100", 20);
     let sol = continue_to(&material("0"), &lambda_of("13/100"), 15).unwrap();

@@ -24,7 +24,7 @@ fn scene(nu: &str, mu: &str, size: &str) -> String {
 }
 
 #[test]
-#[ignore = "long tier: 9 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 9 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn claimed_digits_hold_against_a_finer_mesh() {
     // (nu, mu, size key and value): E* = 2, k = 1/2, so E* k = 1.
     let cases = [

@@ -83,7 +83,7 @@ fn xh5() -> [Exact; 5] {
 }
 
 #[test]
-#[ignore = "long tier: 11 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 11 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn f64_marching_agrees_with_mpfr_collocation() {
     check(q(3, 10), q(1, 5), q(1, 8), Convention::Paper, &[]);
     check(q(3, 10), q(1, 2), q(1, 4), Convention::PeriodicSurface, &[]);
@@ -141,7 +141,7 @@ fn series_against_collocation(n: Exact, size: Exact, terms: usize) -> Result<(f6
 /// digits (measured 23.6 and 24.2; the collocation verifies 25.9 of 20 requested; the series'
 /// 16 terms leave a remainder of about g_16 Lambda^32).
 #[test]
-#[ignore = "long tier: 12 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 12 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn series_agrees_with_collocation_at_nu_zero() {
     let (c, p2, verified) = series_against_collocation(q(1, 5), q(1, 16), 16).unwrap();
     eprintln!("nu 0 n 1/5 l/L 1/16: c/l {c:.1} digits, P2 {p2:.1}, collocation verified {verified:.1}");
@@ -169,7 +169,7 @@ fn nu_zero_reach() {
 /// c = -5.086222209154e-3 against -5.086222209154380e-3 and -1.06415165828e-2 against
 /// -1.064151658277721e-2), in both conventions at 1/16.
 #[test]
-#[ignore = "long tier: 9 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 9 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn nu_zero_agrees_where_the_problem_fixes_the_solution() {
     check(q(0, 1), q(1, 5), q(1, 16), Convention::Paper, &[]);
     check(q(0, 1), q(1, 5), q(1, 16), Convention::PeriodicSurface, &[]);
@@ -276,7 +276,7 @@ fn given_load_polynomial_law_and_refusal() {
 /// docs/theory.md section 8, Problem 2), at nu = 0 and l/L = 1/5 (lambda = 0.628), 20 digits
 /// asked: agreement to 1e-18 relative (measured 8.1e-22 `paper`, 1.3e-28 `periodic`).
 #[test]
-#[ignore = "long tier: 9 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 9 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn zero_ratio_in_mpfr_is_problem_2_in_both_conventions() {
     for convention in [Convention::Paper, Convention::PeriodicSurface] {
         let law = problem(q(0, 1), LoadingLaw::Linear(q(0, 1)), LawSize::HalfLength(q(1, 5)), convention);

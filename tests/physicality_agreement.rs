@@ -65,7 +65,7 @@ fn mpfr_verdict(pb: &SlidingProblem) -> Verdict {
 /// direct problem at lambda = pi l/L for l in {1/10, 1/5, 3/10, 2/5} (lambda 0.31 to 1.26); both
 /// shapes, both conventions: 160 problems.
 #[test]
-#[ignore = "long tier: 6 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 6 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn f64_and_mpfr_never_disagree_on_physicality() {
     let thetas = [("6/5", "0"), ("2/5", "0"), ("0", "0"), ("0", "2/5"), ("0", "6/5")];
     let mut table = vec![];

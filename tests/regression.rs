@@ -92,7 +92,7 @@ fn r34_tiny_loads_on_the_sinusoid() {
 /// holds its claimed digits on its scale against verified MPFR at 30 digits (examples/fuzz/check.rs,
 /// the fuzzer's check 2).
 #[test]
-#[ignore = "long tier: 36 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 36 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn r34_printed_f64_values_hold_their_claimed_digits() {
     let mut checked = 0;
     let mut bad = vec![];
@@ -129,7 +129,7 @@ fn r34_printed_f64_values_hold_their_claimed_digits() {
 /// the value is 0.633 (24 digits asked: 2.0 digits): it now refuses beyond the horizon, at every
 /// digits asked, naming the size and the range.
 #[test]
-#[ignore = "long tier: 13 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 13 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn r34_adhesion_past_the_mode_horizon_is_refused() {
     let scene =
         "[problem]\nkind = \"adhesion\"\n[material]\npoisson_ratio = \"277/1000\"\ncontact_modulus = \"7/10\"\n\

@@ -132,7 +132,7 @@ fn adversarial_sliding_grid_has_honest_digits_or_clear_errors() {
 }
 
 #[test]
-#[ignore = "long tier: 6 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 6 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn adversarial_adhesion_grid_has_honest_digits_or_clear_errors() {
     let mut answered = 0;
     for (nu, a) in [

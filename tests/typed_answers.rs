@@ -107,7 +107,7 @@ fn adhesion_quantities_are_the_json_and_hold_their_digits() {
 }
 
 #[test]
-#[ignore = "long tier: 9 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 9 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn loading_law_quantities_are_the_json_and_hold_their_digits() {
     let truth = solve("adhesion_loading_law.toml", "mpfr", 16);
     let f64 = solve("adhesion_loading_law.toml", "f64", 30);

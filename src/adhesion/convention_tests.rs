@@ -183,7 +183,7 @@ fn periodic_map_grid_holds_20_digits() {
 /// docs/theory.md section 8, Problem 2): nu = 0, lambda = 1.54, 20 digits asked: 18.6 verified
 /// (measured), with a warning naming full contact and no m*.
 #[test]
-#[ignore = "long tier: 4 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 4 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn periodic_shortfall_names_full_contact() {
     let pr = row(q(0, 1), q(154, 100), Convention::PeriodicSurface);
     let v = solve_verified(&pr, &[q(1, 2)], 20).unwrap();

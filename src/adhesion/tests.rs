@@ -221,7 +221,7 @@ fn adhesion_mpfr_and_f64_agree() {
 }
 
 #[test]
-#[ignore = "long tier: 7 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 7 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn adhesion_converges_with_nodes() {
     // Load at nu = 0, lambda = pi/5: the error against a 60-digit run falls with the target.
     let pr = problem(q(0, 1), Some(q(1, 1)), AdhesionSize::HalfWidth(q(1, 5)));
@@ -483,7 +483,7 @@ fn small_nu_shortfall_names_the_homogeneous_solution() {
 /// (measured 1.7e-4): a function the equation does not see. At nu = 1/2 (eps = 0, unique) the
 /// same runs agree to 1e-40.
 #[test]
-#[ignore = "long tier: 8 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 8 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn two_discretisations_differ_by_a_homogeneous_solution() {
     let p = VolterraParams { prec: 200, target_bits: 160, refine: 1.3 };
     let pi = Float::with_val(p.prec, Constant::Pi);
@@ -523,7 +523,7 @@ fn two_discretisations_differ_by_a_homogeneous_solution() {
 /// (3/10, 1.35), keeps at least the predicted digits and at most 3 more (measured - predicted:
 /// 0.7 to 2.1; at 30 digits the same digits are kept).
 #[test]
-#[ignore = "long tier: 16 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 16 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn the_horizon_bounds_the_measured_spread() {
     use crate::asymptotics::adhesion_mode::digits_kept;
     for (nu, lam) in [(q(0, 1), 0.9), (q(1, 10), 1.05), (q(1, 5), 1.2), (q(3, 10), 1.35)] {

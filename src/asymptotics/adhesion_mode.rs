@@ -626,7 +626,7 @@ mod tests {
 
     /// The capped digits kept equal the full integral to the bit below the cap and are at least the
     /// cap above it (nu = 0 at lambda = 0.5 .. 1.45, nu = 3/10 at 1.2 .. 1.45, where the symbol's
-    /// exponents stay small enough for a fast debug test; the solver's refusal reads only whether
+    /// exponents stay small enough for a fast test; the solver's refusal reads only whether
     /// they fall below 2 digits).
     #[test]
     fn capped_digits_kept_are_the_digits_kept_below_the_cap() {

@@ -221,7 +221,7 @@ mod tests {
     /// digits; each verified to >= 30 digits), their drift, and the two Domb-Sykes windows'
     /// disagreement (< 3 digits on the radius, < 1 on the exponent, at every nu < 1/2).
     #[test]
-    #[ignore = "long tier: 17 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 17 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn no_fixed_singularity_below_half() {
         let table: [(Q, [f64; 5], [f64; 3]); 3] = [
             (q(0, 1), [1.17212, 0.99887, 0.85809, 0.63645, 0.07648], [2.49, 3.21, 4.27]),
@@ -247,7 +247,7 @@ mod tests {
     /// nu = 0: cos phi_j falls by a factor > 400 between j = 5 and j = 300 while
     /// (eta_s(j))^2/cos phi_j stays within [2.3, 4.3]: the drift follows the moments' phase.
     #[test]
-    #[ignore = "long tier: 5 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 5 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn drift_follows_the_phase_of_the_moments() {
         let s = singularity_analysis(&q(0, 1), 600, 30).unwrap();
         let (a, b) = (row(&s, 5), row(&s, 300));

@@ -565,7 +565,7 @@ mod tests {
     /// divided by det M(2j), so the series' coefficients jump where mu* passes 2j (nu = 0, n =
     /// 1/2: mu* in (30, 32), g_15 < 0 < g_16, |g_16/g_15| > 300).
     #[test]
-    #[ignore = "long tier: 11 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 11 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn series_resonates_at_the_mode() {
         let prec = 160;
         let material = Material::from_contact_modulus(q(0, 1), q(1, 1)).unwrap();

@@ -369,7 +369,7 @@ mod tests {
     /// nodes from the 16-node solution; load, c/l and every Chebyshev coefficient of Phi and Gam
     /// within 2^-80 of the cold start's (the iterations stop below 2^-90).
     #[test]
-    #[ignore = "long tier: 6 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 6 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn a_warm_start_reaches_the_cold_start_solution() {
         let setting = shifted_setting();
         let coarse = solve(&setting, 16, 90, 130).unwrap();
@@ -396,7 +396,7 @@ mod tests {
     /// term: 6.5e-5 against the largest entry 10.5 at N = P2/5 + P2^2/100, nu = 0, l/L = 1/5
     /// (`cargo test --release --lib closed_form_jacobian -- --nocapture`).
     #[test]
-    #[ignore = "long tier: 9 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 9 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn closed_form_jacobian_equals_finite_differences() {
         let n = Exact::new(1.into(), 5.into());
         let poly =

@@ -219,7 +219,7 @@ mod tests {
     /// --nocapture`): claimed 26.2 / 26.8 digits, load to 2.6e-32 / 1.5e-32, [1.8] to
     /// 3.7e-28 .. 3.3e-27 at the three points (26.7 digits or more on that scale).
     #[test]
-    #[ignore = "long tier: 86 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 86 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn stresses_satisfy_the_surface_relations() {
         for convention in [Convention::Paper, Convention::PeriodicSurface] {
             let problem = shifted_problem(convention);

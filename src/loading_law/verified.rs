@@ -580,7 +580,7 @@ mod tests {
     /// equals the linear law; the given load is found back (normal_load = the P2 of a given
     /// half-length returns that half-length); N' < 0 is refused naming the law's key.
     #[test]
-    #[ignore = "long tier: 15 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 15 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn polynomial_path_given_load_and_refusals() {
         let xh = [q(1, 3)];
         let lin = solve_law(
@@ -643,7 +643,7 @@ mod tests {
     /// and the periodic row tends to it like Lambda^2 (c/l at L = 40 and 80, l = 1: the
     /// differences' ratio is 4 within 1%).
     #[test]
-    #[ignore = "long tier: 15 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 15 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn single_punch_limits_and_self_similarity() {
         let xh = [q(-3, 5), q(1, 4)];
         let digits = 16;

@@ -451,7 +451,7 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "long tier: 10 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 10 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn log_resummed_beyond_its_radius_with_honest_digits() {
         // log(1 + w)/w, radius 1, at w = 2 (beyond it): the partial sums diverge, the Pade values
         // converge; the estimate never exceeds the true digits.

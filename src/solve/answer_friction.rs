@@ -18,8 +18,9 @@
 //!
 //! `--method mpfr` ([`mpfr_answer`], single punch): gamma and C_P by the spectral method with
 //! verified digits ([`crate::adhesion::friction::spectral_punch::verified`], docs/theory.md section
-//! 17.7), at most [`MPFR_MAX_DIGITS`] digits (its cost: about 35 s at 14, a minute at 16, release
-//! build); the digits of a, P2 and c propagated through the same formulas; its `checks` compare it
+//! 17.7), at most [`MPFR_MAX_DIGITS`] digits (its cost: 35 s at 14 digits from the release CLI at
+//! load 3-6, 28 s at 16 in the test `verified_digits_at_nu0_mu_half` at load 2-3); the digits of a,
+//! P2 and c propagated through the same formulas; its `checks` compare it
 //! with the f64 increment method (independent discretisation).
 //!
 //! Refused with an input error: a method other than f64 and mpfr ([`refuse_method`]; the periodic
@@ -79,7 +80,7 @@ pub fn refuse_method(method: crate::scene::Method, mpfr_too: bool) -> Result<(),
 }
 
 /// Most digits the mpfr method is asked for: its two discretisations grow with the digits (n =
-/// digits - 2 and n + 6 basis functions per family), and 16 already take about a minute.
+/// digits - 2 and n + 6 basis functions per family), and 14 to 16 already take half a minute.
 pub const MPFR_MAX_DIGITS: u32 = 16;
 
 /// The model the periodic row's answer solves, printed as its `friction_note`.
@@ -287,23 +288,23 @@ pub fn mpfr_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
     k: &Exact,
-    digits: u32,
+    digits_asked: u32,
     with_points: bool,
 ) -> Result<AdhesionAnswer, Error> {
     use crate::numerics::exact::to_float;
     use rug::Float;
-    if digits > MPFR_MAX_DIGITS {
+    if digits_asked > MPFR_MAX_DIGITS {
         return Err(Error::input(
             "digits",
-            digits.to_string(),
+            digits_asked.to_string(),
             format!(
                 "at most {MPFR_MAX_DIGITS} with finite friction and --method mpfr (the spectral method's two \
-                 discretisations grow with the digits: about 35 s at 14 digits, a minute at 16)"
+                 discretisations grow with the digits: 14 or 16 digits take half a minute)"
             ),
         ));
     }
-    let prec = (3.33 * (digits + 14) as f64).ceil() as u32 + 64;
-    let v = spectral_punch::verified(&to_float(&p.material().beta(), prec), &to_float(mu_exact, prec), digits)?;
+    let prec = (3.33 * (digits_asked + 14) as f64).ceil() as u32 + 64;
+    let v = spectral_punch::verified(&to_float(&p.material().beta(), prec), &to_float(mu_exact, prec), digits_asked)?;
     let (gamma, cp) = (&v.gamma, &v.load_coefficient);
     let ek = to_float(p.material().contact_modulus(), prec) * to_float(k, prec);
     // relative digits of a and P2
@@ -324,7 +325,7 @@ pub fn mpfr_answer(
         AdhesionSize::HalfWidth(_) => 0.0,
         AdhesionSize::NormalLoad(_) => 10f64.powf(-size_digits),
     };
-    let stick_digits = -(10f64.powf(-v.gamma_digits) + gamma.to_f64() * rel_a).log10();
+    let stick_digits = digits(10f64.powf(-v.gamma_digits) + gamma.to_f64() * rel_a);
     let c = Float::with_val(prec, gamma * &a);
     Ok(AdhesionAnswer {
         provenance: Provenance { method: "mpfr", bits: Some(v.bits), nodes: None, order: None, convention: None },

@@ -183,7 +183,7 @@ fn f64_method_solves_the_shipped_scene() {
 /// a + b = 2 l, c = (b - a)/2, P1 = P2/5, friction_needed = max |q1|/q2 of the printed points,
 /// all to the printed digits; a, b equal the 20-digit run's to 12 digits.
 #[test]
-#[ignore = "long tier: 6 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 6 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn shipped_scene_solves_with_its_verified_digits() {
     let v = json(&["solve", &shipped(), "--json", "--digits", "12"]);
     assert_eq!(v["problem"], "adhesion");
@@ -257,7 +257,7 @@ fn shipped_scene_solves_with_its_verified_digits() {
 /// polynomial form, the given-load path and the text output in one solve (asked at 12 digits,
 /// compared to 11).
 #[test]
-#[ignore = "long tier: 7 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 7 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn polynomial_form_at_the_shipped_load_in_text() {
     // One point keeps the run short (each point's phi is a nested quadrature).
     let text = std::fs::read_to_string(shipped())
@@ -289,7 +289,7 @@ fn polynomial_form_at_the_shipped_load_in_text() {
 /// `--convention periodic` brings in the tilted punch (docs/theory.md section 8: no rotation, u
 /// periodic): another centre, the law and l kept.
 #[test]
-#[ignore = "long tier: 5 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 5 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn periodic_convention_moves_the_centre() {
     let text = std::fs::read_to_string(shipped()).unwrap().replace(SHIPPED_POINTS, "points = [\"0.5\"]");
     let path = scene_file("law_periodic.toml", &text);
@@ -361,7 +361,7 @@ fn single_punch_scene_solves() {
 /// mu* = 31.8395100566 (`asymptotics::loading_law_modes`; `cargo run --release --example
 /// loading_law_small_nu`), which the JSON carries as `mode`.
 #[test]
-#[ignore = "long tier: 27 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 27 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn small_nu_shortfall_is_a_warning() {
     let text = scene("tangential_ratio = \"1/2\"\nhalf_length = \"1/8\"", "").replace("\"0.3\"", "\"0\"");
     let path = scene_file("law_nu0.toml", &text);

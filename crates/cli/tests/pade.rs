@@ -55,7 +55,7 @@ fn kuznetsov_l_gains_five_digits_at_lambda_1_2() {
 }
 
 #[test]
-#[ignore = "long tier: 17 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 17 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn estimates_are_honest_on_the_closed_forms() {
     for shape in [SlidingShape::Parabolic, SlidingShape::Sinusoidal] {
         let e = sliding_expansion_with(shape, 24, Convention::Paper).unwrap();
@@ -208,7 +208,7 @@ fn print_chart_rows() {
 /// lambda = 1.2: l has 7.0 true digits (estimated 5.4) against 4.9 for the series method's full
 /// sum (which claims 1.7 and prints 2.3 true digits); at order 24 13.7 against 8.3 (+5.4).
 #[test]
-#[ignore = "long tier: 5 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 5 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn the_pade_method_maps_kuznetsovs_cuts() {
     for (order, gain) in [(12usize, 2.0), (24, 5.0)] {
         let e = sliding_expansion_with(SlidingShape::Parabolic, order, Convention::Paper).unwrap();
@@ -233,7 +233,7 @@ fn the_pade_method_maps_kuznetsovs_cuts() {
 /// lambda = 1.2 (P2 = ln sec(1.2)/pi, L = k = E* = 1): the closed form l = arccos(exp(-pi P2))/pi.
 /// Measured: pade 11.9 digits (claims 9.8; 8.3 s), series 4.0 (claims 1.6; 0.2 s).
 #[test]
-#[ignore = "long tier: 5 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 5 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn the_pade_method_at_its_default_order_gains_five_digits() {
     let scene = common::scene_file(
         "kuznetsov_1_2.toml",

@@ -66,7 +66,7 @@ fn order_200_at_three_tenths_matches_the_exact_route() {
 /// nu = 0 beyond N = 303: the text and the JSON name the sign change of Re M_(2N+1) and print
 /// through lambda^604 only.
 #[test]
-#[ignore = "long tier: 6 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 6 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn pole_at_nu_zero_is_named() {
     let (code, text, err) = run(&["series", "adhesion", "--order", "640", "--nu", "0", "--digits", "12"]);
     assert_eq!(code, 0, "{err}");

@@ -5,7 +5,7 @@
 mod common;
 
 #[test]
-#[ignore = "long tier: 23 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 23 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn serial_and_parallel_reports_are_identical() {
     let (serial_dir, serial) = common::fast_report_with("report-serial", Some(1));
     let (parallel_dir, parallel) = common::fast_report_with("report-parallel", Some(3));

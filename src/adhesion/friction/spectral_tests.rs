@@ -97,7 +97,7 @@ fn f64_and_mpfr_agree_at_one_stick_ratio() {
 }
 
 #[test]
-#[ignore = "long tier: about 60 s (two MPFR root searches at n = 14 and 20)"]
+#[ignore = "long tier: 28 s alone in the test profile (opt-level 2), two MPFR root searches at n = 14 and 20 (scripts/test --long)"]
 fn verified_digits_at_nu0_mu_half() {
     let half = Float::with_val(200, 0.5);
     let v = verified(&half, &half, 16).unwrap();

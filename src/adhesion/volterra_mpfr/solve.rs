@@ -552,7 +552,7 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "long tier: 5 s in debug on a loaded 2-core machine (scripts/test --long)"]
+    #[ignore = "long tier: 5 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn adhesion_fixed_collocation_is_bit_identical_to_mpfr() {
         // The assembly and elimination in Fixed arithmetic give the bits of the MPFR loops, at
         // one to four limbs and at limb boundaries (nu = 0.3, lambda = 1.2, 40 nodes).

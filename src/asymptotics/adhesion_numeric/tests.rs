@@ -91,7 +91,7 @@ fn two_precisions_agree_at_order_200() {
 /// N ~ 300); the printed coefficients stop just before (lambda^604), the text and the JSON say so;
 /// at nu = 1/10 D_N stays positive through N = 500 (order 1000).
 #[test]
-#[ignore = "long tier: 13 s in debug on a loaded 2-core machine (scripts/test --long)"]
+#[ignore = "long tier: 13 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn sign_change_at_nu_zero() {
     let run = adhesion_run(&material(&q(0, 1)), 400, 128);
     let n = run.sign_change().expect("D_N changes sign below N = 400 at nu = 0");
