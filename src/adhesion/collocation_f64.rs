@@ -54,7 +54,7 @@ use crate::growing_contact::kernel_f64::{KernelF64, Side};
 use crate::growing_contact::march::{points_for, single_block, March, MarchOptions, MarchSetting, MAX_POINTS};
 use crate::model::OnPunchRow;
 use crate::model::{readable, AdhesionProblem, AdhesionSize, Exact, Period, PunchShape};
-use crate::numerics::accuracy::readable_f64;
+use crate::numerics::accuracy::{digits_text, readable_f64};
 use crate::numerics::exact::to_f64;
 use crate::numerics::gauss_jacobi_f64::gauss_jacobi;
 use crate::numerics::roots::increasing_root;
@@ -331,11 +331,16 @@ pub(crate) fn solve_collocation_f64(
             } else {
                 valid_sizes(c.eps, c.b, c.s, SHORT_DIGITS)
             },
-            reason: format!("two runs agree to only {headline:.1} digits: {}", cause()),
+            reason: format!("two runs agree to only {} digits: {}", digits_text(headline), cause()),
         });
     }
     if headline < SHORT_DIGITS {
-        sol.warnings.push(format!("only {headline:.1} digits estimated (lambda = {:.6}; {})", sol.lambda, cause()));
+        sol.warnings.push(format!(
+            "only {} digits estimated (lambda = {:.6}; {})",
+            digits_text(headline),
+            sol.lambda,
+            cause()
+        ));
     }
     Ok(sol)
 }
@@ -444,6 +449,21 @@ mod tests {
         let (ka, eka) = (0.25 * f.half_width, 0.5 * f.half_width);
         for (w, e) in f.points.iter().zip(field_errors(&v, &f, ka, eka)) {
             assert!(e.iter().all(|e| *e < 1e-12), "x/a {}: {e:?}", w.x_over_a);
+        }
+    }
+
+    /// See: issue 34, fuzz seed 2026 case 5890. The stresses vanish at the contact's end x/a = 1
+    /// exactly (the point enters with the final size); the bisection left its entry one ulp
+    /// short and printed q2 = 1.1e-7 of a scale 3.1, the square root of that ulp. Both at
+    /// nu = 1/2 (q2 alone) and nu = 3/10 (q1 too), while x/a = 0.99 keeps its value.
+    #[test]
+    fn stresses_vanish_at_the_end_of_the_contact() {
+        for nu in [q(1, 2), q(3, 10)] {
+            let pr = problem(nu.clone(), AdhesionSize::HalfWidth(q(3, 10)));
+            let f = solve_collocation_f64(&pr, &[q(99, 100), q(1, 1)]).unwrap();
+            let (near, end) = (&f.points[0], &f.points[1]);
+            assert_eq!((end.q1, end.q2), (0.0, 0.0), "nu {nu}: {end:?}");
+            assert!(near.q2.abs() > 1e-3, "nu {nu}: {near:?}");
         }
     }
 

@@ -397,11 +397,11 @@ impl AdhesionNumeric {
                 self.order + 1
             ),
             format!(
-                "values to {} digits, verified by a second run ({} and {} bits): every printed coefficient to >= {:.1} digits of its own magnitude",
+                "values to {} digits, verified by a second run ({} and {} bits): every printed coefficient to >= {} digits of its own magnitude",
                 self.digits,
                 self.bits[0],
                 self.bits[1],
-                self.min_digits()
+                crate::numerics::accuracy::digits_text(self.min_digits())
             ),
             self.pole_text(),
             format!("horizon: lambda_h = {} ({})", self.lambda_h(), self.horizon_sentence()),
@@ -409,12 +409,12 @@ impl AdhesionNumeric {
         let short = self.short();
         if let Some(worst) = short.iter().min_by(|a, b| a.2.total_cmp(&b.2)) {
             h.push(format!(
-                "warning: {} coefficients verified to fewer than the {} digits asked (least: {} power {}, {:.1} digits); each is printed with its verified digits only",
+                "warning: {} coefficients verified to fewer than the {} digits asked (least: {} power {}, {} digits); each is printed with its verified digits only",
                 short.len(),
                 self.digits,
                 worst.0,
                 worst.1,
-                worst.2
+                crate::numerics::accuracy::digits_text(worst.2)
             ));
         }
         h.push("stress kernels: not printed by the numerical route (h_N is a polynomial of degree 2N+1 in (xi, tau) with complex coefficients: hundreds of lines per order); the exact kernels through order 24 are `asymptotics::adhesion::adhesion_expansion`'s `stress`".into());

@@ -423,8 +423,8 @@ impl ModeExponent {
                     )
                 };
                 format!(
-                    "\nhomogeneous mode: mu* = {v} ({:.1} digits verified; {what}): the loading law and both edge conditions fix the history only up to C eta^mu*; these coefficients are the member analytic in lambda^2 (C = 0){res}\n",
-                    self.digits
+                    "\nhomogeneous mode: mu* = {v} ({} digits verified; {what}): the loading law and both edge conditions fix the history only up to C eta^mu*; these coefficients are the member analytic in lambda^2 (C = 0){res}\n",
+                    crate::numerics::accuracy::digits_text(self.digits)
                 )
             }
         }

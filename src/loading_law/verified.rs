@@ -6,7 +6,8 @@
 //! final size is a root inside [0, U]). Two collocation runs ([`super::collocation`]), the
 //! second with 8 more nodes, 24 more bits and a finer rule; digits = -log10 of their difference
 //! over the quantity's scale (l for a, b, c; P2 for the loads; k l for psi; k l^2 for phi;
-//! E* k l for the stresses), as everywhere ([`crate::numerics::accuracy`]).
+//! E* k l for the stresses), as everywhere ([`crate::numerics::accuracy`]). Under a given load the
+//! ends, loads, fields and stresses also carry the distance of the printed P2 from that load.
 //! The loading path comes from the same runs: one collocation on [0, Lambda] holds every smaller
 //! contact (the Volterra structure), so at l_j = j l/[`PATH_STEPS`] the ends and loads are
 //!   c_j = (L/pi) gamma(lambda_j) = (L/pi) lambda_j Gam(j/PATH_STEPS), a_j = l_j - c_j,
@@ -487,9 +488,23 @@ pub(crate) fn solve_law_collocation(
         verified_digits_mpfr(&d, scale, cap)
     };
     let (u, v) = (&first, &second);
-    let ends = dig(&u.a, &v.a, &u.l).min(dig(&u.b, &v.b, &u.l)).min(dig(&u.c, &v.c, &u.l));
-    let loads = dig(&u.p2, &v.p2, &u.p2).min(dig(&u.p1, &v.p1, &u.p2));
+    let mut ends = dig(&u.a, &v.a, &u.l).min(dig(&u.b, &v.b, &u.l)).min(dig(&u.c, &v.c, &u.l));
+    let mut loads = dig(&u.p2, &v.p2, &u.p2).min(dig(&u.p1, &v.p1, &u.p2));
     let prec = u.l.prec();
+    // A given load is exact: the printed P2 (and P1 = N(P2)) also carries its distance from it,
+    // which the second run, solving for the same load, does not see; the size solved for that
+    // load, and so the ends and the fields, carry the same discretisation error (issue 34, fuzz
+    // seed 2026 case 7302: at lambda = 0.955, 10 digits, the runs agreed to 6.73 digits of P2, which
+    // lay 6.69 digits from the given load, and the stresses 6.81 digits where they held 6.77
+    // against the f64 method, to which the MPFR runs at 11, 16 and 24 digits converge).
+    let given_load = match problem.size() {
+        LawSize::NormalLoad(p2) => Some(dig(&u.p2, &to_float(p2, prec), &u.p2)),
+        LawSize::HalfLength(_) => None,
+    };
+    if let Some(d) = given_load {
+        loads = loads.min(d);
+        ends = ends.min(d);
+    }
     let k = to_float(problem.k(), prec);
     let e_star = to_float(problem.material().contact_modulus(), prec);
     let kl = Float::with_val(prec, &k * &u.l);
@@ -503,9 +518,15 @@ pub(crate) fn solve_law_collocation(
             .min(dig(&p.q1, &q.q1, &ekl))
             .min(dig(&p.q2, &q.q2, &ekl));
     }
+    if let (Some(d), false) = (given_load, u.points.is_empty()) {
+        fields = fields.min(d);
+    }
     let mut stresses = cap;
     for (p, q) in u.stresses.iter().zip(&v.stresses) {
         stresses = stresses.min(dig(&p.q1, &q.q1, &ekl)).min(dig(&p.q2, &q.q2, &ekl));
+    }
+    if let (Some(d), false) = (given_load, u.stresses.is_empty()) {
+        stresses = stresses.min(d);
     }
     let mut path = cap;
     for (p, q) in u.path.iter().zip(&v.path) {

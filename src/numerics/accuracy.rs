@@ -229,6 +229,24 @@ pub fn print_mpfr(value: &Float, scale: &Float, digits: f64, requested: u32) -> 
     }
 }
 
+/// A digit count as printed everywhere (answers, messages, warnings, the report): one decimal,
+/// rounded down, so that the text never claims more than the count (14.96 digits shown as "15.0"
+/// would; issue 34). A count compared with a target is compared as printed ([`digits_floor`]).
+/// Non-finite counts print as they are (`inf`).
+pub fn digits_text(d: f64) -> String {
+    format!("{:.1}", digits_floor(d))
+}
+
+/// A digit count rounded down to one decimal (what [`digits_text`] prints); non-finite counts
+/// unchanged.
+pub fn digits_floor(d: f64) -> f64 {
+    if d.is_finite() {
+        (d * 10.0).floor() / 10.0
+    } else {
+        d
+    }
+}
+
 /// A value for a human-readable message: at most 7 significant digits, plain decimals between
 /// 1e-3 and 1e6 (`0.8`, not `0.7999999999999999`), scientific notation outside (`1.000000e-300`).
 pub fn readable_f64(value: f64) -> String {
@@ -354,6 +372,21 @@ mod tests {
         // Otherwise ten times the difference.
         assert!((f64_digits(1e-10, 1.0, 1.0) - 9.0).abs() < 1e-12);
         assert_eq!(f64_digits(f64::NAN, 1.0, 1.0), 0.0);
+    }
+
+    #[test]
+    fn digit_counts_print_rounded_down() {
+        // See: issue 34. A count never prints above itself: 14.96 is "14.9", not "15.0".
+        assert_eq!(digits_text(14.96), "14.9");
+        assert_eq!(digits_text(3.6912), "3.6");
+        assert_eq!(digits_text(15.0), "15.0");
+        assert_eq!(digits_text(0.04), "0.0");
+        assert_eq!(digits_text(f64::INFINITY), "inf");
+        assert_eq!(digits_floor(11.96), 11.9);
+        for d in [0.0, 0.05, 1.23456, 6.734, 9.999, 12.1, 13.249] {
+            let printed: f64 = digits_text(d).parse().unwrap();
+            assert!(printed <= d && d - printed < 0.1, "{d}: {printed}");
+        }
     }
 
     #[test]

@@ -43,9 +43,10 @@ pub fn sliding_answer(s: &SeriesSolution, requested: u32, convention: Convention
         a: on(&s.a, &length, g),
         b: on(&s.b, &length, g),
         c: on(&s.c, &length, g),
-        // P1 = mu P2 + 2 l tau0 carries l's relative error in its tau0 part: at most 10^-g |P1|,
-        // which on the scale P2 is g - log10(|P1|/P2) digits when |P1| > P2 (issue 34, fuzzing).
-        p1: on(&s.p1, &s.p2, g - p1_excess(&s.p1, &s.p2)),
+        // P1 = mu P2 + 2 l tau0 carries l's relative error in its tau0 part (l's own digits, not
+        // the contact's, which c's error lowers): at most 10^-length |P1|, which on the scale P2
+        // is length - log10(|P1|/P2) digits when |P1| > P2 (issue 34, fuzzing).
+        p1: on(&s.p1, &s.p2, acc.length - p1_excess(&s.p1, &s.p2)),
         p2: on(&s.p2, &s.p2, exact),
         f_def: on(&s.f_def, &scale(SlidingScale::DeformationForce), fd),
         wear_per_distance: Some(on(&s.wear_per_distance, &s.wear_per_distance, exact)),

@@ -312,7 +312,7 @@ impl Choice {
     pub fn why(&self) -> String {
         let c = &self.candidates[self.chosen];
         let pred = |x: &Candidate| match x.predicted {
-            Some(d) => format!("{d:.1}"),
+            Some(d) => crate::numerics::accuracy::digits_text(d),
             None => "n/a (outside calibrated range)".into(),
         };
         let mut s = format!(
@@ -611,8 +611,9 @@ pub fn solve_chosen(
         };
         let _ = write!(
             choice.reason,
-            "; {} claimed {d:.1} digits < {target}, so {} ran",
+            "; {} claimed {} digits < {target}, so {} ran",
             label(&choice.request),
+            crate::numerics::accuracy::digits_text(d),
             label(&next)
         );
         choice.request = next;
@@ -621,15 +622,25 @@ pub fn solve_chosen(
     Ok((answer, choice))
 }
 
-/// Digits as the answer prints them (one decimal, [`super::render::digits_text`]): the choice
-/// compares the claim a user reads.
+/// Digits as the answer prints them (one decimal, rounded down,
+/// [`crate::numerics::accuracy::digits_floor`]): the choice compares the claim a user reads (a
+/// claim of 11.96 printed "11.9" does not meet a target of 12; issue 34).
 fn printed(d: f64) -> f64 {
-    (d * 10.0).round() / 10.0
+    crate::numerics::accuracy::digits_floor(d)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// See: issue 34. The choice compares the claim as printed, rounded down: 11.96 digits print
+    /// "11.9" and do not meet a target of 12 (rounded, they did).
+    #[test]
+    fn a_claim_is_compared_as_printed() {
+        assert!(printed(11.96) < 12.0);
+        assert_eq!(printed(12.04), 12.0);
+        assert_eq!(format!("{:.1}", printed(11.96)), crate::numerics::accuracy::digits_text(11.96));
+    }
 
     #[test]
     fn committed_table_round_trips_byte_for_byte() {

@@ -217,14 +217,9 @@ impl SlidingAnswer {
     }
 }
 
-/// Digits as printed in every answer: one decimal, rounded down (a claim of 14.96 digits shown as
-/// "15.0" would claim more than is held; issue 34).
-pub fn digits_text(d: f64) -> String {
-    if !d.is_finite() {
-        return format!("{d:.1}");
-    }
-    format!("{:.1}", (d * 10.0).floor() / 10.0)
-}
+/// Digits as printed in every answer: [`crate::numerics::accuracy::digits_text`] (one decimal,
+/// rounded down).
+pub use crate::numerics::accuracy::digits_text;
 
 /// `digits_verified` (or `digits_verified: null` and `digits_estimated`): `head`, the minimum of
 /// the accuracy table and of what the other printed values hold.

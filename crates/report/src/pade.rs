@@ -28,7 +28,7 @@ fn plan(profile: Profile) -> PadePlan {
 }
 
 fn cell(d: Option<f64>) -> String {
-    d.map_or("-".into(), |x| format!("{x:.1}"))
+    d.map_or("-".into(), periodic_contact::numerics::accuracy::digits_text)
 }
 
 /// Every row of the chart, in its order ([`periodic_contact::verification::pade::pade_rows`]'s): each
@@ -82,12 +82,14 @@ pub fn section(ctx: &Ctx) -> Section {
          solver at {} digits; capped at its digits). Coefficients: exact rationals for the frictionless \
          punches, MPFR values (exact binary rationals) at transcendental parameters. The chosen approximant is \
          the most diagonal one not refused; its estimated digits are its agreement with its neighbours \
-         [L-1/M] and [L/M-1]; an approximant with a pole within {}% of |w| of the segment [0, w] not matched \
-         by a zero is refused. lambda = pi l/L (pi a/L); digits on the scale l (Problem 1) or P2.\n",
+         [L-1/M] and [L/M-1] (the `friction` rows: the Pade method's claim, that agreement with the \
+         difference taken {} times); an approximant with a pole within {}% of |w| of the segment [0, w] not \
+         matched by a zero is refused. lambda = pi l/L (pi a/L); digits on the scale l (Problem 1) or P2.\n",
         plan.parabola,
         plan.sinusoid,
         plan.adhesion,
         plan.digits,
+        periodic_contact::sliding::series::pade::ESTIMATE_SAFETY,
         periodic_contact::numerics::pade::POLE_MARGIN * 100.0
     );
     let _ = writeln!(

@@ -50,10 +50,11 @@ impl Ctx {
     }
 }
 
-/// Formats digits for the text: one decimal, or "fail".
+/// Formats digits for the text: one decimal, rounded down as every digit count is printed
+/// ([`periodic_contact::numerics::accuracy::digits_text`]), or "fail".
 pub fn fmt_digits(d: Option<f64>) -> String {
     match d {
-        Some(x) => format!("{x:.1}"),
+        Some(x) => periodic_contact::numerics::accuracy::digits_text(x),
         None => "fail".into(),
     }
 }

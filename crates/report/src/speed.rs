@@ -133,11 +133,11 @@ pub fn section(ctx: &Ctx) -> Section {
                         let err = runner::error(&o, &reference, given);
                         let _ = writeln!(
                             s.markdown,
-                            "| {} | {} | {:.2e} | {:.1} |",
+                            "| {} | {} | {:.2e} | {} |",
                             k.method(),
                             k.value(),
                             err,
-                            runner::digits_of(err, 70.0)
+                            periodic_contact::numerics::accuracy::digits_text(runner::digits_of(err, 70.0))
                         );
                         let _ =
                             writeln!(s.timings, "| {} | {} | {:.2e} | {:.3e} |", k.method(), k.value(), err, o.seconds);

@@ -197,13 +197,13 @@ pub fn section(ctx: &Ctx, scenes: &[(String, Scene)]) -> Section {
                     let size = o.size.to_f64();
                     let load = o.load.to_f64();
                     let mut row = format!(
-                        "| {:.*e} | {:.*e} | {} | {:.1} {} |",
+                        "| {:.*e} | {:.*e} | {} | {} {} |",
                         sig(d) - 1,
                         load,
                         sig(d) - 1,
                         size / scale,
                         knob.label(),
-                        d,
+                        periodic_contact::numerics::accuracy::digits_text(d),
                         if o.verified_digits.is_some() { "verified" } else { "predicted" }
                     );
                     for (_, form) in &forms {

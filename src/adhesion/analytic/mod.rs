@@ -167,16 +167,17 @@ pub fn continue_to(material: &Material, lambda: &Float, digits: u32) -> Result<A
         format!(
             "the mode grows by more than 10^{GROWTH_CAP:.0} from eta0 = {e_a} to lambda (frozen symbol), so the series \
              history does not fix C and no node count or precision adds digits beyond those the mode leaves until full \
-             contact, R(lambda) = {:.1} here (docs/theory.md section 11)",
-            digits_kept(c.eps, c.b, c.s, lam) + KEPT_MARGIN
+             contact, R(lambda) = {} here (docs/theory.md section 11)",
+            crate::numerics::accuracy::digits_text(digits_kept(c.eps, c.b, c.s, lam) + KEPT_MARGIN)
         )
     };
     Err(Error::NoConvergence {
         what: format!(
-            "analytic continuation at lambda = {lam}: with {nodes} Chebyshev nodes two runs agree to {ab:.1} of the \
+            "analytic continuation at lambda = {lam}: with {nodes} Chebyshev nodes two runs agree to {} of the \
              {digits} digits asked; the forward solve amplifies the interpolation error by 10^{measured:.0} (measured: \
              the runs' difference over the first run's Chebyshev tail), and {why}; this method holds {digits} digits \
              at this nu {}",
+            crate::numerics::accuracy::digits_text(ab),
             r.text()
         ),
     })

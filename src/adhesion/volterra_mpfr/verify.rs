@@ -13,7 +13,7 @@ use crate::asymptotics::adhesion_mode::{digits_kept_up_to, mode_sentence, valid_
 use crate::growing_contact::error::AdhesionError;
 use crate::model::OnPunchRow;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact};
-use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, readable_f64};
+use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, digits_text, readable_f64};
 use crate::params::adhesion::AdhesionParamsF64;
 use std::time::Instant;
 
@@ -113,12 +113,13 @@ pub fn solve_verified(
     };
     if headline < MIN_DIGITS || kept < MIN_DIGITS {
         let agree = if headline < MIN_DIGITS {
-            format!("two runs agree to only {headline:.1} digits")
+            format!("two runs agree to only {} digits", digits_text(headline))
         } else {
             format!(
-                "the homogeneous mode leaves {:.1} digits at this size (two runs agree to {headline:.1} digits: both picked \
+                "the homogeneous mode leaves {} digits at this size (two runs agree to {} digits: both picked \
                  nearly the same C, which does not make it the right one)",
-                kept.max(0.0)
+                digits_text(kept.max(0.0)),
+                digits_text(headline)
             )
         };
         return Err(AdhesionError::IllConditioned {
@@ -148,7 +149,8 @@ pub fn solve_verified(
             (false, _) => small_nu_cause(problem, digits_requested),
         };
         warnings.push(format!(
-            "only {headline:.1} of {digits_requested} requested digits verified (lambda = {lam:.6}; {cause})"
+            "only {} of {digits_requested} requested digits verified (lambda = {lam:.6}; {cause})",
+            digits_text(headline)
         ));
     }
     if s2.pivot_ratio > 1e12 {

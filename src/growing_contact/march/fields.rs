@@ -8,9 +8,15 @@ use crate::growing_contact::kernel_f64::{Side, C64};
 
 impl March {
     /// The side and the entry size eta_x of the point chi of the final contact: gamma(eta) +- eta
-    /// = chi, by bisection (monotone: both ends advance).
+    /// = chi, by bisection (monotone: both ends advance). A point at the final end (or past it by
+    /// rounding) entered with the final size: eta_x = end exactly, where the stresses vanish (issue
+    /// 34, fuzz seed 2026 case 5890: x/a = 1 bisected to one ulp below the end printed q2 =
+    /// 1.1e-7 of a scale 3.1, the square root of that ulp, where the truth is 0).
     pub fn entry(&self, chi: f64) -> (Side, f64) {
         let (side, sg) = if chi >= 0.0 { (Side::Right, 1.0) } else { (Side::Left, -1.0) };
+        if sg * (self.gamma(self.end) + sg * self.end - chi) <= 0.0 {
+            return (side, self.end);
+        }
         let (mut lo, mut hi) = (0.0, self.end);
         for _ in 0..200 {
             let mid = 0.5 * (lo + hi);

@@ -22,8 +22,12 @@ use rug::Float;
 /// [`super::estimate`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SeriesAccuracy {
-    /// lambda, l, a, b, c, the points x and P1 (scale l; P1 scale P2): from E_l + E_c.
+    /// lambda, l, a, b, c and the points x (scale l): from E_l + E_c.
     pub contact: f64,
+    /// l alone (scale l): from E_l. P1 = mu P2 + 2 l tau0 carries l's relative error only, not
+    /// c's (issue 34, fuzz case 5496: c = rbar l with |rbar| = 1.4e9 left 3.8 digits of l in c
+    /// while l itself held 13).
+    pub length: f64,
     /// F_def (scale k l P2).
     pub f_def: f64,
     /// p at the requested points (scale: the largest of them); `None` without points.
@@ -188,8 +192,9 @@ pub fn solve_series_with(
     // One digit above the request: the evaluation at precision_for(digits) bits sees more, and a
     // cap of exactly the request would leave the printed text (its rounding) below it (issue 34).
     let cap = digits as f64 + 1.0;
-    let err_contact = tail(&t_l, rho) + tail(&of(&|v| v.c.clone()), rho);
-    let contact = verified_digits_mpfr(&err_contact, &hi.l, cap);
+    let err_l = tail(&t_l, rho);
+    let length = verified_digits_mpfr(&err_l, &hi.l, cap);
+    let contact = verified_digits_mpfr(&(err_l + tail(&of(&|v| v.c.clone()), rho)), &hi.l, cap);
     let kl_p2 = Float::with_val(prec, &sp.k * &hi.l) * &sp.p2;
     let f_def = verified_digits_mpfr(&tail(&of(&|v| v.f_def.clone()), rho), &kl_p2, cap);
     let max_p = hi.pressure.iter().fold(Float::with_val(prec, 0), |m, x| if *x > m { x.clone() } else { m });
@@ -209,7 +214,7 @@ pub fn solve_series_with(
             ),
         });
     }
-    let accuracy = SeriesAccuracy { contact, f_def, pressure, headline, rate: rho };
+    let accuracy = SeriesAccuracy { contact, length, f_def, pressure, headline, rate: rho };
     let mut s = solution(&params, &sp, hi, &xh, max_p, order, accuracy);
     assess_physicality(problem, &mut s, prec, "the series' contact")?;
     Ok(s)
