@@ -189,10 +189,16 @@ fn r34_open_fuzz_cases_agree() {
 /// claim now includes that distance; both cases pass every check of the fuzzer.
 #[test]
 fn r34_f64_law_given_load_claims_its_distance_from_the_load() {
-    for i in [1692, 1868, 2462, 2670] {
+    assert_fuzz_cases_agree(&[1692, 1868, 2462, 2670]);
+}
+
+/// Every check of `examples/fuzz` passes on each case of seed 2026 in `cases`, and compares
+/// printed values.
+fn assert_fuzz_cases_agree(cases: &[u64]) {
+    for &i in cases {
         let case = generate::case(2026, i);
         let out = check::run(&case, &check::Budget::CI);
-        assert!(out.invalid.is_none(), "{:?}", out.invalid);
+        assert!(out.invalid.is_none(), "case {i}: {:?}", out.invalid);
         assert!(out.disagreements.is_empty(), "case {i}: {:#?}", out.disagreements);
         assert!(out.values_checked > 0, "case {i}: nothing compared");
     }
@@ -212,13 +218,7 @@ fn r34_f64_law_given_load_claims_its_distance_from_the_load() {
 ///   the march's round-off on small contacts, about 2e-4 eps/lambda^2, is now part of the claims.
 #[test]
 fn r34_fifth_session_fuzz_cases_agree() {
-    for i in [5436, 5496, 5890, 8848] {
-        let case = generate::case(2026, i);
-        let out = check::run(&case, &check::Budget::CI);
-        assert!(out.invalid.is_none(), "{:?}", out.invalid);
-        assert!(out.disagreements.is_empty(), "case {i}: {:#?}", out.disagreements);
-        assert!(out.values_checked > 0, "case {i}: nothing compared");
-    }
+    assert_fuzz_cases_agree(&[5436, 5496, 5890, 8848]);
 }
 
 /// Fuzz seed 2026 case 7302 (issue 34): the loading law under the given load P2 = 0.24495 at
@@ -230,9 +230,5 @@ fn r34_fifth_session_fuzz_cases_agree() {
 #[test]
 #[ignore = "long tier: 12 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
 fn r34_mpfr_law_given_load_claims_its_distance_from_the_load() {
-    let case = generate::case(2026, 7302);
-    let out = check::run(&case, &check::Budget::CI);
-    assert!(out.invalid.is_none(), "{:?}", out.invalid);
-    assert!(out.disagreements.is_empty(), "{:#?}", out.disagreements);
-    assert!(out.values_checked > 0, "nothing compared");
+    assert_fuzz_cases_agree(&[7302]);
 }
