@@ -578,9 +578,9 @@ impl LawSeries {
                 self.order + 1
             ),
             format!(
-                "values to {} digits, verified by a second run ({VERIFY_EXTRA_BITS} more bits, finer tanh-sinh rule): every coefficient to >= {:.1} digits of its own magnitude; edge-condition residual {:.1e}",
+                "values to {} digits, verified by a second run ({VERIFY_EXTRA_BITS} more bits, finer tanh-sinh rule): every coefficient to >= {} digits of its own magnitude; edge-condition residual {:.1e}",
                 self.digits,
-                self.min_digits(),
+                crate::numerics::accuracy::digits_text(self.min_digits()),
                 self.residual
             ),
         ]
