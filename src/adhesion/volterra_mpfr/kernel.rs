@@ -24,7 +24,7 @@
 //! sigma^2 ([`super::volterra`]).
 
 use rug::float::Constant;
-use rug::Float;
+use rug::{Assign, Float};
 
 /// The `periodic` convention's change of the kernels (module doc): the shift pi eps of the
 /// imaginary part of the cosine's argument and the factor 1/cosh(pi eps).
@@ -184,7 +184,8 @@ impl VolterraNodes {
     }
 
     /// Same value as [`volterra_integrand`] at node j; `sc_chi` = (sin chi, cos chi); with a
-    /// `shift`, the `periodic` convention's kernel (module doc).
+    /// `shift`, the `periodic` convention's kernel (module doc). [`Self::factors`] and then
+    /// [`integrand_from_factors`].
     #[allow(clippy::too_many_arguments)]
     pub fn integrand(
         &self,
@@ -197,24 +198,100 @@ impl VolterraNodes {
         shift: Option<&LateralShift>,
         prec: u32,
     ) -> (Float, Float) {
+        let (mag, log_sum) = self.factors(j, c, chi, prec);
+        integrand_from_factors(&mut FactorScratch::new(prec), &mag, &log_sum, s, chi, sc_chi, eps, shift)
+    }
+
+    /// The factors of [`Self::integrand`] at node j (complement `c`) that depend on chi and the
+    /// node only, not on the material or the convention: (mag, L) with
+    /// mag = s/sqrt((1+s)(1-s) sinc(chi(1+s)) sinc(chi(1-s))) and
+    /// L = ln(sinc(chi(1+s))/sinc(chi(1-s))) + ln((1+s)/(1-s)), the phase being theta = eps L.
+    pub fn factors(&self, j: usize, c: &Float, chi: &Float, prec: u32) -> (Float, Float) {
         let a = sinc(&Float::with_val(prec, chi * &self.one_p[j]), prec);
         let b = sinc(&Float::with_val(prec, chi * c), prec);
         let ab = Float::with_val(prec, &a * &b);
         let mag = Float::with_val(prec, &self.amp[j] / ab.sqrt());
-        let theta = (Float::with_val(prec, &a / &b).ln() + &self.log_ratio[j]) * eps;
-        let mut y = Float::with_val(prec, chi * s) * eps * 2u32;
-        if let Some(shift) = shift {
-            y -= &shift.pi_eps;
-        }
-        let (shy, chy) = y.sinh_cosh(Float::new(prec));
-        let cr = Float::with_val(prec, &sc_chi.1 * &chy);
-        let ci = Float::with_val(prec, &sc_chi.0 * &shy);
-        let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
-        match shift {
-            Some(shift) => (re * &shift.inv_cosh_pi_eps, im * &shift.inv_cosh_pi_eps),
-            None => (re, im),
+        let log_sum = Float::with_val(prec, &a / &b).ln() + &self.log_ratio[j];
+        (mag, log_sum)
+    }
+}
+
+/// The intermediate numbers of [`integrand_from_factors`] at one precision, reused from node to
+/// node: an operation into a scratch number rounds as into a fresh one of the same precision, so
+/// the bits are those of the one-piece evaluation, with nine allocations fewer per node.
+#[derive(Debug)]
+pub struct FactorScratch {
+    prec: u32,
+    theta: Float,
+    y: Float,
+    shy: Float,
+    chy: Float,
+    cr: Float,
+    ci: Float,
+    st: Float,
+    ct: Float,
+    t: Float,
+}
+
+impl FactorScratch {
+    /// Scratch at `prec` bits.
+    pub fn new(prec: u32) -> Self {
+        let z = Float::new(prec);
+        FactorScratch {
+            prec,
+            theta: z.clone(),
+            y: z.clone(),
+            shy: z.clone(),
+            chy: z.clone(),
+            cr: z.clone(),
+            ci: z.clone(),
+            st: z.clone(),
+            ct: z.clone(),
+            t: z,
         }
     }
+}
+
+/// The integrand of [`VolterraNodes::integrand`] from its [`VolterraNodes::factors`] (mag, L) at
+/// node s, at the scratch's precision: mag e^(i eps L) cos(chi - i y), y = 2 eps chi s (minus
+/// pi eps with a `shift`, the product divided by cosh(pi eps)); every operation rounded as in the
+/// one-piece evaluation (test `factored_integrand_keeps_the_one_piece_bits`).
+#[allow(clippy::too_many_arguments)]
+pub fn integrand_from_factors(
+    w: &mut FactorScratch,
+    mag: &Float,
+    log_sum: &Float,
+    s: &Float,
+    chi: &Float,
+    sc_chi: &(Float, Float),
+    eps: &Float,
+    shift: Option<&LateralShift>,
+) -> (Float, Float) {
+    w.theta.assign(log_sum * eps);
+    w.y.assign(chi * s);
+    w.y *= eps;
+    w.y *= 2u32;
+    if let Some(shift) = shift {
+        w.y -= &shift.pi_eps;
+    }
+    (&mut w.shy, &mut w.chy).assign(w.y.sinh_cosh_ref());
+    w.cr.assign(&sc_chi.1 * &w.chy);
+    w.ci.assign(&sc_chi.0 * &w.shy);
+    // mag e^(i theta) (cr + i ci), as `rotate`.
+    (&mut w.st, &mut w.ct).assign(w.theta.sin_cos_ref());
+    let mut re = Float::with_val(w.prec, &w.ct * &w.cr);
+    w.t.assign(&w.st * &w.ci);
+    re -= &w.t;
+    let mut im = Float::with_val(w.prec, &w.ct * &w.ci);
+    w.t.assign(&w.st * &w.cr);
+    im += &w.t;
+    re *= mag;
+    im *= mag;
+    if let Some(shift) = shift {
+        re *= &shift.inv_cosh_pi_eps;
+        im *= &shift.inv_cosh_pi_eps;
+    }
+    (re, im)
 }
 
 #[cfg(test)]
@@ -234,5 +311,50 @@ mod tests {
         let (r2, i2) = volterra_integrand(&s, &c, &chi, &eps, prec);
         assert!(Float::with_val(prec, r1 - r2).abs().to_f64() < 1e-35);
         assert!(Float::with_val(prec, i1 - i2).abs().to_f64() < 1e-35);
+    }
+
+    #[test]
+    fn factored_integrand_keeps_the_one_piece_bits() {
+        // The integrand as it was computed in one piece, fresh numbers for every operation,
+        // against the factors and the reused scratch: every bit, both conventions, eps = 0 and
+        // eps > 0, at one and two limbs.
+        for prec in [64u32, 107, 131] {
+            let mut scratch = FactorScratch::new(prec);
+            for (s, eps, chi, shifted) in [
+                (0.7, 0.17, 0.9, false),
+                (0.013, 0.0566, 1.41, true),
+                (0.999, 0.0, 0.3, false),
+                (0.4, 0.2206, 1.2, true),
+            ] {
+                let (s, eps, chi) = (Float::with_val(prec, s), Float::with_val(prec, eps), Float::with_val(prec, chi));
+                let c = Float::with_val(prec, 1u32) - &s;
+                let pre = VolterraNodes::new(std::slice::from_ref(&s), std::slice::from_ref(&c), prec);
+                let sc = chi.clone().sin_cos(Float::new(prec));
+                let shift = shifted.then(|| LateralShift::new(&eps, prec));
+                let one_piece = {
+                    let a = sinc(&Float::with_val(prec, &chi * &pre.one_p[0]), prec);
+                    let b = sinc(&Float::with_val(prec, &chi * &c), prec);
+                    let ab = Float::with_val(prec, &a * &b);
+                    let mag = Float::with_val(prec, &pre.amp[0] / ab.sqrt());
+                    let theta = (Float::with_val(prec, &a / &b).ln() + &pre.log_ratio[0]) * &eps;
+                    let mut y = Float::with_val(prec, &chi * &s) * &eps * 2u32;
+                    if let Some(shift) = &shift {
+                        y -= &shift.pi_eps;
+                    }
+                    let (shy, chy) = y.sinh_cosh(Float::new(prec));
+                    let cr = Float::with_val(prec, &sc.1 * &chy);
+                    let ci = Float::with_val(prec, &sc.0 * &shy);
+                    let (re, im) = rotate(&mag, &theta, &cr, &ci, prec);
+                    match &shift {
+                        Some(shift) => (re * &shift.inv_cosh_pi_eps, im * &shift.inv_cosh_pi_eps),
+                        None => (re, im),
+                    }
+                };
+                let (mag, l) = pre.factors(0, &c, &chi, prec);
+                let factored = integrand_from_factors(&mut scratch, &mag, &l, &s, &chi, &sc, &eps, shift.as_ref());
+                assert_eq!(factored, one_piece, "prec {prec}, s {s}");
+                assert_eq!(pre.integrand(0, &s, &c, &chi, &sc, &eps, shift.as_ref(), prec), one_piece);
+            }
+        }
     }
 }

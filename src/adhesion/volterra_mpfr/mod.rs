@@ -57,13 +57,15 @@
 
 //!
 //! # Files
-//! [`kernel`] (the regularised kernels), [`solve`](mod@solve) (discretisation and collocation solve at one
+//! [`kernel`] (the regularised kernels), [`row_factors`] (their material-free factors on the
+//! collocation rows, shared across solves), [`solve`](mod@solve) (discretisation and collocation solve at one
 //! lambda), [`volterra`] (the dimensionless solution and its evaluations), [`solution`]
 //! (dimensional results from the exact problem, the half-width for a given load), [`verify`] (two
 //! runs, verified digits). The f64 method has the same files in [`crate::adhesion::series_f64`].
 
 pub mod kernel;
 pub mod right_side;
+pub mod row_factors;
 pub mod solution;
 pub mod solve;
 pub mod verify;

@@ -4,6 +4,7 @@
 
 use super::kernel;
 use super::right_side::RightSide;
+use super::row_factors::{row_factors, FactorsKey};
 use super::volterra::{JSource, VolterraSolution};
 use crate::growing_contact::error::AdhesionError;
 use crate::numerics::accuracy::{readable_f64, readable_mpfr};
@@ -228,7 +229,8 @@ fn solve_unchecked(
     let shift = periodic.then(|| kernel::LateralShift::new(&eps, prec));
     // The nodes of the interpolation variable: tau = sigma^2 (`paper`) or sigma (`periodic`).
     let tau = chebyshev::nodes(n, prec);
-    let (res, keep) = collocation_rows(&tau, lambda, &eps, &rule, &pre, shift.as_ref(), prec);
+    let key = FactorsKey::new(lambda, n, params.target_bits + 8, params.refine, prec, periodic);
+    let (res, keep) = collocation_rows(key, &tau, lambda, &eps, &rule, &pre, shift.as_ref(), prec);
     let b: Vec<Float> = tau
         .iter()
         .map(|t| if periodic { rhs.at(&Float::with_val(prec, t * t), prec) } else { rhs.at(t, prec) })
@@ -266,9 +268,11 @@ fn residual(sol: &VolterraSolution, rhs: &RightSide) -> f64 {
 
 /// The data of the collocation rows at the nodes `tau`: per row i, re_iq = w_q Re z_iq and the
 /// pairs (w_q Im z_iq, x_iq), x_iq = 2 tau_i s_q^2 - 1 (the second kept for J). With a `shift`
-/// (`periodic`) the nodes are sigma_i and x_iq = 2 sigma_i s_q - 1.
-#[allow(clippy::type_complexity)]
+/// (`periodic`) the nodes are sigma_i and x_iq = 2 sigma_i s_q - 1. The material-free factors of
+/// z_iq come from [`row_factors`] under `key` (that of `tau`, `rule` and `prec`).
+#[allow(clippy::type_complexity, clippy::too_many_arguments)]
 fn collocation_rows(
+    key: FactorsKey,
     tau: &[Float],
     lambda: &Float,
     eps: &Float,
@@ -278,21 +282,29 @@ fn collocation_rows(
     prec: u32,
 ) -> (Vec<Vec<Float>>, Vec<Vec<(Float, Float)>>) {
     let n = tau.len();
+    let factors = row_factors(key, lambda, tau, rule, pre);
+    let mut scratch = kernel::FactorScratch::new(prec);
     // Rows: A_ij = sum_q Re z_iq T_j(x_iq), x_iq = 2 tau_i s_q^2 - 1; keep Im z_iq, x_iq for J.
     let mut res: Vec<Vec<Float>> = Vec::with_capacity(n);
     let mut keep: Vec<Vec<(Float, Float)>> = Vec::with_capacity(n);
-    for tau_i in tau {
-        let sigma = if shift.is_some() { tau_i.clone() } else { Float::with_val(prec, tau_i.sqrt_ref()) };
-        let chi = Float::with_val(prec, lambda * &sigma);
-        let sc_chi = chi.clone().sin_cos(Float::new(prec));
+    for (tau_i, row) in tau.iter().zip(factors.iter()) {
         let mut row_res = Vec::with_capacity(rule.len());
         let mut row_keep = Vec::with_capacity(rule.len());
-        for q in 0..rule.len() {
-            let (re, im) = pre.integrand(q, &rule.s[q], &rule.c[q], &chi, &sc_chi, eps, shift, prec);
+        for (q, (mag, log_sum)) in row.nodes.iter().enumerate() {
+            let (re, im) = kernel::integrand_from_factors(
+                &mut scratch,
+                mag,
+                log_sum,
+                &rule.s[q],
+                &row.chi,
+                &row.sc_chi,
+                eps,
+                shift,
+            );
             let re = re * &rule.w[q];
             let im = im * &rule.w[q];
             let x = match shift {
-                Some(_) => Float::with_val(prec, &sigma * &rule.s[q]) * 2u32 - 1u32,
+                Some(_) => Float::with_val(prec, tau_i * &rule.s[q]) * 2u32 - 1u32,
                 None => Float::with_val(prec, tau_i * &pre.s2[q]) * 2u32 - 1u32,
             };
             row_res.push(re);
@@ -564,7 +576,8 @@ mod tests {
             let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
             let tau = chebyshev::nodes(40, prec);
             let lambda = Float::with_val(prec, 1.2);
-            let (res, keep) = collocation_rows(&tau, &lambda, &eps, &rule, &pre, None, prec);
+            let key = FactorsKey::new(&lambda, 40, prec - 24, 1.0, prec, false);
+            let (res, keep) = collocation_rows(key, &tau, &lambda, &eps, &rule, &pre, None, prec);
             let b: Vec<Float> = tau.iter().map(|t| RightSide::Parabola.at(t, prec)).collect();
             let (fixed, ratio_fixed) = collocation_solve(&res, &keep, b.clone(), prec).unwrap();
             let rows = res.iter().zip(&keep).map(|(r, x)| row_sums_mpfr(r, x, 40, prec)).collect();
