@@ -100,6 +100,28 @@ fn incompressible_load_is_kuznetsov() {
     }
 }
 
+/// lambda -> 0: P/lambda^2 tends to the single punch's C_P (nu = 0, mu = 1/2: 1.8009119652),
+/// like lambda^2 in `paper` and with a linear term in `periodic`, as c/a does (4 nodes).
+#[test]
+fn small_lambda_load_is_the_single_punch() {
+    let (_, cp) = single_stick_ratio(0.5, 0.5, 10, true).unwrap();
+    let theta0 = 0.25f64.atan() / std::f64::consts::PI;
+    for periodic in [false, true] {
+        let gaps: Vec<f64> = [0.02, 0.04]
+            .iter()
+            .map(|&l| load(&l, theta0, 4, |e: &f64| increment_f64(0.5, 0.5, *e, 10, periodic)).unwrap() / (l * l) - cp)
+            .collect();
+        eprintln!("periodic {periodic}: P/lambda^2 - C_P at lambda = 0.02, 0.04: {gaps:?}");
+        // measured: 1.41e-4, 5.65e-4 (paper: ratio 4.00, lambda^2); -6.3e-4, -1.02e-3 (periodic:
+        // -0.038 lambda + 0.30 lambda^2)
+        if periodic {
+            assert!(gaps[0].abs() < 1e-3 && gaps[0].abs() < gaps[1].abs(), "periodic: {gaps:?}");
+        } else {
+            assert!((gaps[1] / gaps[0] - 4.0).abs() < 0.1, "paper: {gaps:?}");
+        }
+    }
+}
+
 /// nu = 0, mu = 1/2, lambda = 1.2, both conventions: 8 and 12 nodes agree to 3e-7 (measured
 /// 2.2e-7 `paper`, 4.9e-9 `periodic`), and the f64 march of `row_load_f64` lies within twice the
 /// difference of its two discretisations (10, 16) and (20, 32).
