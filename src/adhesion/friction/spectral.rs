@@ -10,7 +10,8 @@
 //! alpha = -1/2 - theta0, omega = -1/2 + theta0, tan(pi theta0) = beta mu,
 //! - stick zone, z = x/gamma, w = 1 - z^2, u = 2 v^2 - 1 with v = artanh(x)/artanh(gamma):
 //!   s2 = sum P_k T_k(u) + w^alpha sum Q_k T_k(u),   s1 = z (sum R_k T_k(u) + w^alpha sum S_k T_k(u));
-//! - slip zone, zeta = (x - gamma)/(1 - gamma), y = 2 zeta - 1:
+//! - slip zone, zeta = (x - gamma)/(1 - gamma), y = 2 zeta - 1 (the single punch) or, for the
+//!   row ([`Spectral::row`]), y = 2 s - 1 with s = ln(1 + (x - gamma)/(2 gamma))/ln(1 + (1 - gamma)/(2 gamma)):
 //!   s2 = (1 - zeta)^omega (sum A_k T_k(y) + zeta^alpha sum B_k T_k(y)),
 //!
 //! T_k Chebyshev polynomials, k < n: 6 n unknowns. The equations are collocated at 2 n + 2
@@ -26,6 +27,13 @@
 //! is C_P = 1/(2 I), I = (1/pi) int_0^1 s2 (-ln(1 - xi^2)/xi^2) dxi (17.9).
 //!
 //! `coupled = false` drops beta s1 from the first equation (the uncoupled problem, theta0 = 0).
+//!
+//! The periodic row ([`Spectral::row`], docs/theory.md section 17.8, (17.10)) is the same problem
+//! in the tangent variable T = tan(chi)/tan(lambda): the stick condition gains the constant
+//! (1/pi) int s1 tau^2 T/(1 + tau^2 T^2) and the right side b beta tau/pi, the normalisation the
+//! weight 1/(1 + tau^2 T^2) (tau = tan(lambda)), and the slip zone's Chebyshev variable is
+//! logarithmic in T + gamma. [`Spectral::outside_slope`] gives H\[s2\] beyond the contact, the
+//! kernel of the row's load (17.11).
 
 use super::quadrature::{graded, least_squares, DoubleExp};
 use super::real::Real;
@@ -53,6 +61,12 @@ pub struct Spectral<T> {
     omega: T,
     n: usize,
     rule: DoubleExp<T>,
+    /// tan(lambda) of the periodic row in the tangent variable (zero: the single punch).
+    tau: T,
+    /// The right side of the stick condition, b beta tau/pi (zero: the single punch, `paper`).
+    lateral: T,
+    /// The slip zone's Chebyshev variable logarithmic in x + gamma (the row) or linear.
+    log_slip: bool,
 }
 
 fn chebyshev<T: Real>(u: &T, n: usize) -> Vec<T> {
@@ -85,7 +99,31 @@ impl<T: Real> Spectral<T> {
         let half = beta.lit(0.5);
         let edge = (0.5 - theta0.to_f64()).min(1.0);
         let rule = DoubleExp::new(&beta.lit(1.0), edge);
-        Spectral { alpha: -half.clone() - theta0.clone(), omega: -half + theta0, beta, beta_normal, mu, n, rule }
+        let (tau, lateral) = (beta.lit(0.0), beta.lit(0.0));
+        Spectral {
+            alpha: -half.clone() - theta0.clone(),
+            omega: -half + theta0,
+            beta,
+            beta_normal,
+            mu,
+            n,
+            rule,
+            tau,
+            lateral,
+            log_slip: false,
+        }
+    }
+
+    /// The method for the periodic row at lambda = pi a/L in the tangent variable
+    /// T = tan(chi)/tan(lambda) (docs/theory.md section 17.8, (17.10)): `tau` = tan(lambda),
+    /// `periodic` the convention (b = 1).
+    pub fn row(beta: T, mu: T, n: usize, tau: T, periodic: bool) -> Spectral<T> {
+        let mut sp = Spectral::new(beta, mu, n, true);
+        let b = sp.beta.lit(if periodic { 1.0 } else { 0.0 });
+        sp.lateral = b * sp.beta.clone() * tau.clone() / tau.pi();
+        sp.tau = tau;
+        sp.log_slip = true;
+        sp
     }
 
     /// s2 families (P, Q) and s1 families (R, S) of the stick zone at the point with distances
@@ -117,7 +155,15 @@ impl<T: Real> Spectral<T> {
         let len = gamma.lit(1.0) - gamma.clone();
         let zeta = d_a.clone() / len.clone();
         let zc = d_b.clone() / len.clone();
-        let y = (d_a.clone() - d_b.clone()) / len;
+        let y = if self.log_slip {
+            // y = 2 s - 1, s = ln(1 + (x - gamma)/(2 gamma))/ln(1 + (1 - gamma)/(2 gamma)): the
+            // other stick edge x = -gamma pushed to s = -infinity (the row, section 17.8)
+            let two_g = gamma.lit(2.0) * gamma.clone();
+            let s = (d_a.clone() / two_g.clone()).ln_1p() / (len / two_g).ln_1p();
+            gamma.lit(2.0) * s - gamma.lit(1.0)
+        } else {
+            (d_a.clone() - d_b.clone()) / len
+        };
         let t = chebyshev(&y, self.n);
         let fo = zc.powr(&self.omega);
         let fa = fo.clone() * zeta.powr(&self.alpha);
@@ -269,6 +315,7 @@ impl<T: Real> Spectral<T> {
         let pi = gamma.pi();
         let mut rows = Vec::new();
         let mut rhs = Vec::new();
+        let lateral_row = self.lateral_row(gamma);
         for tg in self.targets(gamma) {
             let (h2, h1) = self.hilbert_rows(gamma, &tg);
             let mut ra: Vec<T> = h2.into_iter().map(|v| v / pi.clone()).collect();
@@ -278,12 +325,13 @@ impl<T: Real> Spectral<T> {
                 for j in 0..2 * n {
                     ra[2 * n + j] = ra[2 * n + j].clone() - self.beta_normal.clone() * f1[j].clone();
                 }
-                let mut rb: Vec<T> = h1.into_iter().map(|v| v / pi.clone()).collect();
+                let mut rb: Vec<T> =
+                    h1.into_iter().zip(&lateral_row).map(|(v, c)| v / pi.clone() + c.clone()).collect();
                 for j in 0..2 * n {
                     rb[j] = rb[j].clone() + self.beta.clone() * f2[j].clone();
                 }
                 rows.push(rb);
-                rhs.push(zero.clone());
+                rhs.push(self.lateral.clone());
             } else {
                 let g = self.slip_values(gamma, &-tg.to_gamma.clone(), &tg.to_one);
                 for j in 0..2 * n {
@@ -293,25 +341,96 @@ impl<T: Real> Spectral<T> {
             rows.push(ra);
             rhs.push(zero.clone());
         }
-        // int_-1^1 s2 = 1
+        // int_-1^1 s2/(1 + tau^2 T^2) = 1 (the unit load, (17.10))
         let mut norm = vec![zero.clone(); 6 * n];
+        let one = gamma.lit(1.0);
+        let weight = |t: &T| one.clone() / (one.clone() + self.tau.clone() * self.tau.clone() * t.clone() * t.clone());
         let len = gamma.lit(2.0) * gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
             let (v2, _) = self.stick_values(gamma, d_a, d_b);
+            let wt = w.clone() * weight(&(d_a.clone() - gamma.clone()));
             for j in 0..2 * n {
-                norm[j] = norm[j].clone() + w.clone() * v2[j].clone();
+                norm[j] = norm[j].clone() + wt.clone() * v2[j].clone();
             }
         });
         let len = gamma.lit(1.0) - gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
             let v = self.slip_values(gamma, d_a, d_b);
+            let wt = gamma.lit(2.0) * w.clone() * weight(&(gamma.clone() + d_a.clone()));
             for j in 0..2 * n {
-                norm[4 * n + j] = norm[4 * n + j].clone() + gamma.lit(2.0) * w.clone() * v[j].clone();
+                norm[4 * n + j] = norm[4 * n + j].clone() + wt.clone() * v[j].clone();
             }
         });
         rows.push(norm);
         rhs.push(gamma.lit(1.0));
         (rows, rhs)
+    }
+
+    /// The row's constant of the stick condition as a row over the coefficients:
+    /// (1/pi) int_-1^1 s1(T) tau^2 T/(1 + tau^2 T^2) dT (17.10) (all zero for the single punch).
+    fn lateral_row(&self, gamma: &T) -> Vec<T> {
+        let n = self.n;
+        let zero = gamma.lit(0.0);
+        let mut out = vec![zero.clone(); 6 * n];
+        if self.tau == zero {
+            return out;
+        }
+        let one = gamma.lit(1.0);
+        let t2 = self.tau.clone() * self.tau.clone();
+        let kern = |t: &T| t2.clone() * t.clone() / (one.clone() + t2.clone() * t.clone() * t.clone()) / gamma.pi();
+        let len = gamma.lit(2.0) * gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            let (_, v1) = self.stick_values(gamma, d_a, d_b);
+            let k = w.clone() * kern(&(d_a.clone() - gamma.clone()));
+            for j in 0..2 * n {
+                out[2 * n + j] = out[2 * n + j].clone() + k.clone() * v1[j].clone();
+            }
+        });
+        // s1 = mu s2 on (gamma, 1), odd: twice the right slip zone
+        let len = one.clone() - gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            let v = self.slip_values(gamma, d_a, d_b);
+            let k = gamma.lit(2.0) * self.mu.clone() * w.clone() * kern(&(gamma.clone() + d_a.clone()));
+            for j in 0..2 * n {
+                out[4 * n + j] = out[4 * n + j].clone() + k.clone() * v[j].clone();
+            }
+        });
+        out
+    }
+
+    /// (1/pi) int_-1^1 s2(T')/(t - T') dT' at t > 1, given by `beyond` = t - 1 (> 0): the outside
+    /// slope H\[s2\](t) of a solved increment (the row's W of (17.11) up to the factor 1/tau).
+    pub fn outside_slope(&self, inc: &SpectralIncrement<T>, beyond: &T) -> T {
+        let (n, gamma) = (self.n, &inc.gamma);
+        let zero = gamma.lit(0.0);
+        let one = gamma.lit(1.0);
+        let c = &inc.coeffs;
+        let t = one.clone() + beyond.clone();
+        let mut sum = zero.clone();
+        let len = gamma.lit(2.0) * gamma.clone();
+        let near = one.clone() - gamma.clone() + beyond.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, Some(&near)), |d_a, d_b, w| {
+            let (v2, _) = self.stick_values(gamma, d_a, d_b);
+            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[j].clone() * v2[j].clone());
+            sum = sum.clone() + w.clone() * s2 / (near.clone() + d_b.clone());
+        });
+        let len = one.clone() - gamma.clone();
+        self.rule.sweep(&len, &graded(&zero, &len, None, Some(beyond)), |d_a, d_b, w| {
+            if *d_b == zero || *w == zero {
+                return; // a tail node underflowed (f64, beyond below 1e-20): it adds nothing
+            }
+            let v = self.slip_values(gamma, d_a, d_b);
+            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[4 * n + j].clone() * v[j].clone());
+            let eta = gamma.clone() + d_a.clone();
+            let k = one.clone() / (beyond.clone() + d_b.clone()) + one.clone() / (t.clone() + eta);
+            sum = sum.clone() + w.clone() * s2 * k;
+        });
+        sum / gamma.pi()
+    }
+
+    /// The working precision (bits).
+    pub fn bits(&self) -> u32 {
+        self.beta.bits()
     }
 
     /// C_P = 1/(2 I) of the parabola (17.9) from a solved increment.

@@ -21,7 +21,7 @@ use rug::Float;
 
 use super::real::{Mp, Real};
 use super::single_punch::illinois;
-use super::spectral::Spectral;
+use super::spectral::{Spectral, SpectralIncrement};
 use crate::growing_contact::error::AdhesionError;
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits};
 
@@ -50,7 +50,7 @@ const Y_MIN: f64 = -6.0;
 const Y_MAX: f64 = 9.0;
 
 fn not_converged(reason: String) -> AdhesionError {
-    AdhesionError::NotConverged { what: "single-punch stick ratio (spectral)", reason }
+    AdhesionError::NotConverged { what: "stick ratio (spectral method)", reason }
 }
 
 fn singular(gamma: f64) -> AdhesionError {
@@ -60,6 +60,13 @@ fn singular(gamma: f64) -> AdhesionError {
 /// (gamma, C_P) in `f64` with `n` polynomials per family.
 pub fn stick_ratio_f64(beta: f64, mu: f64, n: usize, coupled: bool) -> Result<(f64, f64), AdhesionError> {
     let sp = Spectral::new(beta, mu, n, coupled);
+    let inc = root_f64(&sp, "single-punch stick zone (spectral, f64)")?;
+    Ok((inc.gamma, sp.load_coefficient(&inc)))
+}
+
+/// The increment at the zero of the stick-edge defect of `sp` in `f64` (the scan and Illinois
+/// method of the module doc); `what` names the method in a refusal.
+pub fn root_f64(sp: &Spectral<f64>, what: &'static str) -> Result<SpectralIncrement<f64>, AdhesionError> {
     let gamma = |y: f64| 1.0 / (1.0 + (-y).exp());
     let defect = |y: f64| -> Result<f64, AdhesionError> {
         let g = gamma(y);
@@ -71,7 +78,7 @@ pub fn stick_ratio_f64(beta: f64, mu: f64, n: usize, coupled: bool) -> Result<(f
         let y = lo + 0.5;
         if y > Y_MAX {
             return Err(AdhesionError::IllConditioned {
-                method: "single-punch stick zone (spectral, f64)",
+                method: what,
                 parameter: "c/a",
                 value: "outside [0.0025, 1 - 1.2e-4]".into(),
                 valid: "0.0025 <= c/a <= 1 - 1.2e-4".into(),
@@ -85,8 +92,7 @@ pub fn stick_ratio_f64(beta: f64, mu: f64, n: usize, coupled: bool) -> Result<(f
         (lo, d_lo) = (y, d);
     };
     let g = gamma(illinois((lo, d_lo), (hi, d_hi), 1e-13, defect)?);
-    let inc = sp.solve(&g).ok_or_else(|| singular(g))?;
-    Ok((g, sp.load_coefficient(&inc)))
+    sp.solve(&g).ok_or_else(|| singular(g))
 }
 
 /// (gamma, C_P) in MPFR at `prec` bits with `n` polynomials per family, by the secant method
@@ -100,6 +106,15 @@ pub fn stick_ratio_mpfr(
 ) -> Result<(Float, Float), AdhesionError> {
     let at = |x: &Float| Mp(Float::with_val(prec, x));
     let sp = Spectral::new(at(beta), at(mu), n, coupled);
+    let inc = root_mpfr(&sp, start, digits)?;
+    let load = sp.load_coefficient(&inc);
+    Ok((inc.gamma.0, load.0))
+}
+
+/// The increment at the zero of the stick-edge defect of `sp` in MPFR, by the secant method from
+/// `start` (within about 1e-6 of the root) to a step below 10^-`digits`.
+pub fn root_mpfr(sp: &Spectral<Mp>, start: f64, digits: u32) -> Result<SpectralIncrement<Mp>, AdhesionError> {
+    let prec = sp.bits();
     let solve = |g: &Mp| sp.solve(g).ok_or_else(|| singular(g.to_f64()));
     let mut g0 = Mp::new(prec, start);
     let mut g1 = Mp::new(prec, start * (1.0 - 1e-8));
@@ -121,8 +136,7 @@ pub fn stick_ratio_mpfr(
         g1 = g2;
         inc1 = solve(&g1)?;
         if step < tol {
-            let load = sp.load_coefficient(&inc1);
-            return Ok((g1.0, load.0));
+            return Ok(inc1);
         }
     }
     Err(not_converged(format!("the secant iteration did not settle (c/a = {})", g1.to_f64())))
