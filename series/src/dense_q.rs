@@ -192,7 +192,9 @@ impl Dense {
         Dense { num, den: p.den }
     }
 
-    /// `self + other` (same length as the longer).
+    /// `self + other` (same length as the longer), over the lcm of the denominators and not
+    /// reduced: every sum in the Newton steps goes into a product, which removes the content
+    /// (reducing here too cost 3-10% of the Q job at N = 60 and 100, docs/performance.md).
     fn add(&self, other: &Dense) -> Dense {
         let n = self.len().max(other.len());
         let (fa, fb) = common_factors(&self.den, &other.den);
@@ -205,9 +207,7 @@ impl Dense {
                 *v += b * &fb;
             }
         }
-        let mut d = Dense { num, den: Integer::from(&self.den * &fa) };
-        d.reduce();
-        d
+        Dense { num, den: Integer::from(&self.den * &fa) }
     }
 
     fn neg(&self) -> Dense {
