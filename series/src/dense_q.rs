@@ -162,7 +162,7 @@ impl Dense {
     }
 
     /// The compositional inverse (`self(0) = 0`, `self'(0) != 0`): FLINT's
-    /// `fmpq_poly_revert_series` with the feature `flint` from [`crate::flint_q::REVERT_MIN`]
+    /// `fmpq_poly_revert_series` with the feature `flint` from `flint_q::REVERT_MIN`
     /// coefficients on, else Lagrange inversion.
     pub(crate) fn revert(&self) -> Dense {
         #[cfg(feature = "flint")]

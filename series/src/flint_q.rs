@@ -28,11 +28,12 @@ use rug::Integer;
 use std::mem::MaybeUninit;
 
 /// From this many coefficients on, the reversion goes to FLINT; the other operations go to FLINT
-/// whenever `dense_q` runs (from its threshold of 24 coefficients on). Measured with
-/// `series/examples/sinc_power --q` built with and without the feature, interleaved
-/// (docs/performance.md, "The optional FLINT backend"): FLINT's series (log, then exp) is as fast
-/// or faster at every N from 30 to 200 (2.5x at N = 30), its reversion 1.3x to 1.5x slower at
-/// N = 50 to 70 and as fast or faster from N = 80 on.
+/// whenever `dense_q` runs (from its threshold of 24 coefficients on: FLINT's series is 2.2x
+/// faster at N = 30, 1.1x at N = 100, up to 2.7x at N = 200, 1.1x to 1.25x slower near N = 60).
+/// Measured with `series/examples/sinc_power --q` built with and without the feature,
+/// interleaved (docs/performance.md, "The optional FLINT backend"): FLINT's reversion is 1.4x to
+/// 1.5x faster at N = 30 and 40, 1.1x to 1.25x slower at N = 50 to 70, as fast at N = 80 and
+/// 1.5x to 1.7x faster at N = 200.
 pub(crate) const REVERT_MIN: usize = 80;
 
 /// A series as numerators over one denominator: the parts `dense_q` keeps.
@@ -124,31 +125,34 @@ pub(crate) fn mullow(a: (&[Integer], &Integer), b: (&[Integer], &Integer), n: us
     r.to_parts(n)
 }
 
-/// `1/f` through `x^(n-1)`; the caller ensures `num[0] != 0` and `n >= 1`.
-pub(crate) fn inv(num: &[Integer], den: &Integer, n: usize) -> Parts {
+/// One of FLINT's series functions `op(res, f, n)` applied to `f` through `x^(n-1)`.
+fn series_op(
+    num: &[Integer],
+    den: &Integer,
+    n: usize,
+    op: unsafe extern "C" fn(*mut fmpq_poly_struct, *const fmpq_poly_struct, i64),
+) -> Parts {
     let f = FmpqPoly::from_parts(num, den);
     let mut r = FmpqPoly::new();
-    // SAFETY: initialised; FLINT's precondition (non-zero constant term) checked by the caller.
-    unsafe { fmpq_poly_inv_series(&mut r.0, &f.0, n as i64) };
+    // SAFETY: both initialised; `op` is one of the functions below, whose preconditions the
+    // callers of those check.
+    unsafe { op(&mut r.0, &f.0, n as i64) };
     r.to_parts(n)
+}
+
+/// `1/f` through `x^(n-1)`; the caller ensures `num[0] != 0` and `n >= 1`.
+pub(crate) fn inv(num: &[Integer], den: &Integer, n: usize) -> Parts {
+    series_op(num, den, n, fmpq_poly_inv_series)
 }
 
 /// `log f` through `x^(n-1)`; the caller ensures `f(0) = 1` and `n >= 1`.
 pub(crate) fn log(num: &[Integer], den: &Integer, n: usize) -> Parts {
-    let f = FmpqPoly::from_parts(num, den);
-    let mut r = FmpqPoly::new();
-    // SAFETY: initialised; f(0) = 1 checked by the caller.
-    unsafe { fmpq_poly_log_series(&mut r.0, &f.0, n as i64) };
-    r.to_parts(n)
+    series_op(num, den, n, fmpq_poly_log_series)
 }
 
 /// `exp f` through `x^(n-1)`; the caller ensures `f(0) = 0` and `n >= 1`.
 pub(crate) fn exp(num: &[Integer], den: &Integer, n: usize) -> Parts {
-    let f = FmpqPoly::from_parts(num, den);
-    let mut r = FmpqPoly::new();
-    // SAFETY: initialised; f(0) = 0 checked by the caller.
-    unsafe { fmpq_poly_exp_series(&mut r.0, &f.0, n as i64) };
-    r.to_parts(n)
+    series_op(num, den, n, fmpq_poly_exp_series)
 }
 
 /// `f^(p/q) = exp((p/q) log f)` through `x^(n-1)`; the caller ensures `f(0) = 1`, `q > 0`, `n >= 1`.
@@ -169,13 +173,12 @@ pub(crate) fn pow(num: &[Integer], den: &Integer, p: &Integer, q: &Integer, n: u
     r.to_parts(n)
 }
 
-/// The compositional inverse with `num.len()` coefficients; the caller ensures `f(0) = 0` and
-/// `f'(0) != 0`.
+/// The compositional inverse with `num.len()` coefficients; the caller ensures `f(0) = 0` and,
+/// from two coefficients on, `f'(0) != 0` (FLINT aborts the process otherwise).
 pub(crate) fn revert(num: &[Integer], den: &Integer) -> Parts {
     let n = num.len();
-    let f = FmpqPoly::from_parts(num, den);
-    let mut r = FmpqPoly::new();
-    // SAFETY: initialised; f(0) = 0, f'(0) != 0 checked by the caller.
-    unsafe { fmpq_poly_revert_series(&mut r.0, &f.0, n as i64) };
-    r.to_parts(n)
+    if n < 2 {
+        return (vec![Integer::new(); n], Integer::from(1)); // O(x^n): no coefficient to invert
+    }
+    series_op(num, den, n, fmpq_poly_revert_series)
 }
