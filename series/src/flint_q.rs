@@ -4,9 +4,10 @@
 //! `fmpq_poly`), computed by FLINT 3.5 through flint-sys:
 //! `fmpq_poly_mullow`, `fmpq_poly_inv_series`, `fmpq_poly_log_series`, `fmpq_poly_exp_series`,
 //! `f^(p/q) = exp((p/q) log f)` (FLINT's integer-exponent `pow_trunc` does not take a rational
-//! exponent) and `fmpq_poly_revert_series`. FLINT multiplies integer polynomials with its
-//! small-prime FFT, where `dense_q` makes one GMP product by Kronecker substitution
-//! (docs/performance.md, "The profile, side by side with FLINT").
+//! exponent) and `fmpq_poly_revert_series`. FLINT picks its integer-polynomial product by size
+//! (word-size schoolbook, Schönhage–Strassen, its small-prime FFT from length 100, bit-exact
+//! Kronecker) and starts its exp with a basecase recurrence, where `dense_q` always makes one GMP
+//! product by Kronecker substitution (docs/performance.md, "The profile, side by side with FLINT").
 //!
 //! The values are exact, so the coefficients are the same rationals as `dense_q`'s and the generic
 //! recurrences' (tests in `dense_q.rs`, module `tests::flint`, run by `scripts/test-flint`). Every
