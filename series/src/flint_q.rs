@@ -29,8 +29,9 @@ use rug::Integer;
 use std::mem::MaybeUninit;
 
 /// From this many coefficients on, the reversion goes to FLINT; the other operations go to FLINT
-/// whenever `dense_q` runs (from its threshold of 24 coefficients on: FLINT's series is 2.2x
-/// faster at N = 30, 1.1x at N = 100, up to 2.7x at N = 200, 1.1x to 1.25x slower near N = 60).
+/// whenever `dense_q` runs (from its threshold of 24 coefficients on: FLINT's series is 2x
+/// faster at N = 30, level at N = 100, 1.3x to 1.5x faster at N = 200, 1.1x to 1.2x slower near
+/// N = 60).
 /// Measured with `series/examples/sinc_power --q` built with and without the feature,
 /// interleaved (docs/performance.md, "The optional FLINT backend"): FLINT's reversion is 1.4x to
 /// 1.5x faster at N = 30 and 40, 1.1x to 1.25x slower at N = 50 to 70, as fast at N = 80 and
