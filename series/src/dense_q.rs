@@ -7,7 +7,8 @@
 //!   each (the value at `x = 2^s`, slots of `s` bits, a multiple of 64, wide enough for every
 //!   product coefficient with its sign), one GMP multiplication, signed-digit unpacking;
 //! - inverse, log and exp by Newton iteration on doubling precision (Brent-Kung):
-//!   `b <- b + b (1 - a b)`, `log f = int f'/f`, `g <- g (1 + h - log g)`;
+//!   `b <- b + b (1 - a b)`, `log f = int f'/f`, `g <- g (1 + h - log g)`; exp starts from its
+//!   first (up to 23) coefficients by the recurrence `g' = f' g` over one common denominator;
 //! - power `f^alpha = exp(alpha log f)` (`f(0) = 1`, `alpha` rational);
 //! - reversion by Lagrange inversion with baby steps and giant steps (FLINT's
 //!   `_fmpq_poly_revert_series_lagrange_fast`): with `P = (f/x)^(-1)`,
@@ -18,6 +19,10 @@
 //! the numbers stay at the size of the reduced coefficients. Results are converted back to
 //! reduced [`Q`]s: the values are exact, hence identical to the generic recurrences' (tests
 //! compare both routes coefficient by coefficient).
+//!
+//! With the cargo feature `flint` (off by default) the product, inverse, log, exp and power go to
+//! FLINT's `fmpq_poly` instead, and the reversion from `flint_q::REVERT_MIN` coefficients on
+//! (`src/flint_q.rs`); the tests in `tests::flint` compare that route with this one.
 
 use crate::gmp::{to_big, to_rug};
 use crate::ring::Q;
@@ -110,8 +115,66 @@ impl Dense {
         Dense { num, den }
     }
 
-    /// `self * other` through `x^(n-1)`.
+    /// From the parts of the FLINT backend.
+    #[cfg(feature = "flint")]
+    fn from_parts((num, den): crate::flint_q::Parts) -> Dense {
+        Dense { num, den }
+    }
+
+    /// `self * other` through `x^(n-1)`: FLINT's `fmpq_poly_mullow` with the feature `flint`,
+    /// else one Kronecker product.
     pub(crate) fn mullow(&self, other: &Dense, n: usize) -> Dense {
+        #[cfg(feature = "flint")]
+        return Dense::from_parts(crate::flint_q::mullow((&self.num, &self.den), (&other.num, &other.den), n));
+        #[cfg(not(feature = "flint"))]
+        self.mullow_gmp(other, n)
+    }
+
+    /// `1/self` through `x^(n-1)` (constant term non-zero): FLINT or Newton (as [`Dense::mullow`]).
+    pub(crate) fn inv(&self, n: usize) -> Dense {
+        #[cfg(feature = "flint")]
+        return Dense::from_parts(crate::flint_q::inv(&self.num, &self.den, n));
+        #[cfg(not(feature = "flint"))]
+        self.inv_gmp(n)
+    }
+
+    /// `log self` through `x^(n-1)` (`self(0) = 1`): FLINT or Newton (as [`Dense::mullow`]).
+    pub(crate) fn log(&self, n: usize) -> Dense {
+        #[cfg(feature = "flint")]
+        return Dense::from_parts(crate::flint_q::log(&self.num, &self.den, n));
+        #[cfg(not(feature = "flint"))]
+        self.log_gmp(n)
+    }
+
+    /// `exp self` through `x^(n-1)` (`self(0) = 0`): FLINT or Newton (as [`Dense::mullow`]).
+    pub(crate) fn exp(&self, n: usize) -> Dense {
+        #[cfg(feature = "flint")]
+        return Dense::from_parts(crate::flint_q::exp(&self.num, &self.den, n));
+        #[cfg(not(feature = "flint"))]
+        self.exp_gmp(n)
+    }
+
+    /// `self^(p/q)` through `x^(n-1)` (`self(0) = 1`, `q > 0`): FLINT or GMP (as [`Dense::mullow`]).
+    pub(crate) fn pow(&self, p: &Integer, q: &Integer, n: usize) -> Dense {
+        #[cfg(feature = "flint")]
+        return Dense::from_parts(crate::flint_q::pow(&self.num, &self.den, p, q, n));
+        #[cfg(not(feature = "flint"))]
+        self.pow_gmp(p, q, n)
+    }
+
+    /// The compositional inverse (`self(0) = 0`, `self'(0) != 0`): FLINT's
+    /// `fmpq_poly_revert_series` with the feature `flint` from `flint_q::REVERT_MIN`
+    /// coefficients on, else Lagrange inversion.
+    pub(crate) fn revert(&self) -> Dense {
+        #[cfg(feature = "flint")]
+        if self.len() >= crate::flint_q::REVERT_MIN {
+            return Dense::from_parts(crate::flint_q::revert(&self.num, &self.den));
+        }
+        self.revert_gmp()
+    }
+
+    /// `self * other` through `x^(n-1)`.
+    fn mullow_gmp(&self, other: &Dense, n: usize) -> Dense {
         let mut d = Dense { num: kronecker(&self.num, &other.num, n), den: Integer::from(&self.den * &other.den) };
         d.reduce();
         d
@@ -124,13 +187,15 @@ impl Dense {
             return Dense::constant(Integer::new(), Integer::from(1), n);
         }
         let o = Dense { num: other.num.iter().skip(shift).cloned().collect(), den: other.den.clone() };
-        let p = self.mullow(&o, n - shift);
+        let p = self.mullow_gmp(&o, n - shift);
         let mut num = vec![Integer::new(); shift];
         num.extend(p.num);
         Dense { num, den: p.den }
     }
 
-    /// `self + other` (same length as the longer).
+    /// `self + other` (same length as the longer), over the lcm of the denominators and not
+    /// reduced: every sum in the Newton steps goes into a product, which removes the content
+    /// (reducing here too cost 3-10% of the Q job at N = 60 and 100, docs/performance.md).
     fn add(&self, other: &Dense) -> Dense {
         let n = self.len().max(other.len());
         let (fa, fb) = common_factors(&self.den, &other.den);
@@ -143,9 +208,7 @@ impl Dense {
                 *v += b * &fb;
             }
         }
-        let mut d = Dense { num, den: Integer::from(&self.den * &fa) };
-        d.reduce();
-        d
+        Dense { num, den: Integer::from(&self.den * &fa) }
     }
 
     fn neg(&self) -> Dense {
@@ -153,6 +216,7 @@ impl Dense {
     }
 
     /// `self * p/q` for integers (q > 0).
+    #[cfg_attr(feature = "flint", allow(dead_code))] // with FLINT: the tests' GMP route
     fn scale(&self, p: &Integer, q: &Integer) -> Dense {
         let mut d =
             Dense { num: self.num.iter().map(|n| Integer::from(n * p)).collect(), den: Integer::from(&self.den * q) };
@@ -161,6 +225,7 @@ impl Dense {
     }
 
     /// `f'`, one coefficient shorter.
+    #[cfg_attr(feature = "flint", allow(dead_code))] // with FLINT: the tests' GMP route
     fn derivative(&self) -> Dense {
         let num = self.num.iter().enumerate().skip(1).map(|(k, c)| Integer::from(c * k as u64)).collect();
         let mut d = Dense { num, den: self.den.clone() };
@@ -170,6 +235,7 @@ impl Dense {
 
     /// `int_0^x f`, one coefficient longer: `c_k/(k+1)` over the common denominator
     /// `den lcm(1..len)`.
+    #[cfg_attr(feature = "flint", allow(dead_code))] // with FLINT: the tests' GMP route
     fn integral(&self) -> Dense {
         let n = self.len();
         let mut l = Integer::from(1);
@@ -188,7 +254,7 @@ impl Dense {
 
     /// `1/self` through `x^(n-1)`; the constant term must be non-zero. Newton:
     /// `b <- b + b (1 - a b)` on doubling precision.
-    pub(crate) fn inv(&self, n: usize) -> Dense {
+    fn inv_gmp(&self, n: usize) -> Dense {
         // b_0 = den/num_0 (sign moved to the numerator).
         let c0 = &self.num[0];
         let (mut p, mut q) = (self.den.clone(), c0.clone());
@@ -202,7 +268,7 @@ impl Dense {
         while m < n {
             let half = m;
             m = (2 * m).min(n);
-            let ab = self.truncated(m).mullow(&b, m);
+            let ab = self.truncated(m).mullow_gmp(&b, m);
             let e = Dense::constant(ab.den.clone(), ab.den.clone(), m).add(&ab.neg()); // 1 - a b = O(x^half)
             let corr = b.mullow_shifted(&e, half, m);
             b = b.truncated(m).add(&corr);
@@ -211,7 +277,8 @@ impl Dense {
     }
 
     /// `log self` through `x^(n-1)`; requires `self(0) = 1`.
-    pub(crate) fn log(&self, n: usize) -> Dense {
+    #[cfg_attr(feature = "flint", allow(dead_code))] // with FLINT: the tests' GMP route
+    fn log_gmp(&self, n: usize) -> Dense {
         if n <= 1 {
             return Dense::constant(Integer::new(), Integer::from(1), n.max(1)).truncated(n);
         }
@@ -220,12 +287,12 @@ impl Dense {
         let len = n - 1;
         let df = self.truncated(n).derivative();
         let q = if len < 4 {
-            df.mullow(&self.inv(len), len)
+            df.mullow_gmp(&self.inv_gmp(len), len)
         } else {
             let half = len.div_ceil(2);
-            let h = self.inv(half);
-            let q0 = df.truncated(half).mullow(&h, half);
-            let r = df.truncated(len).add(&self.truncated(len).mullow(&q0, len).neg());
+            let h = self.inv_gmp(half);
+            let q0 = df.truncated(half).mullow_gmp(&h, half);
+            let r = df.truncated(len).add(&self.truncated(len).mullow_gmp(&q0, len).neg());
             q0.truncated(len).add(&h.mullow_shifted(&r, half, len))
         };
         q.integral().truncated(n)
@@ -235,24 +302,33 @@ impl Dense {
     /// along (Hanrot-Zimmermann; Bostan's lecture notes, algorithm "exp"): with `g = exp f` and
     /// `h = 1/g` both known mod `x^m`,
     /// `h <- h (2 - g h) mod x^m`, `w = f' + h (g' - g f') mod x^(2m-1)`,
-    /// `g <- g (1 + f - int w) mod x^(2m)`: no logarithm (and no inverse from scratch) per step.
-    pub(crate) fn exp(&self, n: usize) -> Dense {
-        let one = |len: usize| Dense::constant(Integer::from(1), Integer::from(1), len);
-        let mut g = one(1);
-        let mut h = one(1);
+    /// `g <- g (1 + f - int w) mod x^(2m)`: no logarithm (and no inverse from scratch) per step;
+    /// the first `g` and `h` come from [`exp_basecase`].
+    #[cfg_attr(feature = "flint", allow(dead_code))] // with FLINT: the tests' GMP route
+    fn exp_gmp(&self, n: usize) -> Dense {
         let df = self.truncated(n).derivative();
-        let mut m = 1;
+        // The first m < 24 coefficients by the basecase recurrence (m = n halved until below 24,
+        // so that the doublings below end at n), as FLINT's exp starts; measured side by side,
+        // cutoffs 16, 24 and 40 alike, all 1.1x to 1.2x faster than Newton from m = 1
+        // (docs/performance.md, "The profile, side by side with FLINT").
+        let cutoff = 24;
+        let mut m = n.max(1);
+        while m >= cutoff {
+            m = m.div_ceil(2);
+        }
+        let mut g = exp_basecase(&df, m);
+        let mut h = g.inv_gmp(m);
         while m < n {
             let m2 = (2 * m).min(n);
             if m > 1 {
                 // h = h (2 - g h) mod x^m
-                let gh = g.mullow(&h, m);
+                let gh = g.mullow_gmp(&h, m);
                 let two = Dense::constant(Integer::from(&gh.den * 2u32), gh.den.clone(), m);
-                h = h.mullow(&two.add(&gh.neg()), m);
+                h = h.mullow_gmp(&two.add(&gh.neg()), m);
             }
             // w = f' + h (g' - g f') mod x^(m2 - 1)
             let q = df.truncated(m2 - 1);
-            let gq = g.mullow(&q, m2 - 1);
+            let gq = g.mullow_gmp(&q, m2 - 1);
             let r = g.derivative().truncated(m2 - 1).add(&gq.neg());
             let w = q.add(&h.mullow_shifted(&r, m - 1, m2 - 1)); // r = O(x^(m-1))
                                                                  // g = g (1 + f - int w) mod x^m2
@@ -265,13 +341,14 @@ impl Dense {
     }
 
     /// `self^(p/q)` through `x^(n-1)`; requires `self(0) = 1`.
-    pub(crate) fn pow(&self, p: &Integer, q: &Integer, n: usize) -> Dense {
-        self.log(n).scale(p, q).exp(n)
+    #[cfg_attr(feature = "flint", allow(dead_code))] // with FLINT: the tests' GMP route
+    fn pow_gmp(&self, p: &Integer, q: &Integer, n: usize) -> Dense {
+        self.log_gmp(n).scale(p, q).exp_gmp(n)
     }
 
     /// The compositional inverse, `len` coefficients like `self`; requires `self(0) = 0` and
     /// `self'(0) != 0`. Lagrange inversion with baby and giant steps (module doc).
-    pub(crate) fn revert(&self) -> Dense {
+    fn revert_gmp(&self) -> Dense {
         let big_n = self.len();
         let mut out = vec![Integer::new(); big_n];
         if big_n < 2 {
@@ -280,12 +357,12 @@ impl Dense {
         // h = f/x (n - 1 coefficients), P = 1/h.
         let h = Dense { num: self.num[1..].to_vec(), den: self.den.clone() };
         let len = big_n - 1; // coefficients of P needed: x^0 .. x^(N-2)
-        let p = h.inv(len);
+        let p = h.inv_gmp(len);
         let m = ((len as f64).sqrt().ceil() as usize).max(1);
         // baby steps P^1 .. P^m
         let mut baby = vec![p.clone()];
         for _ in 1..m {
-            let next = baby.last().expect("non-empty").mullow(&p, len);
+            let next = baby.last().expect("non-empty").mullow_gmp(&p, len);
             baby.push(next);
         }
         let giant_step = baby[m - 1].clone();
@@ -314,7 +391,7 @@ impl Dense {
             if j * m + 1 >= big_n {
                 break;
             }
-            giant = giant.mullow(&giant_step, len);
+            giant = giant.mullow_gmp(&giant_step, len);
         }
         // Common denominator of the results.
         let mut den = Integer::from(1);
@@ -331,6 +408,34 @@ impl Dense {
         d.reduce();
         d
     }
+}
+
+/// `exp f` through `x^(n-1)` from `df = f'` (`f(0) = 0`) by the recurrence `g' = f' g` over one
+/// common denominator (FLINT's `_fmpq_poly_exp_series_basecase_deriv`): with `f' = A/d` and
+/// `L = (n-1)! d^(n-1)`, the numerators `N_k = L g_k` are integers and
+/// `N_k = (sum_{j<k} A_j N_(k-1-j)) / (k d)`, an exact division; `O(n^2)` products but no gcd.
+fn exp_basecase(df: &Dense, n: usize) -> Dense {
+    let (a, d) = (&df.num, &df.den);
+    let mut fact = Integer::from(1);
+    for k in 2..n as u64 {
+        fact *= k;
+    }
+    let den = fact * Integer::from(rug::ops::Pow::pow(d, n.saturating_sub(1) as u32));
+    let mut num = vec![Integer::new(); n];
+    num[0] = den.clone();
+    for k in 1..n {
+        let mut t = Integer::new();
+        for j in 0..a.len().min(k) {
+            if a[j].cmp0() != std::cmp::Ordering::Equal {
+                t += &a[j] * &num[k - 1 - j];
+            }
+        }
+        t.div_exact_mut(&Integer::from(d * k as u64));
+        num[k] = t;
+    }
+    let mut g = Dense { num, den };
+    g.reduce();
+    g
 }
 
 /// `(a, b)` with `da a = db b = lcm(da, db)`.
@@ -523,6 +628,61 @@ mod tests {
             let g = series(&h);
             prop_assert_eq!(Dense::from_q(g.coeffs()).exp(len).to_q(), g.exp_generic().unwrap().coeffs().to_vec());
             prop_assert_eq!(Dense::from_q(g.coeffs()).revert().to_q(), g.revert_generic().unwrap().coeffs().to_vec());
+        }
+    }
+
+    /// The FLINT backend against the GMP route (feature `flint`, `scripts/test-flint`).
+    #[cfg(feature = "flint")]
+    mod flint {
+        use super::*;
+        use crate::flint_q;
+
+        fn flint_of(p: flint_q::Parts) -> Vec<Q> {
+            Dense::from_parts(p).to_q()
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(24))]
+            /// Product, inverse, log, exp, power and reversion: FLINT's coefficients are the GMP
+            /// route's reduced rationals, on random series of 1 to 120 coefficients (both sides of
+            /// the reversion's threshold `REVERT_MIN`).
+            #[test]
+            fn flint_equals_gmp(c in arb_series(120), d in arb_series(120), len in 1usize..120, p in -7i64..7, qd in 1i64..5) {
+                let mut c = c[..len].to_vec();
+                c[0] = (1, 1);
+                let f = Dense::from_q(series(&c).coeffs());
+                let g = Dense::from_q(series(&d[..len]).coeffs());
+                prop_assert_eq!(flint_of(flint_q::mullow((&f.num, &f.den), (&g.num, &g.den), len)), f.mullow_gmp(&g, len).to_q());
+                prop_assert_eq!(flint_of(flint_q::inv(&f.num, &f.den, len)), f.inv_gmp(len).to_q());
+                prop_assert_eq!(flint_of(flint_q::log(&f.num, &f.den, len)), f.log_gmp(len).to_q());
+                let (pi, qi) = (Integer::from(p), Integer::from(qd));
+                prop_assert_eq!(flint_of(flint_q::pow(&f.num, &f.den, &pi, &qi, len)), f.pow_gmp(&pi, &qi, len).to_q());
+                let mut h = c.clone();
+                h[0] = (0, 1);
+                if h.len() > 1 && h[1].0 == 0 { h[1] = (1, 3); }
+                let e = Dense::from_q(series(&h).coeffs());
+                prop_assert_eq!(flint_of(flint_q::exp(&e.num, &e.den, len)), e.exp_gmp(len).to_q());
+                prop_assert_eq!(flint_of(flint_q::revert(&e.num, &e.den)), e.revert_gmp().to_q());
+            }
+        }
+
+        /// The Q job at N = 100 (issue 33: `(sin x/x)^(5/6)` and the reversion of x times it):
+        /// the public route, which goes to FLINT at this length, gives the GMP route's
+        /// coefficients and the generic recurrences'.
+        #[test]
+        fn the_q_job_at_100_is_the_same_through_flint() {
+            let n = 100;
+            assert!(n >= flint_q::REVERT_MIN, "the job must exercise the FLINT route");
+            let a = q(5, 6);
+            let s = Series::<Q>::sinc_series(n);
+            let routed = s.pow(&a).unwrap();
+            let gmp = Dense::from_q(s.coeffs()).pow_gmp(&Integer::from(5), &Integer::from(6), n).to_q();
+            assert_eq!(routed.coeffs(), gmp);
+            assert_eq!(routed.coeffs(), s.pow_generic(&a).unwrap().coeffs());
+            let y = routed.shift(1).truncate(n);
+            let rev = y.revert().unwrap();
+            assert_eq!(rev.coeffs(), Dense::from_q(y.coeffs()).revert_gmp().to_q());
+            assert_eq!(rev.coeffs(), y.revert_generic().unwrap().coeffs());
         }
     }
 

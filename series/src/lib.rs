@@ -6,7 +6,9 @@
 //! - [`Q`]: rationals (num-rational 0.4 / num-bigint 0.4); products, inverses, log, exp, powers and
 //!   reversions of `Series<Q>` with at least 24 coefficients run in common-denominator form over GMP
 //!   integers (Kronecker-substitution products, Newton iterations, baby-step giant-step Lagrange
-//!   reversion: FLINT's `fmpq_poly` methods) and give the same reduced rationals;
+//!   reversion: FLINT's `fmpq_poly` methods) and give the same reduced rationals; with the
+//!   optional cargo feature `flint` they call FLINT 3.5 itself (compiled from source; see
+//!   docs/development.md);
 //! - [`Poly`]: multivariate polynomials over Q in named [`Symbol`]s (theta, T, xh, eps, B, S, ...),
 //!   in common-denominator form;
 //! - [`Gaussian`]: the extension `R[i]`, i^2 = -1, of any of these;
@@ -36,6 +38,8 @@ mod compose;
 mod dense_q;
 mod elementary;
 mod error;
+#[cfg(feature = "flint")]
+mod flint_q;
 mod frac;
 mod gaussian;
 mod gmp;
