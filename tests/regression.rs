@@ -270,6 +270,16 @@ fn r34_gap_next_to_a_contact_far_off_the_origin() {
     // eps |c| = 1.5e-11 l).
     assert!(rug::Float::with_val(256, &cf - &cm).abs() < 1e-9 * 3.5e-10, "{cf} vs {cm}");
     assert!(cm.to_f64() < -2.29e-5, "{m}");
+    // Larger contacts at the same parameters: the f64 method refused them as "the gap is not
+    // finite" (the criterion's ends, a = l - c and b = l + c, round to eps |c| = 1e-11 l, and a gap
+    // sample fell on the method's own end, where the exterior weight gave 0 times infinity).
+    for l in ["5.6e-10", "1e-9"] {
+        let s = scene.replace("8729367/25000000000000000", l);
+        let f = solve(&s, Method::F64, 30).unwrap_or_else(|e| panic!("l = {l}: {e}"));
+        let m = solve(&s, Method::Mpfr, 18).unwrap();
+        let (cf, cm) = (float(&f, "c"), float(&m, "c"));
+        assert!(rug::Float::with_val(256, &cf - &cm).abs() < 1e-9 * l.parse::<f64>().unwrap(), "{cf} vs {cm}");
+    }
     let row = scene
         .replace("period = \"inf\"", "period = \"1/10000\"")
         .replace("kind = \"sliding\"", "kind = \"sliding\"\nconvention = \"periodic\"");
