@@ -143,10 +143,13 @@ pub const GAP_TOL: f64 = 1e-8;
 /// ([`ContactFunctions::profile_rise`]) a few operations, the integral a sum of at most 16 terms
 /// per panel and 4 panels of slopes each a few operations from their own data (a sum of n terms
 /// rounds within n eps of the sum of their magnitudes; w keeps one sign where it is large, next
-/// to a contact far off the origin, so that sum is |int w|): 32 eps. Next to a centred contact
-/// it is far below [`GAP_TOL`] of the largest gap; next to a contact 1e4..1e8 half-lengths off the
-/// origin (adhesive friction at tiny loads) it is the larger term (issue 34, fuzz seed 2026
-/// case 3960).
+/// to a contact far off the origin, so that sum is |int w|): 32 eps. Next to a contact at c with
+/// half-length l (a parabola, single punch) |rise| ~ |int w| ~ 2 k |c| 4 l at the sample farthest
+/// out, against a largest gap of about 22 k l^2 there (Hertz's at 5 l from the centre), so the
+/// bound is about 5e-15 |c|/l of the largest gap: below [`GAP_TOL`] of it up to |c| ~ 2e6 l
+/// (fuzz seed 2026 case 3960: 6.6e4, where the plain difference of heights, not this bound, was
+/// the fault), the larger term beyond (adhesive friction at tiny loads puts c at
+/// -beta tau0/(E* k) whatever l is).
 pub const GAP_ROUNDING: f64 = 32.0 * f64::EPSILON;
 
 /// One sample of the gap ([`gap_side`]): where, the gap, and the bound of its rounding.
