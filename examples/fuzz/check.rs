@@ -484,27 +484,46 @@ pub fn printed_values_hold(
     digits: u32,
     truth_digits: u32,
 ) -> Result<(Vec<String>, usize), Error> {
+    let margins = printed_margins(scene, method, digits, truth_digits)?;
+    let bad = margins.iter().filter(|m| !m.holds).map(|m| m.text.clone()).collect();
+    Ok((bad, margins.len()))
+}
+
+/// One printed value against the truth ([`printed_margins`]).
+#[derive(Debug, Clone)]
+pub struct Margin {
+    /// Its path, e.g. `P2`.
+    pub path: String,
+    /// The digits claimed for it.
+    pub claimed: f64,
+    /// The digits it holds of its scale against the truth.
+    pub held: f64,
+    /// Whether it holds its claim (within the claim plus the truth's own).
+    pub holds: bool,
+    /// The comparison in words.
+    pub text: String,
+}
+
+/// Every value `method` prints (at `digits`) against verified MPFR at `truth_digits`: the digits
+/// claimed and held (check 2 with its margins). Both must answer.
+pub fn printed_margins(scene: &Scene, method: Method, digits: u32, truth_digits: u32) -> Result<Vec<Margin>, Error> {
     let (_, truth) = truth(scene, truth_digits)?;
     let v = solve_scene(scene, SolveRequest { method, digits, series_order: 12 })?;
-    let mut bad = vec![];
-    let mut n = 0;
+    let mut out = vec![];
     for (path, c) in claims(&v, problem_of(scene)) {
         let (Some(t), Some(s)) = (truth.claims.get(&path), truth.scales.get(&path)) else { continue };
-        n += 1;
-        match held(&c, t, s) {
-            Some((true, _)) => {}
-            other => bad.push(format!(
-                "{} {path} = {} claims {:.1} digits, holds {:?} against {} ({:.1} digits)",
-                method.name(),
-                c.text,
-                c.digits,
-                other.map(|x| x.1),
-                t.text,
-                t.digits
-            )),
-        }
+        let (holds, held) = held(&c, t, s).unwrap_or((false, 0.0));
+        let text = format!(
+            "{} {path} = {} claims {:.1} digits, holds {held:.2} against {} ({:.1} digits)",
+            method.name(),
+            c.text,
+            c.digits,
+            t.text,
+            t.digits
+        );
+        out.push(Margin { path, claimed: c.digits, held, holds, text });
     }
-    Ok((bad, n))
+    Ok(out)
 }
 
 fn request(m: Method, budget: &Budget) -> SolveRequest {

@@ -135,4 +135,18 @@ impl Digits {
         let [psi, phi, q1, q2] = q;
         Digits { size, psi, phi, q1, q2, headline: size.min(psi).min(phi).min(q1).min(q2) }
     }
+
+    /// Every entry at most `cap` (e.g. the digits a homogeneous mode leaves,
+    /// [`crate::asymptotics::adhesion_mode::digits_kept`]).
+    pub fn at_most(&self, cap: f64) -> Self {
+        let m = |d: f64| d.min(cap);
+        Digits {
+            size: m(self.size),
+            psi: m(self.psi),
+            phi: m(self.phi),
+            q1: m(self.q1),
+            q2: m(self.q2),
+            headline: m(self.headline),
+        }
+    }
 }

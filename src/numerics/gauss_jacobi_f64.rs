@@ -376,9 +376,14 @@ pub fn omega(u: f64, theta: f64) -> f64 {
 /// -ln1p(2/(-1 - u)) (the differences exact near the ends, no cancellation in 1 + x): one square
 /// root, logarithm and exponential instead of two powers (test `omega_forms_agree`). Off the
 /// contact of Problem 1 the gap's slope is this weight times the pressure factor's continuation
-/// (`sliding::collocation_f64`'s `physical.rs`).
+/// (`sliding::collocation_f64`'s `physical.rs`). At the ends u = +-1 it is 0, the limit for
+/// |theta| < 1/2 (the form above would give 0 times infinity there for one sign of theta: issue
+/// 34, a gap sample that the rounding of the contact's ends, far off the origin, put on the end).
 pub fn omega_exterior(u: f64, theta: f64) -> f64 {
     let root = ((u - 1.0) * (u + 1.0)).sqrt();
+    if root == 0.0 {
+        return 0.0;
+    }
     if u > 0.0 {
         root * (theta * (2.0 / (u - 1.0)).ln_1p()).exp()
     } else {
@@ -472,6 +477,20 @@ mod tests {
                     let scale = (v.abs() + 1.0) * sec;
                     assert!((c - d).abs() <= 16.0 * f64::EPSILON * scale, "exterior theta {theta} u {v}: {c} vs {d}");
                 }
+            }
+        }
+    }
+
+    /// At the ends X(+-1) = 0 for either sign of theta (the form's 0 times infinity for one of
+    /// them gave NaN), and next to them X is finite and below 1 (|X| = d^(1/2 -+ theta) (2 +
+    /// d)^(1/2 +- theta) at a distance d: 0.48 at d = 1e-12 and theta = 0.45).
+    #[test]
+    fn the_exterior_weight_vanishes_at_the_ends() {
+        for theta in [-0.45, -0.05, 0.0, 0.05, 0.45] {
+            for u in [1.0, -1.0] {
+                assert_eq!(omega_exterior(u, theta), 0.0, "theta {theta} u {u}");
+                let near = omega_exterior(u * (1.0 + 1e-12), theta);
+                assert!(near.is_finite() && near.abs() < 1.0, "theta {theta} u {u}: {near}");
             }
         }
     }

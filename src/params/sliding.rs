@@ -18,7 +18,8 @@
 //! the `f64` range reach the solvers' `f64` stages; [`SlidingParamsMpfr::unit`] converts back.
 
 pub use super::profile::{
-    check_profile_on_contact, polynomial_derivative, row_height_f64, ShapeF64, CIRCLE_SIZE_CAP, MAX_CONTACT_SLOPE,
+    check_profile_on_contact, polynomial_derivative, row_height_f64, row_rise_f64, ShapeF64, CIRCLE_SIZE_CAP,
+    MAX_CONTACT_SLOPE,
 };
 use crate::error::Error;
 use crate::model::OnPunchRow;

@@ -11,10 +11,10 @@
 
 use super::closure::{closed, tau0_side};
 use super::error::{root_error, Result, SlidingF64Error};
-use super::interpolant::{basis, Rhs, State};
+use super::interpolant::{basis, Basis, Rhs, State};
 use super::operator::{collocation, Collocation};
 use super::parabola::kuznetsov_guess;
-use super::profile::{analytic_curvature, analytic_slope};
+use super::profile::{analytic_curvature, analytic_slope, slope_divided_difference};
 use super::solution::SolverOptions;
 use super::tangent_map::{Map, LAMBDA_MAX};
 use crate::numerics::accuracy::readable_f64;
@@ -72,7 +72,7 @@ pub(super) fn profile_state(col: &Collocation, prm: &SlidingParamsF64, map: Map)
         return Err(lost("the circle's contact reaches |x| = R"));
     }
     for _ in 0..CENTRE_STEPS {
-        let b = closed(prm, &map, basis(col, &map, |u| half_e * analytic_slope(&prm.shape, c + map.offset(u)))?);
+        let b = slope_basis(col, prm, &map, c)?;
         let db = closed(prm, &map, basis(col, &map, |u| half_e * analytic_curvature(&prm.shape, c + map.offset(u)))?);
         let r = b.cond - side;
         if !(r.is_finite() && db.cond.is_finite()) || db.cond == 0.0 {
@@ -89,12 +89,30 @@ pub(super) fn profile_state(col: &Collocation, prm: &SlidingParamsF64, map: Map)
         }
         c -= step;
         if step.abs() <= 4.0 * f64::EPSILON * (l + c.abs()) || r == 0.0 {
-            let b = closed(prm, &map, basis(col, &map, |u| half_e * analytic_slope(&prm.shape, c + map.offset(u)))?);
+            let b = slope_basis(col, prm, &map, c)?;
             let rhs = Rhs::Profile { half_e, c, shape: prm.shape.clone() };
             return Ok(State { map, c, g: b.g, p2: b.p2, rhs });
         }
     }
     Err(lost("Newton's method did not converge"))
+}
+
+/// The unit basis of F(u) = (E*/2) g'(c + x(u) - c) at the centre c: its constant (E*/2) g'(c)
+/// is solved exactly by G = 0, K = (E*/2) g'(c) (cond = C0 - K = -(E*/2) g'(c)), so only the
+/// variation (E*/2) (x(u) - c) g'[c + x(u) - c, c] is collocated
+/// ([`slope_divided_difference`], smooth in its arguments, times the offset as computed). Collocated
+/// whole, the rounding of g' at c + x(u) - c (eps |g'(c)|, and eps |c| in the point) against a
+/// variation of g'' l cost eps |c|/l of P2 and F_def, which next to a contact far off the origin
+/// (adhesive friction at small loads, |c|/l up to 1e6 and more) left the f64 method 10 digits or
+/// none (issue 34; the sinusoid's case in `sinusoid::sinusoid_bases`).
+fn slope_basis(col: &Collocation, prm: &SlidingParamsF64, map: &Map, c: f64) -> Result<Basis> {
+    let half_e = 0.5 * prm.e_star;
+    let mut b = basis(col, map, |u| {
+        let d = map.offset(u);
+        half_e * d * slope_divided_difference(&prm.shape, c + d, c)
+    })?;
+    b.cond -= half_e * analytic_slope(&prm.shape, c);
+    Ok(closed(prm, map, b))
 }
 
 /// Starting size: the single-punch half-length l_s of the curvature scale k [3.10], through

@@ -48,7 +48,7 @@ use super::outputs::Outputs;
 use crate::model::Convention;
 use crate::numerics::gauss_jacobi_f64::omega_exterior;
 use crate::params::sliding::SlidingParamsF64;
-use crate::params::sliding::{row_height_f64, ShapeF64};
+use crate::params::sliding::{row_height_f64, row_rise_f64, ShapeF64};
 use crate::sliding::physicality::{assess, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL};
 use std::f64::consts::PI;
 
@@ -167,6 +167,9 @@ impl ContactFunctions for Functions<'_> {
     }
     fn profile_height(&self, x: f64) -> f64 {
         row_height_f64(&self.prm.shape, self.prm.period, x)
+    }
+    fn profile_rise(&self, end: f64, dx: f64) -> f64 {
+        row_rise_f64(&self.prm.shape, self.prm.period, end, dx)
     }
 }
 

@@ -25,7 +25,14 @@ pub(super) fn sinusoid_bases(col: &Collocation, prm: &SlidingParamsF64, map: &Ma
         Map::Single { .. } => unreachable!("sinusoid needs a period"),
     };
     let bx = closed(prm, map, basis(col, map, |u| 2.0 * m * u / (1.0 + m * m * u * u))?);
-    let by = closed(prm, map, basis(col, map, |u| (1.0 - m * m * u * u) / (1.0 + m * m * u * u))?);
+    // cos 2phi = 1 - 2 m^2 u^2/(1 + m^2 u^2): the constant 1 is solved exactly by G = 0, K = 1
+    // (cond = C0 - K = -1), so only the variable part is collocated. Collocated whole, the
+    // rounding of 1 - m^2 u^2 (eps against a variation of m^2) put an error of about
+    // eps |Y|/(X lambda) into P2 and F_def, and below m^2 = eps the variation vanished (issue 34,
+    // fuzz seed 2026 cases 4397 and 9042: lambda = 2.7e-4 and 5.6e-9, 620 and 1460 eps in P2).
+    let mut by = basis(col, map, |u| -2.0 * m * m * u * u / (1.0 + m * m * u * u))?;
+    by.cond -= 1.0;
+    let by = closed(prm, map, by);
     Ok((bx, by))
 }
 

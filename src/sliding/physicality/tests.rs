@@ -50,12 +50,12 @@ fn hertz_is_admissible_and_its_gap_matches_the_closed_form() {
     assert!(r.warning.is_none());
     // The integrated gap at 4 l beyond the leading end against the closed form.
     let side = gap_side(&f, 0.0, a, 4.0 * a, 1.0);
-    let (x, h) = *side.last().unwrap();
+    let (x, h) = side.last().map(|v| (v.x, v.h)).unwrap();
     let exact = k * (x * (x * x - a * a).sqrt() - a * a * (x / a).acosh());
     assert!((h - exact).abs() < 1e-10 * exact, "{h} vs {exact}");
     // By symmetry the trailing side ends at the same height.
     let back = gap_side(&f, 0.0, -a, 4.0 * a, -1.0);
-    assert!((back.last().unwrap().1 - h).abs() < 1e-12 * h);
+    assert!((back.last().unwrap().h - h).abs() < 1e-12 * h);
 }
 
 #[test]
@@ -248,7 +248,7 @@ fn the_gap_quadrature_matches_a_fine_reference() {
                     }
                     w_int += dir * inc * 0.5 * (s1 - s0);
                     if (j + 1) % (panels / 32) == 0 {
-                        let (x, h) = side[(j + 1) / (panels / 32) - 1];
+                        let GapSample { x, h, .. } = side[(j + 1) / (panels / 32) - 1];
                         let x_ref = start + dir * reach * s1.powi(4);
                         assert_eq!(x, x_ref);
                         let h_ref = f.profile_height(x) - f.profile_height(start) - w_int;
@@ -260,5 +260,65 @@ fn the_gap_quadrature_matches_a_fine_reference() {
                 assert!(worst <= 1e-11 * hmax, "theta {theta} l {l} dir {dir}: {worst:e} of {hmax:e}");
             }
         }
+    }
+}
+
+/// A Hertz contact (k = 0.34, a = 3.5e-10) moved to c = -2.3e-5, 6.6e4 half-lengths off the
+/// origin of its profile k x^2 (issue 34, fuzz seed 2026 case 3960: adhesive friction at a tiny
+/// load): the surface slope there is 2 k c plus Hertz's, and the heights k x^2 ~ 1.8e-10 dwarf the
+/// gap (at most ~7e-19 within 4 a). With the rise g(x) - g(end) in its cancellation-free form
+/// ([`crate::params::sliding::row_rise_f64`]) and the rounding bound [`GAP_ROUNDING`], the
+/// criterion admits it (the plain difference of heights, the default `profile_rise`, loses
+/// eps k c^2 = 4e-26, far beyond [`GAP_TOL`] of the largest gap, and refused it), and still refuses
+/// it tilted by 1e-6 of its surface slope.
+#[test]
+fn a_contact_far_off_the_origin_keeps_its_gap() {
+    struct Off {
+        k: f64,
+        a: f64,
+        c: f64,
+        tilt: f64,
+        exact_rise: bool,
+    }
+    impl ContactFunctions for Off {
+        fn pressure_factor(&self, _: f64) -> f64 {
+            2.0 * self.k * self.a
+        }
+        fn surface_slope(&self, xi: f64) -> f64 {
+            let (k, a) = (self.k, self.a);
+            2.0 * k * (self.c + xi) - 2.0 * k * (xi * xi - a * a).max(0.0).sqrt() * xi.signum() - self.tilt
+        }
+        fn profile_height(&self, x: f64) -> f64 {
+            self.k * x * x
+        }
+        fn profile_rise(&self, end: f64, dx: f64) -> f64 {
+            if self.exact_rise {
+                crate::params::sliding::row_rise_f64(&ShapeF64::Parabolic { k: self.k }, None, end, dx)
+            } else {
+                self.profile_height(end + dx) - self.profile_height(end)
+            }
+        }
+    }
+    use crate::params::sliding::ShapeF64;
+    let (k, a, c) = (25.0 / 74.0, 3.5e-10, -2.3e-5);
+    let setting = Setting { a: a - c, b: a + c, ..single(a) };
+    let off = Off { k, a, c, tilt: 0.0, exact_rise: true };
+    let r = assess(&off, &setting).expect("Hertz off the origin is physical");
+    assert_eq!(r.min_gap, 0.0);
+    // The gap 4 a beyond the leading end against Hertz's closed form.
+    let side = gap_side(&off, c, a, 4.0 * a, 1.0);
+    let (xi, h) = side.last().map(|v| (v.x - c, v.h)).unwrap();
+    let exact = k * (xi * (xi * xi - a * a).sqrt() - a * a * (xi / a).acosh());
+    assert!((h - exact).abs() < 1e-9 * exact, "{h:e} vs {exact:e}");
+    // The plain difference of heights: refused for a gap of the size of its rounding.
+    let plain = Off { exact_rise: false, ..off };
+    assert!(matches!(assess(&plain, &setting), Err(Refusal::NegativeGap { .. })), "plain difference admitted");
+    // A tilt of 1e-6 of the slope 2 k |c| (the gap behind the trailing end falls to about
+    // -tilt d/3 = -4e-24 at d = (2 tilt/(3 C))^2 ~ 8e-13, C = (4/3) k sqrt(2 a) of Hertz's
+    // d^(3/2); 1e-5 of the largest gap, far beyond the rounding) is still refused.
+    let tilted = Off { tilt: 1e-6 * 2.0 * k * c.abs(), ..off };
+    match assess(&tilted, &setting) {
+        Err(Refusal::NegativeGap { h, from, .. }) => assert!(h < 0.0 && from == End::Trailing, "{h} {from:?}"),
+        other => panic!("tilted contact admitted: {other:?}"),
     }
 }

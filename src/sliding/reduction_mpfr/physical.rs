@@ -17,7 +17,7 @@ use super::contact::Contact;
 use super::pressure::Pressure;
 use super::profile::row_slope;
 use crate::model::Convention;
-use crate::params::sliding::{row_height_f64, ShapeF64, ShapeMpfr, SlidingParamsMpfr};
+use crate::params::sliding::{row_height_f64, row_rise_f64, ShapeF64, ShapeMpfr, SlidingParamsMpfr};
 use crate::sliding::physicality::{
     assess, pressure_points, Assessment, Cell, ContactFunctions, Refusal, Setting, CLOSURE_TOL,
 };
@@ -45,6 +45,9 @@ impl ContactFunctions for Functions<'_, '_> {
     }
     fn profile_height(&self, x: f64) -> f64 {
         row_height_f64(&self.shape, self.period, x)
+    }
+    fn profile_rise(&self, end: f64, dx: f64) -> f64 {
+        row_rise_f64(&self.shape, self.period, end, dx)
     }
 }
 
