@@ -306,7 +306,7 @@ fn methods(st: &Statement, index: u64, budget: &Budget) -> Vec<Method> {
     match st.problem {
         Problem::Sliding => {
             let mut m = vec![Method::Mpfr, Method::F64];
-            let series = index % budget.series_every.max(1) == 0;
+            let series = index.is_multiple_of(budget.series_every.max(1));
             if series && st.period.is_some() && matches!(st.given, Given::NormalLoad(_)) {
                 m.extend([Method::Series, Method::Pade]);
             }
@@ -537,12 +537,12 @@ fn check_closed_form(out: &mut Outcome, st: &Statement, tag: &dyn Fn(&str) -> St
         if run.method == "series" || run.method == "pade" {
             continue;
         }
-        let bad = match (&run.verdict, exists) {
-            (Verdict::Refused(ErrorKind::NoSolution | ErrorKind::NotPhysical, _), true) => true,
-            (Verdict::Answer(_), false) => true,
-            (Verdict::Refused(ErrorKind::NotPhysical, _), false) => true,
-            _ => false,
-        };
+        let bad = matches!(
+            (&run.verdict, exists),
+            (Verdict::Refused(ErrorKind::NoSolution | ErrorKind::NotPhysical, _), true)
+                | (Verdict::Answer(_), false)
+                | (Verdict::Refused(ErrorKind::NotPhysical, _), false)
+        );
         if bad {
             out.disagreements.push(tag(&format!(
                 "{} says {} where the closed form says a contact {}",

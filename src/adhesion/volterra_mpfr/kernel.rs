@@ -305,7 +305,7 @@ mod tests {
         let c = Float::with_val(prec, 1u32) - &s;
         let chi = Float::with_val(prec, 0.9);
         let eps = Float::with_val(prec, 0.17);
-        let pre = VolterraNodes::new(&[s.clone()], &[c.clone()], prec);
+        let pre = VolterraNodes::new(std::slice::from_ref(&s), std::slice::from_ref(&c), prec);
         let sc = chi.clone().sin_cos(Float::new(prec));
         let (r1, i1) = pre.integrand(0, &s, &c, &chi, &sc, &eps, None, prec);
         let (r2, i2) = volterra_integrand(&s, &c, &chi, &eps, prec);
