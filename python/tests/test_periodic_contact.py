@@ -272,7 +272,10 @@ def test_ctrl_c_stops_a_long_solve(tmp_path):
     # the call with KeyboardInterrupt at once.
     script = tmp_path / "long.py"
     script.write_text(
-        "import sys, time, periodic_contact as pc\n"
+        "import signal, sys, time, periodic_contact as pc\n"
+        # A shell that starts the tests in the background (`nohup ... &`) ignores SIGINT, and the
+        # child inherits that: restore Python's own handler so the test measures the module.
+        "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
         "print('started', flush=True)\n"
         "t = time.time()\n"
         "try:\n"
