@@ -21,6 +21,8 @@ pub struct TanhSinh {
     pub c: Vec<Float>,
     /// Weights h ds/dt.
     pub w: Vec<Float>,
+    /// The arguments of [`TanhSinh::new`] that fix every node: (bits, refine's bits, prec).
+    spec: (u32, u64, u32),
 }
 
 /// Step and half-length (in t) for `bits` of accuracy and a refinement factor.
@@ -54,7 +56,13 @@ impl TanhSinh {
             c.push(cj);
             w.push(wj);
         }
-        TanhSinh { s, c, w }
+        TanhSinh { s, c, w, spec: (bits, refine.to_bits(), prec) }
+    }
+
+    /// (bits, refine as its bits, prec) as given to [`TanhSinh::new`]: equal specs, equal rules
+    /// (a key for caches of values at the nodes).
+    pub fn spec(&self) -> (u32, u64, u32) {
+        self.spec
     }
 
     /// Number of nodes.

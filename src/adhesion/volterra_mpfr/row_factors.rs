@@ -35,23 +35,26 @@ pub struct RowFactors {
 }
 
 /// What fixes the factors exactly: lambda (mantissa and exponent; None for 0), the Chebyshev size,
-/// the quadrature rule's accuracy and refinement (its nodes follow from them and the precision),
-/// the precision, and whether the nodes are sigma (`periodic`) or sigma^2 (`paper`).
+/// the quadrature rule ([`TanhSinh::spec`]: its accuracy, refinement and precision fix its nodes),
+/// and whether the nodes are sigma (`periodic`) or sigma^2 (`paper`).
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct FactorsKey {
     lambda: Option<(Integer, i32)>,
     n: usize,
-    rule_bits: u32,
-    refine: u64,
-    prec: u32,
+    rule: (u32, u64, u32),
     in_sigma: bool,
 }
 
 impl FactorsKey {
-    /// The key of a solve at `lambda` with `n` Chebyshev nodes and the tanh-sinh rule
-    /// `TanhSinh::new(rule_bits, refine, prec)`; `in_sigma`: the nodes are sigma (`periodic`).
-    pub fn new(lambda: &Float, n: usize, rule_bits: u32, refine: f64, prec: u32, in_sigma: bool) -> Self {
-        FactorsKey { lambda: lambda.to_integer_exp(), n, rule_bits, refine: refine.to_bits(), prec, in_sigma }
+    /// The key of a solve at `lambda` with `n` Chebyshev nodes and the tanh-sinh rule `rule`
+    /// (the factors are computed at its precision); `in_sigma`: the nodes are sigma (`periodic`).
+    pub fn new(lambda: &Float, n: usize, rule: &TanhSinh, in_sigma: bool) -> Self {
+        FactorsKey { lambda: lambda.to_integer_exp(), n, rule: rule.spec(), in_sigma }
+    }
+
+    /// The precision of the factors: the rule's.
+    fn prec(&self) -> u32 {
+        self.rule.2
     }
 }
 
@@ -121,12 +124,12 @@ pub fn row_factors(
     let table = slot
         .get_or_init(|| {
             computed = true;
-            Arc::new(compute(lambda, tau, rule, pre, key.prec, key.in_sigma))
+            Arc::new(compute(lambda, tau, rule, pre, key.prec(), key.in_sigma))
         })
         .clone();
     let mut c = cache().lock().unwrap_or_else(PoisonError::into_inner);
     if computed {
-        let bits = table.iter().map(|r| r.nodes.len() as u64).sum::<u64>() * 2 * u64::from(key.prec);
+        let bits = table.iter().map(|r| r.nodes.len() as u64).sum::<u64>() * 2 * u64::from(key.prec());
         c.filled(key, bits, CACHE_BITS);
     } else {
         c.used(&key);
@@ -169,7 +172,7 @@ mod tests {
         let tau = chebyshev::nodes(9, prec);
         let lambda = Float::with_val(prec, 1.1);
         for in_sigma in [false, true] {
-            let key = FactorsKey::new(&lambda, tau.len(), 83, 1.0, prec, in_sigma);
+            let key = FactorsKey::new(&lambda, tau.len(), &rule, in_sigma);
             let first = row_factors(key.clone(), &lambda, &tau, &rule, &pre);
             let again = row_factors(key, &lambda, &tau, &rule, &pre);
             assert!(Arc::ptr_eq(&first, &again), "the second ask is served from the cache");
@@ -209,7 +212,8 @@ mod tests {
         // A private cache with a bound of three tables of 100 bits: the fourth drops the least
         // recently used (the second, the first having been used since), a table larger than the
         // bound alone is kept alone.
-        let key = |n| FactorsKey::new(&Float::with_val(53, 0.5), n, 83, 1.0, 53, false);
+        let rule = TanhSinh::new(83, 1.0, 53);
+        let key = |n| FactorsKey::new(&Float::with_val(53, 0.5), n, &rule, false);
         let mut c = Cache::default();
         for n in 1..=4 {
             c.slots.insert(key(n), Slot::default());

@@ -229,7 +229,7 @@ fn solve_unchecked(
     let shift = periodic.then(|| kernel::LateralShift::new(&eps, prec));
     // The nodes of the interpolation variable: tau = sigma^2 (`paper`) or sigma (`periodic`).
     let tau = chebyshev::nodes(n, prec);
-    let key = FactorsKey::new(lambda, n, params.target_bits + 8, params.refine, prec, periodic);
+    let key = FactorsKey::new(lambda, n, &rule, periodic);
     let (res, keep) = collocation_rows(key, &tau, lambda, &eps, &rule, &pre, shift.as_ref(), prec);
     let b: Vec<Float> = tau
         .iter()
@@ -576,7 +576,7 @@ mod tests {
             let pre = kernel::VolterraNodes::new(&rule.s, &rule.c, prec);
             let tau = chebyshev::nodes(40, prec);
             let lambda = Float::with_val(prec, 1.2);
-            let key = FactorsKey::new(&lambda, 40, prec - 24, 1.0, prec, false);
+            let key = FactorsKey::new(&lambda, 40, &rule, false);
             let (res, keep) = collocation_rows(key, &tau, &lambda, &eps, &rule, &pre, None, prec);
             let b: Vec<Float> = tau.iter().map(|t| RightSide::Parabola.at(t, prec)).collect();
             let (fixed, ratio_fixed) = collocation_solve(&res, &keep, b.clone(), prec).unwrap();
