@@ -53,7 +53,8 @@ const LAMBDA_TOL: f64 = 1e-10;
 
 /// The load P(lambda) on the discretisation `(nodes, n)`.
 pub fn row_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), periodic: bool) -> Result<f64, Error> {
-    let theta0 = (beta * mu).atan() / PI;
+    // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
+    let theta0 = crate::params::sliding::theta_f64(beta * mu);
     Ok(load(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
 }
 
