@@ -7,7 +7,9 @@
 //! (10, 16) and (20, 32), measured, about 2 s now, a few tenths in release. Then the row at
 //! lambda = 1.2 by the spectral method `solve` uses (docs/theory.md sections 17.5, 17.8): c/a and
 //! P on (load nodes, polynomials) = (6, 6) against (8, 8) (`solve` uses (8, 6) and (10, 8)), the
-//! four cases in parallel ([`super::parallel::map`]).
+//! four cases in parallel ([`super::parallel::map`]). Measured with them: the section took 49.6 s
+//! of a 209 s full release report at load average 10.8 on 2 cores (overlapping section 4's 208 s;
+//! the report is about 27 s on an idle machine).
 
 use super::section::{Ctx, Section};
 use periodic_contact::adhesion::friction::row_f64::row_stick_ratio;
