@@ -23,8 +23,7 @@
 //! P2 and c propagated through the same formulas; its `checks` compare it
 //! with the f64 increment method (independent discretisation).
 //!
-//! Refused with an input error: a method other than f64 and mpfr ([`refuse_method`]; the periodic
-//! row takes f64 only), more digits than the mpfr method reaches, and a punch other than the
+//! Refused with an input error: a method other than f64 and mpfr ([`refuse_method`]), more digits than the mpfr method reaches, and a punch other than the
 //! parabola ([`solvable_parabola`]).
 
 use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance};
@@ -57,24 +56,17 @@ pub const FRICTION_NOTE: &str = "finite friction (docs/theory.md section 17): Co
      (1975) 297-319), here with the shear's effect on the normal displacement kept (the coupled problem). Solved \
      by the f64 unit-increment method on 40 and 80 stick elements; about 4-5 digits";
 
-/// The refusal of a method other than f64 (and, for the single punch, `mpfr_too`, mpfr).
-pub fn refuse_method(method: crate::scene::Method, mpfr_too: bool) -> Result<(), Error> {
+/// The refusal of a method other than f64 and mpfr for the single punch (the row has its own,
+/// `answer_friction_row.rs`).
+pub fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
     use crate::scene::Method as M;
     match method {
-        M::F64 => Ok(()),
-        M::Mpfr if mpfr_too => Ok(()),
-        _ if mpfr_too => Err(Error::input(
+        M::F64 | M::Mpfr => Ok(()),
+        _ => Err(Error::input(
             "--method",
             method.name(),
             "the single punch with finite friction ([adhesion] friction) is solved by the f64 method (4-5 digits) and \
              the mpfr method (verified digits): --method f64, --method mpfr, or no --method",
-        )),
-        _ => Err(Error::input(
-            "--method",
-            method.name(),
-            "the periodic row with finite friction ([adhesion] friction) is solved by the f64 method only so far \
-             (2-3 digits in the load; the single punch, period = \"inf\", also by --method mpfr): --method f64, or \
-             no --method",
         )),
     }
 }
@@ -87,8 +79,8 @@ pub const MPFR_MAX_DIGITS: u32 = 16;
 pub const FRICTION_NOTE_ROW: &str = "finite friction on the periodic row (docs/theory.md section 17): Coulomb slip \
      |q1| = mu q2 in the slip zones c < |x| < a at the ends of every punch, stick in the middle |x| < c, under \
      monotone normal loading; c/a depends on lambda = pi a/L (not constant during loading as for the single \
-     punch). Solved by the f64 march in lambda (the unit increment bounded at the stick edge, the load from the \
-     slope at the moving edge) on two discretisations; about 2-3 digits in the load, 4 in c/a";
+     punch). Solved by the spectral method in f64 (section 17.8: the unit increment bounded at the stick edge, the \
+     load from the edge-slope Volterra equation on Chebyshev nodes) on two discretisations; about 5-7 digits";
 
 /// The model of a friction answer at nu = 1/2, printed as its `friction_note`.
 pub const FRICTION_NOTE_INCOMPRESSIBLE: &str = "finite friction at nu = 1/2 (beta = 0; docs/theory.md section 17.3): \
@@ -126,7 +118,7 @@ pub fn friction_answer(
     digits_asked: u32,
     points: &[Exact],
 ) -> Result<AdhesionAnswer, Error> {
-    refuse_method(method, true)?;
+    refuse_method(method)?;
     let k = solvable_parabola(p)?;
     crate::adhesion::points::check_points(points)?;
     if method == crate::scene::Method::Mpfr {

@@ -1,55 +1,118 @@
 //! The periodic row with finite friction (`[adhesion] friction`, a finite period; docs/theory.md
-//! section 17.5) as an [`AdhesionAnswer`]: the parabola g = k x^2, normal loading, both surface
-//! conventions, by the f64 march of [`crate::adhesion::friction::row_load_f64`] (the load P(lambda),
-//! P2 = E* k (L/pi)^2 P) and the stick ratio of [`crate::adhesion::friction::row_f64`] at the
-//! answer's lambda = pi a/L:
-//!     given a:  lambda = pi a/L, P2 from the march to lambda, c = (c/a) a;
-//!     given P2: the march to [`LAMBDA_MAX`], lambda where the march's P (quadratic through three
-//!               neighbouring points) equals P2/(E* k (L/pi)^2), then c/a there.
-//! Two discretisations, (n, m) = (10, 16) and (20, 32) (stick elements, load intervals), and the
-//! stick ratio on n = 10, 20 and 40; the error estimate is [`super::answer_friction::ESTIMATE_SAFETY`]
-//! times their difference (at nu = 1/2, where Kuznetsov's load is known, the true error of the
-//! finer is 0.5 of the difference, `row_load_f64` tests). About 2-3 digits in P2, 4 in c/a. The
-//! fields and the checks of the single punch are not computed for the row.
+//! sections 17.5 and 17.8) as an [`AdhesionAnswer`]: the parabola g = k x^2, normal loading, both
+//! surface conventions, by the spectral method in `f64`: the load P(lambda) of the edge-slope
+//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load`], P2 =
+//! E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
+//! ([`crate::adhesion::friction::spectral_row::stick_ratio_f64`]):
+//!     given a:  lambda = pi a/L, P2 = P(lambda) E* k (L/pi)^2, c = (c/a)(lambda) a;
+//!     given P2: lambda where P(lambda) = P2/(E* k (L/pi)^2) ([`invert`]: the frictionless shape
+//!               r (-pi ln cos lambda) with r fitted to the last load, then secant steps), then c/a.
+//! Two discretisations, [`COARSE`] and [`FINE`] (load nodes, polynomials per family): the answer
+//! is the finer's, its error estimate [`ESTIMATE_SAFETY`] times their difference (in P2, a and c,
+//! each discretisation at its own lambda under a given load). Measured at nu = 0, mu = 1/2,
+//! lambda = 1.2 (docs/theory.md section 17.8): the true error of the finer is 0.03-0.1 of the
+//! difference in c/a (against the verified MPFR c/a) and 0.04 in P (against 16 nodes, n = 10);
+//! `tests/friction_scene.rs` checks that the claims hold. About 5-7 digits; the f64 rounding of the
+//! least squares (section 17.8: 7-8 digits at n = 10) bounds more.
+//!
+//! `checks`: the difference of c/a from the independent f64 march of
+//! [`crate::adhesion::friction::row_f64`] (piecewise constants on a graded mesh, n = 20) against
+//! twice that method's own n = 10 / 20 difference. The fields q1, q2, psi are not computed for the
+//! row (the load's public interface gives P at lambda only, not P'(eta), which their superposition
+//! needs), nor the inequality checks of the single punch: a warning says so. `--method mpfr` is
+//! refused with its reason: the row's load in MPFR is not built (each of its nodes is an MPFR root
+//! search, about 2 h per answer at 20 digits, section 17.8).
 
-use super::answer_friction::{digits, refuse_method, solvable_parabola, ESTIMATE_SAFETY, FRICTION_NOTE_ROW};
-use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance, StickSlip};
+use super::answer_friction::{digits, solvable_parabola, ESTIMATE_SAFETY, FRICTION_NOTE_ROW};
+use super::render::{AdhesionAnswer, DigitsKind, FrictionCheck, Measured, Provenance, StickSlip};
 use crate::adhesion::friction::row_f64::row_stick_ratio;
-use crate::adhesion::friction::row_load_f64::{march, RowPoint};
+use crate::adhesion::friction::spectral_row::{increment_f64, stick_ratio_f64};
+use crate::adhesion::friction::spectral_row_load::load;
 use crate::error::Error;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow};
 use std::f64::consts::PI;
 
-/// The largest lambda the march covers under a given load.
+/// The largest lambda = pi a/L answered (the load's nodes converge like the distance of full
+/// contact's pole at pi/2; at 1.4 the two node counts still agree to 1e-5, section 17.8).
 pub const LAMBDA_MAX: f64 = 1.5;
 
-/// The two discretisations (stick elements, load intervals).
-const MESHES: [(usize, usize); 2] = [(10, 16), (20, 32)];
+/// The coarser discretisation: (load nodes, polynomials per family of the increment).
+pub const COARSE: (usize, usize) = (8, 6);
 
-/// lambda where the march's load equals `target` (quadratic through three neighbouring points),
-/// None above the march's last load.
-fn lambda_at(points: &[RowPoint], target: f64) -> Option<f64> {
-    let mut pts = vec![RowPoint { lambda: 0.0, stick_ratio: 0.0, load: 0.0 }];
-    pts.extend_from_slice(points);
-    let i = pts.iter().position(|p| p.load >= target)?;
-    let j = i.clamp(1, pts.len() - 2);
-    let (p0, p1, p2) = (pts[j - 1], pts[j], pts[j + 1]);
-    // the inverse function lambda(P) through the three points (Lagrange)
-    let l = |a: RowPoint, b: RowPoint, c: RowPoint| {
-        a.lambda * (target - b.load) * (target - c.load) / ((a.load - b.load) * (a.load - c.load))
-    };
-    Some(l(p0, p1, p2) + l(p1, p0, p2) + l(p2, p0, p1))
+/// The finer discretisation (the answer's). More polynomials do not help in `f64`: at n = 10 .. 14
+/// the least squares' rounding already moves c/a by 1e-7 .. 1e-6 (section 17.8).
+pub const FINE: (usize, usize) = (10, 8);
+
+/// Relative error added to every estimate for the f64 rounding of the least squares: at n = 8
+/// .. 12 the load and c/a move by up to 3e-9 .. 3e-8 (relative) from it alone (nu = 0, mu = 1/2,
+/// lambda = 1.2, `periodic`: 12 nodes with n = 10 and 12 differ by 2.6e-8; section 17.8).
+const ROUNDING: f64 = 3e-8;
+
+/// Relative step of lambda below which [`invert`] stops.
+const LAMBDA_TOL: f64 = 1e-10;
+
+/// The load P(lambda) on the discretisation `(nodes, n)`.
+pub fn row_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), periodic: bool) -> Result<f64, Error> {
+    // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
+    let theta0 = crate::params::sliding::theta_f64(beta * mu);
+    Ok(load(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+}
+
+/// Kuznetsov's frictionless load -pi ln cos(lambda), the shape [`invert`] starts from.
+fn frictionless(lambda: f64) -> f64 {
+    -PI * lambda.cos().ln()
+}
+
+/// lambda in (0, [`LAMBDA_MAX`]] where `p(lambda) = target`, and the size of the last step (not
+/// evaluated). From `start` = (lambda, dP/dlambda) the first step is Newton's with that slope;
+/// without it the search starts at r (-pi ln cos lambda) = target, r = 1.2, and until two loads
+/// are known the next lambda solves that with r the last load over the frictionless one; then
+/// secant steps. `Ok(Err(P))`: the load P at [`LAMBDA_MAX`] is below the target.
+pub fn invert(
+    p: impl Fn(f64) -> Result<f64, Error>,
+    target: f64,
+    start: Option<(f64, f64)>,
+) -> Result<Result<(f64, f64), f64>, Error> {
+    let shape = |r: f64| (-target / (PI * r)).exp().acos().min(LAMBDA_MAX);
+    let mut seen: Vec<(f64, f64)> = Vec::new();
+    let mut lambda = start.map_or(shape(1.2), |s| s.0);
+    for _ in 0..30 {
+        let load = p(lambda)?;
+        if lambda >= LAMBDA_MAX && load < target {
+            return Ok(Err(load));
+        }
+        seen.push((lambda, load));
+        let next = match seen[..] {
+            [.., (l0, p0), (l1, p1)] if p1 != p0 => l1 + (target - p1) * (l1 - l0) / (p1 - p0),
+            _ => match start {
+                Some((_, slope)) => lambda + (target - load) / slope,
+                None => shape(load / frictionless(lambda)),
+            },
+        };
+        let next = next.clamp(0.5 * lambda, LAMBDA_MAX);
+        let step = (next - lambda).abs();
+        lambda = next;
+        if step <= LAMBDA_TOL * lambda {
+            return Ok(Ok((lambda, step)));
+        }
+    }
+    Err(Error::NoConvergence {
+        what: format!(
+            "the periodic row with friction: the secant search for lambda under the load {target} (units E* k \
+             (L/pi)^2) did not settle in 30 steps"
+        ),
+    })
 }
 
 /// The answer of the periodic row of parabolic punches with period `period` and friction
-/// `mu_exact` by `method` (refused unless f64, [`refuse_method`]).
+/// `mu_exact` by `method` (f64; mpfr refused, module doc).
 pub fn row_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
     period: &Exact,
     method: crate::scene::Method,
 ) -> Result<AdhesionAnswer, Error> {
-    refuse_method(method, false)?;
+    refuse_method(method)?;
     let k = solvable_parabola(p)?;
     let f = |x: &Exact, what: &str| {
         crate::numerics::exact::to_f64(x)
@@ -61,56 +124,53 @@ pub fn row_answer(
         (f(p.material().contact_modulus(), "material.contact_modulus")?, f(k, "punch.k")?, f(period, "period")?);
     let periodic = p.periodic_surface();
     let unit = e_star * k * (l / PI).powi(2);
-    // (lambda, P) of each discretisation
-    let mut found = Vec::new();
-    for (n, m) in MESHES {
-        let (lambda, load) = match p.size() {
-            AdhesionSize::HalfWidth(a) => {
-                let lambda = PI * f(a, "half_width")? / l;
-                if !(lambda > 0.0 && lambda <= LAMBDA_MAX) {
-                    return Err(Error::input(
-                        "half_width",
-                        crate::model::readable(a),
-                        format!("0 < lambda = pi a/L <= {LAMBDA_MAX} (the f64 march of the row with friction)"),
-                    ));
-                }
-                (lambda, march(beta, mu, lambda, n, m, periodic, None)?.last().map_or(0.0, |q| q.load))
+    let at = |mesh, lambda| row_load(beta, mu, lambda, mesh, periodic);
+    // (lambda, P) of the two discretisations, and the last unevaluated step of lambda
+    let (coarse, fine, step) = match p.size() {
+        AdhesionSize::HalfWidth(a) => {
+            let lambda = PI * f(a, "half_width")? / l;
+            if !(lambda > 0.0 && lambda <= LAMBDA_MAX) {
+                return Err(Error::input(
+                    "half_width",
+                    crate::model::readable(a),
+                    format!("0 < lambda = pi a/L <= {LAMBDA_MAX} (the row with friction)"),
+                ));
             }
-            AdhesionSize::NormalLoad(p2) => {
-                let target = f(p2, "normal_load")? / unit;
-                let pts = march(beta, mu, LAMBDA_MAX, n, m, periodic, None)?;
-                let lambda = lambda_at(&pts, target).ok_or_else(|| {
-                    Error::input(
-                        "normal_load",
-                        crate::model::readable(p2),
-                        format!(
-                            "a load up to {} (lambda = pi a/L <= {LAMBDA_MAX}, the f64 march of the row with friction)",
-                            crate::numerics::accuracy::readable_f64(pts.last().map_or(0.0, |q| q.load) * unit)
-                        ),
-                    )
-                })?;
-                (lambda, target)
-            }
-        };
-        found.push((lambda, load));
-    }
-    let [(l1, p1), (l2, p2)] = [found[0], found[1]];
-    // c/a on n = 10, 20, 40: the difference of the last two can vanish by chance (paper, nu = 0,
-    // mu = 1/2, lambda = 1.2: 3e-7 where n = 80 differs by 2.3e-6), so the first order is assumed
-    // from the first two as well
-    let g = |n| row_stick_ratio(beta, mu, l2, n, periodic);
-    let (g0, g1, g2) = (g(10)?, g(20)?, g(40)?);
-    let stick_error = (g2 - g1).abs().max(0.5 * (g1 - g0).abs());
-    let rel_size = ESTIMATE_SAFETY * ((l2 - l1).abs() / l2).max((p2 - p1).abs() / p2);
+            ((lambda, at(COARSE, lambda)?), (lambda, at(FINE, lambda)?), 0.0)
+        }
+        AdhesionSize::NormalLoad(p2) => {
+            let target = f(p2, "normal_load")? / unit;
+            let refuse = |top: f64| {
+                Error::input(
+                    "normal_load",
+                    crate::model::readable(p2),
+                    format!(
+                        "a load up to {} (lambda = pi a/L <= {LAMBDA_MAX}, the row with friction)",
+                        crate::numerics::accuracy::readable_f64(top * unit)
+                    ),
+                )
+            };
+            let (lc, _) = invert(|x| at(COARSE, x), target, None)?.map_err(refuse)?;
+            // the fine search starts from the coarse root with the coarse slope there
+            let h = 1e-4 * lc;
+            let slope = (target - at(COARSE, lc - h)?) / h;
+            let (lf, step) = invert(|x| at(FINE, x), target, Some((lc, slope)))?.map_err(refuse)?;
+            ((lc, target), (lf, target), step)
+        }
+    };
+    let ((l1, p1), (l2, p2)) = (coarse, fine);
+    let g = |lambda, n| Ok::<f64, Error>(stick_ratio_f64(beta, mu, lambda, n, periodic)?);
+    let (g1, g2) = (g(l1, COARSE.1)?, g(l2, FINE.1)?);
+    let rel_size = ESTIMATE_SAFETY * (((l2 - l1).abs() + step) / l2).max((p2 - p1).abs() / p2) + ROUNDING;
     let size_digits = digits(rel_size);
     let a = l2 * l / PI;
-    let rel_a = ESTIMATE_SAFETY * (l2 - l1).abs() / l2;
-    let stick_digits = digits(ESTIMATE_SAFETY * stick_error + g2 * rel_a);
+    // c on the scale a: the two discretisations' c = (c/a) lambda L/pi, each at its own lambda
+    let stick_digits = digits(ESTIMATE_SAFETY * ((g2 * l2 - g1 * l1).abs() + g2 * step) / l2 + ROUNDING);
     Ok(AdhesionAnswer {
         provenance: Provenance {
             method: "f64",
             bits: Some(53),
-            nodes: Some(MESHES[1].1),
+            nodes: Some(FINE.0),
             order: None,
             convention: periodic.then_some("periodic"),
         },
@@ -122,15 +182,58 @@ pub fn row_answer(
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::f64(g2 * a, a, stick_digits),
             note: FRICTION_NOTE_ROW,
-            checks: Vec::new(),
+            checks: vec![march_check(beta, mu, l2, periodic, g2)],
         }),
         accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
         fields: Vec::new(),
         tension_zones: None,
         warnings: vec![
-            "the periodic row with friction: q1, q2, psi at the points and the checks are computed for the single \
-             punch only (period = \"inf\"); none printed here"
+            "the periodic row with friction: q1, q2, psi at the points and the inequality checks are computed for \
+             the single punch only (period = \"inf\"); none printed here"
                 .into(),
         ],
     })
+}
+
+/// The refusal of a method other than f64 for the row (module doc).
+fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
+    match method {
+        crate::scene::Method::F64 => Ok(()),
+        crate::scene::Method::Mpfr => Err(Error::input(
+            "--method",
+            "mpfr",
+            "the periodic row with finite friction is solved by the f64 spectral method (5-7 digits): its load in \
+             MPFR with verified digits is not built (every load node is an MPFR root search, about 2 h per answer at \
+             20 digits; docs/theory.md section 17.8); --method f64, or no --method (the single punch, period = \
+             \"inf\", takes --method mpfr)",
+        )),
+        other => Err(Error::input(
+            "--method",
+            other.name(),
+            "the periodic row with finite friction ([adhesion] friction) is solved by the f64 spectral method only so \
+             far (5-7 digits): --method f64, or no --method",
+        )),
+    }
+}
+
+/// c/a's difference from the f64 march (n = 20) against twice the march's n = 10 / 20 difference.
+fn march_check(beta: f64, mu: f64, lambda: f64, periodic: bool, stick_ratio: f64) -> FrictionCheck {
+    let name = "methods_difference_stick_ratio";
+    match (row_stick_ratio(beta, mu, lambda, 10, periodic), row_stick_ratio(beta, mu, lambda, 20, periodic)) {
+        (Ok(m10), Ok(m20)) => FrictionCheck {
+            name,
+            value: Some((m20 - stick_ratio).abs()),
+            error: ESTIMATE_SAFETY * (m20 - m10).abs(),
+            means: "|difference| of c/a between the spectral method (the answer) and the independent f64 march \
+                    (piecewise constants on a graded mesh, n = 20 stick elements); error: twice the march's n = 10 / \
+                    20 difference; agreement is a value below its error"
+                .into(),
+        },
+        (Err(e), _) | (_, Err(e)) => FrictionCheck {
+            name,
+            value: None,
+            error: 0.0,
+            means: format!("not computed: the f64 march does not resolve this case ({e})"),
+        },
+    }
 }

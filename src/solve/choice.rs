@@ -540,7 +540,8 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
         return Ok(fixed(
             m,
             digits_of(m),
-            "finite friction ([adhesion] friction): the f64 method by default (4-5 digits; --method mpfr verifies digits)",
+            "finite friction ([adhesion] friction): the f64 method by default (single punch 4-5 digits, periodic row \
+             6-7; --method mpfr verifies digits of the single punch)",
         ));
     }
     if let Some(d) = forced.digits {

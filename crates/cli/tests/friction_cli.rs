@@ -63,8 +63,8 @@ fn what_friction_does_not_solve_is_refused_naming_it() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--method") && err.contains("--method mpfr") && err.contains("4-5 digits"), "{err}");
     let text = std::fs::read_to_string(format!("{}/{SCENE}", common::ROOT)).unwrap();
-    // a finite period is the periodic row (lambda = pi a/L = 0.39 here), solved; a contact beyond the
-    // march's lambda <= 1.5 is refused naming half_width
+    // a finite period is the periodic row (lambda = pi a/L = 0.39 here), solved by the spectral
+    // method; a contact beyond lambda <= 1.5 is refused naming half_width
     let periodic = scene_file("friction_period.toml", &text.replace("period = \"inf\"", "period = \"8\""));
     let (code, out, err) = run(&["solve", &periodic]);
     assert_eq!(code, 0, "{err}");
@@ -82,13 +82,13 @@ fn what_friction_does_not_solve_is_refused_naming_it() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("shape") && err.contains("circular"), "{err}");
     // the spectral method's cost grows with the digits: more than 16 are refused naming `digits`,
-    // and the periodic row takes f64 only
+    // and the periodic row takes f64 only (its MPFR load is not built: the refusal says so)
     let (code, _, err) = run(&["solve", SCENE, "--method", "mpfr", "--digits", "30"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("digits") && err.contains("30") && err.contains("at most 16"), "{err}");
     let (code, _, err) = run(&["solve", &periodic, "--method", "mpfr"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("--method") && err.contains("periodic row") && err.contains("f64 method only"), "{err}");
+    assert!(err.contains("--method") && err.contains("periodic row") && err.contains("not built"), "{err}");
     let zero = scene_file("friction_zero.toml", &text.replace("friction = \"1/2\"", "friction = \"0\""));
     let (code, _, err) = run(&["solve", &zero]);
     assert_eq!(code, 2, "{err}");

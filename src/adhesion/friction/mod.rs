@@ -24,8 +24,8 @@
 //!
 //! Scenes with `[adhesion] friction` reach these through `solve` (`src/solve/answer_friction.rs`,
 //! `src/solve/answer_friction_row.rs`, docs/theory.md section 17.5): the single punch by f64 or by
-//! the spectral method in MPFR (`--method mpfr`), the row by the f64 march. Not built (issue 32):
-//! the row's load in MPFR with verified digits, and `solve` by the row's spectral method.
+//! the spectral method in MPFR (`--method mpfr`), the row by the spectral method in f64. Not built
+//! (issue 32): the row's load in MPFR with verified digits.
 
 pub mod fields;
 pub mod increment_f64;
