@@ -87,7 +87,7 @@ pub(super) fn jacobian(
         // only the chord iteration's matrix, used in f64 (`solve_f64`); the kernels and their
         // derivatives stay at `prec`.
         let (mut lead, mut trail) = (vec![0f64; 2 * n_nodes], vec![0f64; 2 * n_nodes]);
-        for q in 0..rule.len() {
+        for (q, SizeTerms { size, tilt }) in sizes[i].iter().enumerate() {
             let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
             let ts = Float::with_val(prec, t * s);
             let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
@@ -101,7 +101,6 @@ pub(super) fn jacobian(
                 tphi.as_ref().map(|tp| factors(&inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max))));
             let (one_in, tilt_factor) = varying.as_ref().unwrap_or(&constant);
             let ws = Float::with_val(prec, w * s) * &lambda;
-            let SizeTerms { size, tilt } = &sizes[i][q];
             for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
                 let factor = super::increment::advance_factor(&e, sign, &lambda)?;
                 let d = Float::with_val(prec, &lambda * c) * &factor;
