@@ -24,10 +24,10 @@
 //! chord steps at the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
 //! matter), until the correction falls below 2^-(target bits).
 
-use super::increment::{advance_factor, divided_difference, times_t};
+use super::increment::{advance_factor, divided_difference_series, size_terms, times_t, SizeTerms};
 pub use super::increment::{Increment, LawSetting};
 use crate::growing_contact::error::AdhesionError;
-use crate::growing_contact::kernel::{outside_kernel, Side, TiltedPunch};
+use crate::growing_contact::kernel::Side;
 use crate::numerics::chebyshev;
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsF64;
@@ -41,17 +41,18 @@ struct Ctx {
     lambda_max: Float,
     nodes: Vec<Float>,
     rule: TanhSinh,
+    /// [`size_terms`] of the nodes and the rule.
+    sizes: Vec<Vec<SizeTerms>>,
 }
 
 impl Ctx {
     fn new(setting: &LawSetting, nodes: usize, rule_bits: u32, prec: u32) -> Self {
-        Ctx {
-            prec,
-            inc: Increment::new(setting, prec),
-            lambda_max: setting.lambda_max(prec),
-            nodes: chebyshev::nodes(nodes, prec),
-            rule: TanhSinh::new(rule_bits, 1.0, prec),
-        }
+        let inc = Increment::new(setting, prec);
+        let lambda_max = setting.lambda_max(prec);
+        let nodes = chebyshev::nodes(nodes, prec);
+        let rule = TanhSinh::new(rule_bits, 1.0, prec);
+        let sizes = size_terms(&inc, &lambda_max, &nodes, &rule, prec);
+        Ctx { prec, inc, lambda_max, nodes, rule, sizes }
     }
 }
 
@@ -66,6 +67,8 @@ impl Ctx {
 /// Both ends when `only` is `None`; with `Some(side)` the kernels of that end only (the other
 /// end's integral is then zero; its advance factor is still checked, so the errors are the same):
 /// the fields need one end per point ([`super::fields`]' psi_hat), and the kernels are the cost.
+/// `sizes`: the [`SizeTerms`] of this t at the rule's points when the caller has them
+/// ([`size_terms`]; computed here otherwise, the same values).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn edge_integrals(
     rule: &TanhSinh,
@@ -76,44 +79,49 @@ pub(super) fn edge_integrals(
     t: &Float,
     prec: u32,
     only: Option<Side>,
+    sizes: Option<&[SizeTerms]>,
 ) -> Result<(Complex, Complex), AdhesionError> {
-    let at = |c: &[Float], t: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
     let lambda = Float::with_val(prec, lambda_max * t);
-    let gam_t = at(gam_c, t);
-    let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
     let xt = Float::with_val(prec, t * 2u32) - 1u32;
+    let gam_t = chebyshev::evaluate(gam_c, &xt, prec);
+    // The divided differences of Gam at this t for every rule point: one series in the other
+    // argument ([`divided_difference_series`]), summed per point.
+    let dd_c = divided_difference_series(gam_c, &xt, prec);
+    let (mut acc_b, mut acc_a) = (Complex::new(prec), Complex::new(prec));
     let tphi = (!inc.constant_ratio()).then(|| times_t(phi_c, prec));
     let l2max = Float::with_val(prec, lambda_max.square_ref());
-    let n_const = inc.ratio_at(&Float::with_val(prec, 0));
+    // n = N'(P2(eta)) and its factors, once when the law is linear.
+    let factors = |n: &Float| (Complex::with_val(prec, (1, n)), super::increment::periodic_factor(&inc.beta, n, prec));
+    let constant = factors(&inc.ratio_at(&Float::with_val(prec, 0)));
+    let mut clenshaw = chebyshev::Clenshaw::new(prec);
+    let (mut phi, mut dd) = (Float::new(prec), Float::new(prec));
     for q in 0..rule.len() {
         let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
         let ts = Float::with_val(prec, t * s);
         let eta = Float::with_val(prec, &lambda * s);
-        let phi = at(phi_c, &ts);
-        // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
         let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
-        let dd = divided_difference(gam_c, &xt, &xs, prec) * 2u32;
-        let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd));
+        clenshaw.evaluate_into(phi_c, &xs, &mut phi);
+        // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
+        clenshaw.evaluate_into(&dd_c, &xs, &mut dd);
+        let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd) * 2u32);
         let base = Float::with_val(prec, &lambda * c);
         let weight = Float::with_val(prec, w * s) * &phi;
         // n = N'(P2(eta)) (constant for the linear law).
-        let n = match &tphi {
-            Some(tp) => inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max)),
-            None => n_const.clone(),
-        };
-        let one_in = Complex::with_val(prec, (1, &n));
-        let tilt_factor = super::increment::periodic_factor(&inc.beta, &n, prec);
-        // The tilted punch depends on eta only: once for both ends.
-        let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
+        let varying = tphi.as_ref().map(|tp| factors(&inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max))));
+        let (one_in, tilt_factor) = varying.as_ref().unwrap_or(&constant);
+        // The factors of eta alone and the tilted punch: once for both ends.
+        let own = sizes.is_none().then(|| SizeTerms::new(inc, &eta, prec));
+        let SizeTerms { size, tilt } = own.as_ref().or(sizes.map(|v| &v[q])).expect("one of the two is set");
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
             let factor = advance_factor(&e, sign, &lambda)?;
             if only.is_some_and(|o| o != side) {
                 continue;
             }
             let d = Float::with_val(prec, &base * &factor);
-            let mut k = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec) * &one_in;
-            if let Some(tilt) = &tilt {
-                k += tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &tilt_factor;
+            let point = size.point(side, &d);
+            let mut k = size.kernel(&point) * one_in;
+            if let Some(tilt) = tilt {
+                k += tilt.outside_at(size, &point, &inc.cosh_pi_eps) * tilt_factor;
             }
             *acc += k * &weight;
         }
@@ -131,17 +139,22 @@ fn residual(ctx: &Ctx, state: &[Float]) -> Result<Vec<Float>, AdhesionError> {
     let phi_c = chebyshev::coefficients(&state[..n_nodes], prec);
     let gam_c = chebyshev::coefficients(&state[n_nodes..], prec);
     let pi = Float::with_val(prec, Constant::Pi);
-    let mut out = Vec::with_capacity(2 * n_nodes);
-    for t in &ctx.nodes {
+    // The nodes' integrals are independent: on every CPU ([`crate::numerics::parallel`]).
+    let rows = crate::numerics::parallel::map(&ctx.nodes, |i, t| -> Result<[Float; 2], AdhesionError> {
         let lambda = Float::with_val(prec, &ctx.lambda_max * t);
         let gam_t = chebyshev::evaluate(&gam_c, &(Float::with_val(prec, t * 2u32) - 1u32), prec);
-        let (acc_b, acc_a) = edge_integrals(&ctx.rule, &ctx.inc, &ctx.lambda_max, &phi_c, &gam_c, t, prec, None)?;
-        for (acc, sign) in [(acc_b, 1i32), (acc_a, -1)] {
+        let (acc_b, acc_a) =
+            edge_integrals(&ctx.rule, &ctx.inc, &ctx.lambda_max, &phi_c, &gam_c, t, prec, None, Some(&ctx.sizes[i]))?;
+        // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.
+        let row = |acc: Complex, sign: i32| {
             let v = acc.real().clone() / &lambda;
-            // G(chi_e)/lambda = pi (Gam(t) +- 1) for the parabola.
-            let g = Float::with_val(prec, &gam_t + sign) * &pi;
-            out.push(v - g);
-        }
+            v - Float::with_val(prec, &gam_t + sign) * &pi
+        };
+        Ok([row(acc_b, 1), row(acc_a, -1)])
+    });
+    let mut out = Vec::with_capacity(2 * n_nodes);
+    for pair in rows {
+        out.extend(pair?);
     }
     Ok(out)
 }
@@ -240,7 +253,7 @@ fn solve_with(
     prec: u32,
 ) -> Result<LawCollocation, AdhesionError> {
     let closed_form = |ctx: &Ctx, state: &[Float]| {
-        super::jacobian::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, state, ctx.prec)
+        super::jacobian::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &ctx.sizes, state, ctx.prec)
     };
     let mut jac = closed_form(low, &state64)?;
     if warm.is_none() {
@@ -424,9 +437,16 @@ mod tests {
                 .collect();
             let h = 1e-12;
             let mut worst = 0f64;
-            let exact =
-                super::super::jacobian::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &state, prec)
-                    .unwrap();
+            let exact = super::super::jacobian::jacobian(
+                &ctx.rule,
+                &ctx.inc,
+                &ctx.lambda_max,
+                &ctx.nodes,
+                &ctx.sizes,
+                &state,
+                prec,
+            )
+            .unwrap();
             let scale = exact.iter().flatten().fold(0f64, |m, v| m.max(v.abs()));
             for j in 0..2 * nodes {
                 let (mut plus, mut minus) = (state.clone(), state.clone());

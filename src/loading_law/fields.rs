@@ -15,7 +15,7 @@
 //! (accurate as eta -> eta_x) and the integrals taken by tanh-sinh.
 
 use super::collocation::LawCollocation;
-use super::increment::divided_difference;
+use super::increment::{divided_difference, divided_difference_series};
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel::{flat_punch_stress, Side, TiltedPunch};
 use crate::numerics::chebyshev;
@@ -35,14 +35,14 @@ impl LawCollocation {
         self.at(&self.gam, &t) * eta
     }
 
-    /// (gamma(eta) - gamma(eta0))/(eta - eta0), accurate as eta -> eta0.
-    fn centre_slope(&self, eta: &Float, eta0: &Float) -> Float {
+    /// (gamma(eta) - gamma(eta0))/(eta - eta0), accurate as eta -> eta0, with `dd0` the
+    /// [`divided_difference_series`] of Gam at x0 = 2 eta0/Lambda - 1.
+    fn centre_slope(&self, eta: &Float, eta0: &Float, dd0: &[Float]) -> Float {
         let p = self.prec;
-        let (t, t0) = (Float::with_val(p, eta / &self.lambda_max), Float::with_val(p, eta0 / &self.lambda_max));
+        let t = Float::with_val(p, eta / &self.lambda_max);
         // eta Gam(t) - eta0 Gam(t0) = (eta - eta0) Gam(t) + eta0 (Gam(t) - Gam(t0)).
         let x = Float::with_val(p, &t * 2u32) - 1u32;
-        let x0 = Float::with_val(p, &t0 * 2u32) - 1u32;
-        let dd = divided_difference(&self.gam, &x, &x0, p) * 2u32 / &self.lambda_max;
+        let dd = chebyshev::evaluate(dd0, &x, p) * 2u32 / &self.lambda_max;
         self.at(&self.gam, &t) + dd * eta0
     }
 
@@ -97,6 +97,7 @@ impl LawCollocation {
             t,
             self.prec,
             Some(side),
+            None,
         )?;
         Ok(if side == Side::Right { b } else { a }.imag().clone())
     }
@@ -122,10 +123,9 @@ impl LawCollocation {
             what: "loading-law fields",
             reason: format!("the Gauss-Legendre rule of phi: {e}"),
         })?;
-        // eta = eta_x (1 + u)/2, d eta = eta_x/2 du.
+        // eta = eta_x (1 + u)/2, d eta = eta_x/2 du; the nodes on every CPU.
         let t_x = Float::with_val(p, &eta_x / &self.lambda_max);
-        let mut acc = Float::with_val(p, 0);
-        for (u, w) in legendre.nodes.iter().zip(&legendre.weights) {
+        let terms = crate::numerics::parallel::map(&legendre.nodes, |k, u| -> Result<Float, AdhesionError> {
             let t = Float::with_val(p, Float::with_val(p, u + 1u32) * &t_x) / 2u32;
             let psi = self.psi_hat_at_entry(side, &t, rule)?;
             // gamma'(eta) = Gam(t) + t Gam'(t); Gam' in t is twice the derivative in x = 2 t - 1
@@ -133,7 +133,11 @@ impl LawCollocation {
             let x = Float::with_val(p, &t * 2u32) - 1u32;
             let slope =
                 Float::with_val(p, &t * divided_difference(&self.gam, &x, &x, p)) * 2u32 + self.at(&self.gam, &t);
-            acc += psi * (slope + sign) * w;
+            Ok(psi * (slope + sign) * &legendre.weights[k])
+        });
+        let mut acc = Float::with_val(p, 0);
+        for term in terms {
+            acc += term?;
         }
         Ok(acc * eta_x / 2u32)
     }
@@ -148,13 +152,15 @@ impl LawCollocation {
             return Complex::new(p);
         }
         let inc = &self.inc;
+        let x0 = Float::with_val(p, Float::with_val(p, &eta_x / &self.lambda_max) * 2u32) - 1u32;
+        let dd0 = divided_difference_series(&self.gam, &x0, p);
         let mut acc = Complex::new(p);
         for q in 0..rule.len() {
             let (s, w) = (&rule.s[q], &rule.w[q]);
             let h = Float::with_val(p, &span * s);
             let eta = Float::with_val(p, &eta_x + &h);
             // Distance to the end that passed x: (eta - eta_x)(1 +- gamma slope).
-            let slope = self.centre_slope(&eta, &eta_x);
+            let slope = self.centre_slope(&eta, &eta_x, &dd0);
             let near = match side {
                 Side::Right => Float::with_val(p, &h * Float::with_val(p, &slope + 1u32)),
                 Side::Left => Float::with_val(p, &h * Float::with_val(p, 1u32 - &slope)),

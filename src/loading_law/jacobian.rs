@@ -16,38 +16,55 @@
 //! n = N'(P2) on Phi is left out (a chord Jacobian; the iteration still converges, more slowly
 //! when N'' P2 is not small). Checked against finite differences in the tests.
 
-use super::increment::{divided_difference, Increment};
+use super::increment::{divided_difference_series, Increment, SizeTerms};
 use crate::growing_contact::error::AdhesionError;
-use crate::growing_contact::kernel::{outside_kernel, outside_kernel_log_derivative, Side, TiltedPunch};
+use crate::growing_contact::kernel::Side;
 use crate::numerics::chebyshev;
 use crate::numerics::tanh_sinh::TanhSinh;
 use rug::float::Constant;
 use rug::{Complex, Float};
 
-/// The cardinal functions l_j(y) of `nodes` (first-kind Chebyshev points on [0, 1]) at y, by the
-/// barycentric formula (exact 1 at a node).
-fn cardinals(nodes: &[Float], y: &Float, prec: u32) -> Vec<Float> {
+/// The barycentric weights w_j = (-1)^j sqrt(t_j (1 - t_j)) of `nodes` (first-kind Chebyshev
+/// points on [0, 1]).
+fn barycentric_weights(nodes: &[Float], prec: u32) -> Vec<Float> {
+    nodes
+        .iter()
+        .enumerate()
+        .map(|(j, t)| {
+            let w = Float::with_val(prec, t * Float::with_val(prec, 1u32 - t)).sqrt();
+            if j % 2 == 0 {
+                w
+            } else {
+                -w
+            }
+        })
+        .collect()
+}
+
+/// The cardinal functions l_j(y) of `nodes` with barycentric `weights` at y, by the barycentric
+/// formula (exact 1 at a node).
+fn cardinals(nodes: &[Float], weights: &[Float], y: &Float, prec: u32) -> Vec<Float> {
     let mut terms = Vec::with_capacity(nodes.len());
-    for (j, t) in nodes.iter().enumerate() {
+    for (j, (t, w)) in nodes.iter().zip(weights).enumerate() {
         let diff = Float::with_val(prec, y - t);
         if diff.is_zero() {
             return (0..nodes.len()).map(|k| Float::with_val(prec, u32::from(k == j))).collect();
         }
-        let w = Float::with_val(prec, t * Float::with_val(prec, 1u32 - t)).sqrt();
-        let w = if j % 2 == 0 { w } else { -w };
-        terms.push(w / diff);
+        terms.push(Float::with_val(prec, w / diff));
     }
     let total = terms.iter().fold(Float::with_val(prec, 0), |acc, v| acc + v);
     terms.into_iter().map(|v| v / &total).collect()
 }
 
 /// J (rows: leading then trailing residual per node; columns: Phi values then Gam values) at
-/// `state` (Phi values, then Gam values at `nodes`), on `rule`, at `prec` bits.
+/// `state` (Phi values, then Gam values at `nodes`), on `rule` (`sizes` its
+/// [`super::increment::size_terms`]), at `prec` bits; the nodes' rows on every CPU.
 pub(super) fn jacobian(
     rule: &TanhSinh,
     inc: &Increment,
     lambda_max: &Float,
     nodes: &[Float],
+    sizes: &[Vec<SizeTerms>],
     state: &[Float],
     prec: u32,
 ) -> Result<Vec<Vec<f64>>, AdhesionError> {
@@ -58,44 +75,41 @@ pub(super) fn jacobian(
     let mut jac = vec![vec![0.0; 2 * n_nodes]; 2 * n_nodes];
     let tphi = (!inc.constant_ratio()).then(|| super::increment::times_t(&phi_c, prec));
     let l2max = Float::with_val(prec, lambda_max.square_ref());
-    let n_const = inc.ratio_at(&Float::with_val(prec, 0));
-    for (i, t) in nodes.iter().enumerate() {
+    let weights = barycentric_weights(nodes, prec);
+    let factors = |n: &Float| (Complex::with_val(prec, (1, n)), super::increment::periodic_factor(&inc.beta, n, prec));
+    let constant = factors(&inc.ratio_at(&Float::with_val(prec, 0)));
+    let rows = crate::numerics::parallel::map(nodes, |i, t| -> Result<[Vec<f64>; 2], AdhesionError> {
         let lambda = Float::with_val(prec, lambda_max * t);
         let xt = Float::with_val(prec, t * 2u32) - 1u32;
+        let dd_c = divided_difference_series(&gam_c, &xt, prec);
         let gam_t = &state[n_nodes + i];
         // The rows (real parts: the residual is Re of the edge integral) accumulate in f64: J is
         // only the chord iteration's matrix, used in f64 (`solve_f64`); the kernels and their
         // derivatives stay at `prec`.
         let (mut lead, mut trail) = (vec![0f64; 2 * n_nodes], vec![0f64; 2 * n_nodes]);
-        for q in 0..rule.len() {
+        for (q, SizeTerms { size, tilt }) in sizes[i].iter().enumerate() {
             let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
             let ts = Float::with_val(prec, t * s);
-            let eta = Float::with_val(prec, &lambda * s);
             let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
             let phi = chebyshev::evaluate(&phi_c, &xs, prec);
-            let dd = divided_difference(&gam_c, &xt, &xs, prec) * 2u32;
+            let dd = chebyshev::evaluate(&dd_c, &xs, prec) * 2u32;
             let e = Float::with_val(prec, gam_t + Float::with_val(prec, &ts * &dd));
-            let ell: Vec<f64> = cardinals(nodes, &ts, prec).iter().map(Float::to_f64).collect();
+            let ell: Vec<f64> = cardinals(nodes, &weights, &ts, prec).iter().map(Float::to_f64).collect();
             let rest: f64 = ell.iter().enumerate().filter(|(k, _)| *k != i).map(|(_, v)| v).sum();
             let (s64, c64) = (s.to_f64(), c.to_f64());
-            let n = match &tphi {
-                Some(tp) => inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max)),
-                None => n_const.clone(),
-            };
-            let one_in = Complex::with_val(prec, (1, &n));
-            let tilt_factor = super::increment::periodic_factor(&inc.beta, &n, prec);
+            let varying =
+                tphi.as_ref().map(|tp| factors(&inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max))));
+            let (one_in, tilt_factor) = varying.as_ref().unwrap_or(&constant);
             let ws = Float::with_val(prec, w * s) * &lambda;
-            let tilt = inc.periodic.then(|| TiltedPunch::rotation(&eta, &inc.eps, &inc.cosh_pi_eps, prec));
             for (row, side, sign) in [(&mut lead, Side::Right, 1i32), (&mut trail, Side::Left, -1)] {
                 let factor = super::increment::advance_factor(&e, sign, &lambda)?;
                 let d = Float::with_val(prec, &lambda * c) * &factor;
-                let kernel = outside_kernel(inc.row, side, &d, &eta, &inc.eps, prec);
-                let log_d = outside_kernel_log_derivative(inc.row, side, &d, &eta, &inc.eps, prec);
-                let mut k = Complex::with_val(prec, &kernel * &one_in);
-                let mut dk = Complex::with_val(prec, &k * &log_d);
-                if let Some(tilt) = &tilt {
-                    let value = tilt.outside(side, &d, &eta, &inc.eps, &inc.cosh_pi_eps, prec) * &tilt_factor;
-                    let log_t = tilt.outside_log_derivative(side, &d, &eta, &inc.eps, prec);
+                let point = size.point(side, &d);
+                let mut k = size.kernel(&point) * one_in;
+                let mut dk = Complex::with_val(prec, &k * &size.kernel_log_derivative(&point));
+                if let Some(tilt) = tilt {
+                    let value = tilt.outside_at(size, &point, &inc.cosh_pi_eps) * tilt_factor;
+                    let log_t = tilt.outside_log_derivative_at(size, &point);
                     dk += Complex::with_val(prec, &value * &log_t);
                     k += value;
                 }
@@ -110,11 +124,12 @@ pub(super) fn jacobian(
                 }
             }
         }
+        Ok([lead, trail])
+    });
+    for (i, pair) in rows.into_iter().enumerate() {
         // The rule's integral runs over s in (0, 1): d eta = lambda ds, already in ws.
-        for (r, row) in [lead, trail].iter().enumerate() {
-            for (j, v) in row.iter().enumerate() {
-                jac[2 * i + r][j] = *v;
-            }
+        for (r, row) in pair?.into_iter().enumerate() {
+            jac[2 * i + r] = row;
             jac[2 * i + r][n_nodes + i] -= pi.to_f64();
         }
     }

@@ -11,6 +11,7 @@ pub(crate) mod fixed_float;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
 pub mod pade;
+pub mod parallel;
 pub mod precision;
 pub mod real_series;
 pub mod roots;

@@ -26,6 +26,19 @@ pub fn precision_for(digits: u32) -> u32 {
     bits_for_digits(digits) + SOLVER_GUARD_BITS
 }
 
+/// A working precision from `wanted` down to `least` bits that MPFR serves on fewer limbs: its
+/// fast paths for n 64-bit limbs (`mpfr_mul_2`, `mpfr_add1sp2`, ...) take precisions below
+/// 64 n, so the largest such precision in [`least`, `wanted`] when there is one below `wanted`'s
+/// limb count, else `wanted` (the loading law's second run: 131 -> 127 bits at 20 digits).
+pub(crate) fn below_limb_boundary(least: u32, wanted: u32) -> u32 {
+    let fewer = (wanted.saturating_sub(1) / 64) * 64;
+    if fewer > least {
+        fewer - 1
+    } else {
+        wanted
+    }
+}
+
 /// ceil(digits log2 10): the bits that hold `digits` decimal digits.
 pub(crate) fn bits_for_digits(digits: u32) -> u32 {
     (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32
@@ -34,6 +47,17 @@ pub(crate) fn bits_for_digits(digits: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// 131 bits (3 limbs) with 123 needed become 127 (2 limbs); 107 stays (already 2 limbs); 140
+    /// with 140 needed stays; 64 (one limb) stays.
+    #[test]
+    fn precision_below_a_limb_boundary() {
+        assert_eq!(below_limb_boundary(123, 131), 127);
+        assert_eq!(below_limb_boundary(100, 107), 107);
+        assert_eq!(below_limb_boundary(140, 140), 140);
+        assert_eq!(below_limb_boundary(128, 131), 131);
+        assert_eq!(below_limb_boundary(60, 64), 64);
+    }
 
     #[test]
     fn bits_for_thirty_digits() {
