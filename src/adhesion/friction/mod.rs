@@ -20,12 +20,13 @@
 //! conventions; [`row_load_f64`]: the load marched in lambda on two discretisations), and by the
 //! spectral method in the tangent variable ([`spectral_row`]: the increment and c/a in `f64` and
 //! MPFR with verified digits; [`spectral_row_load`]: the load from the Volterra equation (17.11)
-//! at high order, generic; checks in `spectral_row_tests.rs`).
+//! at high order, generic, and in MPFR with verified digits; [`spectral_row_slope`]: the outside
+//! slope of one increment from a stored table; checks in `spectral_row_tests.rs`).
 //!
 //! Scenes with `[adhesion] friction` reach these through `solve` (`src/solve/answer_friction.rs`,
 //! `src/solve/answer_friction_row.rs`, docs/theory.md section 17.5): the single punch by f64 or by
-//! the spectral method in MPFR (`--method mpfr`), the row by the spectral method in f64. Not built
-//! (issue 32): the row's load in MPFR with verified digits.
+//! the spectral method in MPFR (`--method mpfr`), the row by the spectral method in f64 (its
+//! verified MPFR load, `spectral_row_load::verified_mpfr`, is not yet reached through `solve`).
 
 pub mod fields;
 pub mod increment_f64;
@@ -39,6 +40,7 @@ pub mod spectral;
 pub mod spectral_punch;
 pub mod spectral_row;
 pub mod spectral_row_load;
+pub mod spectral_row_slope;
 pub mod state_f64;
 
 #[cfg(test)]

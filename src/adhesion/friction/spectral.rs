@@ -401,17 +401,15 @@ impl<T: Real> Spectral<T> {
     /// (1/pi) int_-1^1 s2(T')/(t - T') dT' at t > 1, given by `beyond` = t - 1 (> 0): the outside
     /// slope H\[s2\](t) of a solved increment (the row's W of (17.11) up to the factor 1/tau).
     pub fn outside_slope(&self, inc: &SpectralIncrement<T>, beyond: &T) -> T {
-        let (n, gamma) = (self.n, &inc.gamma);
+        let gamma = &inc.gamma;
         let zero = gamma.lit(0.0);
         let one = gamma.lit(1.0);
-        let c = &inc.coeffs;
         let t = one.clone() + beyond.clone();
         let mut sum = zero.clone();
         let len = gamma.lit(2.0) * gamma.clone();
         let near = one.clone() - gamma.clone() + beyond.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, Some(&near)), |d_a, d_b, w| {
-            let (v2, _) = self.stick_values(gamma, d_a, d_b);
-            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[j].clone() * v2[j].clone());
+            let s2 = self.normal_density(inc, false, d_a, d_b);
             sum = sum.clone() + w.clone() * s2 / (near.clone() + d_b.clone());
         });
         let len = one.clone() - gamma.clone();
@@ -419,13 +417,31 @@ impl<T: Real> Spectral<T> {
             if *d_b == zero || *w == zero {
                 return; // a tail node underflowed (f64, beyond below 1e-20): it adds nothing
             }
-            let v = self.slip_values(gamma, d_a, d_b);
-            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[4 * n + j].clone() * v[j].clone());
+            let s2 = self.normal_density(inc, true, d_a, d_b);
             let eta = gamma.clone() + d_a.clone();
             let k = one.clone() / (beyond.clone() + d_b.clone()) + one.clone() / (t.clone() + eta);
             sum = sum.clone() + w.clone() * s2 * k;
         });
         sum / gamma.pi()
+    }
+
+    /// s2 of a solved increment at a point of the stick zone (`slip` false; d_a = x + gamma,
+    /// d_b = gamma - x) or of the right slip zone (`slip` true; d_a = x - gamma, d_b = 1 - x).
+    pub fn normal_density(&self, inc: &SpectralIncrement<T>, slip: bool, d_a: &T, d_b: &T) -> T {
+        let (n, gamma, c) = (self.n, &inc.gamma, &inc.coeffs);
+        let zero = gamma.lit(0.0);
+        if slip {
+            let v = self.slip_values(gamma, d_a, d_b);
+            (0..2 * n).fold(zero, |acc, j| acc + c[4 * n + j].clone() * v[j].clone())
+        } else {
+            let (v2, _) = self.stick_values(gamma, d_a, d_b);
+            (0..2 * n).fold(zero, |acc, j| acc + c[j].clone() * v2[j].clone())
+        }
+    }
+
+    /// The tanh-sinh rule of the method's integrals.
+    pub fn rule(&self) -> &DoubleExp<T> {
+        &self.rule
     }
 
     /// The working precision (bits).

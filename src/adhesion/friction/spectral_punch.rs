@@ -114,6 +114,26 @@ pub fn stick_ratio_mpfr(
 /// The increment at the zero of the stick-edge defect of `sp` in MPFR, by the secant method from
 /// `start` (within about 1e-6 of the root) to a step below 10^-`digits`.
 pub fn root_mpfr(sp: &Spectral<Mp>, start: f64, digits: u32) -> Result<SpectralIncrement<Mp>, AdhesionError> {
+    secant(sp, start, digits, false)
+}
+
+/// As [`root_mpfr`], but returns the last solved iterate once the next secant step (its error) is
+/// below 10^-`digits`, one solve earlier: for a quantity stationary in gamma at the root (C_P,
+/// the row's outside slope: docs/theory.md section 17.8), whose error is then that step squared.
+pub fn root_mpfr_stationary(
+    sp: &Spectral<Mp>,
+    start: f64,
+    digits: u32,
+) -> Result<SpectralIncrement<Mp>, AdhesionError> {
+    secant(sp, start, digits, true)
+}
+
+fn secant(
+    sp: &Spectral<Mp>,
+    start: f64,
+    digits: u32,
+    stationary: bool,
+) -> Result<SpectralIncrement<Mp>, AdhesionError> {
     let prec = sp.bits();
     let solve = |g: &Mp| sp.solve(g).ok_or_else(|| singular(g.to_f64()));
     let mut g0 = Mp::new(prec, start);
@@ -132,6 +152,9 @@ pub fn root_mpfr(sp: &Spectral<Mp>, start: f64, digits: u32) -> Result<SpectralI
             return Err(not_converged(format!("the secant step left 0 < c/a < 1 ({})", g2.to_f64())));
         }
         let step = (g2.clone() - g1.clone()).abs();
+        if stationary && step < tol {
+            return Ok(inc1);
+        }
         (g0, d0) = (g1, d1);
         g1 = g2;
         inc1 = solve(&g1)?;

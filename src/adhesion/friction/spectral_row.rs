@@ -29,7 +29,7 @@ use rug::Float;
 
 use super::real::{Mp, Real};
 use super::spectral::{Spectral, SpectralIncrement};
-use super::spectral_punch::{root_f64, root_mpfr};
+use super::spectral_punch::{root_f64, root_mpfr, root_mpfr_stationary};
 use crate::growing_contact::error::AdhesionError;
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits};
 
@@ -104,10 +104,22 @@ pub fn stick_ratio_f64(beta: f64, mu: f64, lambda: f64, n: usize, periodic: bool
 /// The row's increment at its stick ratio in MPFR (`prec` bits, `n` polynomials per family), by
 /// the secant method from the stick half-width `start` in T to a step below 10^-`digits`.
 pub fn increment_mpfr(
+    args: (&Float, &Float, &Float),
+    periodic: bool,
+    knobs: (usize, u32, u32),
+    start: f64,
+) -> Result<(Spectral<Mp>, SpectralIncrement<Mp>), AdhesionError> {
+    increment_mpfr_root(args, periodic, knobs, start, false)
+}
+
+/// As [`increment_mpfr`]; with `stationary` the stick edge only to about 10^-`digits`
+/// ([`root_mpfr_stationary`]: enough for the outside slope, stationary in it, to 10^-2 `digits`).
+pub fn increment_mpfr_root(
     (beta, mu, lambda): (&Float, &Float, &Float),
     periodic: bool,
     (n, prec, digits): (usize, u32, u32),
     start: f64,
+    stationary: bool,
 ) -> Result<(Spectral<Mp>, SpectralIncrement<Mp>), AdhesionError> {
     check_lambda(lambda.to_f64())?;
     let at = |x: &Float| Mp(Float::with_val(prec, x));
@@ -115,6 +127,8 @@ pub fn increment_mpfr(
     let sp = Spectral::row(at(beta), at(mu), n, tau, periodic);
     let inc = if beta.is_zero() {
         sp.solve(&Mp::new(prec, 0.5)).ok_or_else(|| singular(lambda.to_f64()))?
+    } else if stationary {
+        root_mpfr_stationary(&sp, start, digits)?
     } else {
         root_mpfr(&sp, start, digits)?
     };

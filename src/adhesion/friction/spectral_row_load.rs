@@ -1,6 +1,7 @@
 //! The load of the periodic row with finite friction from the edge-slope Volterra equation at high
 //! order (docs/theory.md section 17.8, (17.11)), the increments by the spectral method of
-//! [`super::spectral_row`], generic over `f64` and MPFR.
+//! [`super::spectral_row`], generic over `f64` and MPFR; [`verified_mpfr`]: P and c/a in MPFR with
+//! verified digits.
 //!
 //! Units L = pi, E* = k = 1 (P2 = E* k (L/pi)^2 P). With W(chi, eta) the outside slope of the unit
 //! increment at contact eta, the load P(lambda) solves
@@ -8,31 +9,76 @@
 //! Discretisation: P'(eta) = tan(eta) F(eta), F the polynomial through its values at the N
 //! Chebyshev points eta_j of (0, lambda) (barycentric form), collocated at chi_i = eta_i: N
 //! equations, solved by least squares (square). The factor tan(eta) carries the pole of P' at full
-//! contact eta = pi/2 (Kuznetsov: F = pi; with eta F the nodes converge like 2.9^-N at
-//! lambda = 1.2, the pole's Bernstein ellipse). The kernel is never needed at a new contact: in the tangent
+//! contact eta = pi/2 (Kuznetsov: F = pi; measured at lambda = 1.2, `paper`: successive N differ by
+//! a factor 5.2 per node). The kernel is never needed at a new contact: in the tangent
 //! variable W(chi, eta) = G(tan(chi)/tan(eta), eta)/tan(eta), G(T, eta) = H\[S2^eta\](T), whose
 //! singular point T = 1 does not move with eta, so G is interpolated in eta at fixed T from the
 //! increments solved at the same N points (each at its own stick edge), as G cos(eta), which
 //! has no pole at eta = pi/2 (Kuznetsov: G cos(eta) = 1/(pi sqrt(T^2 - 1)), independent of eta). The integral over eta is
 //! tanh-sinh on (0, chi_i) ([`DoubleExp`], end singularity (chi - eta)^(-1/2 + theta0)), and
-//! P(lambda) = int_0^lambda tan(eta) F(eta) d eta by the same rule. The stick ratio at lambda is solved
-//! there ([`super::spectral_row`]). Verified digits come from two runs (N and n raised).
+//! P(lambda) = int_0^lambda tan(eta) F(eta) d eta by the same rule; G of each increment comes from
+//! its [`SlopeTable`] (its density stored once: N^2 times the rule's nodes slopes per load). The
+//! increments with their tables, and the collocation rows, are computed on all CPUs
+//! (`std::thread::scope`).
+//!
+//! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/0.7 + 2 nodes, n = digits + 4
+//! polynomials per family, B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in
+//! [`super::spectral_row`]) and (N + 3, n + 4, B + 24); the printed digits are where they agree
+//! (P relative, c/a on the scale 1). Each node's stick edge is a secant search from the `f64` root
+//! stopped once its error is below 10^-(digits/2 + 3) ([`root_mpfr_stationary`], three solves): the
+//! outside slope is stationary in the stick edge at its root (`spectral_row_tests.rs`,
+//! `outside_slope_is_stationary_in_the_stick_edge`), so its error is that squared. c/a at lambda
+//! is a full root ([`increment_mpfr`]). beta = 0 takes N = 2 and 4 (F constant).
+//! Cost (section 17.8): one MPFR increment solve is most of a node (profile: MPFR arithmetic and
+//! its allocations in the collocation rows' quadrature); 20 digits need about 30 nodes at
+//! n = 24, 200 bits, about 90 solves per run: not run.
+//!
+//! [`root_mpfr_stationary`]: super::spectral_punch::root_mpfr_stationary
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+use rug::Float;
 
 use super::quadrature::{graded, least_squares, DoubleExp};
-use super::real::Real;
+use super::real::{Mp, Real};
 use super::spectral::{Spectral, SpectralIncrement};
+use super::spectral_row::{increment_f64, increment_mpfr, increment_mpfr_root, physical_ratio};
+use super::spectral_row_slope::SlopeTable;
 use crate::growing_contact::error::AdhesionError;
+use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits};
 
 /// The increment at contact eta: the method and the solved increment at its stick edge.
 pub type RowIncrement<T> = (Spectral<T>, SpectralIncrement<T>);
 
+/// `f` of every item, on as many threads as the machine has CPUs (at most one per item), in order.
+fn parallel_map<I: Sync, O: Send>(items: &[I], f: impl Fn(&I) -> O + Sync) -> Vec<O> {
+    let cpus = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let threads = cpus.clamp(1, items.len().max(1));
+    let next = AtomicUsize::new(0);
+    let out: Mutex<Vec<Option<O>>> = Mutex::new((0..items.len()).map(|_| None).collect());
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(item) = items.get(i) else { break };
+                let o = f(item);
+                out.lock().unwrap_or_else(std::sync::PoisonError::into_inner)[i] = Some(o);
+            });
+        }
+    });
+    // every index below the length was taken by one thread, which stored its result
+    out.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner).into_iter().flatten().collect()
+}
+
 /// P(lambda) = P2/(E* k (L/pi)^2) on `nodes` Chebyshev points, the increments at contact eta
-/// from `increment_at` (with the exponent theta0 = atan(beta mu)/pi for the quadrature).
-pub fn load<T: Real>(
+/// from `increment_at` (with the exponent theta0 = atan(beta mu)/pi for the quadrature). The
+/// increments, their slope tables and the collocation rows are computed on all CPUs.
+pub fn load<T: Real + Send + Sync>(
     lambda: &T,
     theta0: f64,
     nodes: usize,
-    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError>,
+    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<T, AdhesionError> {
     let one = lambda.lit(1.0);
     let zero = lambda.lit(0.0);
@@ -48,7 +94,14 @@ pub fn load<T: Real>(
         let sign = if j % 2 == 0 { one.clone() } else { -one.clone() };
         bary.push(sign * th.sin());
     }
-    let incs: Vec<RowIncrement<T>> = eta.iter().map(&increment_at).collect::<Result<_, _>>()?;
+    let incs: Vec<(RowIncrement<T>, SlopeTable<T>)> = parallel_map(&eta, |e| {
+        increment_at(e).map(|(sp, inc)| {
+            let table = SlopeTable::new(&sp, &inc);
+            ((sp, inc), table)
+        })
+    })
+    .into_iter()
+    .collect::<Result<_, _>>()?;
     let cosines: Vec<T> = eta.iter().map(|e| e.cos()).collect();
     // the Lagrange basis at e
     let basis = |e: &T| -> Vec<T> {
@@ -60,9 +113,7 @@ pub fn load<T: Real>(
         terms.into_iter().map(|t| t / sum.clone()).collect()
     };
     let rule = DoubleExp::new(&one, 0.5 + theta0);
-    let mut rows = Vec::with_capacity(nodes);
-    let mut rhs = Vec::with_capacity(nodes);
-    for chi in &eta {
+    let rows = parallel_map(&eta, |chi| {
         let mut row = vec![zero.clone(); nodes];
         rule.sweep(chi, &graded(&zero, chi, None, None), |d_a, d_b, w| {
             let e = d_a.clone();
@@ -73,8 +124,9 @@ pub fn load<T: Real>(
                 return;
             }
             let l = basis(&e);
-            let g = incs.iter().zip(&l).zip(&cosines).fold(zero.clone(), |acc, (((sp, inc), lj), cj)| {
-                acc + lj.clone() * cj.clone() * sp.outside_slope(inc, &beyond)
+            let g = incs.iter().zip(&l).zip(&cosines).fold(zero.clone(), |acc, ((((sp, inc), table), lj), cj)| {
+                let slope = table.slope(&beyond).unwrap_or_else(|| sp.outside_slope(inc, &beyond));
+                acc + lj.clone() * cj.clone() * slope
             });
             // W tan(eta) = G = (G cos(eta))/cos(eta), P' = tan(eta) F
             let k = w.clone() * g / e.cos();
@@ -82,9 +134,9 @@ pub fn load<T: Real>(
                 *r = r.clone() + k.clone() * lj.clone();
             }
         });
-        rows.push(row);
-        rhs.push(chi.clone());
-    }
+        row
+    });
+    let rhs = eta.clone();
     let f = least_squares(rows, rhs).ok_or_else(|| AdhesionError::NotConverged {
         what: "periodic-row load (spectral Volterra collocation)",
         reason: "the collocation system is singular".into(),
@@ -96,4 +148,88 @@ pub fn load<T: Real>(
         p = p.clone() + w.clone() * d_a.sin() / d_a.cos() * fe;
     });
     Ok(p)
+}
+
+/// The row's load P and stick ratio c/a at one lambda with verified digits ([`verified_mpfr`]).
+#[derive(Debug, Clone)]
+pub struct VerifiedRowLoad {
+    /// P(lambda) = P2/(E* k (L/pi)^2) (the finer run).
+    pub load: Float,
+    /// Digits where the two runs agree on P (relative).
+    pub load_digits: f64,
+    /// c/a at lambda (the finer run).
+    pub stick_ratio: Float,
+    /// Digits where the two runs agree on c/a (scale 1).
+    pub stick_digits: f64,
+    /// The `f64` run of the same method: P on 12 nodes, c/a with n = 10.
+    pub load_f64: f64,
+    /// See [`VerifiedRowLoad::load_f64`].
+    pub stick_ratio_f64: f64,
+    /// (Chebyshev nodes in eta, polynomials per family, bits) of the two runs.
+    pub runs: [(usize, usize, u32); 2],
+    /// Wall-clock seconds of the two runs.
+    pub seconds: [f64; 2],
+}
+
+/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc); the finer run adds
+/// (3, 4, 24). beta = 0 needs 2 nodes (F is the constant pi, section 17.8).
+pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
+    // measured at lambda = 1.2, `paper`, f64: successive node counts differ by 5.4e-4, 2.0e-5,
+    // 8.2e-7, 3.0e-8, 1.1e-9 from N = 4 to 14, a factor 5.2 (10^0.72) per node (a heuristic
+    // rate: the second run checks it)
+    let nodes = if incompressible { 2 } else { (digits as f64 / 0.7).ceil() as usize + 2 };
+    let n = digits as usize + 4;
+    let bits = (3.33 * (digits as f64 + 4.0 + 1.2 * n as f64) + 16.0).ceil() as u32;
+    (nodes, n, bits)
+}
+
+/// P(lambda) and c/a of the row in MPFR with verified digits (module doc): two runs, the
+/// knobs of [`knobs`] and (nodes + 4, n + 6, bits + 32); `beta`, `mu`, `lambda` exact values of
+/// the problem at a precision of at least that of the finer run.
+pub fn verified_mpfr(
+    beta: &Float,
+    mu: &Float,
+    lambda: &Float,
+    periodic: bool,
+    digits: u32,
+) -> Result<VerifiedRowLoad, AdhesionError> {
+    let lam = lambda.to_f64();
+    let (b, m) = (beta.to_f64(), mu.to_f64());
+    let theta0 = (b * m).atan() / std::f64::consts::PI;
+    // the f64 run; its increments start the MPFR roots
+    let (_, at_lambda) = increment_f64(b, m, lam, 10, periodic)?;
+    let stick_ratio_f64 = if beta.is_zero() { 1.0 } else { physical_ratio(&at_lambda.gamma, &lam) };
+    let load_f64 = load(&lam, theta0, 12, |e: &f64| increment_f64(b, m, *e, 10, periodic))?;
+    let run = |(nodes, n, bits): (usize, usize, u32)| -> Result<(Float, Float, f64), AdhesionError> {
+        let t = std::time::Instant::now();
+        let args = (beta, mu, lambda);
+        let at_node = |e: &Mp| {
+            let eta = Float::with_val(bits, &e.0);
+            let start = if beta.is_zero() { 0.5 } else { increment_f64(b, m, eta.to_f64(), 10, periodic)?.1.gamma };
+            // the outside slope is stationary in the stick edge: half the digits suffice there
+            increment_mpfr_root((beta, mu, &eta), periodic, (n, bits, digits / 2 + 3), start, true)
+        };
+        let p = load(&Mp(Float::with_val(bits, lambda)), theta0, nodes, at_node)?;
+        if beta.is_zero() {
+            return Ok((p.0, Float::with_val(bits, 1), t.elapsed().as_secs_f64()));
+        }
+        let (_, inc) = increment_mpfr(args, periodic, (n, bits, digits + 4), at_lambda.gamma)?;
+        let ratio = physical_ratio(&inc.gamma, &Mp(Float::with_val(bits, lambda))).0;
+        Ok((p.0, ratio, t.elapsed().as_secs_f64()))
+    };
+    let coarse = knobs(digits, beta.is_zero());
+    let fine = (coarse.0 + if beta.is_zero() { 2 } else { 3 }, coarse.1 + 4, coarse.2 + 24);
+    let (p1, c1, s1) = run(coarse)?;
+    let (p2, c2, s2) = run(fine)?;
+    let cap = digits_cap_for_bits(coarse.2);
+    Ok(VerifiedRowLoad {
+        load_digits: agreement_mpfr(&p1, &p2, &p2, cap),
+        stick_digits: agreement_mpfr(&c1, &c2, &Float::with_val(64, 1), cap),
+        load: p2,
+        stick_ratio: c2,
+        load_f64,
+        stick_ratio_f64,
+        runs: [coarse, fine],
+        seconds: [s1, s2],
+    })
 }
