@@ -59,7 +59,7 @@
 //! $Z(z) = z \cot z = 1 - z^2/3 - z^4/45 - \dots$ of [`asymptotics::kernel`].
 
 /// The README's code blocks as doctests (its Rust example is compiled and run; its `console`,
-/// `toml`, `python` and `sh` blocks are not Rust: `crates/cli/tests/doc_commands.rs` runs the
+/// `toml`, `python` and `sh` blocks are not Rust: `crates/cli/tests/all/doc_commands.rs` runs the
 /// commands).
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]

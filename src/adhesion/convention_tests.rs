@@ -1,7 +1,7 @@
 //! Tests of Problem 2 in the two surface conventions (docs/theory.md section 8, Problem 2):
 //! `periodic` (u periodic) against the independent boundary-element values of issue 32; the two
 //! methods (MPFR with the closed-form kernel, f64 with the tilted punch of the growing contact)
-//! agree in `periodic` (and tests/loading_law_agreement.rs: the loading law with N = 0 is the same
+//! agree in `periodic` (and tests/all/loading_law_agreement.rs: the loading law with N = 0 is the same
 //! problem in both conventions); nu = 1/2 and the single
 //! punch are the same in both conventions; in `periodic` the homogeneous mode of section 11 is
 //! not excited where it spoils `paper`.

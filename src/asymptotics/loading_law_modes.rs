@@ -26,7 +26,7 @@
 //! A numerical method fixes C by its own discretisation error at small sizes, and that error
 //! reaches Lambda multiplied by up to (Lambda/eta)^(mu*): the smaller mu*, the sooner a method
 //! loses its digits. Measured with the MPFR collocation (`verified::solve_law`, paper
-//! convention; `cargo test --release --test loading_law_agreement -- --ignored --nocapture
+//! convention; `cargo test --release --test all loading_law_agreement:: -- --ignored --nocapture
 //! nu_zero_reach` and `cargo run --release --example loading_law_small_nu`): nu = 0, n = 1/5
 //! (mu* = 178.3) verifies 25.9 digits at l/L = 1/16, 16.1 at 1/8, 2.6 at 1/4; n = 1/2 (mu* =
 //! 31.8) 2.1 at 1/8; nu = 1/10, n = 1/5 (mu* = 580) 18.2 at 1/8. (The f64 march with blocks of

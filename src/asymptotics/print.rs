@@ -15,7 +15,7 @@ use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
 /// Names that `sympy.sympify` does not read as a plain symbol of the same name; printed with a
-/// trailing underscore (`S` -> `S_`). `tests/sympy_roundtrip.rs` checks every printed name.
+/// trailing underscore (`S` -> `S_`). `tests/all/sympy_roundtrip.rs` checks every printed name.
 pub const SYMPY_RENAMED: [&str; 12] = ["S", "Lambda", "lambda", "E", "I", "N", "O", "Q", "beta", "gamma", "pi", "zeta"];
 
 /// Applies `rename` to every identifier of an expression in the engine's text form.

@@ -21,7 +21,7 @@
 //!   [`crate::growing_contact::march`]
 //!   (block-by-block marching in lambda, its own kernels; two runs for the digits), reachable by
 //!   `solve --method f64`; agrees with the MPFR method to 15-16 digits at nu = 0.3
-//!   (tests/loading_law_agreement.rs); at small nu (below about 0.15) a given size is one block
+//!   (tests/all/loading_law_agreement.rs); at small nu (below about 0.15) a given size is one block
 //!   (the blocks' own error grows there until an end recedes), which agrees with the MPFR method
 //!   at nu = 0, n = 1/5, l/L = 1/16 and 1/8 to 15.7-17 digits and refuses where the mode has
 //!   grown. At small nu and larger n both methods meet the problem's homogeneous modes

@@ -440,7 +440,7 @@ pub fn solve_law_sampled(
 /// A collocation that did not converge, with the problem's homogeneous mode named when it has
 /// one ([`crate::asymptotics::loading_law_modes`]: the history is fixed only up to C eta^mu*, and
 /// the discretisation's error at small sizes grows like (Lambda/eta)^mu*; nu = 0, n = 1/2, l/L =
-/// 1/8 at 20 digits ends so: `nu_zero_reach` in `tests/loading_law_agreement.rs`; the message:
+/// 1/8 at 20 digits ends so: `nu_zero_reach` in `tests/all/loading_law_agreement.rs`; the message:
 /// test `refusal_names_the_mode`).
 fn with_mode(problem: &LoadingLawProblem, e: AdhesionError) -> AdhesionError {
     let AdhesionError::NotConverged { what, reason } = e else { return e };

@@ -224,7 +224,7 @@ pub const SMALL_CONTACT_ROUNDOFF: f64 = 2e-3;
 /// collocation with the points of [`crate::growing_contact::march::points_for`], the check run
 /// 8 more): the march's blocks of 0.05 amplify their own error there until an end recedes, while
 /// one block stays stable wherever the problem fixes its solution (nu = 0, n = 1/5: l/L = 1/16
-/// and 1/8 agree with the MPFR collocation, tests/loading_law_agreement.rs); a given load keeps
+/// and 1/8 agree with the MPFR collocation, tests/all/loading_law_agreement.rs); a given load keeps
 /// the blocks (and is refused there as before).
 pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSolutionF64, AdhesionError> {
     let eps = AdhesionParamsF64::new(problem.material()).eps;

@@ -1,7 +1,7 @@
 //! The punch row every problem stands on: the half-plane's material, the period L (or a single
 //! punch) and the punch profile g (docs/theory.md sections 1 and 9), validated once when built.
 //! Problems 1, 2 and the loading law each hold one and read it through [`OnPunchRow`].
-//! Tests: the validation messages in `tests/scene.rs`.
+//! Tests: the validation messages in `tests/all/scene.rs`.
 
 use super::{ModelError, Period, PunchShape};
 use crate::model::Material;

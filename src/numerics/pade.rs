@@ -302,7 +302,7 @@ pub fn resum(f: &Series<Q>, w: &Float, scale: &Float, cap: f64, prec: u32) -> Re
     }
     // The most diagonal candidate not refused (the candidates are in that order). Choosing by the
     // estimate instead favours a candidate whose neighbours happen to agree: Kuznetsov's l after
-    // the conformal map at lambda = 1.2 (tests/pade.rs) would get [5/7] with 11.8 true digits
+    // the conformal map at lambda = 1.2 (tests/all/pade.rs) would get [5/7] with 11.8 true digits
     // instead of the diagonal [6/6] with 13.7.
     let best = candidates.iter().position(|c| c.refusal.is_none());
     Resummation { w: w.clone(), candidates, best }

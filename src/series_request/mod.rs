@@ -6,7 +6,7 @@
 //! ([`crate::asymptotics::loading_law`]). [`OPTIONS`] is the one table of which options each
 //! object takes; the command line, the Rust front door and Python all validate here, with the
 //! command line's messages (options named as its flags, `--theta`). Tests: below, and the CLI's
-//! tests of every refusal (`tests/series_objects.rs`, `tests/cli.rs`).
+//! tests of every refusal (`tests/all/series_objects.rs`, `tests/all/cli.rs`).
 
 mod profile;
 

@@ -7,7 +7,7 @@
 //!     given P2: a = (P2/(C_P E* k))^(1/2),  c = gamma a,
 //! and the slip zones are c < |x| < a. The digits are estimated from the two meshes
 //! (|gamma(40) - gamma(80)|, |C_P(40) - C_P(80)|, propagated through the formulas above), times
-//! [`ESTIMATE_SAFETY`]; `tests/friction_scene.rs` checks in five cases that the claimed error
+//! [`ESTIMATE_SAFETY`]; `tests/all/friction_scene.rs` checks in five cases that the claimed error
 //! covers twice the difference from n = 160 (the error of n = 80 for an order >= 1).
 //!
 //! The fields q1, q2, psi at the scene's points are superposed from the unit increments
@@ -46,7 +46,7 @@ pub const ESTIMATE_SAFETY: f64 = 2.0;
 /// Factor on the two meshes' difference of a field: the fields converge irregularly where the mesh
 /// is coarse (q1 at x/a = 0.2, nu = 0, mu = 5/3: 0.30820, 0.30802, 0.30829, 0.30821 on n = 40, 80,
 /// 160, 320 stick elements), so the difference of n = 40 and 80 can undershoot that of 80 and 160
-/// (by 1.5 there); `tests/friction_scene.rs` asks the claim to cover twice the latter.
+/// (by 1.5 there); `tests/all/friction_scene.rs` asks the claim to cover twice the latter.
 pub const FIELD_SAFETY: f64 = 8.0;
 
 /// The model the answer solves, printed as its `friction_note`.

@@ -2,7 +2,7 @@
 //! [`super::solve_answer`] on every scene of a slice, each scene on one thread (std's scoped threads
 //! taking the next unsolved scene from a shared counter; no thread pool crate), and returns the
 //! results in the order of the scenes. Each result is exactly what the serial solve returns
-//! (the solvers' caches are per thread or locked; `tests/concurrency.rs` checks threaded solves
+//! (the solvers' caches are per thread or locked; `tests/all/concurrency.rs` checks threaded solves
 //! against serial ones); the throughput on this machine is in docs/performance.md
 //! (`examples/throughput.rs`). Tests: below.
 

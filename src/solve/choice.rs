@@ -496,7 +496,7 @@ pub const DEFAULT_SERIES_ORDER: usize = 12;
 /// needs more than the 7 coefficients in w of order 12 to gain 5 digits (at lambda = 1.2, order
 /// 12: 7.0 true digits against the series method's 4.9; order 24: 13.7), and the approximant is
 /// then chosen among all [L/M] by its own error estimate. Cost measured in
-/// `the_pade_method_maps_kuznetsovs_cuts` (crates/cli/tests/pade.rs).
+/// `the_pade_method_maps_kuznetsovs_cuts` (crates/cli/tests/all/pade.rs).
 pub const DEFAULT_PADE_ORDER: usize = 24;
 
 /// The method `solve` runs: a forced method (`--method`, then `[output] method`) or forced digits

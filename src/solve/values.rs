@@ -3,7 +3,7 @@
 //! scale), the headline numbers by their JSON key and the fields at the requested points by name.
 //! The renderers fill them from the same [`super::render::Measured`] values they print, so a
 //! caller of the library reads numbers without parsing the JSON (issue 29). Tests:
-//! `tests/typed_answers.rs` compares every quantity with the JSON text of the same answer.
+//! `tests/all/typed_answers.rs` compares every quantity with the JSON text of the same answer.
 
 /// Whether the digits of an answer were verified (by a second run) or estimated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

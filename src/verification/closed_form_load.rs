@@ -1,7 +1,7 @@
 //! The frictionless load of an even punch profile in closed form (docs/theory.md section 9), computed
 //! independently of the solvers: by its own evaluation of g' from the exact profile and its own
 //! quadrature, so that a solver's load-size curve can be checked against it (report section
-//! "Punch shapes", tests/profiles.rs, tests/adhesion_profiles.rs).
+//! "Punch shapes", tests/all/profiles.rs, tests/all/adhesion_profiles.rs).
 //!
 //! Periodic row (period L), half-width a, lambda = pi a/L < pi/2:
 //!     P2 = (E*/2) int_{-a}^{a} g'(x) sin(pi x/L) dx / sqrt(sin^2(pi a/L) - sin^2(pi x/L)).

@@ -136,7 +136,7 @@ const INTERRUPTED: i32 = 130;
 /// every file is written whole under a temporary name and renamed, so a finished file is never
 /// partial and the previous one stays until its successor is complete) and exits with status 130.
 /// Nothing is printed to stdout before a solve or a series is complete, so an interrupted one
-/// leaves no partial output either. Test: `crates/cli/tests/interrupt.rs`.
+/// leaves no partial output either. Test: `crates/cli/tests/all/interrupt.rs`.
 fn exit_on_interrupt(dirs: Vec<std::path::PathBuf>) -> std::io::Result<()> {
     let mut signals = signal_hook::iterator::Signals::new([signal_hook::consts::SIGINT])?;
     std::thread::spawn(move || {

@@ -310,7 +310,7 @@ pub fn write_report(opts: &ReportOptions) -> Result<ReportFiles, ReportError> {
 /// directory, flushed to the disk, then renamed over `path` (atomic on one file system). An
 /// interrupted run (Ctrl-C, a kill) leaves `path` as it was; the report writes its files only
 /// after every section is computed, so an interruption during the computation leaves the previous
-/// report intact (test `crates/cli/tests/interrupt.rs`).
+/// report intact (test `crates/cli/tests/all/interrupt.rs`).
 pub fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
     use std::io::Write as _;
     let name = path.file_name().map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());

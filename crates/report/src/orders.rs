@@ -4,7 +4,7 @@
 //! have series in every power of Lambda: keeping every term through Lambda^m, the centre's
 //! remainder scales like Lambda^(m+1) and the parabola's l (even in Lambda) like Lambda^(m+1) for
 //! odd m, Lambda^(m+2) for even m; they are studied at smaller Lambda, where the slope settles
-//! (as in `tests/convergence_orders_periodic.rs`). Reuses [`periodic_contact::verification::convergence`].
+//! (as in `tests/all/convergence_orders_periodic.rs`). Reuses [`periodic_contact::verification::convergence`].
 
 use super::section::{Ctx, Profile, Section};
 use periodic_contact::model::OnPunchRow;
@@ -32,7 +32,7 @@ fn plan(profile: Profile, convention: Convention) -> Plan {
         (Profile::Full, Convention::Paper) => (&[0.03, 0.042, 0.06, 0.085], 5, 50),
         (Profile::Fast, Convention::Paper) => (&[0.04, 0.06], 2, 30),
         // The pairs of terms Lambda^(m+1), Lambda^(m+2) are of similar size: a smaller Lambda lets
-        // the slope settle (tests/convergence_orders_periodic.rs: within 0.1 at these values).
+        // the slope settle (tests/all/convergence_orders_periodic.rs: within 0.1 at these values).
         (Profile::Full, Convention::PeriodicSurface) => (&[0.01, 0.014, 0.02, 0.028], 4, 60),
         (Profile::Fast, Convention::PeriodicSurface) => (&[0.01, 0.014], 1, 30),
     }

@@ -8,7 +8,7 @@
 //! through Lambda^16, the sinusoid's through Lambda^12 (its symbolic derivation is the dearest)
 //! and Problem 2's through lambda^12, references at 20 digits; `--fast` every series through order 8,
 //! references at 12 digits, at three sizes. The claim at order 24 (Kuznetsov's l at
-//! lambda = 1.2: 8.3 digits plain, 13.7 conformal + Padé) is asserted in `tests/pade.rs`.
+//! lambda = 1.2: 8.3 digits plain, 13.7 conformal + Padé) is asserted in `tests/all/pade.rs`.
 
 use super::chart::{Chart, Curve, Draw, Legend};
 use super::section::{Ctx, Profile, Section};

@@ -4,7 +4,7 @@
 //! same in `report.md` viewers and `report.html`); then the sections. [`wrap_long_lines`] keeps
 //! every Markdown line within [`LONGEST_LINE`] characters by wrapping prose (tables are kept
 //! narrow by their sections: long coefficients are excerpts, [`super::coefficients`]). Tests:
-//! the module's, and the report snapshot (`crates/cli/tests/report_snapshot.rs`).
+//! the module's, and the report snapshot (`crates/cli/tests/all/report_snapshot.rs`).
 
 use super::html::slug;
 use std::fmt::Write as _;

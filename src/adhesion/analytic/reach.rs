@@ -13,7 +13,7 @@
 //! Chebyshev tail, 1e-43, limits), 12.7-15 at 1.35 (R = 14.1), 2.6-3.3 at 1.4 (R = 3.3), none at
 //! 1.5 (R = 0), whatever the nodes, bits and eta0. So the method holds d digits up to
 //! max(lambda_p, lambda_h(nu, d)), lambda_p the size where G from the method's eta0 reaches the
-//! cap ([`reach`]; lambda_h(nu, d) claims R - 2 = d). Tests (tests/adhesion_analytic.rs):
+//! cap ([`reach`]; lambda_h(nu, d) claims R - 2 = d). Tests (tests/all/adhesion_analytic.rs):
 //! `the_reach_at_three_ratios`, `at_nu_0_3_its_reach_holds_twenty_digits`,
 //! `at_nu_0_3_lambda_1_5_the_refusal_names_its_reach`.
 

@@ -26,7 +26,7 @@
 //! pi by pi g'(x)/(2 k x), x = a sigma, k the reference curvature ([`right_side`]); the load, psi,
 //! phi and the stresses follow from F by the same formulas. At nu = 1/2 its load equals THEORY 9's
 //! closed form to ~1e-40 relative at 30 requested digits (quartic x^2/4 + x^4/2 and circle R = 2,
-//! lambda = 0.2-1.1: `cargo test --test adhesion_profiles -- --nocapture`).
+//! lambda = 0.2-1.1: `cargo test --test all adhesion_profiles:: -- --nocapture`).
 //!
 //! # Conditioning (measured; docs/theory.md section 7)
 //! For nu = 1/2 (eps = 0) and nu >= 0.45 the method verifies 20+ digits up to lambda ~ 1.49.

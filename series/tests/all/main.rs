@@ -1,0 +1,6 @@
+//! The integration tests of this crate as one test binary (one link instead of one per file;
+//! issue 33): a module per file. Run one file's tests: `cargo test --test all NAME::`.
+
+mod frac_gcd;
+mod identities;
+mod known_series;
