@@ -6,9 +6,9 @@
 //! - `f64` ([`stick_ratio_f64`], [`root_f64`]): a coarse run (n = 6, no oversampling) scanned
 //!   upward in the logit y = ln(gamma/(1 - gamma)) from gamma = 0.0025 in steps of 1/2 to the first
 //!   sign change from - to + (up to gamma = 1 - 1.2e-4), its root by the Illinois method to 1e-6
-//!   in y; then the run asked for bracketed there (+-1e-3 in y, widened by 8 up to 0.5, else the
-//!   full scan) and the Illinois method to a bracket of 1e-13 in y (about 10 solves instead of
-//!   20-30);
+//!   in y; then the run asked for bracketed there (+-1e-3 in y, widened by 8 up to 0.5; the full
+//!   scan where that or the coarse run fails) and the Illinois method to a bracket of 1e-13 in y
+//!   (about 10 solves instead of 20-30);
 //! - MPFR ([`stick_ratio_mpfr`]): the secant method from a start (the `f64` root) to a step below
 //!   2^-(bits - 16). C_P is stationary in gamma at the root (measured: dC_P/dgamma changes sign
 //!   there), so the last iterate's C_P carries the root's error squared.
@@ -78,8 +78,13 @@ pub fn root_f64(sp: &Spectral<f64>, what: &'static str) -> Result<SpectralIncrem
     let defect = |y: f64| defect_of(sp, y);
     // the coarse run's root, then a bracket of it for `sp` widened until the sign changes
     let coarse = sp.coarse(COARSE_N);
-    let (lo, hi) = scan(|y| defect_of(&coarse, y), what)?;
-    let y0 = illinois(lo, hi, 1e-6, |y| defect_of(&coarse, y))?;
+    let coarse_root =
+        scan(|y| defect_of(&coarse, y), what).and_then(|(lo, hi)| illinois(lo, hi, 1e-6, |y| defect_of(&coarse, y)));
+    let Ok(y0) = coarse_root else {
+        let (lo, hi) = scan(defect, what)?;
+        let g = gamma(illinois(lo, hi, 1e-13, defect)?);
+        return sp.solve(&g).ok_or_else(|| singular(g));
+    };
     let mut h = 1e-3;
     let (lo, hi) = loop {
         let (a, b) = (y0 - h, y0 + h);
