@@ -14,9 +14,12 @@
 //!   row ([`Spectral::row`]), y = 2 s - 1 with s = ln(1 + (x - gamma)/(2 gamma))/ln(1 + (1 - gamma)/(2 gamma)):
 //!   s2 = (1 - zeta)^omega (sum A_k T_k(y) + zeta^alpha sum B_k T_k(y)),
 //!
-//! T_k Chebyshev polynomials, k < n: 6 n unknowns. The equations are collocated at 2 n + 2
+//! T_k Chebyshev polynomials, k < n: 6 n unknowns. The equations are collocated at F (2 n + 2)
 //! Chebyshev points of each zone (both on the stick zone) and solved with the normalisation in the
-//! least-squares sense (Householder QR). The Cauchy integrals are exact up to the quadrature: the
+//! least-squares sense (Householder QR). The families are a frame (the smooth and the singular
+//! family of one density nearly dependent), so `f64` oversamples, F = [`F64_OVERSAMPLE`] (about
+//! 11 digits in gamma and 12-14 in C_P against MPFR instead of 7-8); MPFR keeps F = 1
+//! ([`Spectral::oversampled`]). The Cauchy integrals are exact up to the quadrature: the
 //! self-zone principal value by subtraction, PV int f/(x - xi) = int (f(xi) - f(x))/(x - xi) +
 //! f(x) ln((x - a)/(b - x)), every integral by composite tanh-sinh graded toward near singularities
 //! (`quadrature.rs`).
@@ -37,6 +40,14 @@
 
 use super::quadrature::{graded, least_squares, DoubleExp};
 use super::real::Real;
+
+/// Collocation points per zone in `f64`, in units of 2 n + 2 (the number of unknowns per
+/// equation and zone, plus 2). The basis is a frame, not a basis: the smooth and the singular
+/// family of one density (P and Q of s2 on the stick zone, A and B on the slip zone) are nearly
+/// dependent (each family alone: condition number 2-10; the pair 1e8, 1e11, 1e14 at n = 6, 8,
+/// 10), and such a least-squares problem is stable only when oversampled (docs/theory.md section
+/// 17.7). MPFR keeps 1: its guard bits absorb the conditioning and its verified values stand.
+pub const F64_OVERSAMPLE: usize = 3;
 
 /// The increment at one gamma, solved.
 #[derive(Debug, Clone)]
@@ -67,6 +78,8 @@ pub struct Spectral<T> {
     lateral: T,
     /// The slip zone's Chebyshev variable logarithmic in x + gamma (the row) or linear.
     log_slip: bool,
+    /// Collocation points per zone: `oversample` (2 n + 2).
+    oversample: usize,
 }
 
 fn chebyshev<T: Real>(u: &T, n: usize) -> Vec<T> {
@@ -100,6 +113,7 @@ impl<T: Real> Spectral<T> {
         let edge = (0.5 - theta0.to_f64()).min(1.0);
         let rule = DoubleExp::new(&beta.lit(1.0), edge);
         let (tau, lateral) = (beta.lit(0.0), beta.lit(0.0));
+        let oversample = if beta.bits() == 53 { F64_OVERSAMPLE } else { 1 };
         Spectral {
             alpha: -half.clone() - theta0.clone(),
             omega: -half + theta0,
@@ -111,7 +125,21 @@ impl<T: Real> Spectral<T> {
             tau,
             lateral,
             log_slip: false,
+            oversample,
         }
+    }
+
+    /// The same method collocated at `factor` (2 n + 2) points per zone (the default: 1 in MPFR,
+    /// [`F64_OVERSAMPLE`] in `f64`).
+    pub fn oversampled(mut self, factor: usize) -> Spectral<T> {
+        self.oversample = factor.max(1);
+        self
+    }
+
+    /// The same problem with `n` polynomials per family and 2 n + 2 points per zone: a cheap
+    /// run whose stick-edge root brackets this one's (`spectral_punch::root_f64`).
+    pub fn coarse(&self, n: usize) -> Spectral<T> {
+        Spectral { n, oversample: 1, ..self.clone() }
     }
 
     /// The method for the periodic row at lambda = pi a/L in the tangent variable
@@ -264,9 +292,9 @@ impl<T: Real> Spectral<T> {
         (h2, h1)
     }
 
-    /// The collocation points: 2 n + 2 on each zone.
+    /// The collocation points: `oversample` (2 n + 2) on each zone.
     fn targets(&self, gamma: &T) -> Vec<Target<T>> {
-        let m = 2 * self.n + 2;
+        let m = self.oversample * (2 * self.n + 2);
         let pi = gamma.pi();
         let mut out = Vec::with_capacity(2 * m);
         for i in 0..m {
