@@ -19,9 +19,13 @@
 //! [`crate::adhesion::friction::row_f64`] (piecewise constants on a graded mesh, n = 20) against
 //! twice that method's own n = 10 / 20 difference. The fields q1, q2, psi are not computed for the
 //! row (the load's public interface gives P at lambda only, not P'(eta), which their superposition
-//! needs), nor the inequality checks of the single punch: a warning says so. `--method mpfr` is
-//! refused with its reason: the row's load in MPFR is not built (each of its nodes is an MPFR root
-//! search, about 2 h per answer at 20 digits, section 17.8).
+//! needs), nor the inequality checks of the single punch: a warning says so.
+//!
+//! `--method mpfr` ([`row_mpfr_answer`]): P and c/a by the verified MPFR load of
+//! [`crate::adhesion::friction::spectral_row_load::verified_mpfr`] (two runs, their agreement
+//! printed as verified digits), given `half_width` only (under a given load lambda would need
+//! the verified load inverted: several such loads), at most [`MPFR_ROW_MAX_DIGITS`] digits (the
+//! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
 
 use super::answer_friction::{digits, solvable_parabola, ESTIMATE_SAFETY, FRICTION_NOTE_ROW};
 use super::render::{AdhesionAnswer, DigitsKind, FrictionCheck, Measured, Provenance, StickSlip};
@@ -111,8 +115,12 @@ pub fn row_answer(
     mu_exact: &Exact,
     period: &Exact,
     method: crate::scene::Method,
+    digits_asked: u32,
 ) -> Result<AdhesionAnswer, Error> {
     refuse_method(method)?;
+    if method == crate::scene::Method::Mpfr {
+        return row_mpfr_answer(p, mu_exact, period, digits_asked);
+    }
     let k = solvable_parabola(p)?;
     let f = |x: &Exact, what: &str| {
         crate::numerics::exact::to_f64(x)
@@ -195,25 +203,107 @@ pub fn row_answer(
     })
 }
 
-/// The refusal of a method other than f64 for the row (module doc).
+/// The refusal of a method other than f64 and mpfr for the row (module doc).
 fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
     match method {
-        crate::scene::Method::F64 => Ok(()),
-        crate::scene::Method::Mpfr => Err(Error::input(
-            "--method",
-            "mpfr",
-            "the periodic row with finite friction is solved by the f64 spectral method (5-7 digits): its load in \
-             MPFR with verified digits is not built (every load node is an MPFR root search, about 2 h per answer at \
-             20 digits; docs/theory.md section 17.8); --method f64, or no --method (the single punch, period = \
-             \"inf\", takes --method mpfr)",
-        )),
+        crate::scene::Method::F64 | crate::scene::Method::Mpfr => Ok(()),
         other => Err(Error::input(
             "--method",
             other.name(),
-            "the periodic row with finite friction ([adhesion] friction) is solved by the f64 spectral method only so \
-             far (5-7 digits): --method f64, or no --method",
+            "the periodic row with finite friction ([adhesion] friction) is solved by the spectral method only: \
+             --method f64 (the default, 5-7 digits) or --method mpfr (verified digits, given half_width)",
         )),
     }
+}
+
+/// The most digits `--method mpfr` answers for the row: the verified load's two runs grow with
+/// them (knobs of `spectral_row_load::knobs`; at 6 digits, lambda = 1.2, 218-245 s of CPU, and
+/// about 25 times that for 20 digits, docs/theory.md section 17.8).
+pub const MPFR_ROW_MAX_DIGITS: u32 = 12;
+
+/// The answer of the row by the verified MPFR load (module doc): lambda = pi a/L from the exact
+/// half width, P2 = E* k (L/pi)^2 P and c = (c/a) a with the two runs' agreement as their digits.
+pub fn row_mpfr_answer(
+    p: &AdhesionProblem,
+    mu_exact: &Exact,
+    period: &Exact,
+    digits_asked: u32,
+) -> Result<AdhesionAnswer, Error> {
+    use crate::adhesion::friction::spectral_row_load::{knobs, verified_mpfr};
+    use crate::numerics::exact::to_float;
+    use rug::Float;
+    if digits_asked > MPFR_ROW_MAX_DIGITS {
+        return Err(Error::input(
+            "digits",
+            digits_asked.to_string(),
+            format!(
+                "at most {MPFR_ROW_MAX_DIGITS} for the periodic row with finite friction and --method mpfr (its \
+                 verified load's cost grows with the digits: about 4 min of CPU at 6 digits, lambda = 1.2; \
+                 docs/theory.md section 17.8); --method f64 gives 5-7 digits in seconds"
+            ),
+        ));
+    }
+    let k = solvable_parabola(p)?;
+    let a = match p.size() {
+        AdhesionSize::HalfWidth(a) => a,
+        AdhesionSize::NormalLoad(p2) => {
+            return Err(Error::input(
+                "normal_load",
+                crate::model::readable(p2),
+                "a given half_width with --method mpfr on the periodic row with friction (under a given load \
+                 lambda would need the verified load inverted, several loads of minutes each: not built); \
+                 --method f64 takes normal_load",
+            ))
+        }
+    };
+    let incompressible = num_traits::Zero::is_zero(&p.material().beta());
+    let prec = knobs(digits_asked, incompressible).2 + 24 + 64;
+    let (a_f, l_f) = (to_float(a, prec), to_float(period, prec));
+    let lambda = Float::with_val(prec, rug::float::Constant::Pi) * &a_f / &l_f;
+    let lam = lambda.to_f64();
+    if !(lam > 0.0 && lam <= LAMBDA_MAX) {
+        return Err(Error::input(
+            "half_width",
+            crate::model::readable(a),
+            format!("0 < lambda = pi a/L <= {LAMBDA_MAX} (the row with friction)"),
+        ));
+    }
+    let periodic = p.periodic_surface();
+    let (beta, mu) = (to_float(&p.material().beta(), prec), to_float(mu_exact, prec));
+    let v = verified_mpfr(&beta, &mu, &lambda, periodic, digits_asked)?;
+    let pi_over_l = Float::with_val(prec, rug::float::Constant::Pi) / &l_f;
+    let unit = to_float(p.material().contact_modulus(), prec) * to_float(k, prec) / pi_over_l.square();
+    let p2 = Float::with_val(prec, &v.load * &unit);
+    let c = Float::with_val(prec, &v.stick_ratio * &a_f);
+    let (size_digits, stick_digits) = (v.load_digits, v.stick_digits);
+    let check = march_check(beta.to_f64(), mu.to_f64(), lam, periodic, v.stick_ratio.to_f64());
+    Ok(AdhesionAnswer {
+        provenance: Provenance {
+            method: "mpfr",
+            bits: Some(v.runs[1].2),
+            nodes: Some(v.runs[1].0),
+            order: None,
+            convention: periodic.then_some("periodic"),
+        },
+        kind: DigitsKind::Verified,
+        lambda: Some(Measured::mpfr(lambda.clone(), &lambda, crate::numerics::accuracy::digits_cap_for_bits(prec))),
+        p2: Measured::mpfr(p2.clone(), &p2, size_digits),
+        half_width: Measured::mpfr(a_f.clone(), &a_f, crate::numerics::accuracy::digits_cap_for_bits(prec)),
+        stick: Some(StickSlip {
+            friction: exact_series::q_text(mu_exact),
+            stick_half_width: Measured::mpfr(c, &a_f, stick_digits),
+            note: FRICTION_NOTE_ROW,
+            checks: vec![check],
+        }),
+        accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
+        fields: Vec::new(),
+        tension_zones: None,
+        warnings: vec![
+            "the periodic row with friction: q1, q2, psi at the points and the inequality checks are computed for \
+             the single punch only (period = \"inf\"); none printed here"
+                .into(),
+        ],
+    })
 }
 
 /// c/a's difference from the f64 march (n = 20) against twice the march's n = 10 / 20 difference.

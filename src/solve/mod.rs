@@ -348,7 +348,7 @@ fn adhesion_f64(p: &AdhesionProblem, scene: &Scene, req: SolveRequest) -> Result
 }
 
 /// Finite friction (`[adhesion] friction`): the single parabolic punch by the f64 or the mpfr
-/// method ([`answer_friction`]), the periodic row by f64 ([`answer_friction_row`]); nu = 1/2 by the
+/// method ([`answer_friction`]), the periodic row by f64 or mpfr ([`answer_friction_row`]); nu = 1/2 by the
 /// verified frictionless path.
 fn adhesion_friction(
     p: &AdhesionProblem,
@@ -360,7 +360,7 @@ fn adhesion_friction(
         return adhesion_friction_incompressible(p, scene, mu, req);
     }
     let answer = match p.period() {
-        Period::Finite(l) => answer_friction_row::row_answer(p, mu, l, req.method)?,
+        Period::Finite(l) => answer_friction_row::row_answer(p, mu, l, req.method, req.digits)?,
         Period::Infinite => answer_friction::friction_answer(p, mu, req.method, req.digits, &scene.output.points)?,
     };
     let mpfr = answer.provenance.method == "mpfr";

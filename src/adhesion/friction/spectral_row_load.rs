@@ -184,7 +184,7 @@ pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
 }
 
 /// P(lambda) and c/a of the row in MPFR with verified digits (module doc): two runs, the
-/// knobs of [`knobs`] and (nodes + 4, n + 6, bits + 32); `beta`, `mu`, `lambda` exact values of
+/// knobs of [`knobs`] and (nodes + 3, n + 4, bits + 24) (nodes + 2 at beta = 0); `beta`, `mu`, `lambda` exact values of
 /// the problem at a precision of at least that of the finer run.
 pub fn verified_mpfr(
     beta: &Float,

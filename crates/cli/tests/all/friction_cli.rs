@@ -82,13 +82,13 @@ fn what_friction_does_not_solve_is_refused_naming_it() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("shape") && err.contains("circular"), "{err}");
     // the spectral method's cost grows with the digits: more than 16 are refused naming `digits`,
-    // and the periodic row takes f64 only (its MPFR load is not built: the refusal says so)
+    // and the periodic row's verified MPFR load at most 12 (the default 30 is refused naming digits)
     let (code, _, err) = run(&["solve", SCENE, "--method", "mpfr", "--digits", "30"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("digits") && err.contains("30") && err.contains("at most 16"), "{err}");
     let (code, _, err) = run(&["solve", &periodic, "--method", "mpfr"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("--method") && err.contains("periodic row") && err.contains("not built"), "{err}");
+    assert!(err.contains("digits") && err.contains("periodic row") && err.contains("at most 12"), "{err}");
     let zero = scene_file("friction_zero.toml", &text.replace("friction = \"1/2\"", "friction = \"0\""));
     let (code, _, err) = run(&["solve", &zero]);
     assert_eq!(code, 2, "{err}");
