@@ -52,6 +52,10 @@ pub const FINE: (usize, usize) = (10, 8);
 /// lambda = 1.2, `periodic`: 12 nodes with n = 10 and 12 differ by 2.6e-8; section 17.8).
 const ROUNDING: f64 = 3e-8;
 
+/// The warning of every row answer (module doc).
+const NO_FIELDS: &str = "the periodic row with friction: q1, q2, psi at the points and the inequality checks are \
+     computed for the single punch only (period = \"inf\"); none printed here";
+
 /// Relative step of lambda below which [`invert`] stops.
 const LAMBDA_TOL: f64 = 1e-10;
 
@@ -195,11 +199,7 @@ pub fn row_answer(
         accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
         fields: Vec::new(),
         tension_zones: None,
-        warnings: vec![
-            "the periodic row with friction: q1, q2, psi at the points and the inequality checks are computed for \
-             the single punch only (period = \"inf\"); none printed here"
-                .into(),
-        ],
+        warnings: vec![NO_FIELDS.into()],
     })
 }
 
@@ -298,11 +298,7 @@ pub fn row_mpfr_answer(
         accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
         fields: Vec::new(),
         tension_zones: None,
-        warnings: vec![
-            "the periodic row with friction: q1, q2, psi at the points and the inequality checks are computed for \
-             the single punch only (period = \"inf\"); none printed here"
-                .into(),
-        ],
+        warnings: vec![NO_FIELDS.into()],
     })
 }
 
