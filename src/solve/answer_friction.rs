@@ -99,6 +99,13 @@ pub fn solvable_parabola(p: &AdhesionProblem) -> Result<&Exact, Error> {
     }
 }
 
+/// `x` as a finite f64, or the input error naming `what` (the f64 methods' parameters).
+pub(crate) fn finite_f64(x: &Exact, what: &str) -> Result<f64, Error> {
+    to_f64(x)
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| Error::input(what, crate::model::readable(x), "representable as f64"))
+}
+
 /// Digits of a relative error (the f64 cap for none).
 pub(crate) fn digits(rel: f64) -> f64 {
     if rel > 0.0 {
@@ -124,11 +131,7 @@ pub fn friction_answer(
     if method == crate::scene::Method::Mpfr {
         return mpfr_answer(p, mu_exact, k, digits_asked, !points.is_empty());
     }
-    let f = |x: &Exact, what: &str| {
-        to_f64(x)
-            .filter(|v| v.is_finite())
-            .ok_or_else(|| Error::input(what, crate::model::readable(x), "representable as f64"))
-    };
+    let f = finite_f64;
     let beta = f(&p.material().beta(), "material.poisson_ratio")?;
     let mu = f(mu_exact, "friction")?;
     let e_star = f(p.material().contact_modulus(), "material.contact_modulus")?;

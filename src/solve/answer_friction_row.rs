@@ -27,7 +27,7 @@
 //! the verified load inverted: several such loads), at most [`MPFR_ROW_MAX_DIGITS`] digits (the
 //! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
 
-use super::answer_friction::{digits, solvable_parabola, ESTIMATE_SAFETY, FRICTION_NOTE_ROW};
+use super::answer_friction::{digits, finite_f64, solvable_parabola, ESTIMATE_SAFETY, FRICTION_NOTE_ROW};
 use super::render::{AdhesionAnswer, DigitsKind, FrictionCheck, Measured, Provenance, StickSlip};
 use crate::adhesion::friction::row_f64::row_stick_ratio;
 use crate::adhesion::friction::spectral_row::{increment_f64, stick_ratio_f64};
@@ -64,6 +64,19 @@ pub fn row_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), per
     // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
     Ok(load(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+}
+
+/// lambda = pi a/L of the given half width `a` within (0, [`LAMBDA_MAX`]], or the input error
+/// naming `half_width`.
+fn answered_lambda(lambda: f64, a: &Exact) -> Result<(), Error> {
+    if lambda > 0.0 && lambda <= LAMBDA_MAX {
+        return Ok(());
+    }
+    Err(Error::input(
+        "half_width",
+        crate::model::readable(a),
+        format!("0 < lambda = pi a/L <= {LAMBDA_MAX} (the row with friction)"),
+    ))
 }
 
 /// Kuznetsov's frictionless load -pi ln cos(lambda), the shape [`invert`] starts from.
@@ -113,7 +126,7 @@ pub fn invert(
 }
 
 /// The answer of the periodic row of parabolic punches with period `period` and friction
-/// `mu_exact` by `method` (f64; mpfr refused, module doc).
+/// `mu_exact` by `method`: f64 (module doc), or mpfr with `digits_asked` ([`row_mpfr_answer`]).
 pub fn row_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
@@ -126,11 +139,7 @@ pub fn row_answer(
         return row_mpfr_answer(p, mu_exact, period, digits_asked);
     }
     let k = solvable_parabola(p)?;
-    let f = |x: &Exact, what: &str| {
-        crate::numerics::exact::to_f64(x)
-            .filter(|v| v.is_finite())
-            .ok_or_else(|| Error::input(what, crate::model::readable(x), "representable as f64"))
-    };
+    let f = finite_f64;
     let (beta, mu) = (f(&p.material().beta(), "material.poisson_ratio")?, f(mu_exact, "friction")?);
     let (e_star, k, l) =
         (f(p.material().contact_modulus(), "material.contact_modulus")?, f(k, "punch.k")?, f(period, "period")?);
@@ -141,13 +150,7 @@ pub fn row_answer(
     let (coarse, fine, step) = match p.size() {
         AdhesionSize::HalfWidth(a) => {
             let lambda = PI * f(a, "half_width")? / l;
-            if !(lambda > 0.0 && lambda <= LAMBDA_MAX) {
-                return Err(Error::input(
-                    "half_width",
-                    crate::model::readable(a),
-                    format!("0 < lambda = pi a/L <= {LAMBDA_MAX} (the row with friction)"),
-                ));
-            }
+            answered_lambda(lambda, a)?;
             ((lambda, at(COARSE, lambda)?), (lambda, at(FINE, lambda)?), 0.0)
         }
         AdhesionSize::NormalLoad(p2) => {
@@ -229,7 +232,7 @@ pub fn row_mpfr_answer(
     period: &Exact,
     digits_asked: u32,
 ) -> Result<AdhesionAnswer, Error> {
-    use crate::adhesion::friction::spectral_row_load::{knobs, verified_mpfr};
+    use crate::adhesion::friction::spectral_row_load::{finer_knobs, verified_mpfr};
     use crate::numerics::exact::to_float;
     use rug::Float;
     if digits_asked > MPFR_ROW_MAX_DIGITS {
@@ -257,25 +260,22 @@ pub fn row_mpfr_answer(
         }
     };
     let incompressible = num_traits::Zero::is_zero(&p.material().beta());
-    let prec = knobs(digits_asked, incompressible).2 + 24 + 64;
+    // the inputs at the finer run's bits and a guard of 64
+    let prec = finer_knobs(digits_asked, incompressible).2 + 64;
     let (a_f, l_f) = (to_float(a, prec), to_float(period, prec));
-    let lambda = Float::with_val(prec, rug::float::Constant::Pi) * &a_f / &l_f;
+    let pi_over_l = Float::with_val(prec, rug::float::Constant::Pi) / &l_f;
+    let lambda = Float::with_val(prec, &pi_over_l * &a_f);
     let lam = lambda.to_f64();
-    if !(lam > 0.0 && lam <= LAMBDA_MAX) {
-        return Err(Error::input(
-            "half_width",
-            crate::model::readable(a),
-            format!("0 < lambda = pi a/L <= {LAMBDA_MAX} (the row with friction)"),
-        ));
-    }
+    answered_lambda(lam, a)?;
     let periodic = p.periodic_surface();
     let (beta, mu) = (to_float(&p.material().beta(), prec), to_float(mu_exact, prec));
     let v = verified_mpfr(&beta, &mu, &lambda, periodic, digits_asked)?;
-    let pi_over_l = Float::with_val(prec, rug::float::Constant::Pi) / &l_f;
     let unit = to_float(p.material().contact_modulus(), prec) * to_float(k, prec) / pi_over_l.square();
     let p2 = Float::with_val(prec, &v.load * &unit);
     let c = Float::with_val(prec, &v.stick_ratio * &a_f);
     let (size_digits, stick_digits) = (v.load_digits, v.stick_digits);
+    // a and lambda = pi a/L are exact inputs, rounded once at `prec`
+    let exact = crate::numerics::accuracy::digits_cap_for_bits(prec);
     let check = march_check(beta.to_f64(), mu.to_f64(), lam, periodic, v.stick_ratio.to_f64());
     Ok(AdhesionAnswer {
         provenance: Provenance {
@@ -286,9 +286,9 @@ pub fn row_mpfr_answer(
             convention: periodic.then_some("periodic"),
         },
         kind: DigitsKind::Verified,
-        lambda: Some(Measured::mpfr(lambda.clone(), &lambda, crate::numerics::accuracy::digits_cap_for_bits(prec))),
+        lambda: Some(Measured::mpfr(lambda.clone(), &lambda, exact)),
         p2: Measured::mpfr(p2.clone(), &p2, size_digits),
-        half_width: Measured::mpfr(a_f.clone(), &a_f, crate::numerics::accuracy::digits_cap_for_bits(prec)),
+        half_width: Measured::mpfr(a_f.clone(), &a_f, exact),
         stick: Some(StickSlip {
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::mpfr(c, &a_f, stick_digits),

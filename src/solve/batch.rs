@@ -1,7 +1,8 @@
 //! A batch of scenes solved on several threads (issue 33, sweeps): [`solve_many`] runs
-//! [`super::solve_answer`] on every scene of a slice, each scene on one thread (std's scoped threads
-//! taking the next unsolved scene from a shared counter; no thread pool crate), and returns the
-//! results in the order of the scenes. Each result is exactly what the serial solve returns
+//! [`super::solve_answer`] on every scene of a slice, each scene on one thread
+//! ([`crate::numerics::parallel::map_on`]: std's scoped threads taking the next unsolved scene from
+//! a shared counter; the parallel parts of one solve then run serially on its thread), and returns
+//! the results in the order of the scenes. Each result is exactly what the serial solve returns
 //! (the solvers' caches are per thread or locked; `tests/all/concurrency.rs` checks threaded solves
 //! against serial ones); the throughput on this machine is in docs/performance.md
 //! (`examples/throughput.rs`). Tests: below.
@@ -9,8 +10,6 @@
 use super::{solve_answer, Answer, SolveRequest};
 use crate::error::Error;
 use crate::scene::Scene;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 /// Solves every scene of `scenes` with `request` on `threads` threads (`None`: one per logical
 /// CPU, `std::thread::available_parallelism`; never more threads than scenes) and returns each
@@ -33,22 +32,7 @@ use std::sync::Mutex;
 /// ```
 pub fn solve_many(scenes: &[Scene], request: SolveRequest, threads: Option<usize>) -> Vec<Result<Answer, Error>> {
     let cpus = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let threads = threads.unwrap_or(cpus).clamp(1, scenes.len().max(1));
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<Answer, Error>>>> = Mutex::new(vec![None; scenes.len()]);
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(scene) = scenes.get(i) else { break };
-                let r = solve_answer(scene, request);
-                results.lock().unwrap_or_else(std::sync::PoisonError::into_inner)[i] = Some(r);
-            });
-        }
-    });
-    let results = results.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
-    // Every index below the length was taken by one thread, which stored its result.
-    results.into_iter().flatten().collect()
+    crate::numerics::parallel::map_on(scenes, threads.unwrap_or(cpus), |_, scene| solve_answer(scene, request))
 }
 
 #[cfg(test)]

@@ -19,7 +19,7 @@
 //! P(lambda) = int_0^lambda tan(eta) F(eta) d eta by the same rule; G of each increment comes from
 //! its [`SlopeTable`] (its density stored once: N^2 times the rule's nodes slopes per load). The
 //! increments with their tables, and the collocation rows, are computed on all CPUs
-//! (`std::thread::scope`).
+//! ([`crate::numerics::parallel::map`]).
 //!
 //! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/0.7 + 2 nodes, n = digits + 4
 //! polynomials per family, B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in
@@ -35,9 +35,6 @@
 //!
 //! [`root_mpfr_stationary`]: super::spectral_punch::root_mpfr_stationary
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
-
 use rug::Float;
 
 use super::quadrature::{graded, least_squares, DoubleExp};
@@ -47,29 +44,10 @@ use super::spectral_row::{increment_f64, increment_mpfr, increment_mpfr_root, ph
 use super::spectral_row_slope::SlopeTable;
 use crate::growing_contact::error::AdhesionError;
 use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits};
+use crate::numerics::parallel::map;
 
 /// The increment at contact eta: the method and the solved increment at its stick edge.
 pub type RowIncrement<T> = (Spectral<T>, SpectralIncrement<T>);
-
-/// `f` of every item, on as many threads as the machine has CPUs (at most one per item), in order.
-fn parallel_map<I: Sync, O: Send>(items: &[I], f: impl Fn(&I) -> O + Sync) -> Vec<O> {
-    let cpus = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let threads = cpus.clamp(1, items.len().max(1));
-    let next = AtomicUsize::new(0);
-    let out: Mutex<Vec<Option<O>>> = Mutex::new((0..items.len()).map(|_| None).collect());
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(item) = items.get(i) else { break };
-                let o = f(item);
-                out.lock().unwrap_or_else(std::sync::PoisonError::into_inner)[i] = Some(o);
-            });
-        }
-    });
-    // every index below the length was taken by one thread, which stored its result
-    out.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner).into_iter().flatten().collect()
-}
 
 /// P(lambda) = P2/(E* k (L/pi)^2) on `nodes` Chebyshev points, the increments at contact eta
 /// from `increment_at` (with the exponent theta0 = atan(beta mu)/pi for the quadrature). The
@@ -94,7 +72,7 @@ pub fn load<T: Real + Send + Sync>(
         let sign = if j % 2 == 0 { one.clone() } else { -one.clone() };
         bary.push(sign * th.sin());
     }
-    let incs: Vec<(RowIncrement<T>, SlopeTable<T>)> = parallel_map(&eta, |e| {
+    let incs: Vec<(RowIncrement<T>, SlopeTable<T>)> = map(&eta, |_, e| {
         increment_at(e).map(|(sp, inc)| {
             let table = SlopeTable::new(&sp, &inc);
             ((sp, inc), table)
@@ -113,7 +91,7 @@ pub fn load<T: Real + Send + Sync>(
         terms.into_iter().map(|t| t / sum.clone()).collect()
     };
     let rule = DoubleExp::new(&one, 0.5 + theta0);
-    let rows = parallel_map(&eta, |chi| {
+    let rows = map(&eta, |_, chi| {
         let mut row = vec![zero.clone(); nodes];
         rule.sweep(chi, &graded(&zero, chi, None, None), |d_a, d_b, w| {
             let e = d_a.clone();
@@ -183,8 +161,15 @@ pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
     (nodes, n, bits)
 }
 
+/// The knobs of the finer (second) run: [`knobs`] plus (3, 4, 24), (2, 4, 24) at beta = 0; the
+/// inputs of [`verified_mpfr`] need at least its bits.
+pub fn finer_knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
+    let (nodes, n, bits) = knobs(digits, incompressible);
+    (nodes + if incompressible { 2 } else { 3 }, n + 4, bits + 24)
+}
+
 /// P(lambda) and c/a of the row in MPFR with verified digits (module doc): two runs, the
-/// knobs of [`knobs`] and (nodes + 3, n + 4, bits + 24) (nodes + 2 at beta = 0); `beta`, `mu`, `lambda` exact values of
+/// knobs of [`knobs`] and [`finer_knobs`]; `beta`, `mu`, `lambda` exact values of
 /// the problem at a precision of at least that of the finer run.
 pub fn verified_mpfr(
     beta: &Float,
@@ -218,7 +203,7 @@ pub fn verified_mpfr(
         Ok((p.0, ratio, t.elapsed().as_secs_f64()))
     };
     let coarse = knobs(digits, beta.is_zero());
-    let fine = (coarse.0 + if beta.is_zero() { 2 } else { 3 }, coarse.1 + 4, coarse.2 + 24);
+    let fine = finer_knobs(digits, beta.is_zero());
     let (p1, c1, s1) = run(coarse)?;
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
