@@ -541,7 +541,8 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
             m,
             digits_of(m),
             "finite friction ([adhesion] friction): the f64 method by default (single punch 4-5 digits, periodic row \
-             6-7; --method mpfr verifies digits of the single punch)",
+             6-7; --method mpfr verifies digits: at most 16 for the single punch, 12 for the row given its \
+             half_width)",
         ));
     }
     if let Some(d) = forced.digits {
