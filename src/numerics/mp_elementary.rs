@@ -14,6 +14,7 @@
 //! - ln(1 + x) = the series of ln(1 + z) at z = x where 1024 ln(1 + x) rounds to 0 (no 1 + x
 //!   formed), else ln of 1 + x formed at q bits;
 //! - x^a = e^(a ln x) with ln x kept at q bits.
+//!
 //! The rounding errors of the q-bit arithmetic stay below 2^(11 + 9) ulp(q) (the cancellation in
 //! z loses at most 11 bits; |a ln x| < 2^9 in x^a), i.e. 2^-12 ulp(p), so the result is within
 //! 1/2 + 2^-12 ulp(p) of the exact value. Outside the tables' range (|x| >= 2^20 in e^x,
