@@ -53,12 +53,14 @@ pub struct FrictionCell {
 }
 
 impl FrictionCell {
-    /// Digits where the two discretisations agree on P (relative, capped at 16); Err(()) failed.
-    pub fn digits(&self) -> Result<Option<f64>, ()> {
-        match &self.load {
-            Ok((coarse, fine)) => Ok(Some(super::runner::digits_of((fine - coarse) / fine, 16.0))),
-            Err(_) => Err(()),
-        }
+    /// Digits where the two discretisations agree on P (relative, capped at 16); None: failed.
+    pub fn digits(&self) -> Option<f64> {
+        self.load.as_ref().ok().map(|(coarse, fine)| super::runner::digits_of((fine - coarse) / fine, 16.0))
+    }
+
+    /// The cell's bin on section 5's scale ([`bin`]).
+    fn bin(&self) -> usize {
+        bin(self.digits().map(Some).ok_or(()))
     }
 }
 
@@ -128,7 +130,7 @@ pub fn part(ctx: &Ctx, s: &mut Section) {
     );
     let unit = std::f64::consts::PI.powi(-2);
     let text = |c: &FrictionCell| match &c.load {
-        Ok((_, fine)) => format!("{:.9} | {}", fine * unit, fmt_digits(c.digits().ok().flatten())),
+        Ok((_, fine)) => format!("{:.9} | {}", fine * unit, fmt_digits(c.digits())),
         Err(_) => "- | fail".into(),
     };
     for (a, b) in paper.iter().flatten().zip(periodic.iter().flatten()) {
@@ -154,8 +156,7 @@ pub fn part(ctx: &Ctx, s: &mut Section) {
     for (name, cells) in [("paper", paper), ("periodic", periodic)] {
         let stem = format!("stability_p2_friction_{name}");
         let title = format!("Problem 2 with friction mu = {MU}, `{name}`: f64, two discretisations");
-        let points: Vec<(f64, f64, usize)> =
-            cells.iter().flatten().map(|c| (c.nu, c.lambda, bin(c.digits()))).collect();
+        let points: Vec<(f64, f64, usize)> = cells.iter().flatten().map(|c| (c.nu, c.lambda, c.bin())).collect();
         s.charts.push(binned_chart(&stem, &title, "nu", &points));
         row.push_str(&format!(" ![{title}]({stem}.svg) |"));
     }
@@ -176,7 +177,7 @@ pub fn part(ctx: &Ctx, s: &mut Section) {
 /// The digits' range "lo .. hi" of the solved cells of `cells` at nu = `nu`, and how many failed.
 fn range(cells: &[Vec<FrictionCell>], nu: f64) -> String {
     let at: Vec<&FrictionCell> = cells.iter().flatten().filter(|c| c.nu == nu).collect();
-    let digits: Vec<f64> = at.iter().filter_map(|c| c.digits().ok().flatten()).collect();
+    let digits: Vec<f64> = at.iter().filter_map(|c| c.digits()).collect();
     let failed = at.len() - digits.len();
     let (lo, hi) = digits.iter().fold((f64::INFINITY, 0.0f64), |(l, h), &d| (l.min(d), h.max(d)));
     let text = if digits.is_empty() {

@@ -23,6 +23,6 @@ fn the_cells_are_direct_row_loads() {
     let at = direct(0.4, FINE);
     eprintln!("lambda 0.4: column {fine} (coarse {coarse}), direct {at}: {:.1e}", fine / at - 1.0);
     assert!((fine - at).abs() <= (fine - coarse).abs(), "{fine} {coarse} {at}");
-    let digits = cells[0].digits().unwrap().unwrap();
+    let digits = cells[0].digits().unwrap();
     assert!((4.0..16.0).contains(&digits), "{digits}");
 }
