@@ -66,6 +66,22 @@ pub fn row_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), per
     Ok(load(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
 }
 
+/// P at each of `lambdas` (in (0, `lambda_max`]) on the discretisation `(nodes, n)` from one
+/// collocation on (0, `lambda_max`) ([`crate::adhesion::friction::spectral_row_load::loads_below`]):
+/// one load's cost for a whole column of the report's stability map with friction.
+pub fn row_loads(
+    beta: f64,
+    mu: f64,
+    lambda_max: f64,
+    lambdas: &[f64],
+    (nodes, n): (usize, usize),
+    periodic: bool,
+) -> Result<Vec<f64>, Error> {
+    let theta0 = crate::params::sliding::theta_f64(beta * mu);
+    let at = |e: &f64| increment_f64(beta, mu, *e, n, periodic);
+    Ok(crate::adhesion::friction::spectral_row_load::loads_below(&lambda_max, lambdas, theta0, nodes, at)?)
+}
+
 /// lambda = pi a/L of the given half width `a` within (0, [`LAMBDA_MAX`]], or the input error
 /// naming `half_width`.
 fn answered_lambda(lambda: f64, a: &Exact) -> Result<(), Error> {

@@ -154,12 +154,12 @@ pub fn section(ctx: &Ctx) -> Section {
         "\nThe spectral method and the marches agree within the marches' estimates. Toward complete adhesion on the row \
          (nu = 0.3, docs/theory.md 17.8) the gap in the load is 5e-5 .. 0.012 at mu = 1 and falls with mu, but from \
          mu = 2 .. 4 on the slip zones are narrower than the f64 root resolves (1.2e-4 a), so its rate in 1/mu is not \
-         measured. Not here: the Problem 2 stability map with friction (every cell a spectral load, costlier than the \
-         complete-adhesion cell: section 5's grid would add minutes), an MPFR load with verified digits (issue 32).\n"
+         measured. Not here: an MPFR load with verified digits (issue 32).\n"
     );
     for f in &failed {
         let _ = writeln!(md, "Not computed: {f}.\n");
     }
+    super::friction_map::part(ctx, &mut s);
     s.findings.push(
         "Finite friction (nu = 0, mu = 1/2): the single punch sticks on c/a = 0.52 with 15% more load than Hertz; on \
          the periodic row the stick zone shrinks with lambda in `paper` and grows toward the whole contact in \

@@ -18,7 +18,8 @@
 //! 11. timings of this run with the machine, in `timings.md` (kept out of `report.md`, which is
 //!     deterministic and snapshot-tested);
 //! 12. finite friction ([`friction`]: the single punch and the periodic row with stick and slip,
-//!     after the timings so that the sections before it keep their text).
+//!     after the timings so that the sections before it keep their text; its last part the Problem
+//!     2 stability map with friction, [`friction_map`]).
 //!
 //! No line of `report.md` exceeds [`summary::LONGEST_LINE`] characters.
 //!
@@ -31,6 +32,7 @@ pub mod choice;
 pub mod coefficients;
 pub mod conventions;
 pub mod friction;
+pub mod friction_map;
 pub mod html;
 pub mod loading_law;
 pub mod orders;

@@ -23,7 +23,8 @@ const BINS: [&str; 5] = [">= 12 digits", "6 to 12 digits", "< 6 digits", "failed
 /// Palette indices of the bins (green, orange, red, grey, purple), the same in every map.
 const BIN_COLOURS: [usize; 5] = [2, 3, 1, 7, 4];
 
-fn bin(d: Result<Option<f64>, ()>) -> usize {
+/// The bin of a cell: Err(()) failed, Ok(None) unjudged, Ok(Some(d)) by its digits d.
+pub(crate) fn bin(d: Result<Option<f64>, ()>) -> usize {
     match d {
         Err(()) => 3,
         Ok(None) => 4,
@@ -161,12 +162,20 @@ fn horizon_curves() -> Vec<Curve> {
 /// One map per method: the cells binned by digits (legend: the bins); the Problem 2 maps also the
 /// horizon's curves ([`horizon_curves`]).
 fn map_chart(stem: &str, title: &str, x_name: &str, knob: &Knob, i: usize, cells: &[Cell]) -> Chart {
+    let points: Vec<(f64, f64, usize)> = cells.iter().map(|c| (c.x, c.lambda, bin(c.digits[i]))).collect();
+    binned_chart(stem, &format!("{title}: {}", knob.label()), x_name, &points)
+}
+
+/// A map of cells (x, lambda, [`bin`]) in the bins' colours; with `x_name` "nu" (Problem 2) also
+/// the horizon's curves ([`horizon_curves`]). Shared with the map with friction
+/// ([`super::friction_map`]), so that the two compare cell for cell.
+pub(crate) fn binned_chart(stem: &str, title: &str, x_name: &str, points: &[(f64, f64, usize)]) -> Chart {
     let curves = BINS
         .iter()
         .enumerate()
         .map(|(b, name)| Curve {
             name: name.to_string(),
-            points: cells.iter().filter(|c| bin(c.digits[i]) == b).map(|c| (c.x, c.lambda)).collect(),
+            points: points.iter().filter(|p| p.2 == b).map(|p| (p.0, p.1)).collect(),
             draw: Draw::Markers,
             colour: Some(BIN_COLOURS[b]),
         })
@@ -175,7 +184,7 @@ fn map_chart(stem: &str, title: &str, x_name: &str, knob: &Knob, i: usize, cells
         .collect();
     Chart {
         stem: stem.to_string(),
-        title: format!("{title}: {}", knob.label()),
+        title: title.to_string(),
         x_label: format!("{x_name} [-]"),
         // Problem 2 maps have nu on the x axis; their contact size is the half-width a.
         y_label: if x_name == "nu" { "lambda = pi a/L [-]".into() } else { "lambda = pi l/L [-]".into() },

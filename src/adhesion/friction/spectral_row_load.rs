@@ -58,8 +58,30 @@ pub fn load<T: Real + Send + Sync>(
     nodes: usize,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<T, AdhesionError> {
+    let mut p = loads_below(lambda, std::slice::from_ref(lambda), theta0, nodes, increment_at)?;
+    Ok(p.remove(0))
+}
+
+/// P at each of `lambdas` (each in (0, `lambda`]) from the one collocation of [`load`] on
+/// (0, `lambda`): the Volterra equation (17.11) on (0, chi) involves F on (0, chi) only, so the F
+/// solved up to `lambda` gives P(lambda') = int_0^lambda' tan(eta) F(eta) d eta below it too (how
+/// accurately, against a load solved at lambda' itself: `crates/report/src/friction_map.rs`).
+pub fn loads_below<T: Real + Send + Sync>(
+    lambda: &T,
+    lambdas: &[T],
+    theta0: f64,
+    nodes: usize,
+    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
+) -> Result<Vec<T>, AdhesionError> {
     let one = lambda.lit(1.0);
     let zero = lambda.lit(0.0);
+    if let Some(x) = lambdas.iter().find(|x| !(**x > zero && **x <= *lambda)) {
+        return Err(AdhesionError::InvalidArgument {
+            parameter: "lambdas",
+            value: format!("{:e}", x.to_f64()),
+            expected: format!("0 < lambda' <= {:e} (the collocation's interval)", lambda.to_f64()),
+        });
+    }
     let pi = lambda.pi();
     let nf = lambda.lit(nodes as f64);
     // Chebyshev points of the first kind on (0, lambda) and their barycentric weights
@@ -119,13 +141,16 @@ pub fn load<T: Real + Send + Sync>(
         what: "periodic-row load (spectral Volterra collocation)",
         reason: "the collocation system is singular".into(),
     })?;
-    let mut p = zero.clone();
-    rule.sweep(lambda, &graded(&zero, lambda, None, None), |d_a, _, w| {
-        let l = basis(d_a);
-        let fe = l.iter().zip(&f).fold(zero.clone(), |a, (lj, fj)| a + lj.clone() * fj.clone());
-        p = p.clone() + w.clone() * d_a.sin() / d_a.cos() * fe;
-    });
-    Ok(p)
+    let at = |upper: &T| {
+        let mut p = zero.clone();
+        rule.sweep(upper, &graded(&zero, upper, None, None), |d_a, _, w| {
+            let l = basis(d_a);
+            let fe = l.iter().zip(&f).fold(zero.clone(), |a, (lj, fj)| a + lj.clone() * fj.clone());
+            p = p.clone() + w.clone() * d_a.sin() / d_a.cos() * fe;
+        });
+        p
+    };
+    Ok(lambdas.iter().map(at).collect())
 }
 
 /// The row's load P and stick ratio c/a at one lambda with verified digits ([`verified_mpfr`]).

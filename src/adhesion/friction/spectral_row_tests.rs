@@ -13,7 +13,7 @@ use super::row_f64::row_stick_ratio;
 use super::row_load_f64::march;
 use super::spectral_punch::stick_ratio_f64 as single_stick_ratio;
 use super::spectral_row::{increment_f64, increment_mpfr, outside_slope, stick_ratio_f64, verified};
-use super::spectral_row_load::{load, verified_mpfr};
+use super::spectral_row_load::{load, loads_below, verified_mpfr};
 use super::spectral_row_slope::SlopeTable;
 
 /// beta = 0: whatever the stick zone, s2 is the frictionless flat punch of the row, whose outside
@@ -118,6 +118,27 @@ fn incompressible_load_is_kuznetsov() {
         let exact = -std::f64::consts::PI * f64::cos(lambda).ln();
         eprintln!("lambda {lambda}: P {p} Kuznetsov {exact}: {:.1e}", p / exact - 1.0);
         assert!((p / exact - 1.0).abs() < 1e-8, "lambda {lambda}: {p} vs {exact}");
+    }
+}
+
+/// `loads_below` (the report's map with friction): beta = 0, one collocation on (0, 1.2) gives
+/// Kuznetsov's load at 0.4, 0.8 and 1.2 to 1e-8 relative (measured 1.8e-14; F = pi), its
+/// top the value of `load` at 1.2 bit for bit; a lambda' above the top or not positive is refused,
+/// naming it.
+#[test]
+fn loads_below_are_kuznetsov_below_the_top() {
+    let at = |e: &f64| increment_f64(0.0, 0.5, *e, 10, false);
+    let lambdas = [0.4, 0.8, 1.2];
+    let p = loads_below(&1.2, &lambdas, 0.0, 6, at).unwrap();
+    for (l, v) in lambdas.iter().zip(&p) {
+        let exact = -std::f64::consts::PI * l.cos().ln();
+        eprintln!("lambda {l}: P {v} Kuznetsov {exact}: {:.1e}", v / exact - 1.0);
+        assert!((v / exact - 1.0).abs() < 1e-8, "lambda {l}: {v} vs {exact}");
+    }
+    assert_eq!(p[2].to_bits(), load(&1.2, 0.0, 6, at).unwrap().to_bits());
+    for bad in [1.3, 0.0] {
+        let e = loads_below(&1.2, &[0.4, bad], 0.0, 6, at).unwrap_err().to_string();
+        assert!(e.contains("lambdas") && e.contains("1.2e0"), "{e}");
     }
 }
 

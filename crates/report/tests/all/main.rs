@@ -3,6 +3,7 @@
 
 mod common;
 mod report_choice;
+mod report_friction_map;
 mod report_html_browser;
 mod report_parallel;
 mod report_shapes;
