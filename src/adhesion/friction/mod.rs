@@ -34,6 +34,7 @@ pub mod mesh;
 pub mod quadrature;
 pub mod real;
 pub mod row_f64;
+pub mod row_fields;
 pub mod row_load_f64;
 pub mod single_punch;
 pub mod spectral;
@@ -43,6 +44,8 @@ pub mod spectral_row_load;
 pub mod spectral_row_slope;
 pub mod state_f64;
 
+#[cfg(test)]
+mod row_fields_tests;
 #[cfg(test)]
 mod spectral_row_tests;
 #[cfg(test)]

@@ -58,6 +58,55 @@ pub fn load<T: Real + Send + Sync>(
     nodes: usize,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<T, AdhesionError> {
+    Ok(load_rate(lambda, theta0, nodes, increment_at)?.load)
+}
+
+/// The solved load of [`load`] with what the row's fields need (`row_fields.rs`): F at the
+/// Chebyshev nodes, so P'(eta) = tan(eta) F(eta) at any eta in (0, lambda), and the increments
+/// there.
+#[derive(Debug, Clone)]
+pub struct LoadRate<T> {
+    /// P(lambda).
+    pub load: T,
+    /// The Chebyshev nodes eta_j of (0, lambda).
+    pub nodes: Vec<T>,
+    /// Their barycentric weights.
+    pub weights: Vec<T>,
+    /// F(eta_j).
+    pub values: Vec<T>,
+    /// The increments at the nodes (each at its own stick edge).
+    pub increments: Vec<RowIncrement<T>>,
+}
+
+impl<T: Real> LoadRate<T> {
+    /// The polynomial through `values` at the nodes, evaluated at `e` (barycentric form).
+    pub fn interpolate(&self, values: &[T], e: &T) -> T {
+        let zero = e.lit(0.0);
+        if let Some(k) = self.nodes.iter().position(|x| x == e) {
+            return values[k].clone();
+        }
+        let (mut num, mut den) = (zero.clone(), zero);
+        for ((x, w), v) in self.nodes.iter().zip(&self.weights).zip(values) {
+            let t = w.clone() / (e.clone() - x.clone());
+            num = num + t.clone() * v.clone();
+            den = den + t;
+        }
+        num / den
+    }
+
+    /// P'(eta) = tan(eta) F(eta).
+    pub fn rate(&self, e: &T) -> T {
+        e.sin() / e.cos() * self.interpolate(&self.values, e)
+    }
+}
+
+/// [`load`] with F and the increments kept ([`LoadRate`]).
+pub fn load_rate<T: Real + Send + Sync>(
+    lambda: &T,
+    theta0: f64,
+    nodes: usize,
+    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
+) -> Result<LoadRate<T>, AdhesionError> {
     let one = lambda.lit(1.0);
     let zero = lambda.lit(0.0);
     let pi = lambda.pi();
@@ -125,7 +174,8 @@ pub fn load<T: Real + Send + Sync>(
         let fe = l.iter().zip(&f).fold(zero.clone(), |a, (lj, fj)| a + lj.clone() * fj.clone());
         p = p.clone() + w.clone() * d_a.sin() / d_a.cos() * fe;
     });
-    Ok(p)
+    let increments = incs.into_iter().map(|(inc, _)| inc).collect();
+    Ok(LoadRate { load: p, nodes: eta, weights: bary, values: f, increments })
 }
 
 /// The row's load P and stick ratio c/a at one lambda with verified digits ([`verified_mpfr`]).
