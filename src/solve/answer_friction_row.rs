@@ -34,7 +34,8 @@
 //! the verified load inverted: several such loads), at most [`MPFR_ROW_MAX_DIGITS`] digits (the
 //! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
 
-use super::answer_friction::{digits, finite_f64, solvable_parabola, ESTIMATE_SAFETY, FIELD_SAFETY, FRICTION_NOTE_ROW};
+use super::answer_friction::FRICTION_NOTE_ROW;
+use super::answer_friction::{digits, finite_f64, inequality_checks, solvable_parabola, ESTIMATE_SAFETY, FIELD_SAFETY};
 use super::render::{AdhesionAnswer, DigitsKind, FieldRow, FrictionCheck, Measured, Provenance, StickSlip};
 use crate::adhesion::friction::fields::PointFields;
 use crate::adhesion::friction::row_f64::row_stick_ratio;
@@ -226,7 +227,7 @@ pub fn row_answer(
     // unevaluated step of lambda and the rounding are added relative to the field
     let (fields, field_digits) =
         field_rows(&fl, points, (stress, strain), ESTIMATE_SAFETY * step / l2 + ROUNDING + INTERPOLATION);
-    let mut checks = inequality_checks(&fl);
+    let mut checks = row_checks(&fl);
     checks.push(march_check(beta, mu, l2, periodic, g2));
     Ok(AdhesionAnswer {
         provenance: Provenance {
@@ -292,39 +293,26 @@ fn field_rows(
 
 /// The inequality checks of the row (module doc), errors times [`ESTIMATE_SAFETY`], keys as the
 /// single punch's.
-fn inequality_checks(fl: &RowFieldsF64) -> Vec<FrictionCheck> {
-    let c = &fl.checks;
+fn row_checks(fl: &RowFieldsF64) -> Vec<FrictionCheck> {
     let how = format!(
         "superposed from the increments of the load on {} and {} nodes (the answer's); error: twice their difference",
         COARSE.0, FINE.0
     );
-    vec![
-        FrictionCheck {
-            name: "stick_friction_ratio_max",
-            value: Some(c.stick_ratio.value),
-            error: ESTIMATE_SAFETY * c.stick_ratio.error,
-            means: format!(
+    inequality_checks(
+        &fl.checks,
+        [
+            format!(
                 "max of |q1|/(mu q2) at x/c = 0.1 .. 0.9 and 1 - 10^-k (k = 2 .. 6) at the answer's contact: \
                  Coulomb's inequality holds where it is <= 1 (it tends to 1 at the stick edge); {how}"
             ),
-        },
-        FrictionCheck {
-            name: "pressure_min_over_max",
-            value: Some(c.pressure_min.value),
-            error: ESTIMATE_SAFETY * c.pressure_min.error,
-            means: format!("min q2 / max q2 at x/a = j/16 (j = 0 .. 15) and the points: >= 0 is no tension; {how}"),
-        },
-        FrictionCheck {
-            name: "outward_slip_rate_max",
-            value: Some(c.outward_slip.value),
-            error: ESTIMATE_SAFETY * c.outward_slip.error,
-            means: format!(
+            format!("min q2 / max q2 at x/a = j/16 (j = 0 .. 15) and the points: >= 0 is no tension; {how}"),
+            format!(
                 "max over the load's nodes (the contacts of the loading history) and the slip zones c < x < a of the \
                  slip rate du/dP2 (outward positive) over its largest magnitude: <= 0 is inward slip against \
                  q1 = mu q2 sign(x) at every stage, no slip reversal; {how}"
             ),
-        },
-    ]
+        ],
+    )
 }
 
 /// The refusal of a method other than f64 and mpfr for the row (module doc).

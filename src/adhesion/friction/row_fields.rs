@@ -1,5 +1,5 @@
 //! The periodic row's fields q1, q2, psi at points and the checks of its inequalities
-//! (docs/theory.md section 17.8, "The fields", (17.12)-(17.14)), `f64`, superposed from the
+//! (docs/theory.md section 17.8, "The row's fields", (17.12)-(17.14)), `f64`, superposed from the
 //! increments of the spectral load ([`super::spectral_row_load::load_rate`]).
 //!
 //! Units L = pi (x = chi, a = lambda), E* = k = 1. The unit increment at contact eta is

@@ -429,6 +429,12 @@ impl<T: Real> Spectral<T> {
     /// (1/pi) int_-1^1 s2(T')/(t - T') dT' at t > 1, given by `beyond` = t - 1 (> 0): the outside
     /// slope H\[s2\](t) of a solved increment (the row's W of (17.11) up to the factor 1/tau).
     pub fn outside_slope(&self, inc: &SpectralIncrement<T>, beyond: &T) -> T {
+        self.outside_cauchy(inc, beyond, false)
+    }
+
+    /// (1/pi) int_-1^1 s(T')/(t - T') dT' at t = 1 + `beyond` (> 0) for s = s2 (`odd` false) or
+    /// s = s1 (`odd`: the slip zones' s1 = +-mu s2).
+    fn outside_cauchy(&self, inc: &SpectralIncrement<T>, beyond: &T, odd: bool) -> T {
         let gamma = &inc.gamma;
         let zero = gamma.lit(0.0);
         let one = gamma.lit(1.0);
@@ -437,18 +443,20 @@ impl<T: Real> Spectral<T> {
         let len = gamma.lit(2.0) * gamma.clone();
         let near = one.clone() - gamma.clone() + beyond.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, Some(&near)), |d_a, d_b, w| {
-            let s2 = self.normal_density(inc, false, d_a, d_b);
-            sum = sum.clone() + w.clone() * s2 / (near.clone() + d_b.clone());
+            let (s2, s1) = self.densities(inc, false, d_a, d_b);
+            let s = if odd { s1 } else { s2 };
+            sum = sum.clone() + w.clone() * s / (near.clone() + d_b.clone());
         });
         let len = one.clone() - gamma.clone();
+        let (factor, mirror) = if odd { (self.mu.clone(), -one.clone()) } else { (one.clone(), one.clone()) };
         self.rule.sweep(&len, &graded(&zero, &len, None, Some(beyond)), |d_a, d_b, w| {
             if *d_b == zero || *w == zero {
                 return; // a tail node underflowed (f64, beyond below 1e-20): it adds nothing
             }
             let s2 = self.normal_density(inc, true, d_a, d_b);
             let eta = gamma.clone() + d_a.clone();
-            let k = one.clone() / (beyond.clone() + d_b.clone()) + one.clone() / (t.clone() + eta);
-            sum = sum.clone() + w.clone() * s2 * k;
+            let k = one.clone() / (beyond.clone() + d_b.clone()) + mirror.clone() / (t.clone() + eta);
+            sum = sum.clone() + w.clone() * factor.clone() * s2 * k;
         });
         sum / gamma.pi()
     }
@@ -510,28 +518,7 @@ impl<T: Real> Spectral<T> {
     /// As [`Spectral::slip_zone_strain`] outside the contact, at x = 1 + `beyond` (> 0), where
     /// s2 = 0: `constant` - H\[s1\](x), the stick zone's s1 and the slip zones' s1 = +-mu s2.
     pub fn outside_strain(&self, inc: &SpectralIncrement<T>, constant: &T, beyond: &T) -> T {
-        let gamma = &inc.gamma;
-        let zero = gamma.lit(0.0);
-        let one = gamma.lit(1.0);
-        let t = one.clone() + beyond.clone();
-        let mut sum = zero.clone();
-        let len = gamma.lit(2.0) * gamma.clone();
-        let near = one.clone() - gamma.clone() + beyond.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, None, Some(&near)), |d_a, d_b, w| {
-            let (_, s1) = self.densities(inc, false, d_a, d_b);
-            sum = sum.clone() + w.clone() * s1 / (near.clone() + d_b.clone());
-        });
-        let len = one.clone() - gamma.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, None, Some(beyond)), |d_a, d_b, w| {
-            if *d_b == zero || *w == zero {
-                return; // a tail node underflowed (f64): it adds nothing
-            }
-            let s2 = self.normal_density(inc, true, d_a, d_b);
-            let x = gamma.clone() + d_a.clone();
-            let k = one.clone() / (beyond.clone() + d_b.clone()) - one.clone() / (t.clone() + x);
-            sum = sum.clone() + w.clone() * self.mu.clone() * s2 * k;
-        });
-        constant.clone() - sum / gamma.pi()
+        constant.clone() - self.outside_cauchy(inc, beyond, true)
     }
 
     /// The tanh-sinh rule of the method's integrals.

@@ -21,6 +21,9 @@
 //! increments with their tables, and the collocation rows, are computed on all CPUs
 //! ([`crate::numerics::parallel::map`]).
 //!
+//! [`load_rate`]: the same load with F's values and the node increments kept ([`LoadRate`]:
+//! P'(eta) at any eta, for the row's fields of `row_fields.rs`).
+//!
 //! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/0.7 + 2 nodes, n = digits + 4
 //! polynomials per family, B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in
 //! [`super::spectral_row`]) and (N + 3, n + 4, B + 24); the printed digits are where they agree
