@@ -28,7 +28,7 @@
 
 use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance};
 use super::render::{FieldRow, FrictionCheck};
-use crate::adhesion::friction::fields::{fields, FieldsF64};
+use crate::adhesion::friction::fields::{fields, Checks, FieldsF64};
 use crate::adhesion::friction::single_punch::{self, Method, SinglePunchF64};
 use crate::adhesion::friction::spectral_punch;
 use crate::error::Error;
@@ -214,6 +214,19 @@ pub fn friction_answer(
     })
 }
 
+/// The three inequality checks (stick ratio, pressure minimum, outward slip) with what each
+/// `means`, errors times [`ESTIMATE_SAFETY`]: the single punch's and the row's keys.
+pub(crate) fn inequality_checks(c: &Checks, means: [String; 3]) -> Vec<FrictionCheck> {
+    let names = ["stick_friction_ratio_max", "pressure_min_over_max", "outward_slip_rate_max"];
+    let checks = [c.stick_ratio, c.pressure_min, c.outward_slip];
+    names
+        .into_iter()
+        .zip(checks)
+        .zip(means)
+        .map(|((name, k), means)| FrictionCheck { name, value: Some(k.value), error: ESTIMATE_SAFETY * k.error, means })
+        .collect()
+}
+
 /// The `checks` of a single-punch answer (module doc), errors times [`ESTIMATE_SAFETY`].
 fn checks(
     fl: &FieldsF64,
@@ -222,32 +235,20 @@ fn checks(
 ) -> Vec<FrictionCheck> {
     let c = &fl.checks;
     let mesh = "the state method (n = 80 stick elements) at the answer's c/a; error: twice its difference from n = 40";
-    let mut out = vec![
-        FrictionCheck {
-            name: "stick_friction_ratio_max",
-            value: Some(c.stick_ratio.value),
-            error: ESTIMATE_SAFETY * c.stick_ratio.error,
-            means: format!(
+    let mut out = inequality_checks(
+        c,
+        [
+            format!(
                 "max over the stick zone |x| < c of |q1|/(mu q2), the element at the stick edge left out: \
                  Coulomb's inequality holds where it is <= 1 (it tends to 1 at the stick edge); {mesh}"
             ),
-        },
-        FrictionCheck {
-            name: "pressure_min_over_max",
-            value: Some(c.pressure_min.value),
-            error: ESTIMATE_SAFETY * c.pressure_min.error,
-            means: format!("min q2 / max q2 over the contact: >= 0 is no tension; {mesh}"),
-        },
-        FrictionCheck {
-            name: "outward_slip_rate_max",
-            value: Some(c.outward_slip.value),
-            error: ESTIMATE_SAFETY * c.outward_slip.error,
-            means: format!(
+            format!("min q2 / max q2 over the contact: >= 0 is no tension; {mesh}"),
+            format!(
                 "max over the slip zones c < x < a of the slip rate du/da (outward positive) over its largest \
                  magnitude: <= 0 is inward slip against q1 = mu q2 sign(x) everywhere, no slip reversal; {mesh}"
             ),
-        },
-    ];
+        ],
+    );
     let between = "between the increment method (the answer) and the independent state method, each on n = 40 and 80; \
                    error: twice the sum of their two-mesh differences; agreement is a value below its error";
     match state {

@@ -15,11 +15,18 @@
 //! `tests/friction_scene.rs` checks that the claims hold. About 5-7 digits; the f64 rounding of the
 //! least squares (section 17.8: 7-8 digits at n = 10) bounds more.
 //!
-//! `checks`: the difference of c/a from the independent f64 march of
-//! [`crate::adhesion::friction::row_f64`] (piecewise constants on a graded mesh, n = 20) against
-//! twice that method's own n = 10 / 20 difference. The fields q1, q2, psi are not computed for the
-//! row (the load's public interface gives P at lambda only, not P'(eta), which their superposition
-//! needs), nor the inequality checks of the single punch: a warning says so.
+//! The fields q1, q2, psi at the scene's points x/a (scales E* k L/pi and k L/pi in the row's
+//! units, printed in the scene's) and the inequality checks are superposed from each
+//! discretisation's load and increments ([`crate::adhesion::friction::row_fields`],
+//! docs/theory.md (17.12)-(17.14)); a field's error estimate is [`FIELD_SAFETY`] times the two
+//! discretisations' largest difference over the points (twice undershot it: q1 at x/a = 0.9,
+//! nu = 0, mu = 1/2, lambda = 1.2, `paper`, is 1.9e-6 from 14 nodes against a claim of 1.6e-6; the
+//! interpolated increments carry a floor of about 2e-6, docs/theory.md section 17.8), plus the
+//! relative error of the size times the field, [`ROUNDING`] and [`INTERPOLATION`]. `checks`: the same keys as the single punch's (max |q1|/(mu q2) on
+//! the stick zone, min q2/max q2, the outward slip rate over all load nodes), each with
+//! [`ESTIMATE_SAFETY`] times its two discretisations' difference, and the difference of c/a from
+//! the independent f64 march of [`crate::adhesion::friction::row_f64`] (piecewise constants on a
+//! graded mesh, n = 20) against twice that method's own n = 10 / 20 difference.
 //!
 //! `--method mpfr` ([`row_mpfr_answer`]): P and c/a by the verified MPFR load of
 //! [`crate::adhesion::friction::spectral_row_load::verified_mpfr`] (two runs, their agreement
@@ -27,11 +34,14 @@
 //! the verified load inverted: several such loads), at most [`MPFR_ROW_MAX_DIGITS`] digits (the
 //! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
 
-use super::answer_friction::{digits, finite_f64, solvable_parabola, ESTIMATE_SAFETY, FRICTION_NOTE_ROW};
-use super::render::{AdhesionAnswer, DigitsKind, FrictionCheck, Measured, Provenance, StickSlip};
+use super::answer_friction::FRICTION_NOTE_ROW;
+use super::answer_friction::{digits, finite_f64, inequality_checks, solvable_parabola, ESTIMATE_SAFETY, FIELD_SAFETY};
+use super::render::{AdhesionAnswer, DigitsKind, FieldRow, FrictionCheck, Measured, Provenance, StickSlip};
+use crate::adhesion::friction::fields::PointFields;
 use crate::adhesion::friction::row_f64::row_stick_ratio;
+use crate::adhesion::friction::row_fields::{row_fields, History, RowFieldsF64};
 use crate::adhesion::friction::spectral_row::{increment_f64, stick_ratio_f64};
-use crate::adhesion::friction::spectral_row_load::load;
+use crate::adhesion::friction::spectral_row_load::{load_rate, LoadRate};
 use crate::error::Error;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow};
 use std::f64::consts::PI;
@@ -52,18 +62,37 @@ pub const FINE: (usize, usize) = (10, 8);
 /// lambda = 1.2, `periodic`: 12 nodes with n = 10 and 12 differ by 2.6e-8; section 17.8).
 const ROUNDING: f64 = 3e-8;
 
-/// The warning of every row answer (module doc).
-const NO_FIELDS: &str = "the periodic row with friction: q1, q2, psi at the points and the inequality checks are \
-     computed for the single punch only (period = \"inf\"); none printed here";
+/// The warning of an mpfr row answer given points (module doc).
+const NO_FIELDS: &str = "q1, q2 and psi at the points and the inequality checks of the periodic row are computed by \
+     the f64 method only (--method f64, 4-6 digits)";
+
+/// Relative error added to every field for the increments interpolated between the load's
+/// nodes: twice the largest measured density error of the interpolated increment against one
+/// solved at its eta (9.0e-5 `periodic`, 5.4e-6 `paper` at nu = 0, mu = 1/2, lambda = 1.2, 10
+/// nodes; `row_fields_tests::interpolated_increment_is_the_solved_one`), which the two
+/// discretisations' difference does not see (`periodic`, q2 at x/a = 1/2: 9.3e-5 from 14 nodes,
+/// eight differences 4.0e-5).
+const INTERPOLATION: f64 = 2e-4;
 
 /// Relative step of lambda below which [`invert`] stops.
 const LAMBDA_TOL: f64 = 1e-10;
 
 /// The load P(lambda) on the discretisation `(nodes, n)`.
-pub fn row_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), periodic: bool) -> Result<f64, Error> {
+pub fn row_load(beta: f64, mu: f64, lambda: f64, mesh: (usize, usize), periodic: bool) -> Result<f64, Error> {
+    Ok(row_load_rate(beta, mu, lambda, mesh, periodic)?.load)
+}
+
+/// The load with its rate and increments ([`LoadRate`]) on the discretisation `(nodes, n)`.
+pub fn row_load_rate(
+    beta: f64,
+    mu: f64,
+    lambda: f64,
+    (nodes, n): (usize, usize),
+    periodic: bool,
+) -> Result<LoadRate<f64>, Error> {
     // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
-    Ok(load(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+    Ok(load_rate(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
 }
 
 /// P at each of `lambdas` (in (0, `lambda_max`]) on the discretisation `(nodes, n)` from one
@@ -142,17 +171,23 @@ pub fn invert(
 }
 
 /// The answer of the periodic row of parabolic punches with period `period` and friction
-/// `mu_exact` by `method`: f64 (module doc), or mpfr with `digits_asked` ([`row_mpfr_answer`]).
+/// `mu_exact` by `method`: f64 (module doc), or mpfr with `digits_asked` ([`row_mpfr_answer`]),
+/// with the fields at `points` (x/a in [0, 1]; f64 only).
 pub fn row_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
     period: &Exact,
-    method: crate::scene::Method,
-    digits_asked: u32,
+    (method, digits_asked): (crate::scene::Method, u32),
+    points: &[Exact],
 ) -> Result<AdhesionAnswer, Error> {
     refuse_method(method)?;
+    crate::adhesion::points::check_points(points)?;
     if method == crate::scene::Method::Mpfr {
-        return row_mpfr_answer(p, mu_exact, period, digits_asked);
+        let mut answer = row_mpfr_answer(p, mu_exact, period, digits_asked)?;
+        if !points.is_empty() {
+            answer.warnings.push(NO_FIELDS.into());
+        }
+        return Ok(answer);
     }
     let k = solvable_parabola(p)?;
     let f = finite_f64;
@@ -162,12 +197,13 @@ pub fn row_answer(
     let periodic = p.periodic_surface();
     let unit = e_star * k * (l / PI).powi(2);
     let at = |mesh, lambda| row_load(beta, mu, lambda, mesh, periodic);
-    // (lambda, P) of the two discretisations, and the last unevaluated step of lambda
+    let rate = |mesh, lambda| row_load_rate(beta, mu, lambda, mesh, periodic);
+    // (lambda, load and its history) of the two discretisations, and the last unevaluated step of lambda
     let (coarse, fine, step) = match p.size() {
         AdhesionSize::HalfWidth(a) => {
             let lambda = PI * f(a, "half_width")? / l;
             answered_lambda(lambda, a)?;
-            ((lambda, at(COARSE, lambda)?), (lambda, at(FINE, lambda)?), 0.0)
+            ((lambda, rate(COARSE, lambda)?), (lambda, rate(FINE, lambda)?), 0.0)
         }
         AdhesionSize::NormalLoad(p2) => {
             let target = f(p2, "normal_load")? / unit;
@@ -186,10 +222,11 @@ pub fn row_answer(
             let h = 1e-4 * lc;
             let slope = (target - at(COARSE, lc - h)?) / h;
             let (lf, step) = invert(|x| at(FINE, x), target, Some((lc, slope)))?.map_err(refuse)?;
-            ((lc, target), (lf, target), step)
+            ((lc, rate(COARSE, lc)?), (lf, rate(FINE, lf)?), step)
         }
     };
-    let ((l1, p1), (l2, p2)) = (coarse, fine);
+    let ((l1, r1), (l2, r2)) = (coarse, fine);
+    let (p1, p2) = (r1.load, r2.load);
     let g = |lambda, n| Ok::<f64, Error>(stick_ratio_f64(beta, mu, lambda, n, periodic)?);
     let (g1, g2) = (g(l1, COARSE.1)?, g(l2, FINE.1)?);
     let rel_size = ESTIMATE_SAFETY * (((l2 - l1).abs() + step) / l2).max((p2 - p1).abs() / p2) + ROUNDING;
@@ -197,6 +234,17 @@ pub fn row_answer(
     let a = l2 * l / PI;
     // c on the scale a: the two discretisations' c = (c/a) lambda L/pi, each at its own lambda
     let stick_digits = digits(ESTIMATE_SAFETY * ((g2 * l2 - g1 * l1).abs() + g2 * step) / l2 + ROUNDING);
+    let xs = points.iter().map(|x| f(x, "points")).collect::<Result<Vec<_>, _>>()?;
+    let histories =
+        (History::new(&r1, l1, (beta, mu), COARSE.1, periodic), History::new(&r2, l2, (beta, mu), FINE.1, periodic));
+    let fl = row_fields(&histories.0, &histories.1, &xs);
+    let (stress, strain) = (e_star * k * l / PI, k * l / PI);
+    // each discretisation's fields at its own lambda: their difference holds a's; the last
+    // unevaluated step of lambda and the rounding are added relative to the field
+    let (fields, field_digits) =
+        field_rows(&fl, points, (stress, strain), ESTIMATE_SAFETY * step / l2 + ROUNDING + INTERPOLATION);
+    let mut checks = row_checks(&fl);
+    checks.push(march_check(beta, mu, l2, periodic, g2));
     Ok(AdhesionAnswer {
         provenance: Provenance {
             method: "f64",
@@ -213,13 +261,74 @@ pub fn row_answer(
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::f64(g2 * a, a, stick_digits),
             note: FRICTION_NOTE_ROW,
-            checks: vec![march_check(beta, mu, l2, periodic, g2)],
+            checks,
         }),
-        accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
-        fields: Vec::new(),
+        accuracy: [("size".into(), size_digits), ("stick".into(), stick_digits)]
+            .into_iter()
+            .chain(field_digits)
+            .collect(),
+        fields,
         tension_zones: None,
-        warnings: vec![NO_FIELDS.into()],
+        warnings: Vec::new(),
     })
+}
+
+/// The fields psi, q1, q2 at the points on their scales (E* k L/pi, k L/pi) with their digits
+/// (module doc), and the digits per field for `accuracy`; nothing without points.
+#[allow(clippy::type_complexity)]
+fn field_rows(
+    fl: &RowFieldsF64,
+    points: &[Exact],
+    (stress, strain): (f64, f64),
+    relative: f64,
+) -> (Vec<(String, Vec<FieldRow>)>, Vec<(String, f64)>) {
+    if points.is_empty() {
+        return (Vec::new(), Vec::new());
+    }
+    type Get = fn(&PointFields) -> f64;
+    let all: [(&str, Get, f64); 3] = [("psi", |q| q.psi, strain), ("q1", |q| q.q1, stress), ("q2", |q| q.q2, stress)];
+    let mut rows = Vec::new();
+    let mut accuracy = Vec::new();
+    for (name, get, scale) in all {
+        let big = fl.points.iter().map(|q| get(q).abs()).fold(0.0, f64::max);
+        let d = digits(FIELD_SAFETY * get(&fl.errors) + relative * big);
+        let column = fl
+            .points
+            .iter()
+            .zip(points)
+            .map(|(q, x)| FieldRow {
+                x_over_a: exact_series::q_text(x),
+                value: Measured::f64(get(q) * scale, scale, d),
+            })
+            .collect();
+        rows.push((name.to_string(), column));
+        accuracy.push((name.to_string(), d));
+    }
+    (rows, accuracy)
+}
+
+/// The inequality checks of the row (module doc), errors times [`ESTIMATE_SAFETY`], keys as the
+/// single punch's.
+fn row_checks(fl: &RowFieldsF64) -> Vec<FrictionCheck> {
+    let how = format!(
+        "superposed from the increments of the load on {} and {} nodes (the answer's); error: twice their difference",
+        COARSE.0, FINE.0
+    );
+    inequality_checks(
+        &fl.checks,
+        [
+            format!(
+                "max of |q1|/(mu q2) at x/c = 0.1 .. 0.9 and 1 - 10^-k (k = 2 .. 6) at the answer's contact: \
+                 Coulomb's inequality holds where it is <= 1 (it tends to 1 at the stick edge); {how}"
+            ),
+            format!("min q2 / max q2 at x/a = j/16 (j = 0 .. 15) and the points: >= 0 is no tension; {how}"),
+            format!(
+                "max over the load's nodes (the contacts of the loading history) and the slip zones c < x < a of the \
+                 slip rate du/dP2 (outward positive) over its largest magnitude: <= 0 is inward slip against \
+                 q1 = mu q2 sign(x) at every stage, no slip reversal; {how}"
+            ),
+        ],
+    )
 }
 
 /// The refusal of a method other than f64 and mpfr for the row (module doc).
@@ -314,7 +423,7 @@ pub fn row_mpfr_answer(
         accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
         fields: Vec::new(),
         tension_zones: None,
-        warnings: vec![NO_FIELDS.into()],
+        warnings: Vec::new(),
     })
 }
 

@@ -360,7 +360,7 @@ fn adhesion_friction(
         return adhesion_friction_incompressible(p, scene, mu, req);
     }
     let answer = match p.period() {
-        Period::Finite(l) => answer_friction_row::row_answer(p, mu, l, req.method, req.digits)?,
+        Period::Finite(l) => answer_friction_row::row_answer(p, mu, l, (req.method, req.digits), &scene.output.points)?,
         Period::Infinite => answer_friction::friction_answer(p, mu, req.method, req.digits, &scene.output.points)?,
     };
     let mpfr = answer.provenance.method == "mpfr";

@@ -21,7 +21,9 @@
 //! spectral method in the tangent variable ([`spectral_row`]: the increment and c/a in `f64` and
 //! MPFR with verified digits; [`spectral_row_load`]: the load from the Volterra equation (17.11)
 //! at high order, generic, and in MPFR with verified digits; [`spectral_row_slope`]: the outside
-//! slope of one increment from a stored table; checks in `spectral_row_tests.rs`).
+//! slope of one increment from a stored table; checks in `spectral_row_tests.rs`); [`row_fields`]:
+//! the row's q1, q2, psi and the checks of its inequalities, superposed from the load's increments
+//! (checks in `row_fields_tests.rs`).
 //!
 //! Scenes with `[adhesion] friction` reach these through `solve` (`src/solve/answer_friction.rs`,
 //! `src/solve/answer_friction_row.rs`, docs/theory.md section 17.5): the single punch by f64 or by
@@ -34,6 +36,7 @@ pub mod mesh;
 pub mod quadrature;
 pub mod real;
 pub mod row_f64;
+pub mod row_fields;
 pub mod row_load_f64;
 pub mod single_punch;
 pub mod spectral;
@@ -43,6 +46,8 @@ pub mod spectral_row_load;
 pub mod spectral_row_slope;
 pub mod state_f64;
 
+#[cfg(test)]
+mod row_fields_tests;
 #[cfg(test)]
 mod spectral_row_tests;
 #[cfg(test)]

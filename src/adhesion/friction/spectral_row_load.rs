@@ -21,6 +21,9 @@
 //! increments with their tables, and the collocation rows, are computed on all CPUs
 //! ([`crate::numerics::parallel::map`]).
 //!
+//! [`load_rate`]: the same load with F's values and the node increments kept ([`LoadRate`]:
+//! P'(eta) at any eta, for the row's fields of `row_fields.rs`).
+//!
 //! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/0.7 + 2 nodes, n = digits + 4
 //! polynomials per family, B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in
 //! [`super::spectral_row`]) and (N + 3, n + 4, B + 24); the printed digits are where they agree
@@ -58,8 +61,7 @@ pub fn load<T: Real + Send + Sync>(
     nodes: usize,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<T, AdhesionError> {
-    let mut p = loads_below(lambda, std::slice::from_ref(lambda), theta0, nodes, increment_at)?;
-    Ok(p.remove(0))
+    Ok(load_rate(lambda, theta0, nodes, increment_at)?.load)
 }
 
 /// P at each of `lambdas` (each in (0, `lambda`]) from the one collocation of [`load`] on
@@ -73,6 +75,66 @@ pub fn loads_below<T: Real + Send + Sync>(
     nodes: usize,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<Vec<T>, AdhesionError> {
+    Ok(collocate(lambda, lambdas, theta0, nodes, increment_at)?.0)
+}
+
+/// The solved load of [`load`] with what the row's fields need (`row_fields.rs`): F at the
+/// Chebyshev nodes, so P'(eta) = tan(eta) F(eta) at any eta in (0, lambda), and the increments
+/// there.
+#[derive(Debug, Clone)]
+pub struct LoadRate<T> {
+    /// P(lambda).
+    pub load: T,
+    /// The Chebyshev nodes eta_j of (0, lambda).
+    pub nodes: Vec<T>,
+    /// Their barycentric weights.
+    pub weights: Vec<T>,
+    /// F(eta_j).
+    pub values: Vec<T>,
+    /// The increments at the nodes (each at its own stick edge).
+    pub increments: Vec<RowIncrement<T>>,
+}
+
+impl<T: Real> LoadRate<T> {
+    /// The polynomial through `values` at the nodes, evaluated at `e` (barycentric form).
+    pub fn interpolate(&self, values: &[T], e: &T) -> T {
+        let zero = e.lit(0.0);
+        if let Some(k) = self.nodes.iter().position(|x| x == e) {
+            return values[k].clone();
+        }
+        let (mut num, mut den) = (zero.clone(), zero);
+        for ((x, w), v) in self.nodes.iter().zip(&self.weights).zip(values) {
+            let t = w.clone() / (e.clone() - x.clone());
+            num = num + t.clone() * v.clone();
+            den = den + t;
+        }
+        num / den
+    }
+
+    /// P'(eta) = tan(eta) F(eta).
+    pub fn rate(&self, e: &T) -> T {
+        e.sin() / e.cos() * self.interpolate(&self.values, e)
+    }
+}
+
+/// [`load`] with F and the increments kept ([`LoadRate`]).
+pub fn load_rate<T: Real + Send + Sync>(
+    lambda: &T,
+    theta0: f64,
+    nodes: usize,
+    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
+) -> Result<LoadRate<T>, AdhesionError> {
+    Ok(collocate(lambda, &[], theta0, nodes, increment_at)?.1)
+}
+
+/// The collocation of (17.11) on (0, `lambda`): P at each of `lambdas` and the [`LoadRate`].
+fn collocate<T: Real + Send + Sync>(
+    lambda: &T,
+    lambdas: &[T],
+    theta0: f64,
+    nodes: usize,
+    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
+) -> Result<(Vec<T>, LoadRate<T>), AdhesionError> {
     let one = lambda.lit(1.0);
     let zero = lambda.lit(0.0);
     if let Some(x) = lambdas.iter().find(|x| !(**x > zero && **x <= *lambda)) {
@@ -150,7 +212,10 @@ pub fn loads_below<T: Real + Send + Sync>(
         });
         p
     };
-    Ok(lambdas.iter().map(at).collect())
+    let below = lambdas.iter().map(at).collect();
+    let p = at(lambda);
+    let increments = incs.into_iter().map(|(inc, _)| inc).collect();
+    Ok((below, LoadRate { load: p, nodes: eta, weights: bary, values: f, increments }))
 }
 
 /// The row's load P and stick ratio c/a at one lambda with verified digits ([`verified_mpfr`]).
