@@ -1,8 +1,8 @@
 //! The periodic row with finite friction (`[adhesion] friction`, a finite period; docs/theory.md
 //! sections 17.5 and 17.8) as an [`AdhesionAnswer`]: the parabola g = k x^2, normal loading, both
 //! surface conventions, by the spectral method in `f64`: the load P(lambda) of the edge-slope
-//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load`], P2 =
-//! E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
+//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load_with`], nodes
+//! in eta^2 in `paper`, P2 = E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
 //! ([`crate::adhesion::friction::spectral_row::stick_ratio_f64`]):
 //!     given a:  lambda = pi a/L, P2 = P(lambda) E* k (L/pi)^2, c = (c/a)(lambda) a;
 //!     given P2: lambda where P(lambda) = P2/(E* k (L/pi)^2) ([`invert`]: the frictionless shape
@@ -31,7 +31,7 @@ use super::answer_friction::{digits, finite_f64, solvable_parabola, ESTIMATE_SAF
 use super::render::{AdhesionAnswer, DigitsKind, FrictionCheck, Measured, Provenance, StickSlip};
 use crate::adhesion::friction::row_f64::row_stick_ratio;
 use crate::adhesion::friction::spectral_row::{increment_f64, stick_ratio_f64};
-use crate::adhesion::friction::spectral_row_load::load;
+use crate::adhesion::friction::spectral_row_load::{load_with, NodeRule};
 use crate::error::Error;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow};
 use std::f64::consts::PI;
@@ -59,11 +59,12 @@ const NO_FIELDS: &str = "the periodic row with friction: q1, q2, psi at the poin
 /// Relative step of lambda below which [`invert`] stops.
 const LAMBDA_TOL: f64 = 1e-10;
 
-/// The load P(lambda) on the discretisation `(nodes, n)`.
+/// The load P(lambda) on the discretisation `(nodes, n)`, in the convention's node rule.
 pub fn row_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), periodic: bool) -> Result<f64, Error> {
     // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
-    Ok(load(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+    let rule = NodeRule::of_convention(periodic);
+    Ok(load_with(&lambda, theta0, nodes, rule, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
 }
 
 /// lambda = pi a/L of the given half width `a` within (0, [`LAMBDA_MAX`]], or the input error
