@@ -10,6 +10,7 @@ pub mod exact;
 pub(crate) mod fixed_float;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
+pub(crate) mod mp_elementary;
 pub mod pade;
 pub mod parallel;
 pub mod precision;

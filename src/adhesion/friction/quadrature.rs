@@ -74,13 +74,17 @@ impl<T: Real> DoubleExp<T> {
     /// p, q are offsets from the zone's start a, d_a = x - a and d_b = b - x the node's distances
     /// to the zone's ends (exact at a piece that touches an end).
     pub fn sweep(&self, len: &T, pieces: &[(T, T)], mut f: impl FnMut(&T, &T, &T)) {
+        // in place: one set of values reused for every node
+        let mut l = len.clone();
+        let (mut rest, mut d_a, mut d_b, mut w) = (len.clone(), len.clone(), len.clone(), len.clone());
         for (p, q) in pieces {
-            let l = q.clone() - p.clone();
-            let rest = len.clone() - q.clone();
+            l.set_sub(q, p);
+            rest.set_sub(len, q);
             for k in 0..self.s.len() {
-                let d_a = p.clone() + l.clone() * self.s[k].clone();
-                let d_b = rest.clone() + l.clone() * self.c[k].clone();
-                f(&d_a, &d_b, &(l.clone() * self.w[k].clone()));
+                d_a.set_mul_add(&l, &self.s[k], p);
+                d_b.set_mul_add(&l, &self.c[k], &rest);
+                w.set_mul(&l, &self.w[k]);
+                f(&d_a, &d_b, &w);
             }
         }
     }
@@ -128,35 +132,41 @@ pub fn least_squares<T: Real>(mut a: Vec<Vec<T>>, mut b: Vec<T>) -> Option<Vec<T
         return None;
     }
     let zero = b[0].lit(0.0);
+    let mut s = zero.clone();
     for (row, bi) in a.iter_mut().zip(b.iter_mut()) {
-        let s = row.iter().fold(zero.clone(), |acc, v| acc + v.clone() * v.clone()).sqrt();
+        s.set(&zero);
+        for v in row.iter() {
+            s.add_mul(v, v);
+        }
+        let s = s.sqrt();
         if s == zero {
             return None;
         }
         for v in row.iter_mut() {
-            *v = v.clone() / s.clone();
+            *v /= &s;
         }
-        *bi = bi.clone() / s;
+        *bi /= &s;
     }
     let mut scale = Vec::with_capacity(n);
     for j in 0..n {
-        let mut s = zero.clone();
+        s.set(&zero);
         for row in a.iter() {
-            s = s + row[j].clone() * row[j].clone();
+            s.add_mul(&row[j], &row[j]);
         }
         let s = s.sqrt();
         if s == zero {
             return None;
         }
         for row in a.iter_mut() {
-            row[j] = row[j].clone() / s.clone();
+            row[j] /= &s;
         }
         scale.push(s);
     }
+    let (mut dot, mut f) = (zero.clone(), zero.clone());
     for k in 0..n {
         let mut norm2 = zero.clone();
         for row in a.iter().skip(k) {
-            norm2 = norm2 + row[k].clone() * row[k].clone();
+            norm2.add_mul(&row[k], &row[k]);
         }
         let norm = norm2.sqrt();
         if norm == zero {
@@ -165,20 +175,28 @@ pub fn least_squares<T: Real>(mut a: Vec<Vec<T>>, mut b: Vec<T>) -> Option<Vec<T
         let alpha = if a[k][k] > zero { -norm } else { norm };
         let v0 = a[k][k].clone() - alpha.clone();
         let v: Vec<T> = (k..m).map(|i| if i == k { v0.clone() } else { a[i][k].clone() }).collect();
-        let vtv = v.iter().fold(zero.clone(), |acc, x| acc + x.clone() * x.clone());
+        let mut vtv = zero.clone();
+        for x in &v {
+            vtv.add_mul(x, x);
+        }
         let two_over = b[0].lit(2.0) / vtv;
-        #[allow(clippy::needless_range_loop)] // column j of the rows k..m
         for j in k + 1..n {
-            let dot = (k..m).fold(zero.clone(), |acc, i| acc + v[i - k].clone() * a[i][j].clone());
-            let f = dot * two_over.clone();
+            dot.set(&zero);
+            for (row, vi) in a[k..m].iter().zip(&v) {
+                dot.add_mul(vi, &row[j]);
+            }
+            f.set_mul(&dot, &two_over);
             for (row, vi) in a[k..m].iter_mut().zip(&v) {
-                row[j] = row[j].clone() - f.clone() * vi.clone();
+                row[j].sub_mul(&f, vi);
             }
         }
-        let dot = (k..m).fold(zero.clone(), |acc, i| acc + v[i - k].clone() * b[i].clone());
-        let f = dot * two_over;
-        for i in k..m {
-            b[i] = b[i].clone() - f.clone() * v[i - k].clone();
+        dot.set(&zero);
+        for (bi, vi) in b[k..m].iter().zip(&v) {
+            dot.add_mul(vi, bi);
+        }
+        f.set_mul(&dot, &two_over);
+        for (bi, vi) in b[k..m].iter_mut().zip(&v) {
+            bi.sub_mul(&f, vi);
         }
         a[k][k] = alpha;
     }
@@ -186,12 +204,16 @@ pub fn least_squares<T: Real>(mut a: Vec<Vec<T>>, mut b: Vec<T>) -> Option<Vec<T
     for k in (0..n).rev() {
         let mut s = b[k].clone();
         for j in k + 1..n {
-            s = s - a[k][j].clone() * x[j].clone();
+            s.sub_mul(&a[k][j], &x[j]);
         }
         if a[k][k] == zero {
             return None;
         }
-        x[k] = s / a[k][k].clone();
+        s /= &a[k][k];
+        x[k] = s;
     }
-    Some(x.into_iter().zip(scale).map(|(xi, s)| xi / s).collect())
+    for (xi, s) in x.iter_mut().zip(&scale) {
+        *xi /= s;
+    }
+    Some(x)
 }

@@ -60,6 +60,7 @@ pub struct SpectralIncrement<T> {
     mu: T,
     alpha: T,
     omega: T,
+    zones: Zones<T>,
 }
 
 /// The problem's constants at one precision.
@@ -82,17 +83,94 @@ pub struct Spectral<T> {
     oversample: usize,
 }
 
-fn chebyshev<T: Real>(u: &T, n: usize) -> Vec<T> {
-    let mut t = Vec::with_capacity(n);
-    t.push(u.lit(1.0));
-    if n > 1 {
-        t.push(u.clone());
+/// Constants of the basis at one gamma, computed once (not per quadrature node).
+#[derive(Debug, Clone)]
+struct Zones<T> {
+    one: T,
+    two: T,
+    /// 2 gamma.
+    two_g: T,
+    /// gamma^2.
+    gg: T,
+    /// 1 - gamma (the slip zone's length).
+    one_g: T,
+    /// ln((1 + gamma)/(1 - gamma)): v = 1 at the stick edge.
+    sigma_g: T,
+    /// ln(1 + (1 - gamma)/(2 gamma)): s = 1 at the contact edge (the row's slip variable).
+    slip_log: T,
+}
+
+impl<T: Real> Zones<T> {
+    fn new(gamma: &T) -> Zones<T> {
+        let (one, two) = (gamma.lit(1.0), gamma.lit(2.0));
+        let two_g = two.clone() * gamma.clone();
+        let one_g = one.clone() - gamma.clone();
+        Zones {
+            gg: gamma.clone() * gamma.clone(),
+            sigma_g: ((one.clone() + gamma.clone()) / one_g.clone()).ln(),
+            slip_log: (one_g.clone() / two_g.clone()).ln_1p(),
+            one,
+            two,
+            two_g,
+            one_g,
+        }
     }
-    for k in 2..n {
-        let next = u.lit(2.0) * u.clone() * t[k - 1].clone() - t[k - 2].clone();
-        t.push(next);
+}
+
+/// The basis at one quadrature node, in storage reused from node to node: the Chebyshev values
+/// T_k and the families' factors (stick zone: w^alpha, z, z w^alpha; slip zone: (1 - zeta)^omega,
+/// (1 - zeta)^omega zeta^alpha), so family f's k-th value is fac[f] T_k (the first stick family:
+/// T_k).
+struct Node<T> {
+    t: Vec<T>,
+    fac: [T; 3],
+    a: T,
+    b: T,
+    c: T,
+}
+
+impl<T: Real> Node<T> {
+    fn new(like: &T, n: usize) -> Node<T> {
+        let z = like.lit(0.0);
+        Node { t: vec![z.clone(); n], fac: [z.clone(), z.clone(), z.clone()], a: z.clone(), b: z.clone(), c: z }
     }
-    t
+
+    /// T_k(u), k < n, into `t` (u in `a`; `b` scratch).
+    fn chebyshev(&mut self, zn: &Zones<T>) {
+        let n = self.t.len();
+        self.t[0].set(&zn.one);
+        if n > 1 {
+            self.t[1].set(&self.a);
+        }
+        self.b.set_mul(&zn.two, &self.a);
+        for k in 2..n {
+            let (lo, hi) = self.t.split_at_mut(k);
+            hi[0].set_mul_sub(&self.b, &lo[k - 1], &lo[k - 2]);
+        }
+    }
+
+    /// Family `f`'s values as a vector (the first stick family's factor is one).
+    fn family(&self, f: Option<usize>) -> impl Iterator<Item = T> + '_ {
+        self.t.iter().map(move |v| match f {
+            None => v.clone(),
+            Some(i) => self.fac[i].clone() * v.clone(),
+        })
+    }
+}
+
+/// h\[j\] += (fac T_j - f_j) k for j < n (the principal value's subtraction, `f` the values at
+/// the pole) or h\[j\] += (fac T_j) k (`f` None); fac None: one.
+fn accumulate<T: Real>(h: &mut [T], k: &T, fac: Option<&T>, t: &[T], f: Option<&[T]>, tmp: &mut T) {
+    for (j, (hj, tj)) in h.iter_mut().zip(t).enumerate() {
+        match (fac, f) {
+            (None, None) => tmp.set(tj),
+            (Some(c), None) => tmp.set_mul(c, tj),
+            (None, Some(f)) => tmp.set_sub(tj, &f[j]),
+            (Some(c), Some(f)) => tmp.set_mul_sub(c, tj, &f[j]),
+        }
+        *tmp *= k;
+        *hj += &*tmp;
+    }
 }
 
 /// A collocation point: x with its distances to gamma (gamma - x, negative on the slip zone) and
@@ -154,93 +232,131 @@ impl<T: Real> Spectral<T> {
         sp
     }
 
+    /// The stick zone's basis at the point with distances d_a = x + gamma and d_b = gamma - x
+    /// into `nd`: T_k(u) and the factors w^alpha, z, z w^alpha.
+    fn stick_node(&self, zn: &Zones<T>, d_a: &T, d_b: &T, nd: &mut Node<T>) {
+        // z = (d_a - d_b)/(2 gamma), w = d_a d_b/gamma^2
+        nd.b.set_sub(d_a, d_b);
+        nd.b /= &zn.two_g;
+        nd.fac[1].set(&nd.b);
+        nd.a.set_mul(d_a, d_b);
+        nd.a /= &zn.gg;
+        nd.fac[0] = nd.a.powr(&self.alpha);
+        // v = artanh(x)/artanh(gamma): the slip zones' edge singularities at x = +-1 pushed to
+        // infinity (section 17.7); u = 2 v^2 - 1
+        nd.b.set(&zn.one_g);
+        nd.b += d_a;
+        nd.c.set(&zn.one_g);
+        nd.c += d_b;
+        nd.b /= &nd.c;
+        let mut v = nd.b.ln();
+        v /= &zn.sigma_g;
+        nd.a.set_mul(&zn.two, &v);
+        nd.a *= &v;
+        nd.a -= &zn.one;
+        let [wa, z, zwa] = &mut nd.fac;
+        zwa.set_mul(z, wa);
+        nd.chebyshev(zn);
+    }
+
+    /// The slip zone's basis at distances d_a = x - gamma, d_b = 1 - x into `nd`: T_k(y) and
+    /// the factors (1 - zeta)^omega and (1 - zeta)^omega zeta^alpha.
+    fn slip_node(&self, zn: &Zones<T>, d_a: &T, d_b: &T, nd: &mut Node<T>) {
+        // zeta = d_a/(1 - gamma), 1 - zeta = d_b/(1 - gamma)
+        nd.b.set(d_a);
+        nd.b /= &zn.one_g;
+        nd.c.set(d_b);
+        nd.c /= &zn.one_g;
+        nd.fac[0] = nd.c.powr(&self.omega);
+        let [fo, fa, _] = &mut nd.fac;
+        *fa = nd.b.powr(&self.alpha);
+        *fa *= &*fo;
+        if self.log_slip {
+            // y = 2 s - 1, s = ln(1 + (x - gamma)/(2 gamma))/ln(1 + (1 - gamma)/(2 gamma)): the
+            // other stick edge x = -gamma pushed to s = -infinity (the row, section 17.8)
+            nd.a.set(d_a);
+            nd.a /= &zn.two_g;
+            let mut s = nd.a.ln_1p();
+            s /= &zn.slip_log;
+            nd.a.set_mul(&zn.two, &s);
+            nd.a -= &zn.one;
+        } else {
+            nd.a.set_sub(d_a, d_b);
+            nd.a /= &zn.one_g;
+        }
+        nd.chebyshev(zn);
+    }
+
     /// s2 families (P, Q) and s1 families (R, S) of the stick zone at the point with distances
     /// d_a = x + gamma and d_b = gamma - x.
-    fn stick_values(&self, gamma: &T, d_a: &T, d_b: &T) -> (Vec<T>, Vec<T>) {
-        let n = self.n;
-        let z = (d_a.clone() - d_b.clone()) / (gamma.lit(2.0) * gamma.clone());
-        let w = d_a.clone() * d_b.clone() / (gamma.clone() * gamma.clone());
-        // v = artanh(x)/artanh(gamma): the slip zones' edge singularities at x = +-1 pushed to
-        // infinity (section 17.7)
-        let one_g = gamma.lit(1.0) - gamma.clone();
-        let sigma = ((one_g.clone() + d_a.clone()) / (one_g.clone() + d_b.clone())).ln();
-        let sigma_g = ((gamma.lit(1.0) + gamma.clone()) / one_g).ln();
-        let v = sigma / sigma_g;
-        let u = gamma.lit(2.0) * v.clone() * v - gamma.lit(1.0);
-        let t = chebyshev(&u, n);
-        let wa = w.powr(&self.alpha);
-        let mut s2 = Vec::with_capacity(2 * n);
-        let mut s1 = Vec::with_capacity(2 * n);
-        s2.extend(t.iter().cloned());
-        s2.extend(t.iter().map(|v| wa.clone() * v.clone()));
-        s1.extend(t.iter().map(|v| z.clone() * v.clone()));
-        s1.extend(t.iter().map(|v| z.clone() * wa.clone() * v.clone()));
+    fn stick_values(&self, zn: &Zones<T>, d_a: &T, d_b: &T) -> (Vec<T>, Vec<T>) {
+        let mut nd = Node::new(d_a, self.n);
+        self.stick_node(zn, d_a, d_b, &mut nd);
+        let s2 = nd.family(None).chain(nd.family(Some(0))).collect();
+        let s1 = nd.family(Some(1)).chain(nd.family(Some(2))).collect();
         (s2, s1)
     }
 
     /// s2 families (A, B) of the slip zone at distances d_a = x - gamma, d_b = 1 - x.
-    fn slip_values(&self, gamma: &T, d_a: &T, d_b: &T) -> Vec<T> {
-        let len = gamma.lit(1.0) - gamma.clone();
-        let zeta = d_a.clone() / len.clone();
-        let zc = d_b.clone() / len.clone();
-        let y = if self.log_slip {
-            // y = 2 s - 1, s = ln(1 + (x - gamma)/(2 gamma))/ln(1 + (1 - gamma)/(2 gamma)): the
-            // other stick edge x = -gamma pushed to s = -infinity (the row, section 17.8)
-            let two_g = gamma.lit(2.0) * gamma.clone();
-            let s = (d_a.clone() / two_g.clone()).ln_1p() / (len / two_g).ln_1p();
-            gamma.lit(2.0) * s - gamma.lit(1.0)
-        } else {
-            (d_a.clone() - d_b.clone()) / len
-        };
-        let t = chebyshev(&y, self.n);
-        let fo = zc.powr(&self.omega);
-        let fa = fo.clone() * zeta.powr(&self.alpha);
-        let mut g = Vec::with_capacity(2 * self.n);
-        g.extend(t.iter().map(|v| fo.clone() * v.clone()));
-        g.extend(t.iter().map(|v| fa.clone() * v.clone()));
-        g
+    fn slip_values(&self, zn: &Zones<T>, d_a: &T, d_b: &T) -> Vec<T> {
+        let mut nd = Node::new(d_a, self.n);
+        self.slip_node(zn, d_a, d_b, &mut nd);
+        nd.family(Some(0)).chain(nd.family(Some(1))).collect()
     }
 
     /// pi H[s2](x) and pi H[s1](x) as rows over the 6 n coefficients.
-    fn hilbert_rows(&self, gamma: &T, tg: &Target<T>) -> (Vec<T>, Vec<T>) {
+    fn hilbert_rows(&self, zn: &Zones<T>, gamma: &T, tg: &Target<T>) -> (Vec<T>, Vec<T>) {
         let n = self.n;
         let zero = gamma.lit(0.0);
         let (mut h2, mut h1) = (vec![zero.clone(); 6 * n], vec![zero.clone(); 6 * n]);
         let in_stick = tg.to_gamma > zero;
+        // one node's basis, the kernel and a scratch value, reused at every node
+        let mut nd = Node::new(gamma, n);
+        let (mut k, mut dx, mut tmp) = (zero.clone(), zero.clone(), zero.clone());
         // stick zone (-gamma, gamma), offsets from -gamma
         let len = gamma.lit(2.0) * gamma.clone();
         if in_stick {
             let xo = tg.x.clone() + gamma.clone();
-            let (f2, f1) = self.stick_values(gamma, &xo, &tg.to_gamma);
+            let (f2, f1) = self.stick_values(zn, &xo, &tg.to_gamma);
             let mut pieces = graded(&zero, &xo, None, Some(&tg.to_gamma));
             pieces.extend(graded(&xo, &len, Some(&xo), None));
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-                let dx = d_b.clone() - tg.to_gamma.clone();
+                dx.set_sub(d_b, &tg.to_gamma);
                 if dx == zero {
                     return;
                 }
-                let k = w.clone() / dx;
-                let (v2, v1) = self.stick_values(gamma, d_a, d_b);
-                for j in 0..2 * n {
-                    h2[j] = h2[j].clone() + k.clone() * (v2[j].clone() - f2[j].clone());
-                    h1[2 * n + j] = h1[2 * n + j].clone() + k.clone() * (v1[j].clone() - f1[j].clone());
-                }
+                k.set(w);
+                k /= &dx;
+                self.stick_node(zn, d_a, d_b, &mut nd);
+                let (h2, h1) = (&mut h2[..2 * n], &mut h1[2 * n..4 * n]);
+                let (p, q) = h2.split_at_mut(n);
+                accumulate(p, &k, None, &nd.t, Some(&f2[..n]), &mut tmp);
+                accumulate(q, &k, Some(&nd.fac[0]), &nd.t, Some(&f2[n..]), &mut tmp);
+                let (r, s) = h1.split_at_mut(n);
+                accumulate(r, &k, Some(&nd.fac[1]), &nd.t, Some(&f1[..n]), &mut tmp);
+                accumulate(s, &k, Some(&nd.fac[2]), &nd.t, Some(&f1[n..]), &mut tmp);
             });
             let lg = (xo / tg.to_gamma.clone()).ln();
             for j in 0..2 * n {
-                h2[j] = h2[j].clone() + lg.clone() * f2[j].clone();
-                h1[2 * n + j] = h1[2 * n + j].clone() + lg.clone() * f1[j].clone();
+                h2[j].add_mul(&lg, &f2[j]);
+                h1[2 * n + j].add_mul(&lg, &f1[j]);
             }
         } else {
             let beyond = -tg.to_gamma.clone();
             let pieces = graded(&zero, &len, None, Some(&beyond));
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-                let k = w.clone() / (d_b.clone() + beyond.clone());
-                let (v2, v1) = self.stick_values(gamma, d_a, d_b);
-                for j in 0..2 * n {
-                    h2[j] = h2[j].clone() + k.clone() * v2[j].clone();
-                    h1[2 * n + j] = h1[2 * n + j].clone() + k.clone() * v1[j].clone();
-                }
+                dx.set(d_b);
+                dx += &beyond;
+                k.set(w);
+                k /= &dx;
+                self.stick_node(zn, d_a, d_b, &mut nd);
+                let (h2, h1) = (&mut h2[..2 * n], &mut h1[2 * n..4 * n]);
+                let (p, q) = h2.split_at_mut(n);
+                accumulate(p, &k, None, &nd.t, None, &mut tmp);
+                accumulate(q, &k, Some(&nd.fac[0]), &nd.t, None, &mut tmp);
+                let (r, s) = h1.split_at_mut(n);
+                accumulate(r, &k, Some(&nd.fac[1]), &nd.t, None, &mut tmp);
+                accumulate(s, &k, Some(&nd.fac[2]), &nd.t, None, &mut tmp);
             });
         }
         // slip zones: (gamma, 1) with kernel 1/(x - eta) and its mirror with 1/(x + eta)
@@ -248,42 +364,50 @@ impl<T: Real> Spectral<T> {
         let (mut minus, mut plus) = (vec![zero.clone(); 2 * n], vec![zero.clone(); 2 * n]);
         if in_stick {
             let pieces = graded(&zero, &len, Some(&tg.to_gamma), None);
+            let from_gamma = -tg.to_gamma.clone();
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-                let k = -w.clone() / (tg.to_gamma.clone() + d_a.clone());
-                let v = self.slip_values(gamma, d_a, d_b);
-                for j in 0..2 * n {
-                    minus[j] = minus[j].clone() + k.clone() * v[j].clone();
-                }
+                // k = -w/(to_gamma + d_a)
+                dx.set_sub(&from_gamma, d_a);
+                k.set(w);
+                k /= &dx;
+                self.slip_node(zn, d_a, d_b, &mut nd);
+                let (a, b) = minus.split_at_mut(n);
+                accumulate(a, &k, Some(&nd.fac[0]), &nd.t, None, &mut tmp);
+                accumulate(b, &k, Some(&nd.fac[1]), &nd.t, None, &mut tmp);
             });
         } else {
             let xo = -tg.to_gamma.clone();
-            let g = self.slip_values(gamma, &xo, &tg.to_one);
+            let g = self.slip_values(zn, &xo, &tg.to_one);
             let mut pieces = graded(&zero, &xo, None, Some(&tg.to_one));
             pieces.extend(graded(&xo, &len, Some(&xo), None));
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-                let dx = xo.clone() - d_a.clone();
+                dx.set_sub(&xo, d_a);
                 if dx == zero {
                     return;
                 }
-                let k = w.clone() / dx;
-                let v = self.slip_values(gamma, d_a, d_b);
-                for j in 0..2 * n {
-                    minus[j] = minus[j].clone() + k.clone() * (v[j].clone() - g[j].clone());
-                }
+                k.set(w);
+                k /= &dx;
+                self.slip_node(zn, d_a, d_b, &mut nd);
+                let (a, b) = minus.split_at_mut(n);
+                accumulate(a, &k, Some(&nd.fac[0]), &nd.t, Some(&g[..n]), &mut tmp);
+                accumulate(b, &k, Some(&nd.fac[1]), &nd.t, Some(&g[n..]), &mut tmp);
             });
             let lg = (xo / tg.to_one.clone()).ln();
             for j in 0..2 * n {
-                minus[j] = minus[j].clone() + lg.clone() * g[j].clone();
+                minus[j].add_mul(&lg, &g[j]);
             }
         }
         let mirror = tg.x.clone() + gamma.clone();
         let pieces = graded(&zero, &len, Some(&mirror), None);
         self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-            let k = w.clone() / (mirror.clone() + d_a.clone());
-            let v = self.slip_values(gamma, d_a, d_b);
-            for j in 0..2 * n {
-                plus[j] = plus[j].clone() + k.clone() * v[j].clone();
-            }
+            dx.set(&mirror);
+            dx += d_a;
+            k.set(w);
+            k /= &dx;
+            self.slip_node(zn, d_a, d_b, &mut nd);
+            let (a, b) = plus.split_at_mut(n);
+            accumulate(a, &k, Some(&nd.fac[0]), &nd.t, None, &mut tmp);
+            accumulate(b, &k, Some(&nd.fac[1]), &nd.t, None, &mut tmp);
         });
         for j in 0..2 * n {
             h2[4 * n + j] = minus[j].clone() + plus[j].clone();
@@ -333,6 +457,7 @@ impl<T: Real> Spectral<T> {
             mu: self.mu.clone(),
             alpha: self.alpha.clone(),
             omega: self.omega.clone(),
+            zones: Zones::new(gamma),
         }
     }
 
@@ -343,13 +468,14 @@ impl<T: Real> Spectral<T> {
         let pi = gamma.pi();
         let mut rows = Vec::new();
         let mut rhs = Vec::new();
-        let lateral_row = self.lateral_row(gamma);
+        let zn = Zones::new(gamma);
+        let lateral_row = self.lateral_row(&zn, gamma);
         for tg in self.targets(gamma) {
-            let (h2, h1) = self.hilbert_rows(gamma, &tg);
+            let (h2, h1) = self.hilbert_rows(&zn, gamma, &tg);
             let mut ra: Vec<T> = h2.into_iter().map(|v| v / pi.clone()).collect();
             if tg.to_gamma > zero {
                 let xo = tg.x.clone() + gamma.clone();
-                let (f2, f1) = self.stick_values(gamma, &xo, &tg.to_gamma);
+                let (f2, f1) = self.stick_values(&zn, &xo, &tg.to_gamma);
                 for j in 0..2 * n {
                     ra[2 * n + j] = ra[2 * n + j].clone() - self.beta_normal.clone() * f1[j].clone();
                 }
@@ -361,7 +487,7 @@ impl<T: Real> Spectral<T> {
                 rows.push(rb);
                 rhs.push(self.lateral.clone());
             } else {
-                let g = self.slip_values(gamma, &-tg.to_gamma.clone(), &tg.to_one);
+                let g = self.slip_values(&zn, &-tg.to_gamma.clone(), &tg.to_one);
                 for j in 0..2 * n {
                     ra[4 * n + j] = ra[4 * n + j].clone() - self.beta_normal.clone() * self.mu.clone() * g[j].clone();
                 }
@@ -375,7 +501,7 @@ impl<T: Real> Spectral<T> {
         let weight = |t: &T| one.clone() / (one.clone() + self.tau.clone() * self.tau.clone() * t.clone() * t.clone());
         let len = gamma.lit(2.0) * gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
-            let (v2, _) = self.stick_values(gamma, d_a, d_b);
+            let (v2, _) = self.stick_values(&zn, d_a, d_b);
             let wt = w.clone() * weight(&(d_a.clone() - gamma.clone()));
             for j in 0..2 * n {
                 norm[j] = norm[j].clone() + wt.clone() * v2[j].clone();
@@ -383,7 +509,7 @@ impl<T: Real> Spectral<T> {
         });
         let len = gamma.lit(1.0) - gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
-            let v = self.slip_values(gamma, d_a, d_b);
+            let v = self.slip_values(&zn, d_a, d_b);
             let wt = gamma.lit(2.0) * w.clone() * weight(&(gamma.clone() + d_a.clone()));
             for j in 0..2 * n {
                 norm[4 * n + j] = norm[4 * n + j].clone() + wt.clone() * v[j].clone();
@@ -396,7 +522,7 @@ impl<T: Real> Spectral<T> {
 
     /// The row's constant of the stick condition as a row over the coefficients:
     /// (1/pi) int_-1^1 s1(T) tau^2 T/(1 + tau^2 T^2) dT (17.10) (all zero for the single punch).
-    fn lateral_row(&self, gamma: &T) -> Vec<T> {
+    fn lateral_row(&self, zn: &Zones<T>, gamma: &T) -> Vec<T> {
         let n = self.n;
         let zero = gamma.lit(0.0);
         let mut out = vec![zero.clone(); 6 * n];
@@ -408,7 +534,7 @@ impl<T: Real> Spectral<T> {
         let kern = |t: &T| t2.clone() * t.clone() / (one.clone() + t2.clone() * t.clone() * t.clone()) / gamma.pi();
         let len = gamma.lit(2.0) * gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
-            let (_, v1) = self.stick_values(gamma, d_a, d_b);
+            let (_, v1) = self.stick_values(zn, d_a, d_b);
             let k = w.clone() * kern(&(d_a.clone() - gamma.clone()));
             for j in 0..2 * n {
                 out[2 * n + j] = out[2 * n + j].clone() + k.clone() * v1[j].clone();
@@ -417,7 +543,7 @@ impl<T: Real> Spectral<T> {
         // s1 = mu s2 on (gamma, 1), odd: twice the right slip zone
         let len = one.clone() - gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
-            let v = self.slip_values(gamma, d_a, d_b);
+            let v = self.slip_values(zn, d_a, d_b);
             let k = gamma.lit(2.0) * self.mu.clone() * w.clone() * kern(&(gamma.clone() + d_a.clone()));
             for j in 0..2 * n {
                 out[4 * n + j] = out[4 * n + j].clone() + k.clone() * v[j].clone();
@@ -434,10 +560,11 @@ impl<T: Real> Spectral<T> {
         let one = gamma.lit(1.0);
         let t = one.clone() + beyond.clone();
         let mut sum = zero.clone();
+        let mut dens = self.density(inc);
         let len = gamma.lit(2.0) * gamma.clone();
         let near = one.clone() - gamma.clone() + beyond.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, Some(&near)), |d_a, d_b, w| {
-            let s2 = self.normal_density(inc, false, d_a, d_b);
+            let s2 = dens.at(false, d_a, d_b);
             sum = sum.clone() + w.clone() * s2 / (near.clone() + d_b.clone());
         });
         let len = one.clone() - gamma.clone();
@@ -445,7 +572,7 @@ impl<T: Real> Spectral<T> {
             if *d_b == zero || *w == zero {
                 return; // a tail node underflowed (f64, beyond below 1e-20): it adds nothing
             }
-            let s2 = self.normal_density(inc, true, d_a, d_b);
+            let s2 = dens.at(true, d_a, d_b);
             let eta = gamma.clone() + d_a.clone();
             let k = one.clone() / (beyond.clone() + d_b.clone()) + one.clone() / (t.clone() + eta);
             sum = sum.clone() + w.clone() * s2 * k;
@@ -456,15 +583,13 @@ impl<T: Real> Spectral<T> {
     /// s2 of a solved increment at a point of the stick zone (`slip` false; d_a = x + gamma,
     /// d_b = gamma - x) or of the right slip zone (`slip` true; d_a = x - gamma, d_b = 1 - x).
     pub fn normal_density(&self, inc: &SpectralIncrement<T>, slip: bool, d_a: &T, d_b: &T) -> T {
-        let (n, gamma, c) = (self.n, &inc.gamma, &inc.coeffs);
-        let zero = gamma.lit(0.0);
-        if slip {
-            let v = self.slip_values(gamma, d_a, d_b);
-            (0..2 * n).fold(zero, |acc, j| acc + c[4 * n + j].clone() * v[j].clone())
-        } else {
-            let (v2, _) = self.stick_values(gamma, d_a, d_b);
-            (0..2 * n).fold(zero, |acc, j| acc + c[j].clone() * v2[j].clone())
-        }
+        self.density(inc).at(slip, d_a, d_b)
+    }
+
+    /// [`Spectral::normal_density`] of `inc` at many points, its storage reused from point to
+    /// point.
+    pub fn density<'a>(&'a self, inc: &'a SpectralIncrement<T>) -> Density<'a, T> {
+        Density { sp: self, inc, nd: Node::new(&inc.gamma, self.n), tmp: inc.gamma.lit(0.0) }
     }
 
     /// The tanh-sinh rule of the method's integrals.
@@ -479,31 +604,67 @@ impl<T: Real> Spectral<T> {
 
     /// C_P = 1/(2 I) of the parabola (17.9) from a solved increment.
     pub fn load_coefficient(&self, inc: &SpectralIncrement<T>) -> T {
-        let (n, gamma) = (self.n, &inc.gamma);
+        let gamma = &inc.gamma;
         let zero = gamma.lit(0.0);
         let one = gamma.lit(1.0);
-        let c = &inc.coeffs;
+        let mut dens = self.density(inc);
         let mut i_stick = zero.clone();
         let len = gamma.lit(2.0) * gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
-            let (v2, _) = self.stick_values(gamma, d_a, d_b);
             let xi = (d_a.clone() - d_b.clone()) * gamma.lit(0.5);
             let y = xi.clone() * xi;
             let kern = if y == zero { one.clone() } else { -(-y.clone()).ln_1p() / y };
-            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[j].clone() * v2[j].clone());
+            let s2 = dens.at(false, d_a, d_b);
             i_stick = i_stick.clone() + w.clone() * kern * s2;
         });
         let mut i_slip = zero.clone();
         let len = one.clone() - gamma.clone();
         self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
-            let v = self.slip_values(gamma, d_a, d_b);
             let eta = gamma.clone() + d_a.clone();
             let kern = -(d_b.ln() + (one.clone() + eta.clone()).ln()) / (eta.clone() * eta);
-            let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[4 * n + j].clone() * v[j].clone());
+            let s2 = dens.at(true, d_a, d_b);
             i_slip = i_slip.clone() + w.clone() * kern * s2;
         });
         let i = (i_stick * gamma.lit(0.5) + i_slip) / gamma.pi();
         one / (gamma.lit(2.0) * i)
+    }
+}
+
+/// s2 of one solved increment at many points ([`Spectral::density`]).
+pub struct Density<'a, T> {
+    sp: &'a Spectral<T>,
+    inc: &'a SpectralIncrement<T>,
+    nd: Node<T>,
+    tmp: T,
+}
+
+impl<T: Real> Density<'_, T> {
+    /// s2 at a point of the stick zone (`slip` false; d_a = x + gamma, d_b = gamma - x) or of
+    /// the right slip zone (`slip` true; d_a = x - gamma, d_b = 1 - x).
+    pub fn at(&mut self, slip: bool, d_a: &T, d_b: &T) -> T {
+        let (n, zn) = (self.sp.n, &self.inc.zones);
+        let c = if slip { &self.inc.coeffs[4 * n..6 * n] } else { &self.inc.coeffs[..2 * n] };
+        let nd = &mut self.nd;
+        let fac = if slip {
+            self.sp.slip_node(zn, d_a, d_b, nd);
+            [Some(&nd.fac[0]), Some(&nd.fac[1])]
+        } else {
+            self.sp.stick_node(zn, d_a, d_b, nd);
+            [None, Some(&nd.fac[0])]
+        };
+        let mut acc = d_a.lit(0.0);
+        for (f, cf) in fac.iter().zip(c.chunks(n)) {
+            for (tj, cj) in nd.t.iter().zip(cf) {
+                match f {
+                    None => acc.add_mul(cj, tj),
+                    Some(v) => {
+                        self.tmp.set_mul(v, tj);
+                        acc.add_mul(cj, &self.tmp);
+                    }
+                }
+            }
+        }
+        acc
     }
 }
 

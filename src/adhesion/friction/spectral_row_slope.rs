@@ -46,16 +46,17 @@ impl<T: Real> SlopeTable<T> {
         let rule = sp.rule();
         let len = gamma.lit(2.0) * gamma.clone();
         let mut stick = Vec::new();
+        let mut dens = sp.density(inc);
         let pole = one.clone() - gamma.clone();
         rule.sweep(&len, &graded(&zero, &len, None, Some(&pole)), |d_a, d_b, w| {
-            stick.push((d_b.clone(), w.clone() * sp.normal_density(inc, false, d_a, d_b)));
+            stick.push((d_b.clone(), w.clone() * dens.at(false, d_a, d_b)));
         });
         let len = one.clone() - gamma.clone();
         // the load's rule (end singularity distance^omega) reaches distances 2^-(bits + 8)/(omega + 1)
         let (_, omega) = inc.exponents();
         let edge_power = (omega.to_f64() + 1.0).max(0.02);
         let levels = ((sp.bits() + 8) as f64 / edge_power).ceil() as usize + 4;
-        let piece = |lo: &T, hi: &T| -> Vec<(T, T, T)> {
+        let mut piece = |lo: &T, hi: &T| -> Vec<(T, T, T)> {
             // offsets from gamma: (len - hi, len - lo)
             let mut out = Vec::new();
             let (p, q) = (len.clone() - hi.clone(), len.clone() - lo.clone());
@@ -64,7 +65,7 @@ impl<T: Real> SlopeTable<T> {
                     return; // a tail node underflowed (f64): it adds nothing
                 }
                 let x = gamma.clone() + d_a.clone();
-                out.push((d_b.clone(), x, w.clone() * sp.normal_density(inc, true, d_a, d_b)));
+                out.push((d_b.clone(), x, w.clone() * dens.at(true, d_a, d_b)));
             });
             out
         };
