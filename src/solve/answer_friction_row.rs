@@ -1,8 +1,8 @@
 //! The periodic row with finite friction (`[adhesion] friction`, a finite period; docs/theory.md
 //! sections 17.5 and 17.8) as an [`AdhesionAnswer`]: the parabola g = k x^2, normal loading, both
 //! surface conventions, by the spectral method in `f64`: the load P(lambda) of the edge-slope
-//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load`], P2 =
-//! E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
+//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load_with`], nodes
+//! in eta^2 in `paper`, P2 = E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
 //! ([`crate::adhesion::friction::spectral_row::stick_ratio_f64`]):
 //!     given a:  lambda = pi a/L, P2 = P(lambda) E* k (L/pi)^2, c = (c/a)(lambda) a;
 //!     given P2: lambda where P(lambda) = P2/(E* k (L/pi)^2) ([`invert`]: the frictionless shape
@@ -41,7 +41,7 @@ use crate::adhesion::friction::fields::PointFields;
 use crate::adhesion::friction::row_f64::row_stick_ratio;
 use crate::adhesion::friction::row_fields::{row_fields, History, RowFieldsF64};
 use crate::adhesion::friction::spectral_row::{increment_f64, stick_ratio_f64};
-use crate::adhesion::friction::spectral_row_load::{load_rate, LoadRate};
+use crate::adhesion::friction::spectral_row_load::{load_rate, loads_below, LoadRate, NodeRule};
 use crate::error::Error;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow};
 use std::f64::consts::PI;
@@ -77,7 +77,7 @@ const INTERPOLATION: f64 = 2e-4;
 /// Relative step of lambda below which [`invert`] stops.
 const LAMBDA_TOL: f64 = 1e-10;
 
-/// The load P(lambda) on the discretisation `(nodes, n)`.
+/// The load P(lambda) on the discretisation `(nodes, n)`, in the convention's node rule.
 pub fn row_load(beta: f64, mu: f64, lambda: f64, mesh: (usize, usize), periodic: bool) -> Result<f64, Error> {
     Ok(row_load_rate(beta, mu, lambda, mesh, periodic)?.load)
 }
@@ -92,7 +92,8 @@ pub fn row_load_rate(
 ) -> Result<LoadRate<f64>, Error> {
     // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
-    Ok(load_rate(&lambda, theta0, nodes, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+    let rule = NodeRule::of_convention(periodic);
+    Ok(load_rate(&lambda, theta0, nodes, rule, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
 }
 
 /// P at each of `lambdas` (in (0, `lambda_max`]) on the discretisation `(nodes, n)` from one
@@ -108,7 +109,7 @@ pub fn row_loads(
 ) -> Result<Vec<f64>, Error> {
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
     let at = |e: &f64| increment_f64(beta, mu, *e, n, periodic);
-    Ok(crate::adhesion::friction::spectral_row_load::loads_below(&lambda_max, lambdas, theta0, nodes, at)?)
+    Ok(loads_below(&lambda_max, lambdas, theta0, nodes, NodeRule::of_convention(periodic), at)?)
 }
 
 /// lambda = pi a/L of the given half width `a` within (0, [`LAMBDA_MAX`]], or the input error
@@ -386,7 +387,7 @@ pub fn row_mpfr_answer(
     };
     let incompressible = num_traits::Zero::is_zero(&p.material().beta());
     // the inputs at the finer run's bits and a guard of 64
-    let prec = finer_knobs(digits_asked, incompressible).2 + 64;
+    let prec = finer_knobs(digits_asked, incompressible, p.periodic_surface()).2 + 64;
     let (a_f, l_f) = (to_float(a, prec), to_float(period, prec));
     let pi_over_l = Float::with_val(prec, rug::float::Constant::Pi) / &l_f;
     let lambda = Float::with_val(prec, &pi_over_l * &a_f);

@@ -6,13 +6,18 @@
 //! Units L = pi, E* = k = 1 (P2 = E* k (L/pi)^2 P). With W(chi, eta) the outside slope of the unit
 //! increment at contact eta, the load P(lambda) solves
 //!     int_0^chi W(chi, eta) P'(eta) d eta = chi,   0 < chi <= lambda.                      (17.11)
-//! Discretisation: P'(eta) = tan(eta) F(eta), F the polynomial through its values at the N
-//! Chebyshev points eta_j of (0, lambda) (barycentric form), collocated at chi_i = eta_i: N
-//! equations, solved by least squares (square). The factor tan(eta) carries the pole of P' at full
-//! contact eta = pi/2 (Kuznetsov: F = pi; measured at lambda = 1.2, `paper`: successive N differ by
-//! a factor 5.2 per node). The kernel is never needed at a new contact: in the tangent
+//! Discretisation: P'(eta) = tan(eta) F(eta), F the polynomial in v(eta) through its values at
+//! the N Chebyshev points of v on (v(0), v(lambda)) (barycentric form), collocated at
+//! chi_i = eta_i: N equations, solved by least squares (square). The factor tan(eta) carries the
+//! pole of P' at full contact eta = pi/2 (Kuznetsov: F = pi). The variable ([`NodeRule`]): in
+//! `paper` tau = tan(eta) enters (17.10) only as tau^2, so F and G cos(eta) below are even in
+//! eta, and v = eta^2 keeps their singularities off the mirror side eta < 0 (measured at
+//! lambda = 1.2, 128 bits: successive N differ by a factor 10^1.05 per node against 10^0.72 in
+//! eta); in `periodic` the lateral strain b beta tau makes them neither even nor odd and v = eta
+//! (10^0.7 per node, alternating in sign; v = eta^2 does not converge there). [`load`] keeps
+//! v = eta; [`load_with`] takes the rule. The kernel is never needed at a new contact: in the tangent
 //! variable W(chi, eta) = G(tan(chi)/tan(eta), eta)/tan(eta), G(T, eta) = H\[S2^eta\](T), whose
-//! singular point T = 1 does not move with eta, so G is interpolated in eta at fixed T from the
+//! singular point T = 1 does not move with eta, so G is interpolated in v at fixed T from the
 //! increments solved at the same N points (each at its own stick edge), as G cos(eta), which
 //! has no pole at eta = pi/2 (Kuznetsov: G cos(eta) = 1/(pi sqrt(T^2 - 1)), independent of eta). The integral over eta is
 //! tanh-sinh on (0, chi_i) ([`DoubleExp`], end singularity (chi - eta)^(-1/2 + theta0)), and
@@ -22,19 +27,21 @@
 //! ([`crate::numerics::parallel::map`]).
 //!
 //! [`load_rate`]: the same load with F's values and the node increments kept ([`LoadRate`]:
-//! P'(eta) at any eta, for the row's fields of `row_fields.rs`).
+//! P'(eta) at any eta, for the row's fields of `row_fields.rs`); [`loads_below`]: P at several
+//! lambdas from one collocation (the report's map with friction).
 //!
-//! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/0.7 + 2 nodes, n = digits + 4
-//! polynomials per family, B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in
-//! [`super::spectral_row`]) and (N + 3, n + 4, B + 24); the printed digits are where they agree
-//! (P relative, c/a on the scale 1). Each node's stick edge is a secant search from the `f64` root
+//! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/1.0 + 2 nodes in `paper`'s
+//! eta^2, digits/0.7 + 2 in `periodic`'s eta, n = digits + 4 polynomials per family,
+//! B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in [`super::spectral_row`]) and
+//! (N + 3, n + 4, B + 24); the printed digits are where they agree (P relative, c/a on the scale
+//! 1). Each node's stick edge is a secant search from the `f64` root
 //! stopped once its error is below 10^-(digits/2 + 3) ([`root_mpfr_stationary`], three solves): the
 //! outside slope is stationary in the stick edge at its root (`spectral_row_tests.rs`,
 //! `outside_slope_is_stationary_in_the_stick_edge`), so its error is that squared. c/a at lambda
 //! is a full root ([`increment_mpfr`]). beta = 0 takes N = 2 and 4 (F constant).
 //! Cost (section 17.8): one MPFR increment solve is most of a node (profile: MPFR arithmetic and
-//! its allocations in the collocation rows' quadrature); 20 digits need about 30 nodes at
-//! n = 24, 200 bits, about 90 solves per run: not run.
+//! its allocations in the collocation rows' quadrature); 20 digits need 22 and 25 nodes in
+//! `paper` (31 and 34 in `periodic`) at n = 24 and 28, about 140 solves: not run.
 //!
 //! [`root_mpfr_stationary`]: super::spectral_punch::root_mpfr_stationary
 
@@ -61,7 +68,49 @@ pub fn load<T: Real + Send + Sync>(
     nodes: usize,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<T, AdhesionError> {
-    Ok(load_rate(lambda, theta0, nodes, increment_at)?.load)
+    load_with(lambda, theta0, nodes, NodeRule::Eta, increment_at)
+}
+
+/// The variable v(eta) in which F (and G cos(eta)) are interpolated: Chebyshev points and the
+/// barycentric formula in v on (v(0), v(lambda)) (module doc).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NodeRule {
+    /// v = eta: `periodic` (b = 1: the lateral strain b beta tau makes F neither even nor odd).
+    Eta,
+    /// v = eta^2: `paper` (b = 0: tau = tan(eta) enters (17.10) only as tau^2, F is even in eta).
+    EtaSquared,
+}
+
+impl NodeRule {
+    /// The rule of a surface convention: [`NodeRule::EtaSquared`] in `paper`, [`NodeRule::Eta`]
+    /// in `periodic`.
+    pub fn of_convention(periodic: bool) -> NodeRule {
+        if periodic {
+            NodeRule::Eta
+        } else {
+            NodeRule::EtaSquared
+        }
+    }
+
+    /// v(x).
+    pub fn variable<T: Real>(self, x: &T) -> T {
+        match self {
+            NodeRule::Eta => x.clone(),
+            NodeRule::EtaSquared => x.clone() * x.clone(),
+        }
+    }
+}
+
+/// As [`load`], F interpolated in the variable of `rule` ([`NodeRule::of_convention`] of the
+/// increments' convention; any rule is exact at beta = 0, where F is constant).
+pub fn load_with<T: Real + Send + Sync>(
+    lambda: &T,
+    theta0: f64,
+    nodes: usize,
+    node_rule: NodeRule,
+    increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
+) -> Result<T, AdhesionError> {
+    Ok(load_rate(lambda, theta0, nodes, node_rule, increment_at)?.load)
 }
 
 /// P at each of `lambdas` (each in (0, `lambda`]) from the one collocation of [`load`] on
@@ -73,9 +122,10 @@ pub fn loads_below<T: Real + Send + Sync>(
     lambdas: &[T],
     theta0: f64,
     nodes: usize,
+    node_rule: NodeRule,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<Vec<T>, AdhesionError> {
-    Ok(collocate(lambda, lambdas, theta0, nodes, increment_at)?.0)
+    Ok(collocate(lambda, lambdas, theta0, nodes, node_rule, increment_at)?.0)
 }
 
 /// The solved load of [`load`] with what the row's fields need (`row_fields.rs`): F at the
@@ -93,18 +143,22 @@ pub struct LoadRate<T> {
     pub values: Vec<T>,
     /// The increments at the nodes (each at its own stick edge).
     pub increments: Vec<RowIncrement<T>>,
+    /// The variable of the interpolation.
+    pub rule: NodeRule,
 }
 
 impl<T: Real> LoadRate<T> {
-    /// The polynomial through `values` at the nodes, evaluated at `e` (barycentric form).
+    /// The polynomial in the rule's variable through `values` at the nodes, evaluated at `e`
+    /// (barycentric form).
     pub fn interpolate(&self, values: &[T], e: &T) -> T {
         let zero = e.lit(0.0);
         if let Some(k) = self.nodes.iter().position(|x| x == e) {
             return values[k].clone();
         }
+        let ve = self.rule.variable(e);
         let (mut num, mut den) = (zero.clone(), zero);
         for ((x, w), v) in self.nodes.iter().zip(&self.weights).zip(values) {
-            let t = w.clone() / (e.clone() - x.clone());
+            let t = w.clone() / (ve.clone() - self.rule.variable(x));
             num = num + t.clone() * v.clone();
             den = den + t;
         }
@@ -122,9 +176,10 @@ pub fn load_rate<T: Real + Send + Sync>(
     lambda: &T,
     theta0: f64,
     nodes: usize,
+    node_rule: NodeRule,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<LoadRate<T>, AdhesionError> {
-    Ok(collocate(lambda, &[], theta0, nodes, increment_at)?.1)
+    Ok(collocate(lambda, &[], theta0, nodes, node_rule, increment_at)?.1)
 }
 
 /// The collocation of (17.11) on (0, `lambda`): P at each of `lambdas` and the [`LoadRate`].
@@ -133,6 +188,7 @@ fn collocate<T: Real + Send + Sync>(
     lambdas: &[T],
     theta0: f64,
     nodes: usize,
+    node_rule: NodeRule,
     increment_at: impl Fn(&T) -> Result<RowIncrement<T>, AdhesionError> + Sync,
 ) -> Result<(Vec<T>, LoadRate<T>), AdhesionError> {
     let one = lambda.lit(1.0);
@@ -152,7 +208,11 @@ fn collocate<T: Real + Send + Sync>(
     for j in 0..nodes {
         let th = pi.clone() * lambda.lit((2 * j + 1) as f64) / (lambda.lit(2.0) * nf.clone());
         let s = (th.clone() * lambda.lit(0.5)).sin();
-        eta.push(lambda.clone() * s.clone() * s);
+        // v_j = v(lambda) (1 - cos th)/2: eta = lambda s^2 (v = eta), lambda s (v = eta^2)
+        eta.push(match node_rule {
+            NodeRule::Eta => lambda.clone() * s.clone() * s,
+            NodeRule::EtaSquared => lambda.clone() * s,
+        });
         let sign = if j % 2 == 0 { one.clone() } else { -one.clone() };
         bary.push(sign * th.sin());
     }
@@ -165,12 +225,14 @@ fn collocate<T: Real + Send + Sync>(
     .into_iter()
     .collect::<Result<_, _>>()?;
     let cosines: Vec<T> = eta.iter().map(|e| e.cos()).collect();
+    let v_nodes: Vec<T> = eta.iter().map(|e| node_rule.variable(e)).collect();
     // the Lagrange basis at e
     let basis = |e: &T| -> Vec<T> {
-        if let Some(k) = eta.iter().position(|x| x == e) {
+        let v = node_rule.variable(e);
+        if let Some(k) = v_nodes.iter().position(|x| *x == v) {
             return (0..nodes).map(|j| if j == k { one.clone() } else { zero.clone() }).collect();
         }
-        let terms: Vec<T> = (0..nodes).map(|j| bary[j].clone() / (e.clone() - eta[j].clone())).collect();
+        let terms: Vec<T> = (0..nodes).map(|j| bary[j].clone() / (v.clone() - v_nodes[j].clone())).collect();
         let sum = terms.iter().fold(zero.clone(), |a, t| a + t.clone());
         terms.into_iter().map(|t| t / sum.clone()).collect()
     };
@@ -215,7 +277,7 @@ fn collocate<T: Real + Send + Sync>(
     let below = lambdas.iter().map(at).collect();
     let p = at(lambda);
     let increments = incs.into_iter().map(|(inc, _)| inc).collect();
-    Ok((below, LoadRate { load: p, nodes: eta, weights: bary, values: f, increments }))
+    Ok((below, LoadRate { load: p, nodes: eta, weights: bary, values: f, increments, rule: node_rule }))
 }
 
 /// The row's load P and stick ratio c/a at one lambda with verified digits ([`verified_mpfr`]).
@@ -239,13 +301,15 @@ pub struct VerifiedRowLoad {
     pub seconds: [f64; 2],
 }
 
-/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc); the finer run adds
-/// (3, 4, 24). beta = 0 needs 2 nodes (F is the constant pi, section 17.8).
-pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
-    // measured at lambda = 1.2, `paper`, f64: successive node counts differ by 5.4e-4, 2.0e-5,
-    // 8.2e-7, 3.0e-8, 1.1e-9 from N = 4 to 14, a factor 5.2 (10^0.72) per node (a heuristic
-    // rate: the second run checks it)
-    let nodes = if incompressible { 2 } else { (digits as f64 / 0.7).ceil() as usize + 2 };
+/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc) in the convention's
+/// node rule ([`NodeRule::of_convention`]); the finer run adds (3, 4, 24). beta = 0 needs 2 nodes
+/// (F is the constant pi, section 17.8).
+pub fn knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
+    // measured at lambda = 1.2, 128 bits (section 17.8): successive node counts differ by a
+    // factor of about 10^0.7 per node in eta (`periodic`) and 10^1.05 in eta^2 (`paper`)
+    // (heuristic rates: the second run checks them)
+    let per_node = if periodic { 0.7 } else { 1.0 };
+    let nodes = if incompressible { 2 } else { (digits as f64 / per_node).ceil() as usize + 2 };
     let n = digits as usize + 4;
     let bits = (3.33 * (digits as f64 + 4.0 + 1.2 * n as f64) + 16.0).ceil() as u32;
     (nodes, n, bits)
@@ -253,8 +317,8 @@ pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
 
 /// The knobs of the finer (second) run: [`knobs`] plus (3, 4, 24), (2, 4, 24) at beta = 0; the
 /// inputs of [`verified_mpfr`] need at least its bits.
-pub fn finer_knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
-    let (nodes, n, bits) = knobs(digits, incompressible);
+pub fn finer_knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
+    let (nodes, n, bits) = knobs(digits, incompressible, periodic);
     (nodes + if incompressible { 2 } else { 3 }, n + 4, bits + 24)
 }
 
@@ -274,7 +338,8 @@ pub fn verified_mpfr(
     // the f64 run; its increments start the MPFR roots
     let (_, at_lambda) = increment_f64(b, m, lam, 10, periodic)?;
     let stick_ratio_f64 = if beta.is_zero() { 1.0 } else { physical_ratio(&at_lambda.gamma, &lam) };
-    let load_f64 = load(&lam, theta0, 12, |e: &f64| increment_f64(b, m, *e, 10, periodic))?;
+    let node_rule = NodeRule::of_convention(periodic);
+    let load_f64 = load_with(&lam, theta0, 12, node_rule, |e: &f64| increment_f64(b, m, *e, 10, periodic))?;
     let run = |(nodes, n, bits): (usize, usize, u32)| -> Result<(Float, Float, f64), AdhesionError> {
         let t = std::time::Instant::now();
         let args = (beta, mu, lambda);
@@ -284,7 +349,7 @@ pub fn verified_mpfr(
             // the outside slope is stationary in the stick edge: half the digits suffice there
             increment_mpfr_root((beta, mu, &eta), periodic, (n, bits, digits / 2 + 3), start, true)
         };
-        let p = load(&Mp(Float::with_val(bits, lambda)), theta0, nodes, at_node)?;
+        let p = load_with(&Mp(Float::with_val(bits, lambda)), theta0, nodes, node_rule, at_node)?;
         if beta.is_zero() {
             return Ok((p.0, Float::with_val(bits, 1), t.elapsed().as_secs_f64()));
         }
@@ -292,8 +357,8 @@ pub fn verified_mpfr(
         let ratio = physical_ratio(&inc.gamma, &Mp(Float::with_val(bits, lambda))).0;
         Ok((p.0, ratio, t.elapsed().as_secs_f64()))
     };
-    let coarse = knobs(digits, beta.is_zero());
-    let fine = finer_knobs(digits, beta.is_zero());
+    let coarse = knobs(digits, beta.is_zero(), periodic);
+    let fine = finer_knobs(digits, beta.is_zero(), periodic);
     let (p1, c1, s1) = run(coarse)?;
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
