@@ -203,6 +203,51 @@ fn secant(
     Err(not_converged(format!("the secant iteration did not settle (c/a = {})", g1.to_f64())))
 }
 
+/// The slip zone's width 1 - gamma and C_P in MPFR where it is narrow (large mu, docs/theory.md
+/// section 17.3 "Large mu"): the zero of the stick-edge defect in y = ln(1 - gamma), gamma formed
+/// in MPFR as 1 - e^y (so a width of 1e-8 keeps its relative digits), bracketed from `start` (a
+/// width) by steps of a factor 1.5 (at most 40), then the Illinois method to a bracket of `tol`
+/// in y. The defect is taken to `f64` for the search: its sign and size, not its digits.
+pub fn slip_width_mpfr(sp: &Spectral<Mp>, start: f64, tol: f64) -> Result<(Float, Float), AdhesionError> {
+    let prec = sp.bits();
+    let gamma = |y: f64| Mp(Float::with_val(prec, 1) - Float::with_val(prec, y).exp());
+    let defect = |y: f64| -> Result<f64, AdhesionError> {
+        let g = gamma(y);
+        Ok(sp.solve(&g).ok_or_else(|| singular(g.to_f64()))?.stick_edge_defect().to_f64())
+    };
+    if !(start > 0.0 && start < 1.0) {
+        return Err(AdhesionError::InvalidArgument {
+            parameter: "start",
+            value: start.to_string(),
+            expected: "a slip-zone width 0 < 1 - c/a < 1".into(),
+        });
+    }
+    // the defect is negative below the root in gamma, i.e. above it in y; illinois wants it
+    // increasing, so it runs in z = -y
+    let (mut y, mut d) = (start.ln(), defect(start.ln())?);
+    let step = if d < 0.0 { -(1.5f64.ln()) } else { 1.5f64.ln() };
+    let mut bracket = None;
+    for _ in 0..40 {
+        let y2 = y + step;
+        if y2 >= 0.0 {
+            break;
+        }
+        let d2 = defect(y2)?;
+        if (d2 < 0.0) != (d < 0.0) {
+            bracket = Some(if d < 0.0 { ((-y, d), (-y2, d2)) } else { ((-y2, d2), (-y, d)) });
+            break;
+        }
+        (y, d) = (y2, d2);
+    }
+    let Some((lo, hi)) = bracket else {
+        return Err(not_converged(format!("no sign change of the stick-edge defect near 1 - c/a = {start}")));
+    };
+    let y = -illinois(lo, hi, tol, |z| defect(-z))?;
+    let inc = sp.solve(&gamma(y)).ok_or_else(|| singular(1.0 - y.exp()))?;
+    let width = Float::with_val(prec, 1) - &inc.gamma.0;
+    Ok((width, sp.load_coefficient(&inc).0))
+}
+
 /// gamma and C_P with verified digits (module doc); `beta`, `mu` at a precision of at least
 /// 3.33 digits + 72 bits (exact values of the problem).
 pub fn verified(beta: &Float, mu: &Float, digits: u32) -> Result<VerifiedPunch, AdhesionError> {
