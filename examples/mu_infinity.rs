@@ -1,6 +1,7 @@
 //! The single punch's stick ratio c/a and load coefficient C_P as mu grows (issue 32, docs/theory.md
-//! section 17.3 "Large mu"), by the spectral method in MPFR (`spectral_punch::stick_ratio_mpfr`)
-//! at two (n, bits) and by the `f64` increment method (n = 40, 80):
+//! section 17.3 "Large mu"), by the spectral method in MPFR (`spectral_punch::slip_width_mpfr`, the
+//! root in ln(1 - c/a), each start the previous mu's width where the `f64` method refuses) at
+//! (n1, bits) and (n2, bits + 32), and by the `f64` increment method (n = 40, 80):
 //! `cargo run --release --example mu_infinity -- NU_NUM/NU_DEN N1 N2 BITS MU...`.
 
 use std::time::Instant;

@@ -11,7 +11,10 @@
 //!   (about 10 solves instead of 20-30);
 //! - MPFR ([`stick_ratio_mpfr`]): the secant method from a start (the `f64` root) to a step below
 //!   2^-(bits - 16). C_P is stationary in gamma at the root (measured: dC_P/dgamma changes sign
-//!   there), so the last iterate's C_P carries the root's error squared.
+//!   there), so the last iterate's C_P carries the root's error squared;
+//! - MPFR where the slip zone is narrow ([`slip_width_mpfr`], large mu, docs/theory.md section
+//!   17.3 "Large mu"): the root in ln(1 - gamma), bracketed by factors of 1.5 in the width and
+//!   refined by the Illinois method, gamma formed in MPFR as 1 - width.
 //!
 //! [`verified`]: two discretisations at two precisions, (n, B) and (n + 6, B + 32) with
 //! n = max(8, digits - 2) polynomials per family and B = 3.33 (digits + 14) + 16 bits (the
