@@ -24,7 +24,7 @@ const BETA: f64 = 0.5;
 /// Stick elements of the coarser single-punch mesh.
 const N: usize = 10;
 /// Complete adhesion's single-punch load coefficient at nu = 0, pi/(2 (1 - 2 eps S))
-/// (docs/theory.md section 4; `growing_friction_tends_to_complete_adhesion` checks it).
+/// (docs/theory.md section 4; `growing_friction_levels_off_below_complete_adhesion` checks it).
 const ADHESION_CP: f64 = 1.957_87;
 
 /// A value with its estimate, as "v (e)".

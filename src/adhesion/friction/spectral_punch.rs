@@ -11,7 +11,10 @@
 //!   (about 10 solves instead of 20-30);
 //! - MPFR ([`stick_ratio_mpfr`]): the secant method from a start (the `f64` root) to a step below
 //!   2^-(bits - 16). C_P is stationary in gamma at the root (measured: dC_P/dgamma changes sign
-//!   there), so the last iterate's C_P carries the root's error squared.
+//!   there), so the last iterate's C_P carries the root's error squared;
+//! - MPFR where the slip zone is narrow ([`slip_width_mpfr`], large mu, docs/theory.md section
+//!   17.3 "Large mu"): the root in ln(1 - gamma), bracketed by factors of 1.5 in the width and
+//!   refined by the Illinois method, gamma formed in MPFR as 1 - width.
 //!
 //! [`verified`]: two discretisations at two precisions, (n, B) and (n + 6, B + 32) with
 //! n = max(8, digits - 2) polynomials per family and B = 3.33 (digits + 14) + 16 bits (the
@@ -201,6 +204,51 @@ fn secant(
         }
     }
     Err(not_converged(format!("the secant iteration did not settle (c/a = {})", g1.to_f64())))
+}
+
+/// The slip zone's width 1 - gamma and C_P in MPFR where it is narrow (large mu, docs/theory.md
+/// section 17.3 "Large mu"): the zero of the stick-edge defect in y = ln(1 - gamma), gamma formed
+/// in MPFR as 1 - e^y (so a width of 1e-8 keeps its relative digits), bracketed from `start` (a
+/// width) by steps of a factor 1.5 (at most 40), then the Illinois method to a bracket of `tol`
+/// in y. The defect is taken to `f64` for the search: its sign and size, not its digits.
+pub fn slip_width_mpfr(sp: &Spectral<Mp>, start: f64, tol: f64) -> Result<(Float, Float), AdhesionError> {
+    let prec = sp.bits();
+    let gamma = |y: f64| Mp(Float::with_val(prec, 1) - Float::with_val(prec, y).exp());
+    let defect = |y: f64| -> Result<f64, AdhesionError> {
+        let g = gamma(y);
+        Ok(sp.solve(&g).ok_or_else(|| singular(g.to_f64()))?.stick_edge_defect().to_f64())
+    };
+    if !(start > 0.0 && start < 1.0) {
+        return Err(AdhesionError::InvalidArgument {
+            parameter: "start",
+            value: start.to_string(),
+            expected: "a slip-zone width 0 < 1 - c/a < 1".into(),
+        });
+    }
+    // the defect is negative below the root in gamma, i.e. above it in y; illinois wants it
+    // increasing, so it runs in z = -y
+    let (mut y, mut d) = (start.ln(), defect(start.ln())?);
+    let step = if d < 0.0 { -(1.5f64.ln()) } else { 1.5f64.ln() };
+    let mut bracket = None;
+    for _ in 0..40 {
+        let y2 = y + step;
+        if y2 >= 0.0 {
+            break;
+        }
+        let d2 = defect(y2)?;
+        if (d2 < 0.0) != (d < 0.0) {
+            bracket = Some(if d < 0.0 { ((-y, d), (-y2, d2)) } else { ((-y2, d2), (-y, d)) });
+            break;
+        }
+        (y, d) = (y2, d2);
+    }
+    let Some((lo, hi)) = bracket else {
+        return Err(not_converged(format!("no sign change of the stick-edge defect near 1 - c/a = {start}")));
+    };
+    let y = -illinois(lo, hi, tol, |z| defect(-z))?;
+    let inc = sp.solve(&gamma(y)).ok_or_else(|| singular(1.0 - y.exp()))?;
+    let width = Float::with_val(prec, 1) - &inc.gamma.0;
+    Ok((width, sp.load_coefficient(&inc).0))
 }
 
 /// gamma and C_P with verified digits (module doc); `beta`, `mu` at a precision of at least
