@@ -167,16 +167,7 @@ pub fn friction_answer(
     let d_psi = field_digits(fl.errors.psi, largest(|q| q.psi));
     let (stress, psi_scale) = (e_star * k * a, k * a);
     let field = |name: &str, get: fn(&crate::adhesion::friction::fields::PointFields) -> f64, scale: f64, d: f64| {
-        let rows = fl
-            .points
-            .iter()
-            .zip(points)
-            .map(|(q, x)| FieldRow {
-                x_over_a: exact_series::q_text(x),
-                value: Measured::f64(get(q) * scale, scale, d),
-            })
-            .collect();
-        (name.to_string(), rows)
+        (name.to_string(), field_column(&fl.points, points, get, scale, d))
     };
     let state_method = single_punch::solve(beta, mu, STICK_ELEMENTS, Method::State);
     Ok(AdhesionAnswer {
@@ -385,3 +376,19 @@ pub const FRICTION_NOTE_MPFR: &str = "finite friction (docs/theory.md section 17
      parabolic punch the solution is self-similar and c/a is constant during loading (D.A. Spence, J. Elasticity 5 \
      (1975) 297-319), here with the shear's effect on the normal displacement kept (the coupled problem). Solved \
      by the spectral method in MPFR (section 17.7), digits verified by two discretisations at two precisions";
+
+/// One field at the scene's points x/a: `get` of each point's fields times `scale`, `d` digits
+/// (the single punch's and the row's answers).
+pub(super) fn field_column(
+    fields: &[crate::adhesion::friction::fields::PointFields],
+    points: &[Exact],
+    get: fn(&crate::adhesion::friction::fields::PointFields) -> f64,
+    scale: f64,
+    d: f64,
+) -> Vec<FieldRow> {
+    fields
+        .iter()
+        .zip(points)
+        .map(|(q, x)| FieldRow { x_over_a: exact_series::q_text(x), value: Measured::f64(get(q) * scale, scale, d) })
+        .collect()
+}

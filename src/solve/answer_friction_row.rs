@@ -35,7 +35,9 @@
 //! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
 
 use super::answer_friction::FRICTION_NOTE_ROW;
-use super::answer_friction::{digits, finite_f64, inequality_checks, solvable_parabola, ESTIMATE_SAFETY, FIELD_SAFETY};
+use super::answer_friction::{
+    digits, field_column, finite_f64, inequality_checks, solvable_parabola, ESTIMATE_SAFETY, FIELD_SAFETY,
+};
 use super::render::{AdhesionAnswer, DigitsKind, FieldRow, FrictionCheck, Measured, Provenance, StickSlip};
 use crate::adhesion::friction::fields::PointFields;
 use crate::adhesion::friction::row_f64::row_stick_ratio;
@@ -293,16 +295,7 @@ fn field_rows(
     for (name, get, scale) in all {
         let big = fl.points.iter().map(|q| get(q).abs()).fold(0.0, f64::max);
         let d = digits(FIELD_SAFETY * get(&fl.errors) + relative * big);
-        let column = fl
-            .points
-            .iter()
-            .zip(points)
-            .map(|(q, x)| FieldRow {
-                x_over_a: exact_series::q_text(x),
-                value: Measured::f64(get(q) * scale, scale, d),
-            })
-            .collect();
-        rows.push((name.to_string(), column));
+        rows.push((name.to_string(), field_column(&fl.points, points, get, scale, d)));
         accuracy.push((name.to_string(), d));
     }
     (rows, accuracy)

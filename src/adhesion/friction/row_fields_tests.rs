@@ -12,7 +12,10 @@ use super::spectral_row_load::{load_rate, LoadRate, NodeRule};
 /// The load of the row with its history on (nodes, n).
 fn rate(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), periodic: bool) -> LoadRate<f64> {
     let theta0 = (beta * mu).atan() / std::f64::consts::PI;
-    load_rate(&lambda, theta0, nodes, NodeRule::of_convention(periodic), |e: &f64| increment_f64(beta, mu, *e, n, periodic)).unwrap()
+    load_rate(&lambda, theta0, nodes, NodeRule::of_convention(periodic), |e: &f64| {
+        increment_f64(beta, mu, *e, n, periodic)
+    })
+    .unwrap()
 }
 
 /// The increment interpolated in eta between the load's nodes (its stick edge and coefficients)
