@@ -15,13 +15,15 @@
 //! (0, top), top the column's largest lambda, gives P at every lambda below it
 //! ([`row_loads`]: the Volterra equation on (0, chi) involves F on (0, chi) only). Measured at
 //! nu = 0, mu = 1/2, top = 1.4 (`cargo run --release --example friction_map_column -- 0 0.5 1.4`):
-//! the column's P at lambda < top differs from a load solved at lambda by 2e-6 .. 3.4e-5 relative
-//! (`paper`) and 7e-10 .. 1e-7 (`periodic`), and is less accurate than it (at lambda = 1.2, against
-//! the verified MPFR P of docs/theory.md 17.8, FINE's column is 6.1e-6 off in `paper`, the direct
-//! load 7.9e-9; `periodic` 1.4e-8 and 5e-10): the top's nodes converge like the distance from 1.4
-//! to full contact's pole at pi/2, not from lambda. The two columns' difference still bounds the
-//! column's error there (`paper`, 1.2: 3.7e-5 against the 6.1e-6 error), so a cell's digits are
-//! those of the column's P, at most about two fewer than a load solved at that lambda. Solving
+//! the column's P at lambda < top differs from a load solved at lambda by 1.5e-6 .. 2.7e-6
+//! relative in COARSE and 3e-8 .. 2.7e-7 in FINE (`paper`, its nodes in eta^2, docs/theory.md
+//! 17.8), 1.8e-8 .. 2.6e-7 and 7e-10 .. 6.4e-8 (`periodic`), and is less accurate than it (at
+//! lambda = 1.2, against the verified MPFR P of 17.8, FINE's column is 1.8e-7 off in `paper`,
+//! the direct load 3e-12; `periodic` 1.4e-8 and 5e-10): the top's nodes resolve F on (0, 1.4),
+//! not on (0, lambda). The two columns' difference still bounds the column's error there
+//! (`paper`, 1.2: 2.9e-6 against the 1.8e-7 error; `periodic` 4.5e-8 against 1.4e-8), so a cell's
+//! digits are those of the column's P, at most about two fewer than a load solved at that lambda.
+//! Solving
 //! every cell on its own costs nine times as much (one load per cell).
 //!
 //! Cost (measured, release, machine shared by six sessions, load average 6 to 7): one nu in both
@@ -207,10 +209,11 @@ fn shows(nus: &[(i64, i64)], paper: &[Vec<FrictionCell>], periodic: &[Vec<Fricti
          homogeneous mode, refusals at nu = 0 from lambda = 1.1 and at 1.0 2.3 verified MPFR digits, f64 4.2), friction solves every cell, \
          and the two discretisations agree about as well at lambda = 1.4 as at 0.2: no loss toward full contact, \
          so at the `f64` level the failure region does not survive friction (a remnant of the mode, if any, is \
-         below the discretisations' difference, 1e-5 relative in `paper`; docs/theory.md 17.8's \
+         below the discretisations' difference, 3.6e-7 relative at lambda = 1.4 in `paper` (the columns' tops); docs/theory.md 17.8's \
          `nu_zero_two_node_counts_agree_to_lambda_1_4`: 8 and 12 nodes agree on P(1.4) to 1.0e-5 and 1.1e-5 \
          in `paper`, 1.2e-7 and 4.6e-8 in `periodic`, mu = 0.3 and 1). `paper` keeps fewer digits than \
-         `periodic` at every lambda: its load nodes converge more slowly (17.8), not a mode. At nu = 1/2 \
+         `periodic` below the column's top: there its column's P is 1.5e-6 .. 2.7e-6 off a load solved at that \
+         lambda on the coarser discretisation (`periodic` at most 2.6e-7), interpolation, not a mode. At nu = 1/2 \
          friction does nothing (beta = 0): Kuznetsov's load in both conventions, the digits those of the \
          increments' rounding. Whether a remnant survives at 1e-20 needs the verified MPFR load per cell \
          (minutes each, 17.8): not run.",
