@@ -18,18 +18,14 @@
 //! (+ leading, - trailing), formed from the divided difference so that it keeps its accuracy as
 //! s -> 1 (tanh-sinh in s with the complement 1 - s). Both ends must advance: 1 +- E > 0.
 //! Each equation is divided by lambda (both sides are O(lambda)).
-//! Newton: from the single punch, a 64-bit Newton on a coarse rule with the closed-form Jacobian
-//! (`super::jacobian`, one pass over nodes and rule; the finite-difference Jacobian it replaced
-//! took 2N + 1 residuals and was 4x slower overall: the shipped scene's 20-digit solve 74 s -> 19 s
-//! CPU, same output), then chord steps at the working precision with the closed form in `f64` on
-//! the working rule (each step's correction J^-1 R in `f64`: only its own leading digits matter),
-//! until the correction falls below 2^-(target bits): two residuals a run on the shipped scene,
-//! the second correction below the goal (under 2.4e-6 of the first; the 64-bit Jacobian of the
-//! coarse rule used before contracted by only 0.06 and took a third residual).
+//! Newton: the closed-form Jacobian (`super::jacobian`) at 64 bits with a coarse rule (one pass
+//! over nodes and rule; the finite-difference Jacobian it replaced took 2N + 1 residuals and was
+//! 4x slower overall: the shipped scene's 20-digit solve 74 s -> 19 s CPU, same output), then
+//! chord steps at the working precision (each step's correction J^-1 R in `f64`: only its own leading digits
+//! matter), until the correction falls below 2^-(target bits).
 
 use super::increment::{advance_factor, divided_difference_series, size_terms, times_t, SizeTerms};
 pub use super::increment::{Increment, LawSetting};
-use super::jacobian::jacobian_f64;
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel::Side;
 use crate::numerics::chebyshev;
@@ -224,66 +220,62 @@ pub fn solve_from(
     // the correction exceeds 1e-8, then kept (chord) at `prec`. From `start`: its Phi and Gam at
     // these nodes at `prec` bits, the Jacobian there, and the chord iteration at once (the 64-bit
     // Newton would move a start closer than its coarse rule's accuracy away from the solution).
+    let low = Ctx::new(setting, nodes, 50, 64);
     let warm: Option<Vec<Float>> = start.map(|s| {
         let taus = chebyshev::nodes(nodes, prec);
         let at = |c: &[Float], tau: &Float| chebyshev::evaluate(c, &(Float::with_val(prec, tau * 2u32) - 1u32), prec);
         let phi: Vec<Float> = taus.iter().map(|t| at(&s.phi, t)).collect();
         phi.into_iter().chain(taus.iter().map(|t| at(&s.gam, t))).collect()
     });
+    let state64: Vec<Float> = match &warm {
+        Some(w) => w.iter().map(|v| Float::with_val(64, v)).collect(),
+        None => {
+            let load_constant = AdhesionParamsF64::new(&setting.material).load_constant;
+            (0..2 * nodes).map(|i| Float::with_val(64, if i < nodes { 2.0 * load_constant } else { 0.0 })).collect()
+        }
+    };
     let warm_start = warm.is_some();
-    match solve_with(setting, warm, nodes, target_bits, prec) {
+    match solve_with(setting, &low, state64, warm, nodes, target_bits, prec) {
         Err(_) if warm_start => solve_from(setting, nodes, target_bits, prec, None),
         r => r,
     }
 }
 
-/// The 64-bit Newton of [`solve_from`] on a coarse rule from the single punch, with the `f64`
-/// closed-form Jacobian refreshed at every step while the correction exceeds 1e-8.
-fn newton_64(setting: &LawSetting, nodes: usize) -> Result<Vec<Float>, AdhesionError> {
-    let low = Ctx::new(setting, nodes, 50, 64);
-    let load_constant = AdhesionParamsF64::new(&setting.material).load_constant;
-    let mut state64: Vec<Float> =
-        (0..2 * nodes).map(|i| Float::with_val(64, if i < nodes { 2.0 * load_constant } else { 0.0 })).collect();
-    let closed_form = |state: &[Float]| jacobian_f64(&low.rule, &low.inc, &low.lambda_max, &low.nodes, state);
-    let mut jac = closed_form(&state64)?;
-    let mut previous = f64::INFINITY;
-    for _ in 0..30 {
-        let r = residual(&low, &state64)?;
-        let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
-        let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
-        for (x, d) in state64.iter_mut().zip(&delta) {
-            *x -= *d;
-        }
-        if size < 1e-13 {
-            break;
-        }
-        if size > 1e-8 || size > 1e-3 * previous {
-            jac = closed_form(&state64)?;
-        }
-        previous = size;
-    }
-    Ok(state64)
-}
-
-/// The chord iteration of [`solve_from`] at `prec` from `warm` (at `prec`), or from the 64-bit
-/// Newton's solution ([`newton_64`]) when there is none. Its Jacobian is the `f64` closed form on
-/// this discretisation's own rule at the start ([`jacobian_f64`]): on the shipped scene the second
-/// residual's correction is already below the goal and ends the iteration (the 64-bit one of the
-/// coarse rule contracted by 0.06 and needed a third; docs/performance.md, "The loading law",
-/// round three).
+/// The iteration of [`solve_from`] from `state64` (and `warm` at `prec`, if given: no 64-bit
+/// Newton then).
 fn solve_with(
     setting: &LawSetting,
+    low: &Ctx,
+    mut state64: Vec<Float>,
     warm: Option<Vec<Float>>,
     nodes: usize,
     target_bits: u32,
     prec: u32,
 ) -> Result<LawCollocation, AdhesionError> {
-    let mut state: Vec<Float> = match warm {
-        Some(w) => w,
-        None => newton_64(setting, nodes)?.iter().map(|v| Float::with_val(prec, v)).collect(),
+    let closed_form = |ctx: &Ctx, state: &[Float]| {
+        super::jacobian::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &ctx.sizes, state, ctx.prec)
     };
+    let mut jac = closed_form(low, &state64)?;
+    if warm.is_none() {
+        let mut previous = f64::INFINITY;
+        for _ in 0..30 {
+            let r = residual(low, &state64)?;
+            let delta = solve_f64(&jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
+            let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
+            for (x, d) in state64.iter_mut().zip(&delta) {
+                *x -= *d;
+            }
+            if size < 1e-13 {
+                break;
+            }
+            if size > 1e-8 || size > 1e-3 * previous {
+                jac = closed_form(low, &state64)?;
+            }
+            previous = size;
+        }
+    }
     let ctx = Ctx::new(setting, nodes, target_bits + 8, prec);
-    let jac = jacobian_f64(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &state)?;
+    let mut state: Vec<Float> = warm.unwrap_or_else(|| state64.iter().map(|v| Float::with_val(prec, v)).collect());
     let goal = 2f64.powi(-(target_bits as i32));
     let mut steps = 0;
     let mut last = f64::INFINITY;
@@ -410,73 +402,7 @@ mod tests {
         }
     }
 
-    /// The Jacobian tests' settings: nu = 0.3, n = 1/5, l/L = 1/5 in both conventions; the
-    /// polynomial law N = P2/5 + P2^2/100 at nu = 0 (`periodic`); the single punch (l/U = 1).
-    fn jacobian_cases() -> Vec<LawSetting> {
-        let n = Exact::new(1.into(), 5.into());
-        let size = Exact::new(1.into(), 5.into());
-        let mut cases: Vec<LawSetting> = [Convention::Paper, Convention::PeriodicSurface]
-            .into_iter()
-            .map(|convention| LawSetting::linear(material((3, 10)), n.clone(), size.clone(), convention))
-            .collect();
-        let mut law = LawSetting::linear(material((0, 1)), n.clone(), size, Convention::PeriodicSurface);
-        law.law =
-            LoadingLaw::Polynomial(vec![Exact::from_integer(0.into()), n.clone(), Exact::new(1.into(), 100.into())]);
-        cases.push(law);
-        let mut single = LawSetting::linear(material((3, 10)), n, Exact::from_integer(1.into()), Convention::Paper);
-        single.row = Row::Single;
-        cases.push(single);
-        cases
-    }
-
-    /// 8 nodes, a 50-bit rule at 128 bits, an asymmetric state (Phi, Gam not constant) and the
-    /// MPFR closed-form Jacobian there.
-    fn reference_jacobian(setting: &LawSetting) -> (Ctx, Vec<Float>, Vec<Vec<f64>>) {
-        let (prec, nodes) = (128, 8);
-        let ctx = Ctx::new(setting, nodes, 50, prec);
-        let state: Vec<Float> = (0..2 * nodes)
-            .map(|i| {
-                let t = ctx.nodes[i % nodes].to_f64();
-                Float::with_val(prec, if i < nodes { 2.3 + 0.4 * t * t } else { -0.04 + 0.02 * t })
-            })
-            .collect();
-        let exact = super::super::jacobian::reference::jacobian(
-            &ctx.rule,
-            &ctx.inc,
-            &ctx.lambda_max,
-            &ctx.nodes,
-            &ctx.sizes,
-            &state,
-            prec,
-        )
-        .unwrap();
-        (ctx, state, exact)
-    }
-
-    /// The chord iteration's `f64` Jacobian ([`jacobian_f64`]) equals the MPFR closed form at 128
-    /// bits (itself checked against central differences below) to 1e-7 of the largest entry at an
-    /// asymmetric state, in both conventions (the `periodic` one with the tilted punch's central
-    /// difference), for the single punch and for a polynomial law (n varying along the loading);
-    /// measured: 2.1e-8 to 2.7e-8 of it, far below what the chord iteration needs (a contraction
-    /// under 1e-5 makes its second correction fall below the goal).
-    #[test]
-    fn f64_jacobian_equals_the_mpfr_closed_form() {
-        for setting in jacobian_cases() {
-            let (ctx, state, exact) = reference_jacobian(&setting);
-            let fast = jacobian_f64(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &state).unwrap();
-            let scale = exact.iter().flatten().fold(0f64, |m, v| m.max(v.abs()));
-            let worst = exact.iter().flatten().zip(fast.iter().flatten()).fold(0f64, |m, (a, b)| m.max((a - b).abs()));
-            eprintln!(
-                "{:?} {:?}: largest |J| {scale:.3}, f64 off by {:.1e} of it",
-                setting.row,
-                setting.convention,
-                worst / scale
-            );
-            assert!(worst < 1e-7 * scale, "{worst} of {scale}");
-        }
-    }
-
-    /// The closed-form Jacobian ((`super::super::jacobian::reference`)) equals central differences of the
+    /// The closed-form Jacobian ([`super::super::jacobian`]) equals central differences of the
     /// residual at 128 bits (step 1e-12: truncation ~1e-24) to 1e-12 relative at an asymmetric
     /// state (Phi, Gam not constant), in both conventions and for the single punch; for a
     /// polynomial law, whose n(P2) dependence the closed form leaves out, the difference is that
@@ -485,13 +411,42 @@ mod tests {
     #[test]
     #[ignore = "long tier: 9 s alone in the test profile (opt-level 2) on a loaded 2-core machine (scripts/test --long)"]
     fn closed_form_jacobian_equals_finite_differences() {
+        let n = Exact::new(1.into(), 5.into());
+        let poly =
+            LoadingLaw::Polynomial(vec![Exact::from_integer(0.into()), n.clone(), Exact::new(1.into(), 100.into())]);
+        let size = Exact::new(1.into(), 5.into());
+        let mut cases = Vec::new();
+        for convention in [Convention::Paper, Convention::PeriodicSurface] {
+            cases.push((LawSetting::linear(material((3, 10)), n.clone(), size.clone(), convention), 1e-12));
+        }
+        let mut law = LawSetting::linear(material((0, 1)), n.clone(), size.clone(), Convention::PeriodicSurface);
+        law.law = poly;
+        cases.push((law, 1e-5));
+        let mut single = LawSetting::linear(material((3, 10)), n, Exact::from_integer(1.into()), Convention::Paper);
+        single.row = Row::Single;
+        cases.push((single, 1e-12));
         let prec = 128;
-        for (k, setting) in jacobian_cases().into_iter().enumerate() {
-            let tolerance = if k == 2 { 1e-5 } else { 1e-12 };
+        for (setting, tolerance) in cases {
             let nodes = 8;
-            let (ctx, state, exact) = reference_jacobian(&setting);
+            let ctx = Ctx::new(&setting, nodes, 50, prec);
+            let state: Vec<Float> = (0..2 * nodes)
+                .map(|i| {
+                    let t = ctx.nodes[i % nodes].to_f64();
+                    Float::with_val(prec, if i < nodes { 2.3 + 0.4 * t * t } else { -0.04 + 0.02 * t })
+                })
+                .collect();
             let h = 1e-12;
             let mut worst = 0f64;
+            let exact = super::super::jacobian::jacobian(
+                &ctx.rule,
+                &ctx.inc,
+                &ctx.lambda_max,
+                &ctx.nodes,
+                &ctx.sizes,
+                &state,
+                prec,
+            )
+            .unwrap();
             let scale = exact.iter().flatten().fold(0f64, |m, v| m.max(v.abs()));
             for j in 0..2 * nodes {
                 let (mut plus, mut minus) = (state.clone(), state.clone());
