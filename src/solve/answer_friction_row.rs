@@ -79,12 +79,16 @@ const INTERPOLATION: f64 = 2e-4;
 /// Relative step of lambda below which [`invert`] stops.
 const LAMBDA_TOL: f64 = 1e-10;
 
-/// The load P(lambda) on the discretisation `(nodes, n)`, in the convention's node rule.
+/// The load P(lambda) on the discretisation `(nodes, n)` ([`row_load_rate`]'s nodes).
 pub fn row_load(beta: f64, mu: f64, lambda: f64, mesh: (usize, usize), periodic: bool) -> Result<f64, Error> {
     Ok(row_load_rate(beta, mu, lambda, mesh, periodic)?.load)
 }
 
-/// The load with its rate and increments ([`LoadRate`]) on the discretisation `(nodes, n)`.
+/// The load with its rate and increments ([`LoadRate`]) on the discretisation `(nodes, n)`, nodes
+/// in eta in both conventions: the fields' claims (`friction_scene::row_field_claims_hold_against_a_finer_load`)
+/// were validated with them, and with `paper`'s eta^2 nodes psi at x/a = 1/2 missed its claim
+/// (2.8e-4 against 1.6e-4, nu = 0, mu = 1/2, lambda = 1.2); the load alone converges faster in
+/// eta^2 (`spectral_row_load::NodeRule`, used by [`row_loads`] and the verified MPFR load).
 pub fn row_load_rate(
     beta: f64,
     mu: f64,
@@ -94,8 +98,7 @@ pub fn row_load_rate(
 ) -> Result<LoadRate<f64>, Error> {
     // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
-    let rule = NodeRule::of_convention(periodic);
-    Ok(load_rate(&lambda, theta0, nodes, rule, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+    Ok(load_rate(&lambda, theta0, nodes, NodeRule::Eta, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
 }
 
 /// P at each of `lambdas` (in (0, `lambda_max`]) on the discretisation `(nodes, n)` from one
