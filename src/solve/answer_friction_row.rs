@@ -1,8 +1,8 @@
 //! The periodic row with finite friction (`[adhesion] friction`, a finite period; docs/theory.md
 //! sections 17.5 and 17.8) as an [`AdhesionAnswer`]: the parabola g = k x^2, normal loading, both
 //! surface conventions, by the spectral method in `f64`: the load P(lambda) of the edge-slope
-//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load_with`], nodes
-//! in eta^2 in `paper`, P2 = E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
+//! Volterra equation (17.11) ([`crate::adhesion::friction::spectral_row_load::load_rate`], nodes
+//! in eta, [`row_load_rate`], P2 = E* k (L/pi)^2 P) and the stick ratio c/a(lambda) of the increment (17.10)
 //! ([`crate::adhesion::friction::spectral_row::stick_ratio_f64`]):
 //!     given a:  lambda = pi a/L, P2 = P(lambda) E* k (L/pi)^2, c = (c/a)(lambda) a;
 //!     given P2: lambda where P(lambda) = P2/(E* k (L/pi)^2) ([`invert`]: the frictionless shape

@@ -1,11 +1,11 @@
 //! Report section 12's Problem 2 stability map with friction (`src/friction_map.rs`, issue 32
-//! Build item 5): its cells are direct `row_load` runs. At nu = 0, mu = 1/2, `paper`, on a column
-//! to lambda = 0.8: the top cell's two loads are `row_load` at 0.8 on `COARSE` and `FINE`, bit for
-//! bit; the cell at 0.4 (P from the column's collocation on (0, 0.8)) is within the cell's own
-//! difference of the two discretisations of `row_load` solved at 0.4, so the digits it shows hold
-//! for the direct load too.
+//! Build item 5): its cells are direct `row_loads` runs (the convention's node rule). At nu = 0,
+//! mu = 1/2, `paper`, on a column to lambda = 0.8: the top cell's two loads are the load solved at
+//! 0.8 on `COARSE` and `FINE`, bit for bit; the cell at 0.4 (P from the column's collocation on
+//! (0, 0.8)) is within the cell's own difference of the two discretisations of the load solved at
+//! 0.4, so the digits it shows hold for the direct load too.
 
-use periodic_contact::solve::answer_friction_row::{row_load, COARSE, FINE};
+use periodic_contact::solve::answer_friction_row::{row_loads, COARSE, FINE};
 use periodic_contact_report::friction_map::{column, MU};
 
 #[test]
@@ -14,7 +14,7 @@ fn the_cells_are_direct_row_loads() {
     let cells = column(0, 1, &[0.4, 0.8], false);
     let pair = |i: usize| cells[i].load.clone().unwrap_or_else(|e| panic!("cell {i} refused: {e}"));
     // nu = 0: beta = 1/2
-    let direct = |lambda, mesh| row_load(0.5, MU, lambda, mesh, false).unwrap();
+    let direct = |lambda: f64, mesh| row_loads(0.5, MU, lambda, &[lambda], mesh, false).unwrap()[0];
     let (coarse, fine) = pair(1);
     assert_eq!((cells[1].nu, cells[1].lambda), (0.0, 0.8));
     assert_eq!(coarse.to_bits(), direct(0.8, COARSE).to_bits(), "{coarse}");
