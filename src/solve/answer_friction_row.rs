@@ -22,7 +22,7 @@
 //! discretisations' largest difference over the points (twice undershot it: q1 at x/a = 0.9,
 //! nu = 0, mu = 1/2, lambda = 1.2, `paper`, is 1.9e-6 from 14 nodes against a claim of 1.6e-6; the
 //! interpolated increments carry a floor of about 2e-6, docs/theory.md section 17.8), plus the
-//! relative error of the size times the field, [`ROUNDING`] and [`INTERPOLATION`]. `checks`: the same keys as the single punch's (max |q1|/(mu q2) on
+//! relative error of the size times the field, `ROUNDING` and `INTERPOLATION`. `checks`: the same keys as the single punch's (max |q1|/(mu q2) on
 //! the stick zone, min q2/max q2, the outward slip rate over all load nodes), each with
 //! [`ESTIMATE_SAFETY`] times its two discretisations' difference, and the difference of c/a from
 //! the independent f64 march of [`crate::adhesion::friction::row_f64`] (piecewise constants on a
