@@ -2,7 +2,7 @@
 //! item 5), lambda = pi a/L against nu for the periodic row of parabolic punches (k = L = E* = 1)
 //! with Coulomb friction mu = 1/2, in both surface conventions, beside section 5's map of complete
 //! adhesion: the same grid (a subset of its nu, below), the same bins and colours
-//! ([`super::stability::binned_chart`]) and the horizon's curves of complete adhesion, so the two
+//! (`stability::binned_chart`) and the horizon's curves of complete adhesion, so the two
 //! compare cell for cell.
 //!
 //! A cell's value: the digits on which the two discretisations of the `f64` spectral row that
