@@ -39,7 +39,7 @@ use crate::numerics::chebyshev;
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsF64;
 use rug::float::Constant;
-use rug::{Complex, Float};
+use rug::{Assign, Complex, Float};
 
 /// Working data of one precision.
 struct Ctx {
@@ -101,30 +101,38 @@ pub(super) fn edge_integrals(
     let factors = |n: &Float| (Complex::with_val(prec, (1, n)), super::increment::periodic_factor(&inc.beta, n, prec));
     let constant = factors(&inc.ratio_at(&Float::with_val(prec, 0)));
     let mut clenshaw = chebyshev::Clenshaw::new(prec);
-    let (mut phi, mut dd) = (Float::new(prec), Float::new(prec));
+    // Scratch values of the loop, assigned in place (each operation rounded once, as before).
+    let [mut phi, mut dd, mut ts, mut xs, mut e, mut base, mut weight, mut d, mut eta] =
+        std::array::from_fn(|_| Float::new(prec));
     for q in 0..rule.len() {
         let (s, c, w) = (&rule.s[q], &rule.c[q], &rule.w[q]);
-        let ts = Float::with_val(prec, t * s);
-        let eta = Float::with_val(prec, &lambda * s);
-        let xs = Float::with_val(prec, &ts * 2u32) - 1u32;
+        ts.assign(t * s);
+        xs.assign(&ts * 2u32);
+        xs -= 1u32;
         clenshaw.evaluate_into(phi_c, &xs, &mut phi);
         // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
         clenshaw.evaluate_into(&dd_c, &xs, &mut dd);
-        let e = Float::with_val(prec, &gam_t + Float::with_val(prec, &ts * &dd) * 2u32);
-        let base = Float::with_val(prec, &lambda * c);
-        let weight = Float::with_val(prec, w * s) * &phi;
+        e.assign(&ts * &dd);
+        e *= 2u32;
+        e += &gam_t;
+        base.assign(&lambda * c);
+        weight.assign(w * s);
+        weight *= &phi;
         // n = N'(P2(eta)) (constant for the linear law).
         let varying = tphi.as_ref().map(|tp| factors(&inc.ratio_at(&(chebyshev::integral(tp, &ts, prec) * &l2max))));
         let (one_in, tilt_factor) = varying.as_ref().unwrap_or(&constant);
         // The factors of eta alone and the tilted punch: once for both ends.
-        let own = sizes.is_none().then(|| SizeTerms::new(inc, &eta, prec));
+        let own = sizes.is_none().then(|| {
+            eta.assign(&lambda * s);
+            SizeTerms::new(inc, &eta, prec)
+        });
         let SizeTerms { size, tilt } = own.as_ref().or(sizes.map(|v| &v[q])).expect("one of the two is set");
         for (side, sign, acc) in [(Side::Right, 1i32, &mut acc_b), (Side::Left, -1, &mut acc_a)] {
             let factor = advance_factor(&e, sign, &lambda)?;
             if only.is_some_and(|o| o != side) {
                 continue;
             }
-            let d = Float::with_val(prec, &base * &factor);
+            d.assign(&base * &factor);
             let point = size.point(side, &d);
             let mut k = size.kernel(&point) * one_in;
             if let Some(tilt) = tilt {
@@ -308,7 +316,8 @@ fn solve_fine(
     target_bits: u32,
     prec: u32,
 ) -> Result<LawCollocation, AdhesionError> {
-    let closed_form = |ctx: &Ctx, state: &[Float]| jacobian_f64(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, state);
+    let closed_form =
+        |ctx: &Ctx, state: &[Float]| jacobian_f64(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, state);
     let state: Vec<Float> = match warm {
         Some(w) => w,
         None => newton_64(setting, nodes, closed_form)?.0.iter().map(|v| Float::with_val(prec, v)).collect(),
@@ -367,7 +376,7 @@ fn chord(
         last = r.iter().fold(0f64, |m, v| m.max(v.to_f64().abs()));
         let delta = solve_f64(jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
         let size = delta.iter().fold(0f64, |m, v| m.max(v.abs()));
-        if let Some(bound) = contraction.filter(|b| !(size <= b * previous)) {
+        if let Some(bound) = contraction.filter(|b| size.is_nan() || size > b * previous) {
             return Err(AdhesionError::NotConverged {
                 what: "loading-law chord iteration",
                 reason: format!("correction {size:.1e} after {previous:.1e}: not below {bound} of it"),
