@@ -248,12 +248,25 @@ pub fn solve_from(
     }
 }
 
+/// The chord Jacobian of a run of [`solve_by`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum ChordJacobian {
+    /// The `f64` closed form on the working rule ([`jacobian_f64`]), once at the start; the
+    /// 64-bit Newton from the single punch takes it too. The run fails where a correction
+    /// exceeds [`CONTRACTION`] times the one before.
+    Fine,
+    /// The 64-bit MPFR closed form on a coarse rule (`super::jacobian::mpfr`): the 64-bit
+    /// Newton's last one, or at `warm`; no contraction bound (the solver before the `f64` one).
+    Coarse,
+}
+
 /// The iteration of [`solve_from`] from `warm` (at `prec`) or the single punch: first with the
-/// `f64` chord Jacobian on the working rule ([`solve_fine`]); where that chord iteration fails or
-/// does not contract, again with the 64-bit MPFR Jacobian of a coarse rule ([`solve_coarse`]).
-/// The second is the solver as it was before the first (nu = 0, n = 1/2, l/L = 1/8 at 12 digits,
-/// near its homogeneous mode mu* = 31.84: the `f64` one's iteration lets the leading end recede
-/// at lambda = 0.3924; test `small_nu_shortfall_is_a_warning` of the CLI).
+/// `f64` chord Jacobian on the working rule ([`ChordJacobian::Fine`]); where that chord iteration
+/// fails or does not contract, again with the 64-bit MPFR Jacobian of a coarse rule
+/// ([`ChordJacobian::Coarse`]). The second is the solver as it was before the first (nu = 0,
+/// n = 1/2, l/L = 1/8 at 12 digits, near its homogeneous mode mu* = 31.84: the `f64` one's
+/// iteration lets the leading end recede at lambda = 0.3924; test
+/// `small_nu_shortfall_is_a_warning` of the CLI).
 fn solve_with(
     setting: &LawSetting,
     warm: Option<Vec<Float>>,
@@ -261,8 +274,8 @@ fn solve_with(
     target_bits: u32,
     prec: u32,
 ) -> Result<LawCollocation, AdhesionError> {
-    solve_fine(setting, warm.clone(), nodes, target_bits, prec)
-        .or_else(|_| solve_coarse(setting, warm, nodes, target_bits, prec))
+    solve_by(setting, warm.clone(), nodes, target_bits, prec, ChordJacobian::Fine)
+        .or_else(|_| solve_by(setting, warm, nodes, target_bits, prec, ChordJacobian::Coarse))
 }
 
 /// The 64-bit Newton of [`solve_from`] on a coarse rule from the single punch, the closed-form
@@ -297,62 +310,60 @@ fn newton_64(
     Ok((state64, jac))
 }
 
-/// A chord step's correction must be below this fraction of the one before it in
-/// [`solve_fine`]; beyond, the iteration does not contract and [`solve_coarse`] takes over. On the
+/// A chord step's correction must be below this fraction of the one before it with
+/// [`ChordJacobian::Fine`]; beyond, the iteration does not contract and
+/// [`ChordJacobian::Coarse`] takes over. On the
 /// shipped scenes the second correction is under 2.4e-6 of the first.
 const CONTRACTION: f64 = 0.5;
 
 /// The chord iteration of [`solve_from`] at `prec` from `warm`, or from the 64-bit Newton's
-/// solution ([`newton_64`] with the `f64` Jacobian) when there is none. Its Jacobian is the `f64`
-/// closed form on this discretisation's own rule at the start ([`jacobian_f64`]): on the shipped
-/// scene the second residual's correction is already below the goal and ends the iteration (the
-/// 64-bit one of the coarse rule contracted by 0.06 and needed a third; docs/performance.md, "The
-/// loading law", round three). An error where a correction exceeds [`CONTRACTION`] times the one
-/// before.
-fn solve_fine(
+/// solution ([`newton_64`]) when there is none, with the chord Jacobian `kind`. With
+/// [`ChordJacobian::Fine`] on the shipped scene the second residual's correction is already below
+/// the goal and ends the iteration (the 64-bit one of the coarse rule contracted by 0.06 and
+/// needed a third; docs/performance.md, "The loading law", round three).
+fn solve_by(
     setting: &LawSetting,
     warm: Option<Vec<Float>>,
     nodes: usize,
     target_bits: u32,
     prec: u32,
+    kind: ChordJacobian,
 ) -> Result<LawCollocation, AdhesionError> {
-    let closed_form =
-        |ctx: &Ctx, state: &[Float]| jacobian_f64(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, state);
-    let state: Vec<Float> = match warm {
-        Some(w) => w,
-        None => newton_64(setting, nodes, closed_form)?.0.iter().map(|v| Float::with_val(prec, v)).collect(),
+    let closed_form = |ctx: &Ctx, state: &[Float]| match kind {
+        ChordJacobian::Fine => jacobian_f64(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, state),
+        ChordJacobian::Coarse => super::jacobian::mpfr::jacobian(
+            &ctx.rule,
+            &ctx.inc,
+            &ctx.lambda_max,
+            &ctx.nodes,
+            &ctx.sizes,
+            state,
+            ctx.prec,
+        ),
     };
-    let ctx = Ctx::new(setting, nodes, target_bits + 8, prec);
-    let jac = closed_form(&ctx, &state)?;
-    chord(&ctx, state, &jac, target_bits, Some(CONTRACTION))
-}
-
-/// The chord iteration of [`solve_from`] with the 64-bit MPFR closed-form Jacobian of a coarse
-/// rule (`super::jacobian::mpfr`): from the 64-bit Newton's solution ([`newton_64`]) with its last
-/// Jacobian, or at `warm` (no 64-bit Newton then); no contraction bound.
-fn solve_coarse(
-    setting: &LawSetting,
-    warm: Option<Vec<Float>>,
-    nodes: usize,
-    target_bits: u32,
-    prec: u32,
-) -> Result<LawCollocation, AdhesionError> {
-    let closed_form = |ctx: &Ctx, state: &[Float]| {
-        super::jacobian::mpfr::jacobian(&ctx.rule, &ctx.inc, &ctx.lambda_max, &ctx.nodes, &ctx.sizes, state, ctx.prec)
-    };
-    let (state, jac) = match warm {
-        Some(w) => {
-            let low = Ctx::new(setting, nodes, 50, 64);
-            let jac = closed_form(&low, &w.iter().map(|v| Float::with_val(64, v)).collect::<Vec<_>>())?;
-            (w, jac)
+    let ctx = |rule_bits: u32, prec: u32| Ctx::new(setting, nodes, rule_bits, prec);
+    let at = |state: &[Float], prec: u32| state.iter().map(|v| Float::with_val(prec, v)).collect::<Vec<_>>();
+    let (state, jac) = match (warm, kind) {
+        // The Jacobian on the working rule, at the start.
+        (Some(w), ChordJacobian::Fine) => (w, None),
+        (None, ChordJacobian::Fine) => (at(&newton_64(setting, nodes, closed_form)?.0, prec), None),
+        // The coarse rule's at 64 bits.
+        (Some(w), ChordJacobian::Coarse) => {
+            let jac = closed_form(&ctx(50, 64), &at(&w, 64))?;
+            (w, Some(jac))
         }
-        None => {
+        (None, ChordJacobian::Coarse) => {
             let (state64, jac) = newton_64(setting, nodes, closed_form)?;
-            (state64.iter().map(|v| Float::with_val(prec, v)).collect(), jac)
+            (at(&state64, prec), Some(jac))
         }
     };
-    let ctx = Ctx::new(setting, nodes, target_bits + 8, prec);
-    chord(&ctx, state, &jac, target_bits, None)
+    let work = ctx(target_bits + 8, prec);
+    let jac = match jac {
+        Some(j) => j,
+        None => closed_form(&work, &state)?,
+    };
+    let bound = (kind == ChordJacobian::Fine).then_some(CONTRACTION);
+    chord(&work, state, &jac, target_bits, bound)
 }
 
 /// Chord steps on `ctx` from `state` with the fixed `jac` until the correction falls below
@@ -367,11 +378,9 @@ fn chord(
 ) -> Result<LawCollocation, AdhesionError> {
     let (prec, nodes) = (ctx.prec, ctx.nodes.len());
     let goal = 2f64.powi(-(target_bits as i32));
-    let mut steps = 0;
     let mut last = f64::INFINITY;
     let mut previous = f64::INFINITY;
-    for _ in 0..40 {
-        steps += 1;
+    for steps in 1..=40 {
         let r = residual(ctx, &state)?;
         last = r.iter().fold(0f64, |m, v| m.max(v.to_f64().abs()));
         let delta = solve_f64(jac, &r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())?;
