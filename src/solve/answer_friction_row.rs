@@ -7,13 +7,14 @@
 //!     given a:  lambda = pi a/L, P2 = P(lambda) E* k (L/pi)^2, c = (c/a)(lambda) a;
 //!     given P2: lambda where P(lambda) = P2/(E* k (L/pi)^2) ([`invert`]: the frictionless shape
 //!               r (-pi ln cos lambda) with r fitted to the last load, then secant steps), then c/a.
-//! Two discretisations, [`COARSE`] and [`FINE`] (load nodes, polynomials per family): the answer
-//! is the finer's, its error estimate [`ESTIMATE_SAFETY`] times their difference (in P2, a and c,
-//! each discretisation at its own lambda under a given load). Measured at nu = 0, mu = 1/2,
-//! lambda = 1.2 (docs/theory.md section 17.8): the true error of the finer is 0.03-0.1 of the
-//! difference in c/a (against the verified MPFR c/a) and 0.04 in P (against 16 nodes, n = 10);
-//! `tests/friction_scene.rs` checks that the claims hold. About 5-7 digits; the f64 rounding of the
-//! least squares (section 17.8: 7-8 digits at n = 10) bounds more.
+//! P and c/a on two discretisations of their own, [`ANSWER_LOAD`] (load nodes in
+//! [`NodeRule::of_convention`], polynomials per family; [`answer_load`]) and [`ANSWER_STICK`]: the
+//! answer is the finer's, its error estimate [`ESTIMATE_SAFETY`] times their difference (in P2, a
+//! and c, each discretisation at its own lambda under a given load) plus [`ANSWER_ROUNDING`].
+//! Measured at nu = 0, mu = 1/2, lambda = 1.2 (docs/theory.md section 17.8): 12.5 (`paper`) and
+//! 13.0 (`periodic`) digits claimed in P2 and c, true errors 1.7e-16 .. 3.3e-16 in P2 (against the
+//! verified MPFR P, `paper`, and a 24-node load, `periodic`) and 4.9e-15 .. 5.7e-15 in c (against
+//! the verified MPFR c/a); `tests/friction_scene.rs` checks that the claims hold.
 //!
 //! The fields q1, q2, psi at the scene's points x/a (scales E* k L/pi and k L/pi in the row's
 //! units, printed in the scene's) and the inequality checks are superposed from each
@@ -52,17 +53,31 @@ use std::f64::consts::PI;
 /// contact's pole at pi/2; at 1.4 the two node counts still agree to 1e-5, section 17.8).
 pub const LAMBDA_MAX: f64 = 1.5;
 
-/// The coarser discretisation: (load nodes, polynomials per family of the increment).
+/// The fields' coarser discretisation: (load nodes in eta, polynomials per family of the increment).
 pub const COARSE: (usize, usize) = (8, 6);
 
-/// The finer discretisation (the answer's). More polynomials do not help in `f64`: at n = 10 .. 14
-/// the least squares' rounding already moves c/a by 1e-7 .. 1e-6 (section 17.8).
+/// The fields' finer discretisation (their answer; the fields' claims were validated with it).
 pub const FINE: (usize, usize) = (10, 8);
 
-/// Relative error added to every estimate for the f64 rounding of the least squares: at n = 8
-/// .. 12 the load and c/a move by up to 3e-9 .. 3e-8 (relative) from it alone (nu = 0, mu = 1/2,
-/// lambda = 1.2, `periodic`: 12 nodes with n = 10 and 12 differ by 2.6e-8; section 17.8).
+/// Relative error added to every field's estimate for the f64 rounding of the least squares of
+/// the fields' discretisations [`COARSE`] and [`FINE`] (nodes in eta; section 17.8).
 const ROUNDING: f64 = 3e-8;
+
+/// The answer's discretisations of the load P (nodes in [`NodeRule::of_convention`], polynomials
+/// per family), coarser then finer, `paper` and `periodic`: at nu = 0, mu = 1/2, lambda = 1.2 the
+/// loads at 12, 14, 16, 18, 20 nodes (n = 12) are 3.5e-13, 5.1e-14, 2.0e-15, 0.6e-15, 0.3e-15 from
+/// the verified `paper` P, and `periodic` moves by 8.5e-11, 4.2e-12, 6.0e-13, 3.5e-15 from 12 to
+/// 20 nodes (24 nodes, n = 14: 2.7e-15 from 20).
+pub const ANSWER_LOAD: [[(usize, usize); 2]; 2] = [[(12, 12), (16, 12)], [(18, 12), (20, 12)]];
+
+/// The answer's polynomials per family of c/a, coarser then finer: at lambda = 1.2 n = 12 and 14
+/// are 1.6e-13 and 1.5e-14 (`paper`), 1.2e-14 and 1.3e-14 (`periodic`) from the verified c/a.
+pub const ANSWER_STICK: (usize, usize) = (12, 14);
+
+/// Relative error added to the answer's P, a and c for the f64 rounding: the load moves by up to
+/// 2.2e-15 between n = 12 and 14 at 20 nodes, and `periodic`'s c/a at n = 10 .. 14 stays 1.2e-14
+/// .. 1.5e-14 from the verified one while the three agree to 3e-15 (section 17.8).
+const ANSWER_ROUNDING: f64 = 1e-13;
 
 /// The warning of an mpfr row answer given points (module doc).
 const NO_FIELDS: &str = "q1, q2 and psi at the points and the inequality checks of the periodic row are computed by \
@@ -77,7 +92,7 @@ const NO_FIELDS: &str = "q1, q2 and psi at the points and the inequality checks 
 const INTERPOLATION: f64 = 2e-4;
 
 /// Relative step of lambda below which [`invert`] stops.
-const LAMBDA_TOL: f64 = 1e-10;
+const LAMBDA_TOL: f64 = 1e-13;
 
 /// The load P(lambda) on the discretisation `(nodes, n)` ([`row_load_rate`]'s nodes).
 pub fn row_load(beta: f64, mu: f64, lambda: f64, mesh: (usize, usize), periodic: bool) -> Result<f64, Error> {
@@ -99,6 +114,15 @@ pub fn row_load_rate(
     // the canonical exponent with kappa = beta mu (docs/theory.md (17.2): tan(pi theta0) = beta mu)
     let theta0 = crate::params::sliding::theta_f64(beta * mu);
     Ok(load_rate(&lambda, theta0, nodes, NodeRule::Eta, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?)
+}
+
+/// The load P(lambda) of the answer on the discretisation `(nodes, n)`, nodes in
+/// [`NodeRule::of_convention`] (eta^2 for `paper`, whose load converges 10^1.05 per node in it;
+/// docs/theory.md section 17.8): the answer's P and, under a given load, its lambda.
+pub fn answer_load(beta: f64, mu: f64, lambda: f64, (nodes, n): (usize, usize), periodic: bool) -> Result<f64, Error> {
+    let theta0 = crate::params::sliding::theta_f64(beta * mu);
+    let rule = NodeRule::of_convention(periodic);
+    Ok(load_rate(&lambda, theta0, nodes, rule, |e: &f64| increment_f64(beta, mu, *e, n, periodic))?.load)
 }
 
 /// P at each of `lambdas` (in (0, `lambda_max`]) on the discretisation `(nodes, n)` from one
@@ -203,13 +227,16 @@ pub fn row_answer(
     let periodic = p.periodic_surface();
     let unit = e_star * k * (l / PI).powi(2);
     let at = |mesh, lambda| row_load(beta, mu, lambda, mesh, periodic);
+    let [coarse_mesh, fine_mesh] = ANSWER_LOAD[usize::from(periodic)];
+    let answer_at = |mesh, lambda| answer_load(beta, mu, lambda, mesh, periodic);
     let rate = |mesh, lambda| row_load_rate(beta, mu, lambda, mesh, periodic);
     // (lambda, load and its history) of the two discretisations, and the last unevaluated step of lambda
     let (coarse, fine, step) = match p.size() {
         AdhesionSize::HalfWidth(a) => {
             let lambda = PI * f(a, "half_width")? / l;
             answered_lambda(lambda, a)?;
-            ((lambda, rate(COARSE, lambda)?), (lambda, rate(FINE, lambda)?), 0.0)
+            let loads = (answer_at(coarse_mesh, lambda)?, answer_at(fine_mesh, lambda)?);
+            ((lambda, loads.0, rate(COARSE, lambda)?), (lambda, loads.1, rate(FINE, lambda)?), 0.0)
         }
         AdhesionSize::NormalLoad(p2) => {
             let target = f(p2, "normal_load")? / unit;
@@ -223,23 +250,28 @@ pub fn row_answer(
                     ),
                 )
             };
-            let (lc, _) = invert(|x| at(COARSE, x), target, None)?.map_err(refuse)?;
-            // the fine search starts from the coarse root with the coarse slope there
-            let h = 1e-4 * lc;
-            let slope = (target - at(COARSE, lc - h)?) / h;
-            let (lf, step) = invert(|x| at(FINE, x), target, Some((lc, slope)))?.map_err(refuse)?;
-            ((lc, rate(COARSE, lc)?), (lf, rate(FINE, lf)?), step)
+            // the fields' coarse load first, then each answer's search from the last root with the
+            // coarse slope there
+            let (l0, _) = invert(|x| at(COARSE, x), target, None)?.map_err(refuse)?;
+            let h = 1e-4 * l0;
+            let slope = (target - at(COARSE, l0 - h)?) / h;
+            let (lc, _) = invert(|x| answer_at(coarse_mesh, x), target, Some((l0, slope)))?.map_err(refuse)?;
+            let (lf, step) = invert(|x| answer_at(fine_mesh, x), target, Some((lc, slope)))?.map_err(refuse)?;
+            (
+                (lc, answer_at(coarse_mesh, lc)?, rate(COARSE, lc)?),
+                (lf, answer_at(fine_mesh, lf)?, rate(FINE, lf)?),
+                step,
+            )
         }
     };
-    let ((l1, r1), (l2, r2)) = (coarse, fine);
-    let (p1, p2) = (r1.load, r2.load);
+    let ((l1, p1, r1), (l2, p2, r2)) = (coarse, fine);
     let g = |lambda, n| Ok::<f64, Error>(stick_ratio_f64(beta, mu, lambda, n, periodic)?);
-    let (g1, g2) = (g(l1, COARSE.1)?, g(l2, FINE.1)?);
-    let rel_size = ESTIMATE_SAFETY * (((l2 - l1).abs() + step) / l2).max((p2 - p1).abs() / p2) + ROUNDING;
+    let (g1, g2) = (g(l1, ANSWER_STICK.0)?, g(l2, ANSWER_STICK.1)?);
+    let rel_size = ESTIMATE_SAFETY * (((l2 - l1).abs() + step) / l2).max((p2 - p1).abs() / p2) + ANSWER_ROUNDING;
     let size_digits = digits(rel_size);
     let a = l2 * l / PI;
     // c on the scale a: the two discretisations' c = (c/a) lambda L/pi, each at its own lambda
-    let stick_digits = digits(ESTIMATE_SAFETY * ((g2 * l2 - g1 * l1).abs() + g2 * step) / l2 + ROUNDING);
+    let stick_digits = digits(ESTIMATE_SAFETY * ((g2 * l2 - g1 * l1).abs() + g2 * step) / l2 + ANSWER_ROUNDING);
     let xs = points.iter().map(|x| f(x, "points")).collect::<Result<Vec<_>, _>>()?;
     let histories =
         (History::new(&r1, l1, (beta, mu), COARSE.1, periodic), History::new(&r2, l2, (beta, mu), FINE.1, periodic));
@@ -255,7 +287,7 @@ pub fn row_answer(
         provenance: Provenance {
             method: "f64",
             bits: Some(53),
-            nodes: Some(FINE.0),
+            nodes: Some(fine_mesh.0),
             order: None,
             convention: periodic.then_some("periodic"),
         },
@@ -336,7 +368,7 @@ fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
             "--method",
             other.name(),
             "the periodic row with finite friction ([adhesion] friction) is solved by the spectral method only: \
-             --method f64 (the default, 5-7 digits) or --method mpfr (verified digits, given half_width)",
+             --method f64 (the default, 12-13 digits at lambda = 1.2) or --method mpfr (verified digits, given half_width)",
         )),
     }
 }
@@ -364,7 +396,7 @@ pub fn row_mpfr_answer(
             format!(
                 "at most {MPFR_ROW_MAX_DIGITS} for the periodic row with finite friction and --method mpfr (its \
                  verified load's cost grows with the digits: about 4 min of CPU at 6 digits, lambda = 1.2; \
-                 docs/theory.md section 17.8); --method f64 gives 5-7 digits in seconds"
+                 docs/theory.md section 17.8); --method f64 gives 12-13 digits (lambda = 1.2) in seconds"
             ),
         ));
     }
