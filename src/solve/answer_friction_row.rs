@@ -10,7 +10,7 @@
 //! P and c/a on two discretisations of their own, [`ANSWER_LOAD`] (load nodes in
 //! [`NodeRule::of_convention`], polynomials per family; [`answer_load`]) and [`ANSWER_STICK`]: the
 //! answer is the finer's, its error estimate [`ESTIMATE_SAFETY`] times their difference (in P2, a
-//! and c, each discretisation at its own lambda under a given load) plus [`ANSWER_ROUNDING`].
+//! and c, each discretisation at its own lambda under a given load) plus `ANSWER_ROUNDING`.
 //! Measured at nu = 0, mu = 1/2, lambda = 1.2 (docs/theory.md section 17.8): 12.5 (`paper`) and
 //! 13.0 (`periodic`) digits claimed in P2 and c, true errors 1.7e-16 .. 3.3e-16 in P2 (against the
 //! verified MPFR P, `paper`, and a 24-node load, `periodic`) and 4.9e-15 .. 5.7e-15 in c (against
