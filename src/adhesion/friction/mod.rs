@@ -41,6 +41,7 @@ pub mod row_load_f64;
 pub mod single_punch;
 pub mod spectral;
 pub mod spectral_punch;
+pub mod spectral_punch_fields;
 pub mod spectral_row;
 pub mod spectral_row_load;
 pub mod spectral_row_slope;

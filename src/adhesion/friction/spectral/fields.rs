@@ -111,6 +111,47 @@ impl<T: Real> Spectral<T> {
         constant.clone() - h / gamma.pi() - self.beta.clone() * s2
     }
 
+    /// The largest slip rate of the increment's slip zone over its largest magnitude (<= 0: every
+    /// point of the slip zone slips inward, against q1 = mu q2; docs/theory.md (17.14)): with
+    /// dchi = tau dT/(1 + tau^2 T^2), du/dP at T is 2 int_gamma^T D(T') dT'/(1 + tau^2 T'^2),
+    /// D the strain of [`Spectral::slip_zone_strain`] (tau = 0: the single punch, du/da up to a
+    /// positive factor), the stuck points not moving. The quadrature's nodes within `edge_cut`
+    /// of the zone's ends are left out (D ~ distance^(-1/2 + theta0) there: the rate moves by at
+    /// most about `edge_cut`^(1/2 + theta0)); zero without nodes.
+    pub fn outward_slip(&self, inc: &SpectralIncrement<T>, edge_cut: &T) -> T {
+        let gamma = &inc.gamma;
+        let (zero, one) = (gamma.lit(0.0), gamma.lit(1.0));
+        let len = one.clone() - gamma.clone();
+        let tau = self.tau.clone();
+        let constant = self.strain_constant(inc);
+        let mut nodes = Vec::new();
+        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+            if *d_b > *edge_cut && *d_a > *edge_cut && *w > zero {
+                let t = gamma.clone() + d_a.clone();
+                let d = self.slip_zone_strain(inc, &constant, d_a, d_b);
+                let weight = one.clone() + tau.clone() * tau.clone() * t.clone() * t;
+                nodes.push((d_a.clone(), w.clone() * d / weight));
+            }
+        });
+        nodes.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+        let mut rate = zero.clone();
+        let (mut top, mut size): (Option<T>, T) = (None, zero.clone());
+        for (_, v) in nodes {
+            rate += &v;
+            top = Some(match top {
+                Some(t) if t >= rate => t,
+                _ => rate.clone(),
+            });
+            if rate.abs() > size {
+                size = rate.abs();
+            }
+        }
+        match top {
+            Some(t) if size > zero => t / size,
+            _ => zero,
+        }
+    }
+
     /// As [`Spectral::slip_zone_strain`] outside the contact, at x = 1 + `beyond` (> 0), where
     /// s2 = 0: `constant` - H\[s1\](x), the stick zone's s1 and the slip zones' s1 = +-mu s2.
     pub fn outside_strain(&self, inc: &SpectralIncrement<T>, constant: &T, beyond: &T) -> T {

@@ -578,6 +578,17 @@ impl<T: Real> Spectral<T> {
         self.tau.clone()
     }
 
+    /// The Poisson parameter beta (the stick condition's; the normal equation drops it when
+    /// uncoupled).
+    pub fn beta(&self) -> T {
+        self.beta.clone()
+    }
+
+    /// The friction coefficient mu.
+    pub fn mu(&self) -> T {
+        self.mu.clone()
+    }
+
     /// The working precision (bits).
     pub fn bits(&self) -> u32 {
         self.beta.bits()
