@@ -384,8 +384,17 @@ impl<T: Real> Spectral<T> {
             let g = self.slip_values(zn, &xo, &tg.to_one);
             let mut pieces = graded(&zero, &xo, None, Some(&tg.to_one));
             pieces.extend(graded(&xo, &len, Some(&xo), None));
+            // x - eta from the distances to the nearer end: from gamma (x - gamma - d_a) it carries
+            // the rounding of d_a, about 1e-16 (1 - gamma), which at a point 1e-4 from the contact
+            // edge is 1e-12 relative and, times the edge singularity's weight, had put 5e-11 into
+            // the rows there and 1e-12 into the stick edge (`f64`; docs/theory.md section 17.8)
+            let near_one = tg.to_one < xo;
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-                dx.set_sub(&xo, d_a);
+                if near_one {
+                    dx.set_sub(d_b, &tg.to_one);
+                } else {
+                    dx.set_sub(&xo, d_a);
+                }
                 if dx == zero {
                     return;
                 }
