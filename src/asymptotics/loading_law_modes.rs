@@ -379,8 +379,16 @@ pub fn mode_exponent(nu: &Q, ratio: &Q, digits: u32) -> Result<ModeExponent, Err
         let mu = sym.first_zero(MU_MAX);
         Ok((sym, mu))
     };
-    let (sym, mu) = run(0, 1.0)?;
-    let (_, check) = run(VERIFY_EXTRA_BITS, 1.25)?;
+    // The two runs are independent: on two CPUs ([`crate::numerics::parallel`]; serially inside
+    // another map's worker), the results as the serial runs'.
+    let [first, second]: [Result<(Symbol, Option<Float>), Error>; 2] =
+        crate::numerics::parallel::map(&[(0, 1.0), (VERIFY_EXTRA_BITS, 1.25)], |_, &(extra, refine)| {
+            run(extra, refine)
+        })
+        .try_into()
+        .unwrap_or_else(|_| unreachable!("parallel::map returns one result per item"));
+    let (sym, mu) = first?;
+    let (_, check) = second?;
     let cap = digits_cap_for_bits(bits);
     let digits = match (&mu, &check) {
         (Some(a), Some(b)) => verified_digits_mpfr(&Float::with_val(b.prec(), a - b), a, cap),

@@ -1,10 +1,11 @@
-//! Chebyshev series on u in [-1, 1] in `f64` for the marching method ([`super::march`]):
+//! Chebyshev series on u in [-1, 1] in `f64` for the marching method ([`super::march`]) and the
+//! loading-law collocation's f64 chord Jacobian ([`crate::loading_law`]):
 //! Clenshaw evaluation, the divided difference (accurate as the two points meet), derivative,
 //! antiderivative from -1 and multiplication by x (the identities of Mason and Handscomb,
 //! "Chebyshev Polynomials", 2003, sections 2.4.4-2.4.5).
 
 /// Clenshaw: sum_j c_j T_j(x).
-pub(super) fn cheb(c: &[f64], x: f64) -> f64 {
+pub(crate) fn cheb(c: &[f64], x: f64) -> f64 {
     let (mut b1, mut b2) = (0.0, 0.0);
     for &cj in c.iter().skip(1).rev() {
         let b0 = 2.0 * x * b1 - b2 + cj;
@@ -16,7 +17,7 @@ pub(super) fn cheb(c: &[f64], x: f64) -> f64 {
 
 /// sum_j c_j [T_j(x) - T_j(y)]/(x - y), by d_(j+1) = 2 x d_j + 2 T_j(y) - d_(j-1) (d_0 = 0,
 /// d_1 = 1): accurate as y -> x.
-pub(super) fn cheb_dd(c: &[f64], x: f64, y: f64) -> f64 {
+pub(crate) fn cheb_dd(c: &[f64], x: f64, y: f64) -> f64 {
     let (mut acc, mut d_prev, mut d, mut t_prev, mut t) = (0.0, 0.0, 1.0, 1.0, y);
     for &cj in c.iter().skip(1) {
         acc += cj * d;
@@ -45,7 +46,7 @@ pub(super) fn cheb_derivative(c: &[f64]) -> Vec<f64> {
 
 /// Coefficients of the antiderivative of sum_j c_j T_j vanishing at x = -1
 /// (D_1 = c_0 - c_2/2, D_k = (c_(k-1) - c_(k+1))/(2k)).
-pub(super) fn cheb_antiderivative(c: &[f64]) -> Vec<f64> {
+pub(crate) fn cheb_antiderivative(c: &[f64]) -> Vec<f64> {
     let n = c.len();
     let at = |j: usize| c.get(j).copied().unwrap_or(0.0);
     let mut d = vec![0.0; n + 1];
@@ -57,7 +58,7 @@ pub(super) fn cheb_antiderivative(c: &[f64]) -> Vec<f64> {
 }
 
 /// Coefficients of x sum_j c_j T_j (x T_0 = T_1, x T_j = (T_(j+1) + T_(j-1))/2).
-pub(super) fn cheb_times_x(c: &[f64]) -> Vec<f64> {
+pub(crate) fn cheb_times_x(c: &[f64]) -> Vec<f64> {
     let mut out = vec![0.0; c.len() + 1];
     for (j, &cj) in c.iter().enumerate() {
         if j == 0 {

@@ -20,7 +20,7 @@
 //! check K against the quadrature of [1.8] through it and its log derivatives against central
 //! differences.
 
-use rug::{Complex, Float};
+use rug::{Assign, Complex, Float};
 
 /// The row: a periodic row (the kernels of the module doc, in chi = pi x/L), or the single punch
 /// (L -> infinity): with the length unit U and chi = x/U the same formulas hold with L = pi U and
@@ -176,10 +176,23 @@ impl SizeFactors {
         let (sin_near, cos_near, sin_far, cos_far, sin_chi, cos_chi) = match self.row {
             Row::Periodic => {
                 let (sn, cn) = Float::with_val(prec, d_near).sin_cos(Float::new(prec));
-                let sin_far = Float::with_val(prec, &sn * &self.cos_2eta) + Float::with_val(prec, &cn * &self.sin_2eta);
-                let cos_far = Float::with_val(prec, &cn * &self.cos_2eta) - Float::with_val(prec, &sn * &self.sin_2eta);
-                let sin_chi = Float::with_val(prec, &sn * &self.cos_eta) + Float::with_val(prec, &cn * &self.sin_eta);
-                let cos_chi = Float::with_val(prec, &cn * &self.cos_eta) - Float::with_val(prec, &sn * &self.sin_eta);
+                // a x + b y (sign +1) or a x - b y, each product and the sum rounded once, with
+                // one scratch value for the second product.
+                let mut scratch = Float::new(prec);
+                let mut combine = |a: &Float, x: &Float, b: &Float, y: &Float, plus: bool| {
+                    let mut out = Float::with_val(prec, a * x);
+                    scratch.assign(b * y);
+                    if plus {
+                        out += &scratch;
+                    } else {
+                        out -= &scratch;
+                    }
+                    out
+                };
+                let sin_far = combine(&sn, &self.cos_2eta, &cn, &self.sin_2eta, true);
+                let cos_far = combine(&cn, &self.cos_2eta, &sn, &self.sin_2eta, false);
+                let sin_chi = combine(&sn, &self.cos_eta, &cn, &self.sin_eta, true);
+                let cos_chi = combine(&cn, &self.cos_eta, &sn, &self.sin_eta, false);
                 (sn, cn, sin_far, cos_far, sin_chi, cos_chi)
             }
             Row::Single => {
@@ -189,8 +202,12 @@ impl SizeFactors {
             }
         };
         // (sin d_far/sin d_near)^(+- i eps) = exp(+- i eps ln(ratio)).
-        let mut theta = Float::with_val(prec, Float::with_val(prec, &sin_far / &sin_near).ln_ref()) * &self.eps;
-        let mut mag = Float::with_val(prec, &sin_near * &sin_far).sqrt().recip();
+        let mut theta = Float::with_val(prec, &sin_far / &sin_near);
+        theta.ln_mut();
+        theta *= &self.eps;
+        let mut mag = Float::with_val(prec, &sin_near * &sin_far);
+        mag.sqrt_mut();
+        mag.recip_mut();
         if side == Side::Left {
             theta = -theta;
             mag = -mag;

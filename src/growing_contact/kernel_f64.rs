@@ -1,5 +1,6 @@
 //! The increments of the asymmetric incremental method (docs/theory.md sections 4, 10) in `f64`, for
-//! the marching method ([`super::march`]); written anew from the formulas (the MPFR kernel
+//! the marching method ([`super::march`]) and the loading-law collocation's chord Jacobian
+//! (K's log derivative; [`crate::loading_law`]); written anew from the formulas (the MPFR kernel
 //! [`super::kernel`] is not called), and checked against it in the tests.
 //!
 //! Variables as in [`super::kernel`]: chi' = chi - gamma, the earlier contact of half-length eta;
@@ -86,6 +87,22 @@ impl KernelF64 {
         let chi = sg * (d_near + eta);
         let phase = C64::from_polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
         self.cos_factor(chi, eta) * phase
+    }
+
+    /// d ln(L K)/d d_near at the same point: with C(d) = cot d (1/d for the single punch),
+    ///   -(C(d_near) + C(d_far))/2 + s i eps (C(d_far) - C(d_near)) - s tan(chi' - 2 i eps eta)
+    /// (no tangent for the single punch), as [`super::kernel::outside_kernel_log_derivative`];
+    /// for the chord Jacobian of the loading-law collocation ([`crate::loading_law`]).
+    pub(crate) fn outside_log_derivative(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+        let sg = side.sign();
+        let d_far = d_near + 2.0 * eta;
+        let cot = |d: f64| if self.single { 1.0 / d } else { 1.0 / d.tan() };
+        let (c_near, c_far) = (cot(d_near), cot(d_far));
+        let out = C64::new(-(c_near + c_far) / 2.0, sg * self.eps * (c_far - c_near));
+        if self.single {
+            return out;
+        }
+        out - C64::new(sg * (d_near + eta), -2.0 * self.eps * eta).tan() * sg
     }
 
     /// L sigma_flat at the contact point with distances `d_left`, `d_right` to the trailing and
@@ -191,6 +208,10 @@ mod tests {
                     kernel::outside_kernel(kernel::Row::Periodic, ms, &f(d), &f(eta), &eps_m, PREC),
                 );
                 close(k.tilt_outside(side, d, eta), tilt.outside(ms, &f(d), &f(eta), &eps_m, &ch_m, PREC));
+                close(
+                    k.outside_log_derivative(side, d, eta),
+                    kernel::outside_kernel_log_derivative(kernel::Row::Periodic, ms, &f(d), &f(eta), &eps_m, PREC),
+                );
             }
         }
         for (dl, dr) in [(1e-9, 1.2 - 1e-9), (0.3, 0.9), (1.1, 0.1), (0.6, 0.6)] {
@@ -213,6 +234,10 @@ mod tests {
             close(
                 single.outside(side, 0.3, 0.6),
                 kernel::outside_kernel(kernel::Row::Single, ms, &f(0.3), &f(0.6), &eps_m, PREC),
+            );
+            close(
+                single.outside_log_derivative(side, 0.3, 0.6),
+                kernel::outside_kernel_log_derivative(kernel::Row::Single, ms, &f(0.3), &f(0.6), &eps_m, PREC),
             );
         }
         close(

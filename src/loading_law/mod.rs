@@ -6,7 +6,7 @@
 //!   its Jacobian;
 //! - [`collocation`]: the MPFR method for linear and polynomial laws in both conventions, the two
 //!   moving-edge conditions as a nonlinear Volterra system (Chebyshev collocation, Newton with
-//!   the closed-form Jacobian of `jacobian`, then chord steps);
+//!   the closed-form Jacobian of `jacobian`, then chord steps with its `f64` twin);
 //!   checked: n = 0 gives section 4's symmetric load (1.3e-34 with 32 nodes), nu = 1/2 decouples
 //!   (centred contact, Kuznetsov's load);
 //! - [`fields`]: psi (frozen at entry) and q2 + i q1 from the increments, checked by the

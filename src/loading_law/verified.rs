@@ -366,12 +366,17 @@ fn values(
     let psi_scale = Float::with_val(prec, &k * &l_over_pi) * 2u32 / &pi;
     let q_scale = Float::with_val(prec, &e_star * &k) * &l_over_pi / &pi;
     let phi_scale = Float::with_val(prec, &psi_scale * &l_over_pi);
-    let mut points = Vec::with_capacity(xh.len());
-    for h in xh {
+    // psi and sigma at the points on every CPU (one edge integral and one stress each); phi after,
+    // point by point, its Gauss–Legendre nodes on every CPU.
+    let located = crate::numerics::parallel::map(xh, |_, h| {
         let x = Float::with_val(prec, &c + Float::with_val(prec, &l * to_float(h, prec)));
         let chi = Float::with_val(prec, &x / &l_over_pi);
         let psi = -sol.psi_hat(&chi, &rule) * &psi_scale;
         let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
+        (x, chi, psi, sigma)
+    });
+    let mut points = Vec::with_capacity(xh.len());
+    for (h, (x, chi, psi, sigma)) in xh.iter().zip(located) {
         let phi = -sol.psi_hat_integral(&chi, &rule, phi_nodes)? * &phi_scale;
         points.push(LawPoint { xh: h.clone(), x, psi, phi, q1: sigma.imag().clone(), q2: sigma.real().clone() });
     }

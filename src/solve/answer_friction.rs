@@ -21,16 +21,21 @@
 //! 17.7), at most [`MPFR_MAX_DIGITS`] digits (its cost: 35 s at 14 digits from the release CLI at
 //! load 3-6, 28 s at 16 in the test `verified_digits_at_nu0_mu_half` at load 2-3); the digits of a,
 //! P2 and c propagated through the same formulas; its `checks` compare it
-//! with the f64 increment method (independent discretisation).
+//! with the f64 increment method (independent discretisation). With points, q1, q2 and psi
+//! are superposed from the two runs' spectral increments
+//! ([`crate::adhesion::friction::spectral_punch_fields`]), their verified digits where the runs
+//! agree (on the scales E* k a and k a), and the three inequality checks are the finer run's with
+//! twice the runs' difference as error (same keys as the f64 answer's).
 //!
 //! Refused with an input error: a method other than f64 and mpfr ([`refuse_method`]), more digits than the mpfr method reaches, and a punch other than the
 //! parabola ([`solvable_parabola`]).
 
 use super::render::{AdhesionAnswer, DigitsKind, Measured, Provenance};
 use super::render::{FieldRow, FrictionCheck};
+use crate::adhesion::friction::fields::PointFields;
 use crate::adhesion::friction::fields::{fields, Checks, FieldsF64};
 use crate::adhesion::friction::single_punch::{self, Method, SinglePunchF64};
-use crate::adhesion::friction::spectral_punch;
+use crate::adhesion::friction::{spectral_punch, spectral_punch_fields};
 use crate::error::Error;
 use crate::model::{AdhesionProblem, AdhesionSize, Exact, OnPunchRow, PunchShape};
 use crate::numerics::exact::to_f64;
@@ -117,7 +122,7 @@ pub(crate) fn digits(rel: f64) -> f64 {
 
 /// The answer of the single parabolic punch (`period = "inf"`; a finite period is the row's,
 /// `answer_friction_row.rs`) with friction coefficient `mu_exact` by `method` (f64, or mpfr with
-/// `digits_asked`: [`mpfr_answer`]), with the fields at `points` (x/a in [0, 1]; f64 only).
+/// `digits_asked`: [`mpfr_answer`]), with the fields at `points` (x/a in [0, 1]).
 pub fn friction_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
@@ -129,7 +134,7 @@ pub fn friction_answer(
     let k = solvable_parabola(p)?;
     crate::adhesion::points::check_points(points)?;
     if method == crate::scene::Method::Mpfr {
-        return mpfr_answer(p, mu_exact, k, digits_asked, !points.is_empty());
+        return mpfr_answer(p, mu_exact, k, digits_asked, points);
     }
     let f = finite_f64;
     let beta = f(&p.material().beta(), "material.poisson_ratio")?;
@@ -276,7 +281,7 @@ pub fn mpfr_answer(
     mu_exact: &Exact,
     k: &Exact,
     digits_asked: u32,
-    with_points: bool,
+    points: &[Exact],
 ) -> Result<AdhesionAnswer, Error> {
     use crate::numerics::exact::to_float;
     use rug::Float;
@@ -314,6 +319,41 @@ pub fn mpfr_answer(
     };
     let stick_digits = digits(10f64.powf(-v.gamma_digits) + gamma.to_f64() * rel_a);
     let c = Float::with_val(prec, gamma * &a);
+    let mut checks = match (to_f64(&p.material().beta()), to_f64(mu_exact)) {
+        (Some(b), Some(m)) if b.is_finite() && m.is_finite() => mpfr_checks(&v, b, m),
+        _ => Vec::new(),
+    };
+    let (mut fields, mut accuracy) = (Vec::new(), vec![("size".into(), size_digits), ("stick".into(), stick_digits)]);
+    if let (false, Some(runs)) = (points.is_empty(), &v.runs) {
+        let xs: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
+        let fl = spectral_punch_fields::verified(runs, &xs, digits_asked);
+        let (stress, strain) = (Float::with_val(prec, &ek * &a), Float::with_val(prec, to_float(k, prec) * &a));
+        type Get = fn(&PointFields<Float>) -> &Float;
+        let all: [(&str, Get, f64, &Float); 3] = [
+            ("psi", |q| &q.psi, fl.digits.psi, &strain),
+            ("q1", |q| &q.q1, fl.digits.q1, &stress),
+            ("q2", |q| &q.q2, fl.digits.q2, &stress),
+        ];
+        for (name, get, agree, scale) in all {
+            // the runs' agreement on the field's scale, plus a's relative error times the field
+            let big = fl.points.iter().map(|q| get(q).to_f64().abs()).fold(0.0, f64::max);
+            let d = digits(10f64.powf(-agree) + rel_a * big);
+            let rows = fl
+                .points
+                .iter()
+                .zip(points)
+                .map(|(q, x)| FieldRow {
+                    x_over_a: exact_series::q_text(x),
+                    value: Measured::mpfr(Float::with_val(prec, get(q) * scale), scale, d),
+                })
+                .collect();
+            fields.push((name.to_string(), rows));
+            accuracy.push((name.to_string(), d));
+        }
+        let how = "the spectral method's two runs (the answer's increments); error: twice their difference";
+        let inequalities = inequality_checks(&fl.checks, mpfr_inequality_means(how));
+        checks.splice(0..0, inequalities);
+    }
     Ok(AdhesionAnswer {
         provenance: Provenance { method: "mpfr", bits: Some(v.bits), nodes: None, order: None, convention: None },
         kind: DigitsKind::Verified,
@@ -324,20 +364,28 @@ pub fn mpfr_answer(
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::mpfr(c, &a, stick_digits),
             note: FRICTION_NOTE_MPFR,
-            checks: match (to_f64(&p.material().beta()), to_f64(mu_exact)) {
-                (Some(b), Some(m)) if b.is_finite() && m.is_finite() => mpfr_checks(&v, b, m),
-                _ => Vec::new(),
-            },
+            checks,
         }),
-        accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
-        fields: Vec::new(),
+        accuracy,
+        fields,
         tension_zones: None,
-        warnings: if with_points {
-            vec!["q1, q2 and psi at the points are computed by the f64 method only (--method f64, 4 digits)".into()]
-        } else {
-            Vec::new()
-        },
+        warnings: Vec::new(),
     })
+}
+
+/// What the three inequality checks of an mpfr answer mean, computed `how`.
+fn mpfr_inequality_means(how: &str) -> [String; 3] {
+    [
+        format!(
+            "max of |q1|/(mu q2) at x/c = 0.1 .. 0.9 and 1 - 10^-k (k = 2 .. 6): Coulomb's inequality holds where it \
+             is <= 1 (it tends to 1 at the stick edge); {how}"
+        ),
+        format!("min q2 / max q2 at x/a = j/16 (j = 0 .. 15) and the points: >= 0 is no tension; {how}"),
+        format!(
+            "max over the slip zones c < x < a of the slip rate du/da (outward positive) over its largest \
+             magnitude: <= 0 is inward slip against q1 = mu q2 sign(x) everywhere, no slip reversal; {how}"
+        ),
+    ]
 }
 
 /// The `checks` of an mpfr answer: its difference from the f64 increment method (an independent

@@ -25,6 +25,7 @@
 
 use super::render::{digits_text, DigitsKind, Measured, Provenance};
 use super::values::Values;
+use crate::asymptotics::loading_law_modes::{problem_mode, ModeExponent};
 use crate::loading_law::verified::{LawPathPoint, LawPoint, LawSolution, LawValues};
 use crate::loading_law::verified_f64::LawSolutionF64;
 use crate::model::OnPunchRow;
@@ -142,6 +143,17 @@ fn path_json_held(path: &[LawPathPoint], digits: f64, requested: u32) -> (Value,
 /// (the scalars `lambda`, `a`, `b`, `c`, `l`, `P1`, `P2`, `friction_needed`; the fields `x`, `psi`,
 /// `phi`, `q1`, `q2` at `xh`).
 pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32) -> (Map<String, Value>, Values) {
+    law_answer_json_with_mode(p, sol, requested, problem_mode(p).ok())
+}
+
+/// [`law_answer_json`] with the problem's mode computed by the caller (`problem_mode`, None where
+/// it cannot be computed), e.g. on another thread while the solution is solved for.
+pub(crate) fn law_answer_json_with_mode(
+    p: &LoadingLawProblem,
+    sol: &LawSolution,
+    requested: u32,
+    mode: Option<ModeExponent>,
+) -> (Map<String, Value>, Values) {
     let prov = Provenance {
         method: "mpfr",
         bits: Some(sol.values.l.prec()),
@@ -149,7 +161,7 @@ pub fn law_answer_json(p: &LoadingLawProblem, sol: &LawSolution, requested: u32)
         order: None,
         convention: Some(p.convention().name()),
     };
-    answer_json(p, sol, requested, prov)
+    answer_json(p, sol, requested, prov, mode)
 }
 
 /// The JSON object of the f64 marching solution: the same keys as [`law_answer_json`], the values
@@ -159,6 +171,7 @@ pub(crate) fn law_answer_json_f64(
     p: &LoadingLawProblem,
     sol: &LawSolutionF64,
     requested: u32,
+    mode: Option<ModeExponent>,
 ) -> (Map<String, Value>, Values) {
     let v = &sol.values;
     let f = |x: f64| Float::with_val(53, x);
@@ -188,7 +201,7 @@ pub(crate) fn law_answer_json_f64(
         order: None,
         convention: Some(p.convention().name()),
     };
-    answer_json(p, &LawSolution { values, digits: sol.digits }, requested, prov)
+    answer_json(p, &LawSolution { values, digits: sol.digits }, requested, prov, mode)
 }
 
 fn answer_json(
@@ -196,6 +209,7 @@ fn answer_json(
     sol: &LawSolution,
     requested: u32,
     prov: Provenance,
+    mode: Option<ModeExponent>,
 ) -> (Map<String, Value>, Values) {
     let v = &sol.values;
     let d = &sol.digits;
@@ -293,8 +307,7 @@ fn answer_json(
     // The homogeneous mode eta^mu* of the self-similar start (n = N'(0)): where it exists the
     // problem fixes its history only up to C eta^mu* (asymptotics::loading_law_modes).
     // None when it cannot be computed: the self-similar start has no solution with both ends
-    // advancing, a case the solvers refuse on their own.
-    let mode = crate::asymptotics::loading_law_modes::problem_mode(p).ok();
+    // advancing, a case the solvers refuse on their own. `mode` is `problem_mode(p).ok()`.
     m.insert("mode".into(), mode.as_ref().map_or(Value::Null, |m| m.json(0)));
     let mode_text = mode.as_ref().and_then(|m| m.value_text());
     // Fewer digits than asked (the f64 method's cap is 15): say so and why when it is known.

@@ -411,10 +411,24 @@ fn adhesion_friction_incompressible(
     Ok(friction_rendered(p, &answer, req.digits, None))
 }
 
+/// `solve` and the problem's mode (`problem_mode`, printed with every loading-law answer) side by
+/// side: the mode check is serial work of 40-90 ms that need not wait for the solve.
+fn with_law_mode<S>(
+    p: &LoadingLawProblem,
+    solve: impl FnOnce() -> S,
+) -> (S, Option<crate::asymptotics::loading_law_modes::ModeExponent>) {
+    std::thread::scope(|scope| {
+        let mode = scope.spawn(|| crate::asymptotics::loading_law_modes::problem_mode(p).ok());
+        let solved = solve();
+        (solved, mode.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+    })
+}
+
 fn law_mpfr(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
-    let sol = crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits)?;
+    let (sol, mode) = with_law_mode(p, || crate::loading_law::verified::solve_law(p, &scene.output.points, req.digits));
+    let sol = sol?;
     let claim = Claim { digits: sol.digits.headline, kind: DigitsKind::Verified };
-    let (mut m, values) = answer_law::law_answer_json(p, &sol, req.digits);
+    let (mut m, values) = answer_law::law_answer_json_with_mode(p, &sol, req.digits, mode);
     law_note(&mut m, &values, p);
     Ok((Value::Object(m), claim, vec![values]))
 }
@@ -452,9 +466,10 @@ fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
 }
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
-    let sol = crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points)?;
+    let (sol, mode) = with_law_mode(p, || crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points));
+    let sol = sol?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
-    let (mut m, values) = answer_law::law_answer_json_f64(p, &sol, shown);
+    let (mut m, values) = answer_law::law_answer_json_f64(p, &sol, shown, mode);
     f64_digits(&mut m, req.digits);
     law_note(&mut m, &values, p);
     Ok((Value::Object(m), Claim { digits: sol.digits.headline, kind: DigitsKind::Verified }, vec![values]))

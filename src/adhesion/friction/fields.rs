@@ -25,15 +25,16 @@ use super::increment_f64::{increment, Increment};
 use super::state_f64::{state, State};
 use crate::growing_contact::error::AdhesionError;
 
-/// q1, q2 (on the scale E* k a) and psi (on the scale k a) at one point.
+/// q1, q2 (on the scale E* k a) and psi (on the scale k a) at one point (`f64` here; MPFR from
+/// the spectral method, `spectral_punch_fields.rs`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PointFields {
+pub struct PointFields<T = f64> {
     /// q1/(E* k a), the shear traction on the body.
-    pub q1: f64,
+    pub q1: T,
     /// q2/(E* k a), the pressure.
-    pub q2: f64,
+    pub q2: T,
     /// psi/(k a) = u'/(k a).
-    pub psi: f64,
+    pub psi: T,
 }
 
 /// A check's value on the finer mesh and its difference from the coarser one.
@@ -81,7 +82,7 @@ pub fn fields(
     let (coarse, fine) = (increment(beta, mu, g1, n, true)?, increment(beta, mu, g2, 2 * n, true)?);
     let pc: Vec<PointFields> = x_over_a.iter().map(|&x| superposed(&coarse, p1, beta, x)).collect();
     let pf: Vec<PointFields> = x_over_a.iter().map(|&x| superposed(&fine, p2, beta, x)).collect();
-    let mut errors = PointFields { q1: 0.0, q2: 0.0, psi: 0.0 };
+    let mut errors: PointFields = PointFields { q1: 0.0, q2: 0.0, psi: 0.0 };
     for (c, f) in pc.iter().zip(&pf) {
         errors.q1 = errors.q1.max((c.q1 - f.q1).abs());
         errors.q2 = errors.q2.max((c.q2 - f.q2).abs());

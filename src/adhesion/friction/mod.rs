@@ -14,7 +14,9 @@
 //! The spectral method ([`spectral`], generic over `f64` and MPFR through [`real`], with the
 //! composite tanh-sinh rules and least squares of [`quadrature`]; driver [`spectral_punch`]) solves
 //! the same increment with the exponents (17.3) in its basis: gamma and C_P with verified digits
-//! (docs/theory.md section 17.7; checks in `spectral_tests.rs`).
+//! (docs/theory.md section 17.7; checks in `spectral_tests.rs`); the increment's fields are
+//! `spectral::fields`, and [`spectral_punch_fields`] superposes the single punch's q1, q2, psi
+//! and its checks from them, in `f64` or MPFR (the two verified runs: verified digits).
 //!
 //! The periodic row ([`row_f64`]: the increment at (lambda, c) on the row's kernel, both
 //! conventions; [`row_load_f64`]: the load marched in lambda on two discretisations), and by the
@@ -27,8 +29,9 @@
 //!
 //! Scenes with `[adhesion] friction` reach these through `solve` (`src/solve/answer_friction.rs`,
 //! `src/solve/answer_friction_row.rs`, docs/theory.md section 17.5): the single punch by f64 or by
-//! the spectral method in MPFR (`--method mpfr`), the row by the spectral method in f64 (its
-//! verified MPFR load, `spectral_row_load::verified_mpfr`, is not yet reached through `solve`).
+//! the spectral method in MPFR (`--method mpfr`, the fields too), the row by the spectral method
+//! in f64 and, given `half_width`, by its verified MPFR load (`spectral_row_load::verified_mpfr`;
+//! the row's fields in `f64` only).
 
 pub mod fields;
 pub mod increment_f64;
@@ -41,6 +44,7 @@ pub mod row_load_f64;
 pub mod single_punch;
 pub mod spectral;
 pub mod spectral_punch;
+pub mod spectral_punch_fields;
 pub mod spectral_row;
 pub mod spectral_row_load;
 pub mod spectral_row_slope;

@@ -1,4 +1,4 @@
-//! Quadrature and least squares for the spectral method (`spectral.rs`), generic over [`Real`]:
+//! Quadrature and least squares for the spectral method (`spectral/mod.rs`), generic over [`Real`]:
 //! composite tanh-sinh (double-exponential) rules on pieces graded toward near singularities, and
 //! a Householder least-squares solver.
 //!

@@ -1,4 +1,4 @@
-//! The number type of the spectral method (`spectral.rs`): one trait over `f64` and MPFR
+//! The number type of the spectral method (`spectral/mod.rs`): one trait over `f64` and MPFR
 //! ([`Mp`], a `rug::Float` whose results keep the precision of the left operand), so the same
 //! code runs in both and the two runs can be compared digit by digit.
 //!

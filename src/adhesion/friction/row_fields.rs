@@ -198,43 +198,21 @@ impl<'a> History<'a> {
         let contact: Vec<f64> = (0..16).map(|j| self.fields(lambda * j as f64 / 16.0, false).q2).collect();
         let all_q2 = contact.iter().chain(stick.iter().map(|p| &p.q2)).chain(points.iter().map(|p| &p.q2));
         let (low, top) = all_q2.fold((f64::INFINITY, 0.0f64), |(l, t), &q| (l.min(q), t.max(q)));
-        let outward =
-            self.rate.increments.iter().map(|(sp, inc)| outward_slip(sp, inc)).fold(f64::NEG_INFINITY, f64::max);
+        let outward = self
+            .rate
+            .increments
+            .iter()
+            .map(|(sp, inc)| sp.outward_slip(inc, &EDGE_CUT))
+            .fold(f64::NEG_INFINITY, f64::max);
         RowState { points, checks: [stick_ratio, low / top, outward] }
     }
-}
-
-/// max over the slip zone of du/dP over max |du/dP| of one increment (module doc): with dchi =
-/// tau dT/(1 + tau^2 T^2), du/dP at T is 2 int_gamma^T D(T') dT'/(1 + tau^2 T'^2).
-fn outward_slip(sp: &Spectral<f64>, inc: &SpectralIncrement<f64>) -> f64 {
-    let gamma = inc.gamma;
-    let len = 1.0 - gamma;
-    let tau = sp.tau();
-    let constant = sp.strain_constant(inc);
-    let mut nodes = Vec::new();
-    sp.rule().sweep(&len, &graded(&0.0, &len, None, None), |d_a, d_b, w| {
-        if *d_b > EDGE_CUT && *d_a > EDGE_CUT && *w > 0.0 {
-            let t = gamma + d_a;
-            let d = sp.slip_zone_strain(inc, &constant, d_a, d_b);
-            nodes.push((*d_a, w * d / (1.0 + tau * tau * t * t)));
-        }
-    });
-    nodes.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut rate = 0.0;
-    let (mut top, mut size) = (f64::NEG_INFINITY, 0.0f64);
-    for (_, v) in nodes {
-        rate += v;
-        top = top.max(rate);
-        size = size.max(rate.abs());
-    }
-    top / size
 }
 
 /// The fields at `x_over_a` and the checks of the two discretisations (coarse, fine), each
 /// [`History`] at its own lambda: the finer's values, the differences as errors.
 pub fn row_fields(coarse: &History, fine: &History, x_over_a: &[f64]) -> RowFieldsF64 {
     let (c, f) = (coarse.state(x_over_a), fine.state(x_over_a));
-    let mut errors = PointFields { q1: 0.0, q2: 0.0, psi: 0.0 };
+    let mut errors: PointFields = PointFields { q1: 0.0, q2: 0.0, psi: 0.0 };
     for (a, b) in c.points.iter().zip(&f.points) {
         errors.q1 = errors.q1.max((a.q1 - b.q1).abs());
         errors.q2 = errors.q2.max((a.q2 - b.q2).abs());

@@ -20,7 +20,8 @@
 //! n = max(8, digits - 2) polynomials per family and B = 3.33 (digits + 14) + 16 bits (the
 //! collocation loses about 10 digits to rounding, section 17.7); the verified digits are
 //! those where the two agree, for gamma and for C_P (docs/theory.md section 17.7 for the measured
-//! convergence). beta = 0 is exact (gamma = 1, C_P = pi/2).
+//! convergence). beta = 0 is exact (gamma = 1, C_P = pi/2). The two runs' increments are kept
+//! ([`VerifiedPunch::runs`]) for the fields of `spectral_punch_fields.rs`.
 
 use rug::ops::Pow;
 use rug::Float;
@@ -48,7 +49,13 @@ pub struct VerifiedPunch {
     pub load_f64: f64,
     /// Working precision of the finer run (bits).
     pub bits: u32,
+    /// The two runs (coarser, finer) for the fields (`spectral_punch_fields.rs`); none at
+    /// beta = 0 (exact).
+    pub runs: Option<[PunchRun; 2]>,
 }
+
+/// One MPFR run of [`verified`]: the method, its increment at the root and C_P.
+pub type PunchRun = (Spectral<Mp>, SpectralIncrement<Mp>, Mp);
 
 /// The scan's range in the logit y = ln(gamma/(1 - gamma)): gamma from 0.0025 to 1 - 1.2e-4.
 const Y_MIN: f64 = -6.0;
@@ -141,15 +148,27 @@ fn scan(
 pub fn stick_ratio_mpfr(
     beta: &Float,
     mu: &Float,
-    (n, prec, digits): (usize, u32, u32),
+    knobs: (usize, u32, u32),
     start: f64,
     coupled: bool,
 ) -> Result<(Float, Float), AdhesionError> {
+    let (_, inc, load) = run_mpfr(beta, mu, knobs, start, coupled)?;
+    Ok((inc.gamma.0, load.0))
+}
+
+/// [`stick_ratio_mpfr`] with the method and its increment kept ([`PunchRun`]).
+pub fn run_mpfr(
+    beta: &Float,
+    mu: &Float,
+    (n, prec, digits): (usize, u32, u32),
+    start: f64,
+    coupled: bool,
+) -> Result<PunchRun, AdhesionError> {
     let at = |x: &Float| Mp(Float::with_val(prec, x));
     let sp = Spectral::new(at(beta), at(mu), n, coupled);
     let inc = root_mpfr(&sp, start, digits)?;
     let load = sp.load_coefficient(&inc);
-    Ok((inc.gamma.0, load.0))
+    Ok((sp, inc, load))
 }
 
 /// The increment at the zero of the stick-edge defect of `sp` in MPFR, by the secant method from
@@ -277,20 +296,24 @@ pub fn verified(beta: &Float, mu: &Float, digits: u32) -> Result<VerifiedPunch, 
             gamma_f64: 1.0,
             load_f64: std::f64::consts::FRAC_PI_2,
             bits: prec + 32,
+            runs: None,
         });
     }
     let n = (digits as usize).saturating_sub(2).max(8);
     let (gamma_f64, load_f64) = stick_ratio_f64(beta.to_f64(), mu.to_f64(), 10, true)?;
-    let (g1, p1) = stick_ratio_mpfr(beta, mu, (n, prec, digits + 4), gamma_f64, true)?;
-    let (g2, p2) = stick_ratio_mpfr(beta, mu, (n + 6, prec + 32, digits + 4), g1.to_f64(), true)?;
+    let coarse = run_mpfr(beta, mu, (n, prec, digits + 4), gamma_f64, true)?;
+    let fine = run_mpfr(beta, mu, (n + 6, prec + 32, digits + 4), coarse.1.gamma.to_f64(), true)?;
+    let (g1, p1) = (&coarse.1.gamma.0, &coarse.2 .0);
+    let (g2, p2) = (fine.1.gamma.0.clone(), fine.2 .0.clone());
     let cap = digits_cap_for_bits(prec);
     Ok(VerifiedPunch {
-        gamma_digits: agreement_mpfr(&g1, &g2, &Float::with_val(64, 1), cap),
-        load_digits: agreement_mpfr(&p1, &p2, &p2, cap),
+        gamma_digits: agreement_mpfr(g1, &g2, &Float::with_val(64, 1), cap),
+        load_digits: agreement_mpfr(p1, &p2, &p2, cap),
         gamma: g2,
         load_coefficient: p2,
         gamma_f64,
         load_f64,
         bits: prec + 32,
+        runs: Some([coarse, fine]),
     })
 }

@@ -98,7 +98,13 @@ fn what_friction_does_not_solve_is_refused_naming_it() {
 #[test]
 fn mpfr_gives_verified_digits_of_the_spectral_method() {
     // docs/theory.md section 17.7: c/a = 0.5219076749221461 (16.2 digits), C_P = 1.800911965200506302
-    let w = json(&["solve", SCENE, "--method", "mpfr", "--digits", "10", "--json"]);
+    // without the points (their MPFR fields cost a minute in the test profile: the long tier's
+    // friction_scene::mpfr_fields_are_verified_and_within_the_f64_claims) and the sweep
+    let text = std::fs::read_to_string(format!("{}/{SCENE}", common::ROOT)).unwrap();
+    let unswept = text.split("[sweep]").next().unwrap();
+    let bare: String = unswept.lines().filter(|l| !l.starts_with("points")).map(|l| format!("{l}\n")).collect();
+    let scene = scene_file("friction_mpfr.toml", &bare);
+    let w = json(&["solve", &scene, "--method", "mpfr", "--digits", "10", "--json"]);
     // its checks: the difference from the f64 increment method within that method's estimate
     let check = &w["checks"]["methods_difference_stick_ratio"];
     assert!(check["value"].as_f64().unwrap() <= check["error"].as_f64().unwrap(), "{w}");

@@ -35,11 +35,15 @@
 //! in the tangent variable T = tan(chi)/tan(lambda): the stick condition gains the constant
 //! (1/pi) int s1 tau^2 T/(1 + tau^2 T^2) and the right side b beta tau/pi, the normalisation the
 //! weight 1/(1 + tau^2 T^2) (tau = tan(lambda)), and the slip zone's Chebyshev variable is
-//! logarithmic in T + gamma. [`Spectral::outside_slope`] gives H\[s2\] beyond the contact, the
-//! kernel of the row's load (17.11).
+//! logarithmic in T + gamma.
+//!
+//! The solved increment's fields ([`fields`]): the densities at a point, the outside slope
+//! H\[s2\] beyond the contact (the kernel of the row's load (17.11)) and the tangential strain.
 
 use super::quadrature::{graded, least_squares, DoubleExp};
 use super::real::Real;
+
+pub mod fields;
 
 /// Collocation points per zone in `f64`, in units of 2 n + 2 (the number of unknowns per
 /// equation and zone, plus 2). The basis is a frame, not a basis: the smooth and the singular
@@ -415,8 +419,17 @@ impl<T: Real> Spectral<T> {
             let g = self.slip_values(zn, &xo, &tg.to_one);
             let mut pieces = graded(&zero, &xo, None, Some(&tg.to_one));
             pieces.extend(graded(&xo, &len, Some(&xo), None));
+            // x - eta from the distances to the nearer end: from gamma (x - gamma - d_a) it carries
+            // the rounding of d_a, about 1e-16 (1 - gamma), which at a point 1e-4 from the contact
+            // edge is 1e-12 relative and, times the edge singularity's weight, had put 5e-11 into
+            // the rows there and 1e-12 into the stick edge (`f64`; docs/theory.md section 17.8)
+            let near_one = tg.to_one < xo;
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
-                dx.set_sub(&xo, d_a);
+                if near_one {
+                    dx.set_sub(d_b, &tg.to_one);
+                } else {
+                    dx.set_sub(&xo, d_a);
+                }
                 if dx == zero {
                     return;
                 }
@@ -613,41 +626,6 @@ impl<T: Real> Spectral<T> {
         out
     }
 
-    /// (1/pi) int_-1^1 s2(T')/(t - T') dT' at t > 1, given by `beyond` = t - 1 (> 0): the outside
-    /// slope H\[s2\](t) of a solved increment (the row's W of (17.11) up to the factor 1/tau).
-    pub fn outside_slope(&self, inc: &SpectralIncrement<T>, beyond: &T) -> T {
-        self.outside_cauchy(inc, beyond, false)
-    }
-
-    /// (1/pi) int_-1^1 s(T')/(t - T') dT' at t = 1 + `beyond` (> 0) for s = s2 (`odd` false) or
-    /// s = s1 (`odd`: the slip zones' s1 = +-mu s2).
-    fn outside_cauchy(&self, inc: &SpectralIncrement<T>, beyond: &T, odd: bool) -> T {
-        let gamma = &inc.gamma;
-        let zero = gamma.lit(0.0);
-        let one = gamma.lit(1.0);
-        let t = one.clone() + beyond.clone();
-        let mut sum = zero.clone();
-        let mut dens = self.density(inc);
-        let len = gamma.lit(2.0) * gamma.clone();
-        let near = one.clone() - gamma.clone() + beyond.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, self.edge(&inc.zones), Some(&near)), |d_a, d_b, w| {
-            let s = if odd { self.densities(inc, false, d_a, d_b).1 } else { dens.at(false, d_a, d_b) };
-            sum = sum.clone() + w.clone() * s / (near.clone() + d_b.clone());
-        });
-        let len = one.clone() - gamma.clone();
-        let (factor, mirror) = if odd { (self.mu.clone(), -one.clone()) } else { (one.clone(), one.clone()) };
-        self.rule.sweep(&len, &graded(&zero, &len, None, Some(beyond)), |d_a, d_b, w| {
-            if *d_b == zero || *w == zero {
-                return; // a tail node underflowed (f64, beyond below 1e-20): it adds nothing
-            }
-            let s2 = dens.at(true, d_a, d_b);
-            let eta = gamma.clone() + d_a.clone();
-            let k = one.clone() / (beyond.clone() + d_b.clone()) + mirror.clone() / (t.clone() + eta);
-            sum = sum.clone() + w.clone() * factor.clone() * s2 * k;
-        });
-        sum / gamma.pi()
-    }
-
     /// s2 of a solved increment at a point of the stick zone (`slip` false; d_a = x + gamma,
     /// d_b = gamma - x) or of the right slip zone (`slip` true; d_a = x - gamma, d_b = 1 - x).
     pub fn normal_density(&self, inc: &SpectralIncrement<T>, slip: bool, d_a: &T, d_b: &T) -> T {
@@ -660,52 +638,6 @@ impl<T: Real> Spectral<T> {
         Density { sp: self, inc, nd: Node::new(&inc.gamma, self.n), tmp: inc.gamma.lit(0.0) }
     }
 
-    /// (s2, s1) of a solved increment at a point of the stick zone (`slip` false; d_a = x + gamma,
-    /// d_b = gamma - x) or of the right slip zone (`slip` true; d_a = x - gamma, d_b = 1 - x;
-    /// s1 = mu s2 there): the densities the row's fields superpose (`row_fields.rs`).
-    pub fn densities(&self, inc: &SpectralIncrement<T>, slip: bool, d_a: &T, d_b: &T) -> (T, T) {
-        if slip {
-            let s2 = self.normal_density(inc, true, d_a, d_b);
-            return (s2.clone(), self.mu.clone() * s2);
-        }
-        let (n, c) = (self.n, &inc.coeffs);
-        let (v2, v1) = self.stick_values(&Zones::new(&inc.gamma), d_a, d_b);
-        let zero = inc.gamma.lit(0.0);
-        let s2 = (0..2 * n).fold(zero.clone(), |acc, j| acc + c[j].clone() * v2[j].clone());
-        let s1 = (0..2 * n).fold(zero, |acc, j| acc + c[2 * n + j].clone() * v1[j].clone());
-        (s2, s1)
-    }
-
-    /// The constant part of tau (E*/2) du'/dP of a solved increment, b beta tau/pi minus the
-    /// row's constant (1/pi) int s1 tau^2 T/(1 + tau^2 T^2) dT of (17.10) (zero for the single
-    /// punch in `paper`): the argument `constant` of [`Spectral::slip_zone_strain`] and
-    /// [`Spectral::outside_strain`].
-    pub fn strain_constant(&self, inc: &SpectralIncrement<T>) -> T {
-        let row = self.lateral_row(&Zones::new(&inc.gamma), &inc.gamma);
-        let zero = inc.gamma.lit(0.0);
-        self.lateral.clone() - row.iter().zip(&inc.coeffs).fold(zero, |acc, (r, k)| acc + r.clone() * k.clone())
-    }
-
-    /// tau (E*/2) du'/dP of the unit increment, -(H\[s1\] + beta s2) + `constant` (the stick
-    /// condition of (17.10), left minus right side: zero on the stick zone), at a point of the
-    /// right slip zone given as (d_a, d_b) = (x - gamma, 1 - x) (docs/theory.md section 17.8,
-    /// the fields).
-    pub fn slip_zone_strain(&self, inc: &SpectralIncrement<T>, constant: &T, d_a: &T, d_b: &T) -> T {
-        let (gamma, c) = (&inc.gamma, &inc.coeffs);
-        let zero = gamma.lit(0.0);
-        let tg = Target { x: gamma.clone() + d_a.clone(), to_gamma: -d_a.clone(), to_one: d_b.clone() };
-        let (_, h1) = self.hilbert_rows(&Zones::new(gamma), gamma, &tg);
-        let h = h1.iter().zip(c).fold(zero, |acc, (r, k)| acc + r.clone() * k.clone());
-        let s2 = self.normal_density(inc, true, d_a, d_b);
-        constant.clone() - h / gamma.pi() - self.beta.clone() * s2
-    }
-
-    /// As [`Spectral::slip_zone_strain`] outside the contact, at x = 1 + `beyond` (> 0), where
-    /// s2 = 0: `constant` - H\[s1\](x), the stick zone's s1 and the slip zones' s1 = +-mu s2.
-    pub fn outside_strain(&self, inc: &SpectralIncrement<T>, constant: &T, beyond: &T) -> T {
-        constant.clone() - self.outside_cauchy(inc, beyond, true)
-    }
-
     /// The tanh-sinh rule of the method's integrals.
     pub fn rule(&self) -> &DoubleExp<T> {
         &self.rule
@@ -714,6 +646,17 @@ impl<T: Real> Spectral<T> {
     /// tan(lambda) of the row (zero: the single punch).
     pub fn tau(&self) -> T {
         self.tau.clone()
+    }
+
+    /// The Poisson parameter beta (the stick condition's; the normal equation drops it when
+    /// uncoupled).
+    pub fn beta(&self) -> T {
+        self.beta.clone()
+    }
+
+    /// The friction coefficient mu.
+    pub fn mu(&self) -> T {
+        self.mu.clone()
     }
 
     /// The working precision (bits).
