@@ -226,13 +226,27 @@ fn secant(
 }
 
 /// The slip zone's width 1 - gamma and C_P in MPFR where it is narrow (large mu, docs/theory.md
-/// section 17.3 "Large mu"): the zero of the stick-edge defect in y = ln(1 - gamma), gamma formed
-/// in MPFR as 1 - e^y (so a width of 1e-8 keeps its relative digits), bracketed from `start` (a
-/// width) by steps of a factor 1.5 (at most 40), then the Illinois method to a bracket of `tol`
-/// in y. The defect is taken to `f64` for the search: its sign and size, not its digits.
+/// section 17.3 "Large mu"): [`slip_width`] at `sp`'s precision.
 pub fn slip_width_mpfr(sp: &Spectral<Mp>, start: f64, tol: f64) -> Result<(Float, Float), AdhesionError> {
-    let prec = sp.bits();
-    let gamma = |y: f64| Mp(Float::with_val(prec, 1) - Float::with_val(prec, y).exp());
+    let (w, p) = slip_width(sp, start, tol)?;
+    Ok((w.0, p.0))
+}
+
+/// The slip zone's width 1 - gamma and C_P where it is narrow, in `f64` or MPFR: the zero of the
+/// stick-edge defect in y = ln(1 - gamma), gamma formed as 1 - e^y (in MPFR a width of 1e-8 keeps
+/// its relative digits; in `f64` gamma carries the width to 1e-16 absolute), bracketed from
+/// `start` (a width) by steps of a factor 1.5 (at most 40), then the Illinois method to a bracket
+/// of `tol` in y. The defect is taken to `f64` for the search: its sign and size, not its digits.
+pub fn slip_width<T: Real>(sp: &Spectral<T>, start: f64, tol: f64) -> Result<(T, T), AdhesionError> {
+    let inc = slip_width_root(sp, start, tol)?;
+    Ok((inc.gamma.lit(1.0) - inc.gamma.clone(), sp.load_coefficient(&inc)))
+}
+
+/// The increment at the root of [`slip_width`] (the search there; the row's narrow slip zones,
+/// docs/theory.md section 17.8).
+pub fn slip_width_root<T: Real>(sp: &Spectral<T>, start: f64, tol: f64) -> Result<SpectralIncrement<T>, AdhesionError> {
+    let one = sp.tau().lit(1.0);
+    let gamma = |y: f64| one.clone() - one.lit(y).exp();
     let defect = |y: f64| -> Result<f64, AdhesionError> {
         let g = gamma(y);
         Ok(sp.solve(&g).ok_or_else(|| singular(g.to_f64()))?.stick_edge_defect().to_f64())
@@ -265,9 +279,7 @@ pub fn slip_width_mpfr(sp: &Spectral<Mp>, start: f64, tol: f64) -> Result<(Float
         return Err(not_converged(format!("no sign change of the stick-edge defect near 1 - c/a = {start}")));
     };
     let y = -illinois(lo, hi, tol, |z| defect(-z))?;
-    let inc = sp.solve(&gamma(y)).ok_or_else(|| singular(1.0 - y.exp()))?;
-    let width = Float::with_val(prec, 1) - &inc.gamma.0;
-    Ok((width, sp.load_coefficient(&inc).0))
+    sp.solve(&gamma(y)).ok_or_else(|| singular(1.0 - y.exp()))
 }
 
 /// gamma and C_P with verified digits (module doc); `beta`, `mu` at a precision of at least

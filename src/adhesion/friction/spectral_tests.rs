@@ -1,14 +1,16 @@
 //! Checks of the spectral method for the single punch (docs/theory.md section 17.7): the f64
 //! methods of section 17.4 at beta/mu = 1, 0.3, 0.1 (independent discretisations), Hertz at
 //! beta = 0, the uncoupled problem against K'(gamma)/K(gamma) = beta/mu by the AGM, f64 against
-//! MPFR (one discretisation, and the `f64` root against the verified MPFR values), and (long tier) the verified digits at nu = 0, mu = 1/2.
+//! MPFR (one discretisation, and the `f64` root against the verified MPFR values), and (long tier) the verified digits at nu = 0, mu = 1/2;
+//! narrow slip zones ([`Spectral::narrow`]): the MPFR table of docs/theory.md section 17.3 at
+//! nu = 0, and (long tier) the rate in 1/mu at nu = 0.3 ((17.15)-(17.16)).
 
 use rug::Float;
 
 use super::real::{Mp, Real};
 use super::single_punch::{solve, Method};
 use super::spectral::{Spectral, F64_OVERSAMPLE};
-use super::spectral_punch::{stick_ratio_f64, verified};
+use super::spectral_punch::{slip_width, stick_ratio_f64, verified};
 
 /// K'(k)/K(k) = AGM(1, k')/AGM(1, k), k' = sqrt(1 - k^2) (K(k) = pi/(2 AGM(1, k'))).
 fn elliptic_ratio<T: Real>(k: &T) -> T {
@@ -126,4 +128,65 @@ fn verified_digits_at_nu0_mu_half() {
     // collocation rows' rounding amplified by the least squares; docs/theory.md section 17.7)
     assert!((v.gamma.to_f64() - v.gamma_f64).abs() < 3e-8);
     assert!((v.load_coefficient.to_f64() - v.load_f64).abs() < 1e-9);
+}
+
+/// The narrow method (stick zone resolved on the scale of the slip zone, [`Spectral::narrow`];
+/// `f64`, n = 10, root in ln(1 - c/a)) at nu = 0, mu = 2 against the MPFR table of
+/// docs/theory.md section 17.3 (the default method at n = 10, 14, 128 and 160 bits:
+/// 1 - c/a = 0.0230581 (3.9e-8 apart), C_P = 1.93631401 (3.6e-8 relative)). Measured: 2.3058108e-2,
+/// 1.936314014 (n = 14: the same to 7e-12 and 2e-12).
+#[test]
+fn narrow_method_matches_the_mpfr_table_at_nu0() {
+    let sp = Spectral::new(0.5, 2.0, 10, true).narrow();
+    let (w, p) = slip_width(&sp, 0.02, 1e-12).unwrap();
+    eprintln!("nu = 0, mu = 2: 1 - c/a = {w:.10e}, C_P = {p:.12}");
+    assert!((w - 0.0230581).abs() < 1e-7, "1 - c/a = {w}");
+    assert!((p - 1.93631401).abs() < 5e-8, "C_P = {p}");
+}
+
+/// mu -> infinity at nu = 0.3 (beta = 2/7, docs/theory.md section 17.3 "Large mu"): slip zones of
+/// 1.6e-6 a, resolved by the narrow method (`f64`, n = 10 and 14). The two n agree (measured
+/// 2.7e-5 relative in 1 - c/a and 1.6e-3 of the gap 1 - C_P/C_ca at mu = 1024); the logarithmic law (17.15) through mu = 64, 256,
+/// 1024 predicts mu = 32 (measured 4.2e-5 relative: the O(mu^-3) left out), with
+/// delta_inf/a = 1.599e-6, Phi_1 = eps Phi_1/eps = 0.500; the load's gap (17.16) levels off at
+/// G_inf = kappa delta_inf/a with kappa = 1.000 (as at nu = 0), not at complete adhesion's 0.
+#[test]
+#[ignore = "long tier: ten f64 roots of narrow slip zones, about a minute (scripts/test --long)"]
+fn growing_friction_rate_at_nu_0_3() {
+    let (beta, eps) = (2.0 / 7.0, ((9.0f64 / 5.0).ln()) / (2.0 * std::f64::consts::PI));
+    let c_ca = 1.674243188848;
+    let mus = [32.0, 64.0, 256.0, 1024.0];
+    let mut start = 2e-6;
+    let mut width = Vec::new();
+    let mut gap = Vec::new();
+    for &mu in &mus {
+        let run = |n: usize, start: f64| slip_width(&Spectral::new(beta, mu, n, true).narrow(), start, 1e-12).unwrap();
+        let (w10, p10) = run(10, start);
+        let (w, p) = run(14, w10);
+        eprintln!(
+            "mu {mu}: 1 - c/a = {w:.10e} (n = 10: {w10:.10e}), 1 - C_P/C_ca = {:.6e} (C_P {p:.13}, n = 10: {p10:.13})",
+            1.0 - p / c_ca
+        );
+        assert!((w - w10).abs() < 1e-4 * w, "mu {mu}: n = 10, 14 differ: {w10} {w}");
+        assert!((p - p10).abs() < 5e-3 * (1.0 - p / c_ca) * c_ca, "mu {mu}: C_P {p10} {p}");
+        width.push(w);
+        gap.push(1.0 - p / c_ca);
+        start = w;
+    }
+    // the slip zone narrows and the load rises, ever more slowly
+    assert!(width.windows(2).all(|w| w[1] < w[0]) && gap.windows(2).all(|g| g[1] < g[0]), "{width:?} {gap:?}");
+    let ln_w: Vec<f64> = width.iter().map(|w| w.ln()).collect();
+    let [l0, l1, l2] = super::tests::quadratic_in_inverse(&mus[1..], &ln_w[1..]);
+    let at_32 = (l0 + l1 / 32.0 + l2 / 1024.0).exp();
+    let (delta_inf, phi_1) = (l0.exp(), eps * l1);
+    eprintln!(
+        "(17.15): delta_inf/a = {delta_inf:.5e}, Phi_inf = {:.4}, Phi_1 = {phi_1:.4}; mu = 32: {at_32:.6e} vs {:.6e}",
+        eps * l0,
+        width[0]
+    );
+    assert!((at_32 - width[0]).abs() < 5e-4 * width[0], "(17.15) misses mu = 32: {at_32} vs {}", width[0]);
+    assert!((delta_inf - 1.599e-6).abs() < 2e-9 && (phi_1 - 0.5).abs() < 5e-3, "{delta_inf} {phi_1}");
+    let [g0, g1, _] = super::tests::quadratic_in_inverse(&mus[1..], &gap[1..]);
+    eprintln!("(17.16): G_inf = {g0:.5e}, G_1 = {g1:.4e}, kappa = {:.4}", g0 / delta_inf);
+    assert!(g1 > 0.0 && (g0 / delta_inf - 1.0).abs() < 2e-3, "G_inf {g0}, kappa {}", g0 / delta_inf);
 }

@@ -165,7 +165,7 @@ fn growing_friction_levels_off_below_complete_adhesion() {
 }
 
 /// (c0, c1, c2) with x = c0 + c1/mu + c2/mu^2 through three points.
-fn quadratic_in_inverse(mus: &[f64], x: &[f64]) -> [f64; 3] {
+pub(super) fn quadratic_in_inverse(mus: &[f64], x: &[f64]) -> [f64; 3] {
     let h: Vec<f64> = mus.iter().map(|m| 1.0 / m).collect();
     // Newton's divided differences in h
     let d01 = (x[1] - x[0]) / (h[1] - h[0]);

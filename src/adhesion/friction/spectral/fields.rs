@@ -61,7 +61,7 @@ impl<T: Real> Spectral<T> {
         let mut dens = self.density(inc);
         let len = gamma.lit(2.0) * gamma.clone();
         let near = one.clone() - gamma.clone() + beyond.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, None, Some(&near)), |d_a, d_b, w| {
+        self.rule.sweep(&len, &graded(&zero, &len, self.edge(&inc.zones), Some(&near)), |d_a, d_b, w| {
             let s = if odd { dens.pair(false, d_a, d_b).1 } else { dens.at(false, d_a, d_b) };
             sum = sum.clone() + w.clone() * s / (near.clone() + d_b.clone());
         });

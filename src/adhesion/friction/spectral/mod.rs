@@ -85,6 +85,8 @@ pub struct Spectral<T> {
     log_slip: bool,
     /// Collocation points per zone: `oversample` (2 n + 2).
     oversample: usize,
+    /// The stick zone resolved on the scale 1 - gamma ([`Spectral::narrow`]).
+    narrow: bool,
 }
 
 /// Constants of the basis at one gamma, computed once (not per quadrature node).
@@ -177,6 +179,21 @@ fn accumulate<T: Real>(h: &mut [T], k: &T, fac: Option<&T>, t: &[T], f: Option<&
     }
 }
 
+/// e^y - 1 for y >= 0 without cancellation: the series below 1/2, else e^y - 1.
+fn expm1<T: Real>(y: &T) -> T {
+    if y.to_f64() >= 0.5 {
+        return y.exp() - y.lit(1.0);
+    }
+    let tiny = y.lit(2f64.powi(-(y.bits() as i32) - 2));
+    let (mut sum, mut term, mut k) = (y.clone(), y.clone(), 1.0);
+    while term.abs() > tiny.clone() * sum.abs() {
+        k += 1.0;
+        term = term * y.clone() / y.lit(k);
+        sum += &term;
+    }
+    sum
+}
+
 /// A collocation point: x with its distances to gamma (gamma - x, negative on the slip zone) and
 /// to 1, each accurate on its own.
 struct Target<T> {
@@ -208,6 +225,7 @@ impl<T: Real> Spectral<T> {
             lateral,
             log_slip: false,
             oversample,
+            narrow: false,
         }
     }
 
@@ -216,6 +234,23 @@ impl<T: Real> Spectral<T> {
     pub fn oversampled(mut self, factor: usize) -> Spectral<T> {
         self.oversample = factor.max(1);
         self
+    }
+
+    /// The same method with the stick zone resolved on the scale delta = 1 - gamma, for narrow
+    /// slip zones (large mu, docs/theory.md section 17.3 "Large mu"): the stick zone's
+    /// collocation points Chebyshev in its basis variable u (not in x: the points in x come no
+    /// nearer the stick edge than gamma (pi/(4 m))^2/2, 6e-4 at m = 22, blind to the increment's
+    /// structure on the scale delta beside it) and its integrals graded toward +-gamma from the
+    /// scale delta (the basis is analytic there but for the slip zones' edges +-1, delta beyond).
+    /// The basis is unchanged.
+    pub fn narrow(mut self) -> Spectral<T> {
+        self.narrow = true;
+        self
+    }
+
+    /// The grading toward the stick zone's ends: 1 - gamma where [`Spectral::narrow`], else none.
+    fn edge<'a>(&self, zn: &'a Zones<T>) -> Option<&'a T> {
+        self.narrow.then_some(&zn.one_g)
     }
 
     /// The same problem with `n` polynomials per family and 2 n + 2 points per zone: a cheap
@@ -322,8 +357,8 @@ impl<T: Real> Spectral<T> {
         if in_stick {
             let xo = tg.x.clone() + gamma.clone();
             let (f2, f1) = self.stick_values(zn, &xo, &tg.to_gamma);
-            let mut pieces = graded(&zero, &xo, None, Some(&tg.to_gamma));
-            pieces.extend(graded(&xo, &len, Some(&xo), None));
+            let mut pieces = graded(&zero, &xo, self.edge(zn), Some(&tg.to_gamma));
+            pieces.extend(graded(&xo, &len, Some(&xo), self.edge(zn)));
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
                 dx.set_sub(d_b, &tg.to_gamma);
                 if dx == zero {
@@ -347,7 +382,7 @@ impl<T: Real> Spectral<T> {
             }
         } else {
             let beyond = -tg.to_gamma.clone();
-            let pieces = graded(&zero, &len, None, Some(&beyond));
+            let pieces = graded(&zero, &len, self.edge(zn), Some(&beyond));
             self.rule.sweep(&len, &pieces, |d_a, d_b, w| {
                 dx.set(d_b);
                 dx += &beyond;
@@ -434,7 +469,10 @@ impl<T: Real> Spectral<T> {
         let m = self.oversample * (2 * self.n + 2);
         let pi = gamma.pi();
         let mut out = Vec::with_capacity(2 * m);
-        for i in 0..m {
+        if self.narrow {
+            out.extend(self.narrow_stick_targets(gamma, m));
+        }
+        for i in (0..m).filter(|_| !self.narrow) {
             let th = pi.clone() * gamma.lit((2 * i + 1) as f64) / gamma.lit((4 * m) as f64);
             let sh = (th.clone() * gamma.lit(0.5)).sin();
             let x = gamma.clone() * th.cos();
@@ -451,6 +489,29 @@ impl<T: Real> Spectral<T> {
             out.push(Target { x: gamma.clone() + from_gamma.clone(), to_gamma: -from_gamma, to_one });
         }
         out
+    }
+
+    /// `m` stick-zone points Chebyshev in the basis variable u = 2 v^2 - 1, v = artanh(x)/artanh(gamma)
+    /// ([`Spectral::narrow`]): with S = ln((1 + gamma)/(1 - gamma)) and u = cos(th), v = cos(th/2),
+    /// 1 - x = 2/(1 + e^(v S)), and gamma - x = 2 e^(v S) (e^((1 - v) S) - 1)/((1 + e^(v S))(1 + e^S))
+    /// without cancellation (1 - v = 2 sin^2(th/4)).
+    fn narrow_stick_targets(&self, gamma: &T, m: usize) -> Vec<Target<T>> {
+        let zn = Zones::new(gamma);
+        let (one, two) = (zn.one.clone(), zn.two.clone());
+        let e_s = zn.sigma_g.exp();
+        (0..m)
+            .map(|i| {
+                let th = gamma.pi() * gamma.lit((2 * i + 1) as f64) / gamma.lit((2 * m) as f64);
+                let v = (th.clone() * gamma.lit(0.5)).cos();
+                let sq = (th * gamma.lit(0.25)).sin();
+                let rest = two.clone() * sq.clone() * sq * zn.sigma_g.clone();
+                let e_v = (v * zn.sigma_g.clone()).exp();
+                let to_gamma = two.clone() * e_v.clone() * expm1(&rest)
+                    / ((one.clone() + e_v.clone()) * (one.clone() + e_s.clone()));
+                let to_one = zn.one_g.clone() + to_gamma.clone();
+                Target { x: gamma.clone() - to_gamma.clone(), to_gamma, to_one }
+            })
+            .collect()
     }
 
     /// Solves for the increment at stick half-width `gamma` in (0, 1); None when the
@@ -513,7 +574,7 @@ impl<T: Real> Spectral<T> {
         let one = gamma.lit(1.0);
         let weight = |t: &T| one.clone() / (one.clone() + self.tau.clone() * self.tau.clone() * t.clone() * t.clone());
         let len = gamma.lit(2.0) * gamma.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+        self.rule.sweep(&len, &graded(&zero, &len, self.edge(&zn), self.edge(&zn)), |d_a, d_b, w| {
             let (v2, _) = self.stick_values(&zn, d_a, d_b);
             let wt = w.clone() * weight(&(d_a.clone() - gamma.clone()));
             for j in 0..2 * n {
@@ -546,7 +607,7 @@ impl<T: Real> Spectral<T> {
         let t2 = self.tau.clone() * self.tau.clone();
         let kern = |t: &T| t2.clone() * t.clone() / (one.clone() + t2.clone() * t.clone() * t.clone()) / gamma.pi();
         let len = gamma.lit(2.0) * gamma.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+        self.rule.sweep(&len, &graded(&zero, &len, self.edge(zn), self.edge(zn)), |d_a, d_b, w| {
             let (_, v1) = self.stick_values(zn, d_a, d_b);
             let k = w.clone() * kern(&(d_a.clone() - gamma.clone()));
             for j in 0..2 * n {
@@ -611,7 +672,8 @@ impl<T: Real> Spectral<T> {
         let mut dens = self.density(inc);
         let mut i_stick = zero.clone();
         let len = gamma.lit(2.0) * gamma.clone();
-        self.rule.sweep(&len, &graded(&zero, &len, None, None), |d_a, d_b, w| {
+        let edge = self.edge(&inc.zones);
+        self.rule.sweep(&len, &graded(&zero, &len, edge, edge), |d_a, d_b, w| {
             let xi = (d_a.clone() - d_b.clone()) * gamma.lit(0.5);
             let y = xi.clone() * xi;
             let kern = if y == zero { one.clone() } else { -(-y.clone()).ln_1p() / y };
