@@ -179,6 +179,30 @@ fn accumulate<T: Real>(h: &mut [T], k: &T, fac: Option<&T>, t: &[T], f: Option<&
     }
 }
 
+impl<T: Real> Node<T> {
+    /// The stick zone's node times the kernel `k` into the rows of pi H\[s2\] over (P, Q) (`h2`,
+    /// 2 n long) and pi H\[s1\] over (R, S) (`h1`), less the families' values at the pole
+    /// (`pole` = (s2's, s1's), 2 n each: the principal value's subtraction) where given.
+    fn add_stick(&self, h2: &mut [T], h1: &mut [T], k: &T, pole: Option<(&[T], &[T])>, tmp: &mut T) {
+        self.add_pair(h2, k, [None, Some(&self.fac[0])], pole.map(|p| p.0), tmp);
+        self.add_pair(h1, k, [Some(&self.fac[1]), Some(&self.fac[2])], pole.map(|p| p.1), tmp);
+    }
+
+    /// The slip zone's node times the kernel `k` into the rows over (A, B) (`h`, 2 n long), less
+    /// the families' values at the pole (2 n) where given.
+    fn add_slip(&self, h: &mut [T], k: &T, pole: Option<&[T]>, tmp: &mut T) {
+        self.add_pair(h, k, [Some(&self.fac[0]), Some(&self.fac[1])], pole, tmp);
+    }
+
+    /// Two families (factors `fac`, None: one) into the two halves of `h`.
+    fn add_pair(&self, h: &mut [T], k: &T, fac: [Option<&T>; 2], pole: Option<&[T]>, tmp: &mut T) {
+        let n = self.t.len();
+        let (lo, hi) = h.split_at_mut(n);
+        accumulate(lo, k, fac[0], &self.t, pole.map(|f| &f[..n]), tmp);
+        accumulate(hi, k, fac[1], &self.t, pole.map(|f| &f[n..]), tmp);
+    }
+}
+
 /// e^y - 1 for y >= 0 without cancellation: the series below 1/2, else e^y - 1.
 fn expm1<T: Real>(y: &T) -> T {
     if y.to_f64() >= 0.5 {
@@ -367,13 +391,7 @@ impl<T: Real> Spectral<T> {
                 k.set(w);
                 k /= &dx;
                 self.stick_node(zn, d_a, d_b, &mut nd);
-                let (h2, h1) = (&mut h2[..2 * n], &mut h1[2 * n..4 * n]);
-                let (p, q) = h2.split_at_mut(n);
-                accumulate(p, &k, None, &nd.t, Some(&f2[..n]), &mut tmp);
-                accumulate(q, &k, Some(&nd.fac[0]), &nd.t, Some(&f2[n..]), &mut tmp);
-                let (r, s) = h1.split_at_mut(n);
-                accumulate(r, &k, Some(&nd.fac[1]), &nd.t, Some(&f1[..n]), &mut tmp);
-                accumulate(s, &k, Some(&nd.fac[2]), &nd.t, Some(&f1[n..]), &mut tmp);
+                nd.add_stick(&mut h2[..2 * n], &mut h1[2 * n..4 * n], &k, Some((&f2, &f1)), &mut tmp);
             });
             let lg = (xo / tg.to_gamma.clone()).ln();
             for j in 0..2 * n {
@@ -389,13 +407,7 @@ impl<T: Real> Spectral<T> {
                 k.set(w);
                 k /= &dx;
                 self.stick_node(zn, d_a, d_b, &mut nd);
-                let (h2, h1) = (&mut h2[..2 * n], &mut h1[2 * n..4 * n]);
-                let (p, q) = h2.split_at_mut(n);
-                accumulate(p, &k, None, &nd.t, None, &mut tmp);
-                accumulate(q, &k, Some(&nd.fac[0]), &nd.t, None, &mut tmp);
-                let (r, s) = h1.split_at_mut(n);
-                accumulate(r, &k, Some(&nd.fac[1]), &nd.t, None, &mut tmp);
-                accumulate(s, &k, Some(&nd.fac[2]), &nd.t, None, &mut tmp);
+                nd.add_stick(&mut h2[..2 * n], &mut h1[2 * n..4 * n], &k, None, &mut tmp);
             });
         }
         // slip zones: (gamma, 1) with kernel 1/(x - eta) and its mirror with 1/(x + eta)
@@ -410,9 +422,7 @@ impl<T: Real> Spectral<T> {
                 k.set(w);
                 k /= &dx;
                 self.slip_node(zn, d_a, d_b, &mut nd);
-                let (a, b) = minus.split_at_mut(n);
-                accumulate(a, &k, Some(&nd.fac[0]), &nd.t, None, &mut tmp);
-                accumulate(b, &k, Some(&nd.fac[1]), &nd.t, None, &mut tmp);
+                nd.add_slip(&mut minus, &k, None, &mut tmp);
             });
         } else {
             let xo = -tg.to_gamma.clone();
@@ -436,9 +446,7 @@ impl<T: Real> Spectral<T> {
                 k.set(w);
                 k /= &dx;
                 self.slip_node(zn, d_a, d_b, &mut nd);
-                let (a, b) = minus.split_at_mut(n);
-                accumulate(a, &k, Some(&nd.fac[0]), &nd.t, Some(&g[..n]), &mut tmp);
-                accumulate(b, &k, Some(&nd.fac[1]), &nd.t, Some(&g[n..]), &mut tmp);
+                nd.add_slip(&mut minus, &k, Some(&g), &mut tmp);
             });
             let lg = (xo / tg.to_one.clone()).ln();
             for j in 0..2 * n {
@@ -453,9 +461,7 @@ impl<T: Real> Spectral<T> {
             k.set(w);
             k /= &dx;
             self.slip_node(zn, d_a, d_b, &mut nd);
-            let (a, b) = plus.split_at_mut(n);
-            accumulate(a, &k, Some(&nd.fac[0]), &nd.t, None, &mut tmp);
-            accumulate(b, &k, Some(&nd.fac[1]), &nd.t, None, &mut tmp);
+            nd.add_slip(&mut plus, &k, None, &mut tmp);
         });
         for j in 0..2 * n {
             h2[4 * n + j] = minus[j].clone() + plus[j].clone();
