@@ -285,8 +285,9 @@ fn vanishing_friction_row_is_kuznetsov() {
 /// (Problem 2 through `solve`, verified MPFR, same row, same convention). Where the `f64` spectral
 /// root resolves the stick edge the gap 1 - P/P_ca is positive and falls with mu (measured, `paper`:
 /// 4.7e-4, 1.7e-4 at lambda = 0.6, mu = 1, 2; 0.0116, 0.0019 at lambda = 1.2); beyond, the slip
-/// zones are narrower than the root's 1.2e-4 a and it refuses naming c/a, so the rate in 1/mu at
-/// mu = 2 .. 16 is not measured (docs/theory.md section 17.8).
+/// zones are narrower than the root's 1.2e-4 a and it refuses naming c/a, so this test does not
+/// measure the rate in 1/mu at mu = 2 .. 16; the narrow method does (`examples/mu_rate_row.rs`,
+/// docs/theory.md section 17.8: the gap levels off, G_inf + G_1/mu).
 #[test]
 #[ignore = "long tier: 12 spectral loads and 4 MPFR solves, 3 min in the test profile (scripts/test --long)"]
 fn growing_friction_row_tends_to_complete_adhesion() {
