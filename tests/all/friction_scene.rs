@@ -388,7 +388,7 @@ fn row_field_claims_hold_against_a_finer_load() {
         let h = History::new(&finer, 1.2, (0.5, 0.5), 10, periodic);
         let scale = 1.0 / std::f64::consts::PI; // E* k L/pi and k L/pi
         for (j, x) in xs.iter().enumerate() {
-            let truth = h.fields(x * 1.2, true);
+            let truth = h.fields(&(x * 1.2), true);
             for (name, t) in [("psi", truth.psi), ("q1", truth.q1), ("q2", truth.q2)] {
                 let text = a.json[name][j][name].as_str().unwrap();
                 let value: f64 = text.parse().unwrap();

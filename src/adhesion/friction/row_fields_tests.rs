@@ -28,7 +28,7 @@ fn interpolated_increment_is_the_solved_one() {
         let r = rate(0.5, 0.5, 1.2, (nodes, 8), periodic);
         let h = History::new(&r, 1.2, (0.5, 0.5), 8, periodic);
         let eta = 0.77;
-        let (sp, inc) = h.increment_at(eta);
+        let (sp, inc) = h.increment_at(&eta);
         let (sq, solved) = increment_f64(0.5, 0.5, eta, 8, periodic).unwrap();
         let mut worst: f64 = 0.0;
         for t in [0.0, 0.3, 0.6, 0.9] {
@@ -64,7 +64,7 @@ fn incompressible_pressure_is_kuznetsov() {
             let h = History::new(&r, lambda, (0.0, 0.3), 8, periodic);
             for x in [0.0, 0.3, 0.7, 0.95] {
                 let chi: f64 = x * lambda;
-                let q2 = h.fields(chi, false).q2;
+                let q2 = h.fields(&chi, false).q2;
                 let exact = (chi.cos() / lambda.cos()).acosh();
                 eprintln!("periodic {periodic} lambda {lambda} x/a {x}: q2 {q2} vs {exact}: {:.1e}", q2 - exact);
                 // measured 5e-15 .. 4.5e-14
@@ -88,7 +88,7 @@ fn small_lambda_is_the_single_punch() {
     let r = rate(beta, mu, lambda, (6, 8), false);
     let h = History::new(&r, lambda, (beta, mu), 8, false);
     for (x, s) in xs.iter().zip(&single.points) {
-        let p = h.fields(x * lambda, true);
+        let p = h.fields(&(x * lambda), true);
         let (q1, q2, psi) = (p.q1 / lambda, p.q2 / lambda, p.psi / lambda);
         eprintln!("x/a {x}: q1 {q1} vs {}, q2 {q2} vs {}, psi {psi} vs {}", s.q1, s.q2, s.psi);
         let e = &single.errors;

@@ -151,18 +151,39 @@ impl<T: Real> LoadRate<T> {
     /// The polynomial in the rule's variable through `values` at the nodes, evaluated at `e`
     /// (barycentric form).
     pub fn interpolate(&self, values: &[T], e: &T) -> T {
-        let zero = e.lit(0.0);
+        Self::interpolate_at(&self.terms(e), values)
+    }
+
+    /// The barycentric terms at `e`, w_j/(v(e) - v(eta_j)) and their sum, or `Err(j)` where `e`
+    /// is the node eta_j: what [`LoadRate::interpolate_at`] needs for any values at `e`.
+    pub fn terms(&self, e: &T) -> Result<(Vec<T>, T), usize> {
         if let Some(k) = self.nodes.iter().position(|x| x == e) {
-            return values[k].clone();
+            return Err(k);
         }
         let ve = self.rule.variable(e);
-        let (mut num, mut den) = (zero.clone(), zero);
-        for ((x, w), v) in self.nodes.iter().zip(&self.weights).zip(values) {
-            let t = w.clone() / (ve.clone() - self.rule.variable(x));
-            num = num + t.clone() * v.clone();
-            den = den + t;
+        let mut den = e.lit(0.0);
+        let terms = self
+            .nodes
+            .iter()
+            .zip(&self.weights)
+            .map(|(x, w)| {
+                let t = w.clone() / (ve.clone() - self.rule.variable(x));
+                den = den.clone() + t.clone();
+                t
+            })
+            .collect();
+        Ok((terms, den))
+    }
+
+    /// The interpolant through `values` from the [`LoadRate::terms`] at a point.
+    pub fn interpolate_at(terms: &Result<(Vec<T>, T), usize>, values: &[T]) -> T {
+        match terms {
+            Err(k) => values[*k].clone(),
+            Ok((terms, den)) => {
+                let num = terms.iter().zip(values).fold(den.lit(0.0), |num, (t, v)| num + t.clone() * v.clone());
+                num / den.clone()
+            }
         }
-        num / den
     }
 
     /// P'(eta) = tan(eta) F(eta).
