@@ -187,8 +187,7 @@ impl<'a, T: Real> History<'a, T> {
                 if inc.gamma.clone() - t.clone() <= zero {
                     return; // at the stick edge (eta_s to rounding): the density is bounded there
                 }
-                let (s2, s1) =
-                    sp.densities(&inc, false, &(t.clone() + inc.gamma.clone()), &(inc.gamma.clone() - t));
+                let (s2, s1) = sp.densities(&inc, false, &(t.clone() + inc.gamma.clone()), &(inc.gamma.clone() - t));
                 let fe = f(&eta);
                 q2 += &(w.clone() * s2 * fe.clone());
                 q1 += &(w.clone() * s1 * fe);
@@ -228,9 +227,8 @@ impl<'a, T: Real> History<'a, T> {
         let contact: Vec<T> =
             (0..16).map(|j| self.fields(&(lambda.clone() * lit(j as f64 / 16.0)), false).q2).collect();
         let all_q2 = contact.iter().chain(stick.iter().map(|p| &p.q2)).chain(points.iter().map(|p| &p.q2));
-        let (low, top) = all_q2.fold((lit(f64::INFINITY), lit(0.0)), |(l, t), q| {
-            (if *q < l { q.clone() } else { l }, max(t, q.clone()))
-        });
+        let (low, top) = all_q2
+            .fold((lit(f64::INFINITY), lit(0.0)), |(l, t), q| (if *q < l { q.clone() } else { l }, max(t, q.clone())));
         let outward = self
             .rate
             .increments
@@ -284,7 +282,8 @@ pub fn verified_row_fields(coarse: &History<Mp>, fine: &History<Mp>, x_over_a: &
         c.points.iter().zip(&f.points).map(|(a, b)| agreement_mpfr(&get(a).0, &get(b).0, &one, cap)).fold(cap, f64::min)
     };
     let digits = PointFields { q1: agree(|p| &p.q1), q2: agree(|p| &p.q2), psi: agree(|p| &p.psi) };
-    let check = |k: usize| Check { value: f.checks[k].to_f64(), error: (f.checks[k].to_f64() - c.checks[k].to_f64()).abs() };
+    let check =
+        |k: usize| Check { value: f.checks[k].to_f64(), error: (f.checks[k].to_f64() - c.checks[k].to_f64()).abs() };
     VerifiedFields {
         points: f.points.into_iter().map(|p| PointFields { q1: p.q1.0, q2: p.q2.0, psi: p.psi.0 }).collect(),
         digits,

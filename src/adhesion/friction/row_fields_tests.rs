@@ -142,3 +142,36 @@ fn checks_hold_at_nu0_up_to_lambda_1_4() {
         }
     }
 }
+
+/// beta = 0 in MPFR (docs/theory.md section 17.8, "The row's fields in MPFR"): the pressure of
+/// two runs, (nodes, n, bits) = (2, 6, 80) and (3, 8, 104), the node increments solved at the
+/// arbitrary stick edge 1/2 (nothing drives a slip), is Westergaard's and Kuznetsov's
+/// arccosh(cos chi/cos lambda) within the digits where the two runs agree, at lambda = 0.8,
+/// `paper`: the verified digits of the MPFR superposition do not exceed its true error.
+#[test]
+#[ignore = "long tier: six MPFR pressures superposed from two loads each, about 40 s in the test profile"]
+fn mpfr_incompressible_pressure_holds_its_verified_digits() {
+    use super::real::{Mp, Real};
+    use super::spectral_row::increment_mpfr_root;
+    use crate::numerics::accuracy::agreement_mpfr;
+    use rug::Float;
+    let run = |(nodes, n, bits): (usize, usize, u32), chi: f64| {
+        let zero = Float::with_val(bits, 0);
+        let mu = Float::with_val(bits, 0.3);
+        let lambda = Mp::new(bits, 0.8);
+        let at = |e: &Mp| increment_mpfr_root((&zero, &mu, &e.0), false, (n, bits, 0), 0.5, false);
+        let r = load_rate(&lambda, 0.0, nodes, NodeRule::EtaSquared, at).unwrap();
+        let h = History::new(&r, lambda.clone(), (Mp(zero.clone()), Mp(mu.clone())), n, false);
+        let chi = Mp::new(bits, chi);
+        let exact = (chi.cos() / lambda.cos()).0.acosh();
+        (h.fields(&chi, false).q2.0, exact)
+    };
+    for chi in [0.0, 0.4, 0.76] {
+        let ((coarse, _), (fine, exact)) = (run((2, 6, 80), chi), run((3, 8, 104), chi));
+        let one = Float::with_val(64, 1);
+        let (digits, true_digits) =
+            (agreement_mpfr(&coarse, &fine, &one, 24.0), agreement_mpfr(&fine, &exact, &one, 31.0));
+        eprintln!("chi {chi}: q2 = {fine:.25}, {digits:.1} digits verified, {true_digits:.1} true");
+        assert!(digits >= 8.0 && true_digits >= digits, "chi {chi}: {digits} verified, {true_digits} true");
+    }
+}
