@@ -30,10 +30,16 @@
 //! graded mesh, n = 20) against twice that method's own n = 10 / 20 difference.
 //!
 //! `--method mpfr` ([`row_mpfr_answer`]): P and c/a by the verified MPFR load of
-//! [`crate::adhesion::friction::spectral_row_load::verified_mpfr`] (two runs, their agreement
+//! [`crate::adhesion::friction::spectral_row_load::verified_mpfr_runs`] (two runs, their agreement
 //! printed as verified digits), given `half_width` only (under a given load lambda would need
 //! the verified load inverted: several such loads), at most [`MPFR_ROW_MAX_DIGITS`] digits (the
-//! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
+//! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8). With points the two runs'
+//! node increments are full stick-edge roots (the fields are first order in the stick edge), and
+//! q1, q2, psi and the three inequality checks are superposed from each run
+//! ([`crate::adhesion::friction::row_fields::verified_row_fields`]): the fields' digits are where
+//! the runs agree, on the scales E* k L/pi and k L/pi, fewer than the load's (they converge with
+//! the load's nodes at the load's rate from a larger error; docs/theory.md section 17.8, "The
+//! row's fields in MPFR"), each check's error twice the runs' difference.
 
 use super::answer_friction::FRICTION_NOTE_ROW;
 use super::answer_friction::{
@@ -200,7 +206,7 @@ pub fn invert(
 
 /// The answer of the periodic row of parabolic punches with period `period` and friction
 /// `mu_exact` by `method`: f64 (module doc), or mpfr with `digits_asked` ([`row_mpfr_answer`]),
-/// with the fields at `points` (x/a in [0, 1]; f64 only).
+/// with the fields at `points` (x/a in [0, 1]).
 pub fn row_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
@@ -375,7 +381,8 @@ fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
 pub const MPFR_ROW_MAX_DIGITS: u32 = 12;
 
 /// The answer of the row by the verified MPFR load (module doc): lambda = pi a/L from the exact
-/// half width, P2 = E* k (L/pi)^2 P and c = (c/a) a with the two runs' agreement as their digits.
+/// half width, P2 = E* k (L/pi)^2 P and c = (c/a) a with the two runs' agreement as their digits,
+/// and with `points` (x/a) the fields and checks of both runs.
 pub fn row_mpfr_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
@@ -431,15 +438,18 @@ pub fn row_mpfr_answer(
     let exact = crate::numerics::accuracy::digits_cap_for_bits(prec);
     let mut checks = vec![march_check(beta.to_f64(), mu.to_f64(), lam, periodic, v.stick_ratio.to_f64())];
     let mut accuracy = vec![("size".into(), size_digits), ("stick".into(), stick_digits)];
-    let mut fields = Vec::new();
+    let (mut fields, mut warnings) = (Vec::new(), Vec::new());
     if !points.is_empty() {
         let histories: Vec<History<Mp>> = rates
             .iter()
             .zip(v.runs)
             .map(|(rate, (_, n, bits))| {
                 let at = |x: &Float| Mp(Float::with_val(bits, x));
+                // the strain's nodes within 10^-(2 D + 8) of an edge left out (both runs alike: at
+                // most about 10^-(D + 4) of psi), above the working precision (about 2.2 D + 13
+                // digits at the knobs' bits: nearer, 1 - x loses every digit and psi is NaN)
                 History::new(rate, at(&lambda), (at(&beta), at(&mu)), n, periodic)
-                    .with_edge_cut(10f64.powi(-(2 * digits_asked as i32 + 4)))
+                    .with_edge_cut(10f64.powi(-(2 * digits_asked as i32 + 8)))
             })
             .collect();
         let xs: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
@@ -448,6 +458,14 @@ pub fn row_mpfr_answer(
         let strain = Float::with_val(prec, to_float(k, prec) / &pi_over_l);
         let stress = Float::with_val(prec, &strain * to_float(p.material().contact_modulus(), prec));
         let (rows, field_digits) = mpfr_field_rows(&fl, points, (&stress, &strain), 0.0);
+        let least = field_digits.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min);
+        if least < digits_asked as f64 {
+            warnings.push(format!(
+                "q1, q2 and psi carry {least:.1} verified digits, fewer than the {digits_asked} asked: superposed from \
+                 the node increments interpolated in eta, they converge more slowly than P2 and c in the load's \
+                 discretisation (docs/theory.md section 17.8, \"The row's fields in MPFR\")"
+            ));
+        }
         fields = rows;
         accuracy.extend(field_digits);
         let how = format!(
@@ -478,7 +496,7 @@ pub fn row_mpfr_answer(
         accuracy,
         fields,
         tension_zones: None,
-        warnings: Vec::new(),
+        warnings,
     })
 }
 

@@ -1,6 +1,10 @@
 //! The periodic row's fields q1, q2, psi at points and the checks of its inequalities
-//! (docs/theory.md section 17.8, "The row's fields", (17.12)-(17.14)), `f64`, superposed from the
-//! increments of the spectral load ([`super::spectral_row_load::load_rate`]).
+//! (docs/theory.md section 17.8, "The row's fields", (17.12)-(17.14)), superposed from the
+//! increments of the spectral load ([`super::spectral_row_load::load_rate`]), generic over `f64`
+//! and MPFR ([`History`]); [`row_fields`]: two `f64` discretisations, their difference the
+//! error; [`verified_row_fields`]: two MPFR runs (those of
+//! [`super::spectral_row_load::verified_mpfr_runs`], node roots in full), their agreement the
+//! verified digits.
 //!
 //! Units L = pi (x = chi, a = lambda), E* = k = 1. The unit increment at contact eta is
 //! sigma^eta(chi) = S^eta(T)/tan(eta), T = tan(chi)/tan(eta) (17.10), and P' = tan(eta) F(eta)
@@ -16,10 +20,13 @@
 //!
 //! The increment at an eta between the load's Chebyshev nodes: its stick edge gamma_T and its
 //! 6 n coefficients times cos(eta) (the unit increment's pole at full contact, as the load's G
-//! cos(eta)) interpolated in eta through the nodes' (the load's barycentric weights): the basis
-//! in T follows gamma_T, and the coefficients of the solution vary smoothly with eta
-//! (checked in `row_fields_tests.rs` against an increment solved at that eta,
-//! `interpolated_increment_is_the_solved_one`). The eta integrals are tanh-sinh, split where the
+//! cos(eta)) interpolated in the load's node variable through the nodes' (the load's
+//! barycentric weights): the basis in T follows gamma_T, and the coefficients of the solution
+//! vary smoothly with eta (checked in `row_fields_tests.rs` against an increment solved at that
+//! eta, `interpolated_increment_is_the_solved_one`). In `f64` the coefficients carry the frame's
+//! rounding noise (a floor of 1e-6 .. 1e-4 in the interpolated densities); in MPFR at the bits
+//! of the verified load they do not, and the fields converge with the nodes (docs/theory.md
+//! section 17.8, "The row's fields in MPFR"). The eta integrals are tanh-sinh, split where the
 //! point changes zone (eta = |chi|: the contact edge, (eta - |chi|)^(-1/2 + theta0); eta_s: the
 //! stick edge).
 //!
