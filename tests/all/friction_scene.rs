@@ -383,6 +383,21 @@ fn row_mpfr_answer_holds_its_verified_digits() {
     let finer = row_load_rate(0.5, 0.5, lambda, (16, 10), true).unwrap();
     let h = History::new(&finer, lambda, (0.5, 0.5), 10, true);
     let scale = 1.0 / std::f64::consts::PI; // E* k L/pi and k L/pi
+                                            // x/a = 1/2 in MPFR on 17 nodes, n = 12, 99 bits (`examples/row_fields_mpfr.rs`, docs/theory.md
+                                            // section 17.8 "The row's fields in MPFR"): within 2e-7 (scale 1) of the 14-node and the
+                                            // n = 16 runs; the f64 reference above is 1.7e-6 off at 14 nodes, n = 10
+    let mpfr_reference = [("psi", -0.21416345266701), ("q1", 0.14367252085766), ("q2", 0.39125202799282)];
+    for (name, t) in mpfr_reference {
+        let text = a.json[name][1][name].as_str().unwrap();
+        let d: f64 = a.json["accuracy"][name].as_str().unwrap().parse().unwrap();
+        let error = (text.parse::<f64>().unwrap() - t * scale).abs();
+        let claimed = 10f64.powf(-d) * scale + 0.5 * last_place(text);
+        println!(
+            "x/a 0.5 {name}: {text} ({d:.1}) against the MPFR reference {:.12e}: {error:.1e} <= {claimed:.1e}",
+            t * scale
+        );
+        assert!(error <= claimed + 2e-7 * scale, "{name}: {error:e} > {claimed:e} ({})", a.json);
+    }
     for (j, x) in [0.0, 0.5, 0.9].iter().enumerate() {
         let truth = h.fields(&(x * lambda), true);
         for (name, t) in [("psi", truth.psi), ("q1", truth.q1), ("q2", truth.q2)] {
