@@ -328,28 +328,9 @@ pub fn mpfr_answer(
         let xs: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
         let fl = spectral_punch_fields::verified(runs, &xs, digits_asked);
         let (stress, strain) = (Float::with_val(prec, &ek * &a), Float::with_val(prec, to_float(k, prec) * &a));
-        type Get = fn(&PointFields<Float>) -> &Float;
-        let all: [(&str, Get, f64, &Float); 3] = [
-            ("psi", |q| &q.psi, fl.digits.psi, &strain),
-            ("q1", |q| &q.q1, fl.digits.q1, &stress),
-            ("q2", |q| &q.q2, fl.digits.q2, &stress),
-        ];
-        for (name, get, agree, scale) in all {
-            // the runs' agreement on the field's scale, plus a's relative error times the field
-            let big = fl.points.iter().map(|q| get(q).to_f64().abs()).fold(0.0, f64::max);
-            let d = digits(10f64.powf(-agree) + rel_a * big);
-            let rows = fl
-                .points
-                .iter()
-                .zip(points)
-                .map(|(q, x)| FieldRow {
-                    x_over_a: exact_series::q_text(x),
-                    value: Measured::mpfr(Float::with_val(prec, get(q) * scale), scale, d),
-                })
-                .collect();
-            fields.push((name.to_string(), rows));
-            accuracy.push((name.to_string(), d));
-        }
+        let (rows, field_digits) = mpfr_field_rows(&fl, points, (&stress, &strain), rel_a);
+        fields = rows;
+        accuracy.extend(field_digits);
         let how = "the spectral method's two runs (the answer's increments); error: twice their difference";
         let inequalities = inequality_checks(&fl.checks, mpfr_inequality_means(how));
         checks.splice(0..0, inequalities);
@@ -371,6 +352,44 @@ pub fn mpfr_answer(
         tension_zones: None,
         warnings: Vec::new(),
     })
+}
+
+/// The fields psi, q1, q2 of two verified MPFR runs at the scene's `points` on their scales
+/// (`stress` for q1, q2; `strain` for psi; the runs' values are on the scale 1), each with the
+/// runs' agreement as its digits plus `rel_size` (the relative error of the size) times the
+/// field's largest value, and those digits per field for `accuracy` (the single punch's and the
+/// row's mpfr answers).
+#[allow(clippy::type_complexity)]
+pub(super) fn mpfr_field_rows(
+    fl: &spectral_punch_fields::VerifiedFields,
+    points: &[Exact],
+    (stress, strain): (&rug::Float, &rug::Float),
+    rel_size: f64,
+) -> (Vec<(String, Vec<FieldRow>)>, Vec<(String, f64)>) {
+    type Get = fn(&PointFields<rug::Float>) -> &rug::Float;
+    let all: [(&str, Get, f64, &rug::Float); 3] = [
+        ("psi", |q| &q.psi, fl.digits.psi, strain),
+        ("q1", |q| &q.q1, fl.digits.q1, stress),
+        ("q2", |q| &q.q2, fl.digits.q2, stress),
+    ];
+    let (mut fields, mut accuracy) = (Vec::new(), Vec::new());
+    for (name, get, agree, scale) in all {
+        // the runs' agreement on the field's scale, plus the size's relative error times the field
+        let big = fl.points.iter().map(|q| get(q).to_f64().abs()).fold(0.0, f64::max);
+        let d = digits(10f64.powf(-agree) + rel_size * big);
+        let rows = fl
+            .points
+            .iter()
+            .zip(points)
+            .map(|(q, x)| FieldRow {
+                x_over_a: exact_series::q_text(x),
+                value: Measured::mpfr(rug::Float::with_val(scale.prec(), get(q) * scale), scale, d),
+            })
+            .collect();
+        fields.push((name.to_string(), rows));
+        accuracy.push((name.to_string(), d));
+    }
+    (fields, accuracy)
 }
 
 /// What the three inequality checks of an mpfr answer mean, computed `how`.

@@ -30,19 +30,27 @@
 //! graded mesh, n = 20) against twice that method's own n = 10 / 20 difference.
 //!
 //! `--method mpfr` ([`row_mpfr_answer`]): P and c/a by the verified MPFR load of
-//! [`crate::adhesion::friction::spectral_row_load::verified_mpfr`] (two runs, their agreement
+//! [`crate::adhesion::friction::spectral_row_load::verified_mpfr_runs`] (two runs, their agreement
 //! printed as verified digits), given `half_width` only (under a given load lambda would need
 //! the verified load inverted: several such loads), at most [`MPFR_ROW_MAX_DIGITS`] digits (the
-//! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8).
+//! cost: about 4 min of CPU at 6 digits, lambda = 1.2; section 17.8). With points the two runs'
+//! node increments are full stick-edge roots (the fields are first order in the stick edge), and
+//! q1, q2, psi and the three inequality checks are superposed from each run
+//! ([`crate::adhesion::friction::row_fields::verified_row_fields`]): the fields' digits are where
+//! the runs agree, on the scales E* k L/pi and k L/pi, fewer than the load's (they converge with
+//! the load's nodes at the load's rate from a larger error; docs/theory.md section 17.8, "The
+//! row's fields in MPFR"), each check's error twice the runs' difference.
 
 use super::answer_friction::FRICTION_NOTE_ROW;
 use super::answer_friction::{
-    digits, field_column, finite_f64, inequality_checks, solvable_parabola, ESTIMATE_SAFETY, FIELD_SAFETY,
+    digits, field_column, finite_f64, inequality_checks, mpfr_field_rows, solvable_parabola, ESTIMATE_SAFETY,
+    FIELD_SAFETY,
 };
 use super::render::{AdhesionAnswer, DigitsKind, FieldRow, FrictionCheck, Measured, Provenance, StickSlip};
 use crate::adhesion::friction::fields::PointFields;
+use crate::adhesion::friction::real::Mp;
 use crate::adhesion::friction::row_f64::row_stick_ratio;
-use crate::adhesion::friction::row_fields::{row_fields, History, RowFieldsF64};
+use crate::adhesion::friction::row_fields::{row_fields, verified_row_fields, History, RowFieldsF64};
 use crate::adhesion::friction::spectral_row::{increment_f64, stick_ratio_f64};
 use crate::adhesion::friction::spectral_row_load::{load_rate, loads_below, LoadRate, NodeRule};
 use crate::error::Error;
@@ -78,10 +86,6 @@ pub const ANSWER_STICK: (usize, usize) = (12, 14);
 /// 2.2e-15 between n = 12 and 14 at 20 nodes, and `periodic`'s c/a at n = 10 .. 14 stays 1.2e-14
 /// .. 1.5e-14 from the verified one while the three agree to 3e-15 (section 17.8).
 const ANSWER_ROUNDING: f64 = 1e-13;
-
-/// The warning of an mpfr row answer given points (module doc).
-const NO_FIELDS: &str = "q1, q2 and psi at the points and the inequality checks of the periodic row are computed by \
-     the f64 method only (--method f64, 4-6 digits)";
 
 /// Relative error added to every field for the increments interpolated between the load's
 /// nodes: twice the largest measured density error of the interpolated increment against one
@@ -202,7 +206,7 @@ pub fn invert(
 
 /// The answer of the periodic row of parabolic punches with period `period` and friction
 /// `mu_exact` by `method`: f64 (module doc), or mpfr with `digits_asked` ([`row_mpfr_answer`]),
-/// with the fields at `points` (x/a in [0, 1]; f64 only).
+/// with the fields at `points` (x/a in [0, 1]).
 pub fn row_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
@@ -213,11 +217,7 @@ pub fn row_answer(
     refuse_method(method)?;
     crate::adhesion::points::check_points(points)?;
     if method == crate::scene::Method::Mpfr {
-        let mut answer = row_mpfr_answer(p, mu_exact, period, digits_asked)?;
-        if !points.is_empty() {
-            answer.warnings.push(NO_FIELDS.into());
-        }
-        return Ok(answer);
+        return row_mpfr_answer(p, mu_exact, period, digits_asked, points);
     }
     let k = solvable_parabola(p)?;
     let f = finite_f64;
@@ -343,21 +343,23 @@ fn row_checks(fl: &RowFieldsF64) -> Vec<FrictionCheck> {
         "superposed from the increments of the load on {} and {} nodes (the answer's); error: twice their difference",
         COARSE.0, FINE.0
     );
-    inequality_checks(
-        &fl.checks,
-        [
-            format!(
-                "max of |q1|/(mu q2) at x/c = 0.1 .. 0.9 and 1 - 10^-k (k = 2 .. 6) at the answer's contact: \
-                 Coulomb's inequality holds where it is <= 1 (it tends to 1 at the stick edge); {how}"
-            ),
-            format!("min q2 / max q2 at x/a = j/16 (j = 0 .. 15) and the points: >= 0 is no tension; {how}"),
-            format!(
-                "max over the load's nodes (the contacts of the loading history) and the slip zones c < x < a of the \
-                 slip rate du/dP2 (outward positive) over its largest magnitude: <= 0 is inward slip against \
-                 q1 = mu q2 sign(x) at every stage, no slip reversal; {how}"
-            ),
-        ],
-    )
+    inequality_checks(&fl.checks, check_means(&how))
+}
+
+/// What the row's three inequality checks mean, computed `how` (module doc).
+fn check_means(how: &str) -> [String; 3] {
+    [
+        format!(
+            "max of |q1|/(mu q2) at x/c = 0.1 .. 0.9 and 1 - 10^-k (k = 2 .. 6) at the answer's contact: \
+             Coulomb's inequality holds where it is <= 1 (it tends to 1 at the stick edge); {how}"
+        ),
+        format!("min q2 / max q2 at x/a = j/16 (j = 0 .. 15) and the points: >= 0 is no tension; {how}"),
+        format!(
+            "max over the load's nodes (the contacts of the loading history) and the slip zones c < x < a of the \
+             slip rate du/dP2 (outward positive) over its largest magnitude: <= 0 is inward slip against \
+             q1 = mu q2 sign(x) at every stage, no slip reversal; {how}"
+        ),
+    ]
 }
 
 /// The refusal of a method other than f64 and mpfr for the row (module doc).
@@ -379,14 +381,16 @@ fn refuse_method(method: crate::scene::Method) -> Result<(), Error> {
 pub const MPFR_ROW_MAX_DIGITS: u32 = 12;
 
 /// The answer of the row by the verified MPFR load (module doc): lambda = pi a/L from the exact
-/// half width, P2 = E* k (L/pi)^2 P and c = (c/a) a with the two runs' agreement as their digits.
+/// half width, P2 = E* k (L/pi)^2 P and c = (c/a) a with the two runs' agreement as their digits,
+/// and with `points` (x/a) the fields and checks of both runs.
 pub fn row_mpfr_answer(
     p: &AdhesionProblem,
     mu_exact: &Exact,
     period: &Exact,
     digits_asked: u32,
+    points: &[Exact],
 ) -> Result<AdhesionAnswer, Error> {
-    use crate::adhesion::friction::spectral_row_load::{finer_knobs, verified_mpfr};
+    use crate::adhesion::friction::spectral_row_load::{finer_knobs, verified_mpfr_runs};
     use crate::numerics::exact::to_float;
     use rug::Float;
     if digits_asked > MPFR_ROW_MAX_DIGITS {
@@ -423,14 +427,54 @@ pub fn row_mpfr_answer(
     answered_lambda(lam, a)?;
     let periodic = p.periodic_surface();
     let (beta, mu) = (to_float(&p.material().beta(), prec), to_float(mu_exact, prec));
-    let v = verified_mpfr(&beta, &mu, &lambda, periodic, digits_asked)?;
-    let unit = to_float(p.material().contact_modulus(), prec) * to_float(k, prec) / pi_over_l.square();
+    // with points the node roots are full (the fields are first order in the stick edge)
+    let (v, rates) = verified_mpfr_runs(&beta, &mu, &lambda, periodic, digits_asked, !points.is_empty())?;
+    let unit = to_float(p.material().contact_modulus(), prec) * to_float(k, prec)
+        / Float::with_val(prec, pi_over_l.square_ref());
     let p2 = Float::with_val(prec, &v.load * &unit);
     let c = Float::with_val(prec, &v.stick_ratio * &a_f);
     let (size_digits, stick_digits) = (v.load_digits, v.stick_digits);
     // a and lambda = pi a/L are exact inputs, rounded once at `prec`
     let exact = crate::numerics::accuracy::digits_cap_for_bits(prec);
-    let check = march_check(beta.to_f64(), mu.to_f64(), lam, periodic, v.stick_ratio.to_f64());
+    let mut checks = vec![march_check(beta.to_f64(), mu.to_f64(), lam, periodic, v.stick_ratio.to_f64())];
+    let mut accuracy = vec![("size".into(), size_digits), ("stick".into(), stick_digits)];
+    let (mut fields, mut warnings) = (Vec::new(), Vec::new());
+    if !points.is_empty() {
+        let histories: Vec<History<Mp>> = rates
+            .iter()
+            .zip(v.runs)
+            .map(|(rate, (_, n, bits))| {
+                let at = |x: &Float| Mp(Float::with_val(bits, x));
+                // the strain's nodes within 10^-(2 D + 8) of an edge left out (both runs alike: at
+                // most about 10^-(D + 4) of psi), above the working precision (about 2.2 D + 13
+                // digits at the knobs' bits: nearer, 1 - x loses every digit and psi is NaN)
+                History::new(rate, at(&lambda), (at(&beta), at(&mu)), n, periodic)
+                    .with_edge_cut(10f64.powi(-(2 * digits_asked as i32 + 8)))
+            })
+            .collect();
+        let xs: Vec<Float> = points.iter().map(|x| to_float(x, prec)).collect();
+        let fl = verified_row_fields(&histories[0], &histories[1], &xs);
+        // the fields' scales E* k L/pi and k L/pi (the runs' values are on the scale 1)
+        let strain = Float::with_val(prec, to_float(k, prec) / &pi_over_l);
+        let stress = Float::with_val(prec, &strain * to_float(p.material().contact_modulus(), prec));
+        let (rows, field_digits) = mpfr_field_rows(&fl, points, (&stress, &strain), 0.0);
+        let least = field_digits.iter().map(|(_, d)| *d).fold(f64::INFINITY, f64::min);
+        if least < digits_asked as f64 {
+            warnings.push(format!(
+                "q1, q2 and psi carry {least:.1} verified digits, fewer than the {digits_asked} asked: superposed from \
+                 the node increments interpolated in eta, they converge more slowly than P2 and c in the load's \
+                 discretisation (docs/theory.md section 17.8, \"The row's fields in MPFR\")"
+            ));
+        }
+        fields = rows;
+        accuracy.extend(field_digits);
+        let how = format!(
+            "superposed from the increments of the verified load's two runs on {} and {} nodes; error: twice their \
+             difference",
+            v.runs[0].0, v.runs[1].0
+        );
+        checks.splice(0..0, inequality_checks(&fl.checks, check_means(&how)));
+    }
     Ok(AdhesionAnswer {
         provenance: Provenance {
             method: "mpfr",
@@ -447,12 +491,12 @@ pub fn row_mpfr_answer(
             friction: exact_series::q_text(mu_exact),
             stick_half_width: Measured::mpfr(c, &a_f, stick_digits),
             note: FRICTION_NOTE_ROW,
-            checks: vec![check],
+            checks,
         }),
-        accuracy: vec![("size".into(), size_digits), ("stick".into(), stick_digits)],
-        fields: Vec::new(),
+        accuracy,
+        fields,
         tension_zones: None,
-        warnings: Vec::new(),
+        warnings,
     })
 }
 

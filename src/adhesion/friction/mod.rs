@@ -31,7 +31,8 @@
 //! `src/solve/answer_friction_row.rs`, docs/theory.md section 17.5): the single punch by f64 or by
 //! the spectral method in MPFR (`--method mpfr`, the fields too), the row by the spectral method
 //! in f64 and, given `half_width`, by its verified MPFR load (`spectral_row_load::verified_mpfr`;
-//! the row's fields in `f64` only).
+//! with points its two runs' node increments solved to full stick-edge roots and the fields
+//! superposed from each, `row_fields::verified_row_fields`).
 
 pub mod fields;
 pub mod increment_f64;

@@ -3,7 +3,7 @@
 //! code runs in both and the two runs can be compared digit by digit.
 //!
 //! Only what the method needs: the four operations, powers with a real exponent, sqrt, exp, ln,
-//! ln(1 + x), cos, sin, atan, pi, and literals at the precision of a given number
+//! ln(1 + x), cos, sin, tan, atan, pi, and literals at the precision of a given number
 //! ([`Real::lit`]). No equations of the physics here.
 //!
 //! In place, for the inner loops (an MPFR operation on owned values allocates, copies and frees;
@@ -66,6 +66,8 @@ pub trait Real:
     fn cos(&self) -> Self;
     /// The sine.
     fn sin(&self) -> Self;
+    /// The tangent.
+    fn tan(&self) -> Self;
     /// The arctangent.
     fn atan(&self) -> Self;
     /// pi at the precision of `self`.
@@ -123,6 +125,9 @@ impl Real for f64 {
     }
     fn sin(&self) -> f64 {
         f64::sin(*self)
+    }
+    fn tan(&self) -> f64 {
+        f64::tan(*self)
     }
     fn atan(&self) -> f64 {
         f64::atan(*self)
@@ -268,6 +273,9 @@ impl Real for Mp {
     }
     fn sin(&self) -> Mp {
         Mp(self.0.clone().sin())
+    }
+    fn tan(&self) -> Mp {
+        Mp(self.0.clone().tan())
     }
     fn atan(&self) -> Mp {
         Mp(self.0.clone().atan())

@@ -151,18 +151,39 @@ impl<T: Real> LoadRate<T> {
     /// The polynomial in the rule's variable through `values` at the nodes, evaluated at `e`
     /// (barycentric form).
     pub fn interpolate(&self, values: &[T], e: &T) -> T {
-        let zero = e.lit(0.0);
+        Self::interpolate_at(&self.terms(e), values)
+    }
+
+    /// The barycentric terms at `e`, w_j/(v(e) - v(eta_j)) and their sum, or `Err(j)` where `e`
+    /// is the node eta_j: what [`LoadRate::interpolate_at`] needs for any values at `e`.
+    pub fn terms(&self, e: &T) -> Result<(Vec<T>, T), usize> {
         if let Some(k) = self.nodes.iter().position(|x| x == e) {
-            return values[k].clone();
+            return Err(k);
         }
         let ve = self.rule.variable(e);
-        let (mut num, mut den) = (zero.clone(), zero);
-        for ((x, w), v) in self.nodes.iter().zip(&self.weights).zip(values) {
-            let t = w.clone() / (ve.clone() - self.rule.variable(x));
-            num = num + t.clone() * v.clone();
-            den = den + t;
+        let mut den = e.lit(0.0);
+        let terms = self
+            .nodes
+            .iter()
+            .zip(&self.weights)
+            .map(|(x, w)| {
+                let t = w.clone() / (ve.clone() - self.rule.variable(x));
+                den = den.clone() + t.clone();
+                t
+            })
+            .collect();
+        Ok((terms, den))
+    }
+
+    /// The interpolant through `values` from the [`LoadRate::terms`] at a point.
+    pub fn interpolate_at(terms: &Result<(Vec<T>, T), usize>, values: &[T]) -> T {
+        match terms {
+            Err(k) => values[*k].clone(),
+            Ok((terms, den)) => {
+                let num = terms.iter().zip(values).fold(den.lit(0.0), |num, (t, v)| num + t.clone() * v.clone());
+                num / den.clone()
+            }
         }
-        num / den
     }
 
     /// P'(eta) = tan(eta) F(eta).
@@ -332,6 +353,21 @@ pub fn verified_mpfr(
     periodic: bool,
     digits: u32,
 ) -> Result<VerifiedRowLoad, AdhesionError> {
+    Ok(verified_mpfr_runs(beta, mu, lambda, periodic, digits, false)?.0)
+}
+
+/// As [`verified_mpfr`], the two runs' [`LoadRate`]s kept (coarser, finer) for the row's fields
+/// (`row_fields::verified_row_fields`); with `full_roots` every node's stick edge is a full root
+/// to 10^-(`digits` + 4), as c/a's, not the stationary one: the fields are first order in it
+/// (docs/theory.md section 17.8, "The row's fields in MPFR").
+pub fn verified_mpfr_runs(
+    beta: &Float,
+    mu: &Float,
+    lambda: &Float,
+    periodic: bool,
+    digits: u32,
+    full_roots: bool,
+) -> Result<(VerifiedRowLoad, [LoadRate<Mp>; 2]), AdhesionError> {
     let lam = lambda.to_f64();
     let (b, m) = (beta.to_f64(), mu.to_f64());
     let theta0 = (b * m).atan() / std::f64::consts::PI;
@@ -340,36 +376,38 @@ pub fn verified_mpfr(
     let stick_ratio_f64 = if beta.is_zero() { 1.0 } else { physical_ratio(&at_lambda.gamma, &lam) };
     let node_rule = NodeRule::of_convention(periodic);
     let load_f64 = load_with(&lam, theta0, 12, node_rule, |e: &f64| increment_f64(b, m, *e, 10, periodic))?;
-    let run = |(nodes, n, bits): (usize, usize, u32)| -> Result<(Float, Float, f64), AdhesionError> {
+    let run = |(nodes, n, bits): (usize, usize, u32)| -> Result<(LoadRate<Mp>, Float, f64), AdhesionError> {
         let t = std::time::Instant::now();
         let args = (beta, mu, lambda);
         let at_node = |e: &Mp| {
             let eta = Float::with_val(bits, &e.0);
             let start = if beta.is_zero() { 0.5 } else { increment_f64(b, m, eta.to_f64(), 10, periodic)?.1.gamma };
             // the outside slope is stationary in the stick edge: half the digits suffice there
-            increment_mpfr_root((beta, mu, &eta), periodic, (n, bits, digits / 2 + 3), start, true)
+            let tol = if full_roots { digits + 4 } else { digits / 2 + 3 };
+            increment_mpfr_root((beta, mu, &eta), periodic, (n, bits, tol), start, !full_roots)
         };
-        let p = load_with(&Mp(Float::with_val(bits, lambda)), theta0, nodes, node_rule, at_node)?;
+        let p = load_rate(&Mp(Float::with_val(bits, lambda)), theta0, nodes, node_rule, at_node)?;
         if beta.is_zero() {
-            return Ok((p.0, Float::with_val(bits, 1), t.elapsed().as_secs_f64()));
+            return Ok((p, Float::with_val(bits, 1), t.elapsed().as_secs_f64()));
         }
         let (_, inc) = increment_mpfr(args, periodic, (n, bits, digits + 4), at_lambda.gamma)?;
         let ratio = physical_ratio(&inc.gamma, &Mp(Float::with_val(bits, lambda))).0;
-        Ok((p.0, ratio, t.elapsed().as_secs_f64()))
+        Ok((p, ratio, t.elapsed().as_secs_f64()))
     };
     let coarse = knobs(digits, beta.is_zero(), periodic);
     let fine = finer_knobs(digits, beta.is_zero(), periodic);
     let (p1, c1, s1) = run(coarse)?;
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
-    Ok(VerifiedRowLoad {
-        load_digits: agreement_mpfr(&p1, &p2, &p2, cap),
+    let load = VerifiedRowLoad {
+        load_digits: agreement_mpfr(&p1.load.0, &p2.load.0, &p2.load.0, cap),
         stick_digits: agreement_mpfr(&c1, &c2, &Float::with_val(64, 1), cap),
-        load: p2,
+        load: p2.load.0.clone(),
         stick_ratio: c2,
         load_f64,
         stick_ratio_f64,
         runs: [coarse, fine],
         seconds: [s1, s2],
-    })
+    };
+    Ok((load, [p1, p2]))
 }
