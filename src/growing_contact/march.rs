@@ -18,8 +18,9 @@
 //! by their values at the m right-Radau points (the zeros of (1 - u) P^(1,0)_(m-1)(u), u = 1
 //! included: collocation of a first-kind Volterra equation with a weakly singular kernel is stable
 //! with c_m = 1, Brunner 2004, section 6.2). At each of the m points both edge equations are
-//! imposed: 2m equations for the 2m values, solved by Newton (Jacobian by differences; the
-//! history enters only through gamma(lambda), by one difference per point), started from the
+//! imposed: 2m equations for the 2m values, solved by Newton (the block's own part of the Jacobian in
+//! closed form for the linear law, [`jacobian`], by differences in each value for a polynomial
+//! one; the history enters only through gamma(lambda), by one difference per point), started from the
 //! previous block's interpolant continued. The load P(eta) and, for a polynomial law, n(eta)
 //! follow from the exact integral of eta F in each block.
 //! Quadrature of the edge integral at lambda in block k:
@@ -45,6 +46,7 @@ use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use std::f64::consts::PI;
 
 mod fields;
+mod jacobian;
 
 /// Horner: sum_j p_j x^j (numpy order).
 fn poly(p: &[f64], x: f64) -> f64 {
@@ -490,7 +492,11 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
                 best = (rmax, x.clone());
             }
             if jac.is_none() {
-                jac = Some(jacobian(&mut mar, &x, &lambdas, &gammas, &r, &hist, &install)?);
+                jac = Some(if setting.constant_ratio() {
+                    jacobian::closed_form_jacobian(&mar, &x, &lambdas, &gammas, &hist)?
+                } else {
+                    jacobian_by_differences(&mut mar, &x, &lambdas, &gammas, &r, &hist, &install)?
+                });
                 install(&mut mar, &x);
             }
             let j = jac.as_ref().expect("set above");
@@ -590,9 +596,10 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
 }
 
 /// The Jacobian of the last block's residuals: the block's own part by forward differences in
-/// each value, the history's by one difference in gamma(lambda) per point.
+/// each value, the history's by one difference in gamma(lambda) per point (for polynomial laws,
+/// whose ratio n moves with the block's load; the linear law's is in closed form, [`jacobian`]).
 #[allow(clippy::too_many_arguments)]
-fn jacobian(
+fn jacobian_by_differences(
     mar: &mut March,
     x: &[f64],
     lambdas: &[f64],
