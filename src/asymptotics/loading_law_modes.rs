@@ -84,6 +84,7 @@ use screen::Screen;
 
 mod scan;
 mod screen;
+mod self_similar;
 
 type Q = num_rational::BigRational;
 
@@ -122,10 +123,16 @@ struct Node {
 
 impl Symbol {
     /// From the material constants and n = `ratio` at `prec` bits on `rule` (the self-similar
-    /// solution by [`law_coefficients`] with one term).
+    /// solution of order 0 by `self_similar`: f64, then MPFR Newton; where that does not converge,
+    /// by [`law_coefficients`] with one term).
     pub fn new(params: &AdhesionParamsMpfr, ratio: &Float, rule: &TanhSinh, prec: u32) -> Result<Self, Error> {
-        let e = law_coefficients(params, ratio, 1, rule, prec)?;
-        let (f0, g0) = (e.f[0].clone(), e.g[0].clone());
+        let (f0, g0) = match self_similar::self_similar(params, ratio, rule, prec) {
+            Some(v) => v,
+            None => {
+                let e = law_coefficients(params, ratio, 1, rule, prec)?;
+                (e.f[0].clone(), e.g[0].clone())
+            }
+        };
         let one_in = Complex::with_val(prec, (1, ratio));
         let eps = Float::with_val(prec, &params.eps);
         let mut nodes = Vec::with_capacity(rule.len());

@@ -166,15 +166,16 @@ fn values(mar: &March, inp: &Inputs, big_l: f64, xh: &[Exact]) -> Result<LawValu
     let psi_scale = 2.0 * inp.k * big_l / (PI * PI);
     let q_scale = inp.e_star * inp.k * big_l / (PI * PI);
     let mut points = Vec::with_capacity(xh.len());
-    for h in xh {
-        let x = c + l * f64_of(h);
-        let chi = x / l_over_pi;
+    let xs: Vec<f64> = xh.iter().map(|h| c + l * f64_of(h)).collect();
+    let chis: Vec<f64> = xs.iter().map(|x| x / l_over_pi).collect();
+    let integrals = mar.psi_hat_integrals(&chis)?;
+    for (((h, &x), &chi), integral) in xh.iter().zip(&xs).zip(&chis).zip(integrals) {
         let sigma = mar.sigma_hat(chi)? * q_scale;
         points.push(LawPointF64 {
             xh: h.clone(),
             x,
             psi: -psi_scale * mar.psi_hat(chi)?,
-            phi: -psi_scale * l_over_pi * mar.psi_hat_integral(chi)?,
+            phi: -psi_scale * l_over_pi * integral,
             q1: sigma.im,
             q2: sigma.re,
         });
