@@ -23,7 +23,7 @@
 //! unknown (the differences took two thirds of the f64 loading law's kernel evaluations on the
 //! shipped scene: 1.27 of 1.88 million in its two marches).
 
-use super::{poly, recedes, March};
+use super::{poly, recedes, HistoryNodes, March};
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel_f64::{KernelF64, Side, C64};
 
@@ -107,10 +107,10 @@ pub(super) fn closed_form_jacobian(
     lambdas: &[f64],
     gammas: &[f64],
     hist: &[[C64; 2]],
+    nodes: &[HistoryNodes],
 ) -> Result<nalgebra::DMatrix<f64>, AdhesionError> {
     let m = lambdas.len();
     let q = x.len();
-    let k = mar.blocks.len() - 1;
     let sides: &[Side] = if q == m { &[Side::Right] } else { &[Side::Right, Side::Left] };
     // Rows: (point, side); columns: the coefficients f_i, then g_i.
     let mut by_coefficient = nalgebra::DMatrix::zeros(q, q);
@@ -131,7 +131,7 @@ pub(super) fn closed_form_jacobian(
             if q > m {
                 // The history's dH/dgl by a difference in gl, and -G'(gl + s lambda).
                 let dgl = 1e-7 * lam.max(1e-300);
-                let hp = mar.history(side, lam, gammas[j] + dgl, k)?;
+                let hp = mar.history_at(&nodes[j], side, gammas[j] + dgl)?;
                 extra[row] = (hp.re - hist[j][i].re) / dgl - poly(&profile_slope, gammas[j] + side.sign() * lam);
             }
         }
@@ -187,8 +187,9 @@ mod tests {
             let x: Vec<f64> =
                 lambdas.iter().map(|l| b.p_prime(*l) / l).chain(lambdas.iter().map(|l| b.gamma(*l) / l)).collect();
             let gammas: Vec<f64> = lambdas.iter().map(|l| b.gamma(*l)).collect();
-            let (_, hist) = mar.residual(&lambdas, &gammas, None).unwrap();
-            let closed = closed_form_jacobian(&mar, &x, &lambdas, &gammas, &hist).unwrap();
+            let table: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.history_nodes(l, k)).collect();
+            let (_, hist) = mar.residual(&lambdas, &gammas, None, &table).unwrap();
+            let closed = closed_form_jacobian(&mar, &x, &lambdas, &gammas, &hist, &table).unwrap();
             let (start, h, load_start) = (b.start, b.h, mar.blocks[k - 1].load_at(b.start));
             let nodes = lambdas.len();
             let install = |mar: &mut March, x: &[f64]| {
@@ -204,7 +205,7 @@ mod tests {
                     xp[i] += sign * h;
                     install(mar, &xp);
                     let gp: Vec<f64> = lambdas.iter().zip(&xp[nodes..]).map(|(l, g)| l * g).collect();
-                    let (rp, _) = mar.residual(&lambdas, &gp, Some(&hist)).unwrap();
+                    let (rp, _) = mar.residual(&lambdas, &gp, Some(&hist), &table).unwrap();
                     for (c, v) in column.iter_mut().zip(rp) {
                         *c += sign * v / (2.0 * h);
                     }
