@@ -269,7 +269,14 @@ fn solve_law_f64_runs(
             });
         }
     }
-    let u = run(problem, xh, options)?;
+    // The nominal and check runs are independent: on two CPUs ([`crate::numerics::parallel`];
+    // serially inside another map's worker). Each run's result is its serial one; the nominal
+    // run's error comes first, as when the check ran after it.
+    let [u, v]: [Result<LawValuesF64, AdhesionError>; 2] =
+        crate::numerics::parallel::map(&[options, check], |_, o| run(problem, xh, o))
+            .try_into()
+            .unwrap_or_else(|_| unreachable!("parallel::map returns one result per item"));
+    let u = u?;
     // Below lambda = 1e-6 the marching's P2 and a lose every digit while its check run agrees with
     // it (issue 34, fuzzing: P2 off by a factor 2 at lambda = 4e-9 and 1e-8, claiming 13 digits):
     // beyond this method's reach.
@@ -284,7 +291,7 @@ fn solve_law_f64_runs(
                 .into(),
         });
     }
-    let v = run(problem, xh, check)?;
+    let v = v?;
     let cap = F64_DIGITS_CAP;
     // With the f64 round-off floor (issue 34): the check run does not see it.
     // The round-off floor grows with the march: 16 eps per node of every block (fuzzing saw 2400 eps
