@@ -190,19 +190,19 @@ impl KernelF64 {
     /// edge integrand; docs/theory.md section 8, Problem 2: the increment's i beta dP/L keeps v and
     /// u periodic).
     pub(crate) fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
-        self.increment_outside_with(side, d_near, eta, n, tilt, &self.eta_factors(eta, tilt))
+        self.increment_outside_with(&self.eta_factors(eta, tilt), side, d_near, eta, n, tilt)
     }
 
     /// [`Self::increment_outside`] with the factors of eta given ([`Self::eta_factors`] with
     /// the same `tilt`).
     pub(crate) fn increment_outside_with(
         &self,
+        f: &EtaFactors,
         side: Side,
         d_near: f64,
         eta: f64,
         n: f64,
         tilt: bool,
-        f: &EtaFactors,
     ) -> C64 {
         let mut k = self.outside_with(side, d_near, eta, f);
         if tilt {
@@ -230,7 +230,7 @@ impl KernelF64 {
     /// [`Self::increment_outside`] and its derivative in `d_near` (the closed-form Jacobian of the
     /// march, [`super::march`]): (1 + i n) (L K D_K + i beta R D_R) with D_K, D_R the log
     /// derivatives of L K ([`Self::outside_log_derivative`]) and of R.
-    pub(crate) fn increment_outside_with_derivative(
+    pub(crate) fn increment_with_derivative(
         &self,
         side: Side,
         d_near: f64,
@@ -331,7 +331,7 @@ mod tests {
         for (kern, tilt) in [(k, false), (k, true), (single, false)] {
             for side in [Side::Right, Side::Left] {
                 for d in [0.01, 0.3, 0.7] {
-                    let (v, dv) = kern.increment_outside_with_derivative(side, d, eta, 0.2, tilt);
+                    let (v, dv) = kern.increment_with_derivative(side, d, eta, 0.2, tilt);
                     assert!((v - kern.increment_outside(side, d, eta, 0.2, tilt)).norm() <= 1e-15 * v.norm());
                     let h = 1e-6 * d;
                     let fd = (kern.increment_outside(side, d + h, eta, 0.2, tilt)

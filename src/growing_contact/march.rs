@@ -18,10 +18,11 @@
 //! by their values at the m right-Radau points (the zeros of (1 - u) P^(1,0)_(m-1)(u), u = 1
 //! included: collocation of a first-kind Volterra equation with a weakly singular kernel is stable
 //! with c_m = 1, Brunner 2004, section 6.2). At each of the m points both edge equations are
-//! imposed: 2m equations for the 2m values, solved by Newton (the block's own part of the Jacobian in
-//! closed form for the linear law, [`jacobian`], by differences in each value for a polynomial
-//! one; the history enters only through gamma(lambda), by one difference per point), started from the
-//! previous block's interpolant continued. The load P(eta) and, for a polynomial law, n(eta)
+//! imposed: 2m equations for the 2m values, solved by Newton (the block's own part of the
+//! Jacobian in closed form for the linear law, module `jacobian`, by differences in each value for a
+//! polynomial one; the history enters only through gamma(lambda), by one difference per point;
+//! its nodes tabled once a block, module `history`), started from the previous block's interpolant
+//! continued. The load P(eta) and, for a polynomial law, n(eta)
 //! follow from the exact integral of eta F in each block.
 //! Quadrature of the edge integral at lambda in block k:
 //! - the earlier blocks by Gauss-Legendre on segments graded toward lambda (each segment no

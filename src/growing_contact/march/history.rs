@@ -70,7 +70,7 @@ impl March {
                 if d.is_nan() || d <= 0.0 {
                     return Err(recedes(side, lambda));
                 }
-                part += kernel.increment_outside_with(side, d, n.eta, n.ratio, tilt, &n.factors) * n.p_prime * n.weight;
+                part += kernel.increment_outside_with(&n.factors, side, d, n.eta, n.ratio, tilt) * n.p_prime * n.weight;
             }
             acc += part;
         }

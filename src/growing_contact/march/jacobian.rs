@@ -11,7 +11,7 @@
 //!   dQ/df_i = span sum_q w_q K_q eta_q T_i(u_q),
 //! and depends on g_i through d_q alone:
 //!   dQ/dg_i = span sum_q w_q K'(d_q) P'(eta_q) span c_q s [T_i(u_l) + eta_q D_i 2/h],
-//! K' the derivative in d ([`KernelF64::increment_outside_with_derivative`]). The coefficients are
+//! K' the derivative in d ([`KernelF64::increment_with_derivative`]). The coefficients are
 //! the values' images under the block's Chebyshev matrix, so the columns of the values follow by
 //! one matrix product. The history's dH/dgl stays a difference in gl (one history per point and
 //! side, as before), and G(gl + s lambda) adds -G'(gl + s lambda) to the column of Gm_j.
@@ -51,7 +51,7 @@ impl March {
             if d.is_nan() || d <= 0.0 {
                 return Err(recedes(side, lambda));
             }
-            let (kv, kd) = kern.increment_outside_with_derivative(side, d, eta, n, self.setting.tilt);
+            let (kv, kd) = kern.increment_with_derivative(side, d, eta, n, self.setting.tilt);
             chebyshev_values(uq, &mut tq);
             divided_differences(ul, &tq, &mut dd);
             let pp = b.p_prime(eta);
