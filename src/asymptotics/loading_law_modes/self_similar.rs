@@ -74,7 +74,7 @@ fn newton_f64(params: &AdhesionParamsMpfr, n: f64, rule: &TanhSinh) -> Option<(f
         let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
         let mut dx = [(r[0] * m[1][1] - m[0][1] * r[1]) / det, (m[0][0] * r[1] - r[0] * m[1][0]) / det];
         let mut halvings = 0;
-        while !((g - dx[1]).abs() < 1.0) {
+        while (g - dx[1]).is_nan() || (g - dx[1]).abs() >= 1.0 {
             halvings += 1;
             if halvings > 40 {
                 return None;
@@ -152,7 +152,8 @@ fn newton_mpfr(
         let dy = (Float::with_val(prec, &m[0][0] * &r[1]) - Float::with_val(prec, &r[0] * &m[1][0])) / &det;
         f -= &dx;
         g -= &dy;
-        if !(Float::with_val(prec, g.abs_ref()) < 1) {
+        let size_g = Float::with_val(prec, g.abs_ref());
+        if size_g.is_nan() || size_g >= 1 {
             return None;
         }
         let size = Float::with_val(prec, dx.abs_ref()).max(&Float::with_val(prec, dy.abs_ref()));
