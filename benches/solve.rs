@@ -19,12 +19,20 @@
 //!   the repeated solve measures a warm one; `_cold` empties that cache before each solve
 //!   (`gauss_jacobi_mpfr::clear_cache`, outside the timing), as one solve in a fresh process
 //!   computes it; the README states the whole process beside both.
+//! - `law_f64`: the loading law's f64 answer on the shipped scene `scenes/adhesion_loading_law.toml`
+//!   (nu = 0.3, n = 1/5, l/L = 1/6, its five points): `solve_law_f64` (the march and its check run,
+//!   on two CPUs where free, then psi, phi and the stresses at the points), and the problem's
+//!   mode exponent at 12 digits (`mode_exponent`, printed with every loading-law answer; `solve`
+//!   runs it on its own thread beside the march), each alone; issue 33 asks for the whole
+//!   answer in 20 ms (docs/performance.md, "The loading law", Round four).
 //!
 //! Run: `cargo bench --bench solve`
 
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
+use periodic_contact::asymptotics::loading_law_modes::{mode_exponent, MODE_DIGITS};
 use periodic_contact::asymptotics::sliding::sliding_expansion_with;
-use periodic_contact::model::SlidingProblem;
+use periodic_contact::loading_law::verified_f64::solve_law_f64;
+use periodic_contact::model::{OnPunchRow, SlidingProblem};
 use periodic_contact::numerics::evaluate::PreparedSeries;
 use periodic_contact::numerics::gauss_jacobi_mpfr::clear_cache;
 use periodic_contact::numerics::precision::precision_for;
@@ -90,5 +98,22 @@ fn mpfr_solve(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, f64_solve, series_eval, mpfr_solve);
+fn law_f64(c: &mut Criterion) {
+    let scene = parse_scene(include_str!("../scenes/adhesion_loading_law.toml")).expect("the shipped scene parses");
+    let SceneProblem::LoadingLaw(p) = scene.problem else { unreachable!("a loading-law scene") };
+    let points = scene.output.points.clone();
+    let s = solve_law_f64(&p, &points).expect("the scene solves");
+    assert!(s.digits.headline >= 12.0, "digits {:?}", s.digits);
+    let nu = p.material().poisson_ratio().clone();
+    let n = p.law().initial_ratio();
+    let mode = mode_exponent(&nu, &n, MODE_DIGITS).expect("the mode check runs");
+    assert!(mode.mu.is_none(), "no zero below MU_MAX at nu = 0.3, n = 1/5");
+    let mut g = c.benchmark_group("law_f64");
+    g.sample_size(20);
+    g.bench_function("adhesion_loading_law", |b| b.iter(|| solve_law_f64(black_box(&p), &points)));
+    g.bench_function("mode_exponent_12", |b| b.iter(|| mode_exponent(black_box(&nu), &n, MODE_DIGITS)));
+    g.finish();
+}
+
+criterion_group!(benches, f64_solve, series_eval, mpfr_solve, law_f64);
 criterion_main!(benches);

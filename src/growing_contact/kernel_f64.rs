@@ -55,6 +55,19 @@ pub struct KernelF64 {
     pub single: bool,
 }
 
+/// The factors of the increment's slope outside that depend on the earlier contact's half-length
+/// eta alone ([`KernelF64::eta_factors`]; the march evaluates many distances at one eta): cosh
+/// and sinh of -2 eps eta (cos(chi' - 2 i eps eta) = cos chi' cosh - i sin chi' sinh), cos eta and
+/// the rotation's (A, B). The same operations as without them: the values are bit for bit those
+/// of [`KernelF64::increment_outside`].
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct EtaFactors {
+    cosh: f64,
+    sinh: f64,
+    cos_eta: f64,
+    tilt: (C64, C64),
+}
+
 /// r^(-1/2 + i e) for r > 0.
 fn power(r: f64, e: f64) -> C64 {
     C64::from_polar(1.0 / r.sqrt(), e * r.ln())
@@ -78,15 +91,30 @@ impl KernelF64 {
         }
     }
 
+    /// The factors of eta alone ([`EtaFactors`]); the rotation's only with `tilt` on the
+    /// periodic row.
+    pub(crate) fn eta_factors(&self, eta: f64, tilt: bool) -> EtaFactors {
+        let im = -2.0 * self.eps * eta;
+        let zero = C64::new(0.0, 0.0);
+        let tilt = if tilt && !self.single { self.tilt_coefficients(eta) } else { (zero, zero) };
+        EtaFactors { cosh: im.cosh(), sinh: im.sinh(), cos_eta: eta.cos(), tilt }
+    }
+
     /// L K at distance `d_near` > 0 from the nearer end of a contact of half-length `eta`, on
     /// `side` (module doc).
     pub fn outside(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+        self.outside_with(side, d_near, eta, &self.eta_factors(eta, false))
+    }
+
+    /// [`Self::outside`] with the factors of eta given.
+    fn outside_with(&self, side: Side, d_near: f64, eta: f64, f: &EtaFactors) -> C64 {
         let sg = side.sign();
         let d_far = d_near + 2.0 * eta;
         let (sn, sf) = (self.s(d_near), self.s(d_far));
         let chi = sg * (d_near + eta);
         let phase = C64::from_polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
-        self.cos_factor(chi, eta) * phase
+        let cos = if self.single { C64::new(1.0, 0.0) } else { C64::new(chi.cos() * f.cosh, -chi.sin() * f.sinh) };
+        cos * phase
     }
 
     /// d ln(L K)/d d_near at the same point: with C(d) = cot d (1/d for the single punch),
@@ -136,13 +164,18 @@ impl KernelF64 {
 
     /// The rotation's slope R outside (module doc); zero for the single punch.
     pub(crate) fn tilt_outside(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+        self.tilt_outside_with(side, d_near, eta, &self.eta_factors(eta, true))
+    }
+
+    /// [`Self::tilt_outside`] with the factors of eta given.
+    fn tilt_outside_with(&self, side: Side, d_near: f64, eta: f64, f: &EtaFactors) -> C64 {
         if self.single {
             return C64::new(0.0, 0.0);
         }
-        let (a, b) = self.tilt_coefficients(eta);
+        let (a, b) = f.tilt;
         let d_far = d_near + 2.0 * eta;
         let chi = side.sign() * (d_near + eta);
-        let cc = eta.cos() * chi.cos();
+        let cc = f.cos_eta * chi.cos();
         let (near, far) = (d_near.sin() / cc, d_far.sin() / cc);
         let (tp, tm) = match side {
             Side::Right => (far, near),
@@ -157,11 +190,64 @@ impl KernelF64 {
     /// edge integrand; docs/theory.md section 8, Problem 2: the increment's i beta dP/L keeps v and
     /// u periodic).
     pub(crate) fn increment_outside(&self, side: Side, d_near: f64, eta: f64, n: f64, tilt: bool) -> C64 {
-        let mut k = self.outside(side, d_near, eta);
+        self.increment_outside_with(&self.eta_factors(eta, tilt), side, d_near, eta, n, tilt)
+    }
+
+    /// [`Self::increment_outside`] with the factors of eta given ([`Self::eta_factors`] with
+    /// the same `tilt`).
+    pub(crate) fn increment_outside_with(
+        &self,
+        f: &EtaFactors,
+        side: Side,
+        d_near: f64,
+        eta: f64,
+        n: f64,
+        tilt: bool,
+    ) -> C64 {
+        let mut k = self.outside_with(side, d_near, eta, f);
         if tilt {
-            k += self.tilt_outside(side, d_near, eta) * C64::new(0.0, self.beta);
+            k += self.tilt_outside_with(side, d_near, eta, f) * C64::new(0.0, self.beta);
         }
         k * C64::new(1.0, n)
+    }
+
+    /// d ln R/d d_near of the rotation's slope outside (module doc), periodic row only: with
+    /// t = tan chi' and near, far = S(d_near), S(d_far) over cos eta cos chi',
+    ///   (-1/2 + i eps) d ln t_+ + (-1/2 - i eps) d ln t_- + s B (1 + t^2)/(A + B t),
+    /// d ln near = cot d_near + s t, d ln far = cot d_far + s t (t_+ = far right, near left).
+    fn tilt_outside_log_derivative(&self, side: Side, d_near: f64, eta: f64) -> C64 {
+        let (a, b) = self.tilt_coefficients(eta);
+        let sg = side.sign();
+        let t = (sg * (d_near + eta)).tan();
+        let (near, far) = (1.0 / d_near.tan() + sg * t, 1.0 / (d_near + 2.0 * eta).tan() + sg * t);
+        let (tp, tm) = match side {
+            Side::Right => (far, near),
+            Side::Left => (near, far),
+        };
+        C64::new(-0.5, self.eps) * tp + C64::new(-0.5, -self.eps) * tm + b * (sg * (1.0 + t * t)) / (a + b * t)
+    }
+
+    /// [`Self::increment_outside`] and its derivative in `d_near` (the closed-form Jacobian of the
+    /// march, [`super::march`]): (1 + i n) (L K D_K + i beta R D_R) with D_K, D_R the log
+    /// derivatives of L K ([`Self::outside_log_derivative`]) and of R.
+    pub(crate) fn increment_with_derivative(
+        &self,
+        side: Side,
+        d_near: f64,
+        eta: f64,
+        n: f64,
+        tilt: bool,
+    ) -> (C64, C64) {
+        let k = self.outside(side, d_near, eta);
+        let mut value = k;
+        let mut slope = k * self.outside_log_derivative(side, d_near, eta);
+        if tilt && !self.single {
+            let r = self.tilt_outside(side, d_near, eta) * C64::new(0.0, self.beta);
+            value += r;
+            slope += r * self.tilt_outside_log_derivative(side, d_near, eta);
+        }
+        let one_in = C64::new(1.0, n);
+        (value * one_in, slope * one_in)
     }
 
     /// The stress of the same increment on the contact: (1 + i n) (L sigma_flat + i beta rho).
@@ -239,6 +325,21 @@ mod tests {
                 single.outside_log_derivative(side, 0.3, 0.6),
                 kernel::outside_kernel_log_derivative(kernel::Row::Single, ms, &f(0.3), &f(0.6), &eps_m, PREC),
             );
+        }
+        // The increment's derivative in d_near against central differences (step 1e-6: their
+        // error about 1e-11 of the value), both rows, tilted or not, both sides.
+        for (kern, tilt) in [(k, false), (k, true), (single, false)] {
+            for side in [Side::Right, Side::Left] {
+                for d in [0.01, 0.3, 0.7] {
+                    let (v, dv) = kern.increment_with_derivative(side, d, eta, 0.2, tilt);
+                    assert!((v - kern.increment_outside(side, d, eta, 0.2, tilt)).norm() <= 1e-15 * v.norm());
+                    let h = 1e-6 * d;
+                    let fd = (kern.increment_outside(side, d + h, eta, 0.2, tilt)
+                        - kern.increment_outside(side, d - h, eta, 0.2, tilt))
+                        / (2.0 * h);
+                    assert!((dv - fd).norm() < 1e-8 * dv.norm(), "{side:?} {d} {tilt}: {dv} vs {fd}");
+                }
+            }
         }
         close(
             single.flat_stress(0.3, 0.9, 0.6),

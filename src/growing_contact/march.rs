@@ -18,9 +18,11 @@
 //! by their values at the m right-Radau points (the zeros of (1 - u) P^(1,0)_(m-1)(u), u = 1
 //! included: collocation of a first-kind Volterra equation with a weakly singular kernel is stable
 //! with c_m = 1, Brunner 2004, section 6.2). At each of the m points both edge equations are
-//! imposed: 2m equations for the 2m values, solved by Newton (Jacobian by differences; the
-//! history enters only through gamma(lambda), by one difference per point), started from the
-//! previous block's interpolant continued. The load P(eta) and, for a polynomial law, n(eta)
+//! imposed: 2m equations for the 2m values, solved by Newton (the block's own part of the
+//! Jacobian in closed form for the linear law, module `jacobian`, by differences in each value for a
+//! polynomial one; the history enters only through gamma(lambda), by one difference per point;
+//! its nodes tabled once a block, module `history`), started from the previous block's interpolant
+//! continued. The load P(eta) and, for a polynomial law, n(eta)
 //! follow from the exact integral of eta F in each block.
 //! Quadrature of the edge integral at lambda in block k:
 //! - the earlier blocks by Gauss-Legendre on segments graded toward lambda (each segment no
@@ -45,6 +47,10 @@ use crate::numerics::tanh_sinh::tanh_sinh_f64;
 use std::f64::consts::PI;
 
 mod fields;
+mod history;
+mod jacobian;
+
+use history::HistoryNodes;
 
 /// Horner: sum_j p_j x^j (numpy order).
 fn poly(p: &[f64], x: f64) -> f64 {
@@ -305,27 +311,33 @@ impl March {
         sing: f64,
         f: &mut dyn FnMut(f64) -> Result<C64, AdhesionError>,
     ) -> Result<C64, AdhesionError> {
+        let mut acc = C64::new(0.0, 0.0);
+        for (eta, w) in self.graded_nodes(lo, hi, sing) {
+            acc += f(eta)? * w;
+        }
+        Ok(acc)
+    }
+
+    /// The nodes and weights of [`Self::graded`], in its order of summation.
+    fn graded_nodes(&self, lo: f64, hi: f64, sing: f64) -> Vec<(f64, f64)> {
         let toward_hi = sing >= hi;
         let (mut a, mut b) = (lo, hi);
-        let mut acc = C64::new(0.0, 0.0);
-        let mut segment = |a: f64, b: f64, acc: &mut C64| -> Result<(), AdhesionError> {
+        let mut out = Vec::new();
+        let segment = |a: f64, b: f64, out: &mut Vec<(f64, f64)>| {
             let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-            for &(x, w) in &self.rules.gauss {
-                *acc += f(mid + half * x)? * (w * half);
-            }
-            Ok(())
+            out.extend(self.rules.gauss.iter().map(|&(x, w)| (mid + half * x, w * half)));
         };
         loop {
             let dist = if toward_hi { sing - b } else { a - sing };
             if b - a <= dist || dist <= 1e-13 * (hi - lo) {
-                segment(a, b, &mut acc)?;
-                return Ok(acc);
+                segment(a, b, &mut out);
+                return out;
             }
             if toward_hi {
-                segment(b - dist, b, &mut acc)?;
+                segment(b - dist, b, &mut out);
                 b -= dist;
             } else {
-                segment(a, a + dist, &mut acc)?;
+                segment(a, a + dist, &mut out);
                 a += dist;
             }
         }
@@ -338,19 +350,6 @@ impl March {
         }
         let n = self.ratio_in(b, eta);
         Ok(self.setting.kernel.increment_outside(side, d, eta, n, self.setting.tilt) * b.p_prime(eta))
-    }
-
-    /// The edge integral over the blocks before `upto` at the size lambda with gamma(lambda) = `gl`.
-    fn history(&self, side: Side, lambda: f64, gl: f64, upto: usize) -> Result<C64, AdhesionError> {
-        let sg = side.sign();
-        let mut acc = C64::new(0.0, 0.0);
-        for b in &self.blocks[..upto] {
-            acc += self.graded(b.start, b.end(), lambda, &mut |eta| {
-                let e = (gl - b.gamma(eta)) / (lambda - eta);
-                self.edge_term(b, side, (lambda - eta) * (1.0 + sg * e), eta, lambda)
-            })?;
-        }
-        Ok(acc)
     }
 
     /// The edge integral over (start, lambda) of block `k` (tanh-sinh in lambda - eta).
@@ -399,6 +398,7 @@ impl March {
         lambdas: &[f64],
         gammas: &[f64],
         with_history: Option<&[[C64; 2]]>,
+        nodes: &[HistoryNodes],
     ) -> Result<(Vec<f64>, Vec<[C64; 2]>), AdhesionError> {
         let k = self.blocks.len() - 1;
         let sides: &[Side] = if self.setting.symmetric() { &[Side::Right] } else { &[Side::Right, Side::Left] };
@@ -409,7 +409,7 @@ impl March {
             for (i, &side) in sides.iter().enumerate() {
                 h[i] = match with_history {
                     Some(hs) => hs[j][i],
-                    None => self.history(side, lam, gl, k)?,
+                    None => self.history_at(&nodes[j], side, gl)?,
                 };
                 let total = h[i] + self.partial(side, lam, k)?;
                 out.push((total.re - poly(&self.setting.profile, gl + side.sign() * lam)) / lam);
@@ -455,8 +455,10 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         let start = k as f64 * h;
         let lambdas: Vec<f64> = mar.rules.radau.iter().map(|u| start + h * (1.0 + u) / 2.0).collect();
         let load_start = mar.blocks.last().map_or(0.0, |b| b.load_at(start));
+        // The history's nodes at the block's points (the earlier blocks are final).
+        let nodes: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.history_nodes(l, k)).collect();
         // First guess: the previous block continued, or the symmetric single punch.
-        let mut x: Vec<f64> = match mar.blocks.last() {
+        let x: Vec<f64> = match mar.blocks.last() {
             Some(b) => {
                 let us: Vec<f64> = lambdas.iter().map(|l| b.u(*l)).collect();
                 us.iter().map(|u| cheb(&b.f, *u)).chain(us.iter().map(|u| cheb(&b.g, *u))).take(unknowns).collect()
@@ -473,65 +475,23 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
             }
         };
         install(&mut mar, &x);
-        let mut jac: Option<nalgebra::DMatrix<f64>> = None;
-        let mut previous = f64::INFINITY;
-        let mut done = false;
-        // Near round-off the corrections stall at the noise of the residual times the
-        // conditioning (small nu: ~1e-12); then the iterate of least residual is kept.
-        let mut best = (f64::INFINITY, x.clone());
-        let mut stalls = 0;
-        for _ in 0..40 {
-            mar.steps += 1;
-            let gammas: Vec<f64> =
-                if symmetric { vec![0.0; m] } else { lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect() };
-            let (r, hist) = mar.residual(&lambdas, &gammas, None)?;
-            let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
-            if rmax < best.0 {
-                best = (rmax, x.clone());
-            }
-            if jac.is_none() {
-                jac = Some(jacobian(&mut mar, &x, &lambdas, &gammas, &r, &hist, &install)?);
+        // The closed-form Jacobian (linear law); where its Newton fails, the block is solved again
+        // from the same start with the Jacobian by differences, as before the closed form (at
+        // small nu, where the homogeneous mode has grown, the two iterations end differently:
+        // nu = 0, n = 1/2, l/L = 1/8 stalls in 40 steps with the closed form, while the
+        // differences let the trailing end recede, the refusal that names the mode).
+        let closed = setting.constant_ratio();
+        let converged = match newton(&mut mar, x.clone(), &lambdas, &nodes, closed, &install) {
+            Ok(true) => true,
+            _ if closed => {
                 install(&mut mar, &x);
+                newton(&mut mar, x.clone(), &lambdas, &nodes, false, &install)?
             }
-            let j = jac.as_ref().expect("set above");
-            let delta =
-                j.clone().lu().solve(&nalgebra::DVector::from_column_slice(&r)).ok_or(AdhesionError::NotConverged {
-                    what: "loading-law march Newton",
-                    reason: "singular Jacobian".into(),
-                })?;
-            let size = delta.iter().fold(0f64, |a, v| a.max(v.abs()));
-            for (xi, d) in x.iter_mut().zip(delta.iter()) {
-                *xi -= d;
-            }
-            install(&mut mar, &x);
-            if !size.is_finite() {
-                break;
-            }
-            let scale = x.iter().fold(1f64, |a, v| a.max(v.abs()));
-            if size < 4e-15 * scale {
-                done = true;
-                break;
-            }
-            if size < 1e-9 * scale {
-                if size > 0.3 * previous {
-                    stalls += 1;
-                }
-                if stalls >= 3 {
-                    x = best.1.clone();
-                    install(&mut mar, &x);
-                    done = true;
-                    break;
-                }
-            } else if size > 0.1 * previous {
-                jac = None;
-            }
-            previous = size;
-        }
-        if !done {
-            return Err(AdhesionError::NotConverged {
-                what: "loading-law march Newton",
-                reason: format!("block {k} (lambda in [{start:.4}, {:.4}]): 40 steps", start + h),
-            });
+            Ok(false) => false,
+            Err(e) => return Err(e),
+        };
+        if !converged {
+            return Err(not_converged(k, start, h));
         }
         let blk = &mar.blocks[k];
         for &lam in lambdas.iter().chain([start + 0.5 * h / m as f64].iter()) {
@@ -589,20 +549,102 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
     })
 }
 
+fn not_converged(k: usize, start: f64, h: f64) -> AdhesionError {
+    AdhesionError::NotConverged {
+        what: "loading-law march Newton",
+        reason: format!("block {k} (lambda in [{start:.4}, {:.4}]): 40 steps", start + h),
+    }
+}
+
+/// Newton for the last block's values from `x` (at most 40 steps): Ok(true) converged (the
+/// block installed), Ok(false) not within 40 steps; with the closed-form Jacobian ([`jacobian`])
+/// or by differences.
+fn newton(
+    mar: &mut March,
+    mut x: Vec<f64>,
+    lambdas: &[f64],
+    nodes: &[HistoryNodes],
+    closed: bool,
+    install: &dyn Fn(&mut March, &[f64]),
+) -> Result<bool, AdhesionError> {
+    let m = lambdas.len();
+    let symmetric = x.len() == m;
+    let mut jac: Option<nalgebra::DMatrix<f64>> = None;
+    let mut previous = f64::INFINITY;
+    let mut done = false;
+    // Near round-off the corrections stall at the noise of the residual times the
+    // conditioning (small nu: ~1e-12); then the iterate of least residual is kept.
+    let mut best = (f64::INFINITY, x.clone());
+    let mut stalls = 0;
+    for _ in 0..40 {
+        mar.steps += 1;
+        let gammas: Vec<f64> =
+            if symmetric { vec![0.0; m] } else { lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect() };
+        let (r, hist) = mar.residual(lambdas, &gammas, None, nodes)?;
+        let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
+        if rmax < best.0 {
+            best = (rmax, x.clone());
+        }
+        if jac.is_none() {
+            jac = Some(if closed {
+                jacobian::closed_form_jacobian(mar, &x, lambdas, &gammas, &hist, nodes)?
+            } else {
+                jacobian_by_differences(mar, &x, lambdas, &gammas, &r, &hist, nodes, install)?
+            });
+            install(mar, &x);
+        }
+        let j = jac.as_ref().expect("set above");
+        let delta =
+            j.clone().lu().solve(&nalgebra::DVector::from_column_slice(&r)).ok_or(AdhesionError::NotConverged {
+                what: "loading-law march Newton",
+                reason: "singular Jacobian".into(),
+            })?;
+        let size = delta.iter().fold(0f64, |a, v| a.max(v.abs()));
+        for (xi, d) in x.iter_mut().zip(delta.iter()) {
+            *xi -= d;
+        }
+        install(mar, &x);
+        if !size.is_finite() {
+            break;
+        }
+        let scale = x.iter().fold(1f64, |a, v| a.max(v.abs()));
+        if size < 4e-15 * scale {
+            done = true;
+            break;
+        }
+        if size < 1e-9 * scale {
+            if size > 0.3 * previous {
+                stalls += 1;
+            }
+            if stalls >= 3 {
+                x = best.1.clone();
+                install(mar, &x);
+                done = true;
+                break;
+            }
+        } else if size > 0.1 * previous {
+            jac = None;
+        }
+        previous = size;
+    }
+    Ok(done)
+}
+
 /// The Jacobian of the last block's residuals: the block's own part by forward differences in
-/// each value, the history's by one difference in gamma(lambda) per point.
+/// each value, the history's by one difference in gamma(lambda) per point (for polynomial laws,
+/// whose ratio n moves with the block's load; the linear law's is in closed form, [`jacobian`]).
 #[allow(clippy::too_many_arguments)]
-fn jacobian(
+fn jacobian_by_differences(
     mar: &mut March,
     x: &[f64],
     lambdas: &[f64],
     gammas: &[f64],
     r: &[f64],
     hist: &[[C64; 2]],
+    nodes: &[HistoryNodes],
     install: &dyn Fn(&mut March, &[f64]),
 ) -> Result<nalgebra::DMatrix<f64>, AdhesionError> {
     let m = lambdas.len();
-    let k = mar.blocks.len() - 1;
     // x holds m values (symmetric: F only) or 2 m (F and Gm); as many equations.
     let q = x.len();
     let mut jac = nalgebra::DMatrix::zeros(q, q);
@@ -614,7 +656,7 @@ fn jacobian(
         let gp: Vec<f64> =
             if q == m { gammas.to_vec() } else { lambdas.iter().zip(&xp[m..]).map(|(l, g)| l * g).collect() };
         // The history at the unperturbed gamma: its dependence is added below.
-        let (rp, _) = mar.residual(lambdas, &gp, Some(hist))?;
+        let (rp, _) = mar.residual(lambdas, &gp, Some(hist), nodes)?;
         for row in 0..q {
             jac[(row, i)] = (rp[row] - r[row]) / step;
         }
@@ -624,7 +666,7 @@ fn jacobian(
             for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
                 let lam = lambdas[j];
                 let dg = 1e-7 * lam.max(1e-300);
-                let hp = mar.history(side, lam, gammas[j] + dg, k)?;
+                let hp = mar.history_at(&nodes[j], side, gammas[j] + dg)?;
                 // d(history)/d gamma times d gamma/d g (= lambda), over lambda.
                 jac[(2 * j + s, i)] += (hp.re - hist[j][s].re) / dg;
             }

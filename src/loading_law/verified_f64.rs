@@ -166,15 +166,16 @@ fn values(mar: &March, inp: &Inputs, big_l: f64, xh: &[Exact]) -> Result<LawValu
     let psi_scale = 2.0 * inp.k * big_l / (PI * PI);
     let q_scale = inp.e_star * inp.k * big_l / (PI * PI);
     let mut points = Vec::with_capacity(xh.len());
-    for h in xh {
-        let x = c + l * f64_of(h);
-        let chi = x / l_over_pi;
+    let xs: Vec<f64> = xh.iter().map(|h| c + l * f64_of(h)).collect();
+    let chis: Vec<f64> = xs.iter().map(|x| x / l_over_pi).collect();
+    let integrals = mar.psi_hat_integrals(&chis)?;
+    for (((h, &x), &chi), integral) in xh.iter().zip(&xs).zip(&chis).zip(integrals) {
         let sigma = mar.sigma_hat(chi)? * q_scale;
         points.push(LawPointF64 {
             xh: h.clone(),
             x,
             psi: -psi_scale * mar.psi_hat(chi)?,
-            phi: -psi_scale * l_over_pi * mar.psi_hat_integral(chi)?,
+            phi: -psi_scale * l_over_pi * integral,
             q1: sigma.im,
             q2: sigma.re,
         });
@@ -268,7 +269,14 @@ fn solve_law_f64_runs(
             });
         }
     }
-    let u = run(problem, xh, options)?;
+    // The nominal and check runs are independent: on two CPUs ([`crate::numerics::parallel`];
+    // serially inside another map's worker). Each run's result is its serial one; the nominal
+    // run's error comes first, as when the check ran after it.
+    let [u, v]: [Result<LawValuesF64, AdhesionError>; 2] =
+        crate::numerics::parallel::map(&[options, check], |_, o| run(problem, xh, o))
+            .try_into()
+            .unwrap_or_else(|_| unreachable!("parallel::map returns one result per item"));
+    let u = u?;
     // Below lambda = 1e-6 the marching's P2 and a lose every digit while its check run agrees with
     // it (issue 34, fuzzing: P2 off by a factor 2 at lambda = 4e-9 and 1e-8, claiming 13 digits):
     // beyond this method's reach.
@@ -283,7 +291,7 @@ fn solve_law_f64_runs(
                 .into(),
         });
     }
-    let v = run(problem, xh, check)?;
+    let v = v?;
     let cap = F64_DIGITS_CAP;
     // With the f64 round-off floor (issue 34): the check run does not see it.
     // The round-off floor grows with the march: 16 eps per node of every block (fuzzing saw 2400 eps

@@ -44,21 +44,53 @@ impl March {
     /// int_0^chi psi_hat(chi') d chi' = int_0^(eta_x) psi_hat(chi(eta)) (gamma'(eta) +- 1) d eta,
     /// Gauss-Legendre on each block's part (module doc).
     pub(crate) fn psi_hat_integral(&self, chi: f64) -> Result<f64, AdhesionError> {
-        let (side, eta_x) = self.entry(chi);
-        let sg = side.sign();
-        let mut acc = 0.0;
-        for b in &self.blocks {
-            let (lo, hi) = (b.start, b.end().min(eta_x));
-            if hi <= lo {
-                break;
+        Ok(self.psi_hat_integrals(&[chi])?[0])
+    }
+
+    /// [`Self::psi_hat_integral`] at each of `chis`: the terms of a block the point's entry
+    /// passed whole (the same Gauss nodes for every point entered through the same end) are
+    /// computed once per side and summed in the same order, so each value is the one
+    /// `psi_hat_integral` gives alone, bit for bit.
+    pub(crate) fn psi_hat_integrals(&self, chis: &[f64]) -> Result<Vec<f64>, AdhesionError> {
+        let mut whole: [Vec<Option<Vec<f64>>>; 2] = [vec![None; self.blocks.len()], vec![None; self.blocks.len()]];
+        let mut out = Vec::with_capacity(chis.len());
+        for &chi in chis {
+            let (side, eta_x) = self.entry(chi);
+            let sg = side.sign();
+            let terms = |b: &super::Block, lo: f64, hi: f64| -> Result<Vec<f64>, AdhesionError> {
+                let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+                self.rules
+                    .gauss
+                    .iter()
+                    .map(|&(x, w)| {
+                        let eta = mid + half * x;
+                        Ok(w * half * self.edge(side, eta)?.im * (b.gamma_slope(eta) + sg))
+                    })
+                    .collect()
+            };
+            let cache = &mut whole[usize::from(side == Side::Left)];
+            let mut acc = 0.0;
+            for (k, b) in self.blocks.iter().enumerate() {
+                let (lo, hi) = (b.start, b.end().min(eta_x));
+                if hi <= lo {
+                    break;
+                }
+                if hi == b.end() {
+                    if cache[k].is_none() {
+                        cache[k] = Some(terms(b, lo, hi)?);
+                    }
+                    for t in cache[k].iter().flatten() {
+                        acc += t;
+                    }
+                } else {
+                    for t in terms(b, lo, hi)? {
+                        acc += t;
+                    }
+                }
             }
-            let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-            for &(x, w) in &self.rules.gauss {
-                let eta = mid + half * x;
-                acc += w * half * self.edge(side, eta)?.im * (b.gamma_slope(eta) + sg);
-            }
+            out.push(acc);
         }
-        Ok(acc)
+        Ok(out)
     }
 
     /// The stress integrand at eta (block `b`) for the point at distance `near` from the end
