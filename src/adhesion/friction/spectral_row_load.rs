@@ -30,18 +30,18 @@
 //! P'(eta) at any eta, for the row's fields of `row_fields.rs`); [`loads_below`]: P at several
 //! lambdas from one collocation (the report's map with friction).
 //!
-//! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/1.0 + 2 nodes in `paper`'s
-//! eta^2, digits/0.7 + 2 in `periodic`'s eta, n = digits + 4 polynomials per family,
+//! [`verified_mpfr`]: two runs, (N, n, B) from [`knobs`] (N = digits/0.7 + 2 nodes, in `paper`'s
+//! eta^2 and `periodic`'s eta, n = digits + 4 polynomials per family,
 //! B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in [`super::spectral_row`]) and
 //! (N + 3, n + 4, B + 24); the printed digits are where they agree (P relative, c/a on the scale
-//! 1). Each node's stick edge is a secant search from the `f64` root
-//! stopped once its error is below 10^-(digits/2 + 3) ([`root_mpfr_stationary`], three solves): the
-//! outside slope is stationary in the stick edge at its root (`spectral_row_tests.rs`,
-//! `outside_slope_is_stationary_in_the_stick_edge`), so its error is that squared. c/a at lambda
-//! is a full root ([`increment_mpfr`]). beta = 0 takes N = 2 and 4 (F constant).
-//! Cost (section 17.8): one MPFR increment solve is most of a node (profile: MPFR arithmetic and
-//! its allocations in the collocation rows' quadrature); 20 digits need 22 and 25 nodes in
-//! `paper` (31 and 34 in `periodic`) at n = 24 and 28, about 140 solves: not run.
+//! 1), P's at most those its finer run's F resolves ([`LoadRate::tail_error`]: the agreement
+//! alone overclaimed at 20 digits, section 17.8). Each node's stick edge is a secant search from
+//! the `f64` root stopped once its error is below 10^-(digits/2 + 3) ([`root_mpfr_stationary`],
+//! three solves): the outside slope is stationary in the stick edge at its root
+//! (`spectral_row_tests.rs`, `outside_slope_is_stationary_in_the_stick_edge`), so its error is
+//! that squared. c/a at lambda is a full root ([`increment_mpfr`]). beta = 0 takes N = 2 and 4
+//! (F constant). Cost (section 17.8): one MPFR increment solve is most of a node (profile: MPFR
+//! arithmetic and its allocations in the collocation rows' quadrature).
 //!
 //! [`root_mpfr_stationary`]: super::spectral_punch::root_mpfr_stationary
 
@@ -145,6 +145,11 @@ pub struct LoadRate<T> {
     pub increments: Vec<RowIncrement<T>>,
     /// The variable of the interpolation.
     pub rule: NodeRule,
+    /// The estimated error of `load` from F's unresolved part: (|c_(N-2)| + |c_(N-1)|)
+    /// (-ln cos lambda), c_k the Chebyshev coefficients of F in the rule's variable through its
+    /// N node values (k >= 1), -ln cos lambda = int_0^lambda tan (section 17.8, "The verified
+    /// load's digits").
+    pub tail_error: T,
 }
 
 impl<T: Real> LoadRate<T> {
@@ -297,8 +302,20 @@ fn collocate<T: Real + Send + Sync>(
     };
     let below = lambdas.iter().map(at).collect();
     let p = at(lambda);
+    // F's last two Chebyshev coefficients, c_k = (2/N) sum_j F_j cos(k theta_j) (T_k at the
+    // nodes up to the sign (-1)^k, which the magnitudes drop)
+    let mut tail = zero.clone();
+    for k in nodes.saturating_sub(2).max(1)..nodes {
+        let mut c = zero.clone();
+        for (j, fj) in f.iter().enumerate() {
+            let th = pi.clone() * lambda.lit(((2 * j + 1) * k) as f64) / (lambda.lit(2.0) * nf.clone());
+            c = c + th.cos() * fj.clone();
+        }
+        tail = tail + (c * lambda.lit(2.0) / nf.clone()).abs();
+    }
+    let tail_error = tail * -(lambda.cos().ln());
     let increments = incs.into_iter().map(|(inc, _)| inc).collect();
-    Ok((below, LoadRate { load: p, nodes: eta, weights: bary, values: f, increments, rule: node_rule }))
+    Ok((below, LoadRate { load: p, nodes: eta, weights: bary, values: f, increments, rule: node_rule, tail_error }))
 }
 
 /// The row's load P and stick ratio c/a at one lambda with verified digits ([`verified_mpfr`]).
@@ -325,11 +342,12 @@ pub struct VerifiedRowLoad {
 /// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc) in the convention's
 /// node rule ([`NodeRule::of_convention`]); the finer run adds (3, 4, 24). beta = 0 needs 2 nodes
 /// (F is the constant pi, section 17.8).
-pub fn knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
-    // measured at lambda = 1.2, 128 bits (section 17.8): successive node counts differ by a
-    // factor of about 10^0.7 per node in eta (`periodic`) and 10^1.05 in eta^2 (`paper`)
-    // (heuristic rates: the second run checks them)
-    let per_node = if periodic { 0.7 } else { 1.0 };
+pub fn knobs(digits: u32, incompressible: bool, _periodic: bool) -> (usize, usize, u32) {
+    // measured at lambda = 1.2 (section 17.8): successive node counts differ by a factor of
+    // about 10^0.7 per node in eta (`periodic`); in eta^2 (`paper`) P converges by 10^1.05 but
+    // F's Chebyshev coefficients, whose tail bounds the claim, by 10^0.7 (heuristic rates: the
+    // second run and the tail check them)
+    let per_node = 0.7;
     let nodes = if incompressible { 2 } else { (digits as f64 / per_node).ceil() as usize + 2 };
     let n = digits as usize + 4;
     let bits = (3.33 * (digits as f64 + 4.0 + 1.2 * n as f64) + 16.0).ceil() as u32;
@@ -341,6 +359,17 @@ pub fn knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize
 pub fn finer_knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
     let (nodes, n, bits) = knobs(digits, incompressible, periodic);
     (nodes + if incompressible { 2 } else { 3 }, n + 4, bits + 24)
+}
+
+/// The digits of a load that F's unresolved part leaves, -log10(tail_error/|P|) (section 17.8,
+/// "The verified load's digits": the two runs' agreement alone overclaimed at 20 digits).
+fn tail_digits(rate: &LoadRate<Mp>) -> f64 {
+    let rel = Float::with_val(64, &rate.tail_error.0 / &rate.load.0).abs().to_f64();
+    if rel > 0.0 {
+        -rel.log10()
+    } else {
+        f64::INFINITY
+    }
 }
 
 /// P(lambda) and c/a of the row in MPFR with verified digits (module doc): two runs, the
@@ -400,7 +429,7 @@ pub fn verified_mpfr_runs(
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
     let load = VerifiedRowLoad {
-        load_digits: agreement_mpfr(&p1.load.0, &p2.load.0, &p2.load.0, cap),
+        load_digits: agreement_mpfr(&p1.load.0, &p2.load.0, &p2.load.0, cap).min(tail_digits(&p2)),
         stick_digits: agreement_mpfr(&c1, &c2, &Float::with_val(64, 1), cap),
         load: p2.load.0.clone(),
         stick_ratio: c2,
