@@ -53,7 +53,7 @@ use super::spectral::{Spectral, SpectralIncrement};
 use super::spectral_row::{increment_f64, increment_mpfr, increment_mpfr_root, physical_ratio};
 use super::spectral_row_slope::SlopeTable;
 use crate::growing_contact::error::AdhesionError;
-use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits};
+use crate::numerics::accuracy::{agreement_mpfr, digits_cap_for_bits, verified_digits_mpfr};
 use crate::numerics::parallel::map;
 
 /// The increment at contact eta: the method and the solved increment at its stick edge.
@@ -231,6 +231,7 @@ fn collocate<T: Real + Send + Sync>(
     // Chebyshev points of the first kind on (0, lambda) and their barycentric weights
     let mut eta = Vec::with_capacity(nodes);
     let mut bary = Vec::with_capacity(nodes);
+    let mut thetas = Vec::with_capacity(nodes);
     for j in 0..nodes {
         let th = pi.clone() * lambda.lit((2 * j + 1) as f64) / (lambda.lit(2.0) * nf.clone());
         let s = (th.clone() * lambda.lit(0.5)).sin();
@@ -241,6 +242,7 @@ fn collocate<T: Real + Send + Sync>(
         });
         let sign = if j % 2 == 0 { one.clone() } else { -one.clone() };
         bary.push(sign * th.sin());
+        thetas.push(th);
     }
     let incs: Vec<(RowIncrement<T>, SlopeTable<T>)> = map(&eta, |_, e| {
         increment_at(e).map(|(sp, inc)| {
@@ -307,9 +309,8 @@ fn collocate<T: Real + Send + Sync>(
     let mut tail = zero.clone();
     for k in nodes.saturating_sub(2).max(1)..nodes {
         let mut c = zero.clone();
-        for (j, fj) in f.iter().enumerate() {
-            let th = pi.clone() * lambda.lit(((2 * j + 1) * k) as f64) / (lambda.lit(2.0) * nf.clone());
-            c = c + th.cos() * fj.clone();
+        for (th, fj) in thetas.iter().zip(&f) {
+            c = c + (th.clone() * lambda.lit(k as f64)).cos() * fj.clone();
         }
         tail = tail + (c * lambda.lit(2.0) / nf.clone()).abs();
     }
@@ -339,10 +340,10 @@ pub struct VerifiedRowLoad {
     pub seconds: [f64; 2],
 }
 
-/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc) in the convention's
-/// node rule ([`NodeRule::of_convention`]); the finer run adds (3, 4, 24). beta = 0 needs 2 nodes
+/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc), the same in both
+/// conventions' node rules ([`NodeRule::of_convention`]); the finer run adds (3, 4, 24). beta = 0 needs 2 nodes
 /// (F is the constant pi, section 17.8).
-pub fn knobs(digits: u32, incompressible: bool, _periodic: bool) -> (usize, usize, u32) {
+pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
     // measured at lambda = 1.2 (section 17.8): successive node counts differ by a factor of
     // about 10^0.7 per node in eta (`periodic`); in eta^2 (`paper`) P converges by 10^1.05 but
     // F's Chebyshev coefficients, whose tail bounds the claim, by 10^0.7 (heuristic rates: the
@@ -356,20 +357,9 @@ pub fn knobs(digits: u32, incompressible: bool, _periodic: bool) -> (usize, usiz
 
 /// The knobs of the finer (second) run: [`knobs`] plus (3, 4, 24), (2, 4, 24) at beta = 0; the
 /// inputs of [`verified_mpfr`] need at least its bits.
-pub fn finer_knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
-    let (nodes, n, bits) = knobs(digits, incompressible, periodic);
+pub fn finer_knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
+    let (nodes, n, bits) = knobs(digits, incompressible);
     (nodes + if incompressible { 2 } else { 3 }, n + 4, bits + 24)
-}
-
-/// The digits of a load that F's unresolved part leaves, -log10(tail_error/|P|) (section 17.8,
-/// "The verified load's digits": the two runs' agreement alone overclaimed at 20 digits).
-fn tail_digits(rate: &LoadRate<Mp>) -> f64 {
-    let rel = Float::with_val(64, &rate.tail_error.0 / &rate.load.0).abs().to_f64();
-    if rel > 0.0 {
-        -rel.log10()
-    } else {
-        f64::INFINITY
-    }
 }
 
 /// P(lambda) and c/a of the row in MPFR with verified digits (module doc): two runs, the
@@ -423,13 +413,19 @@ pub fn verified_mpfr_runs(
         let ratio = physical_ratio(&inc.gamma, &Mp(Float::with_val(bits, lambda))).0;
         Ok((p, ratio, t.elapsed().as_secs_f64()))
     };
-    let coarse = knobs(digits, beta.is_zero(), periodic);
-    let fine = finer_knobs(digits, beta.is_zero(), periodic);
+    let coarse = knobs(digits, beta.is_zero());
+    let fine = finer_knobs(digits, beta.is_zero());
     let (p1, c1, s1) = run(coarse)?;
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
     let load = VerifiedRowLoad {
-        load_digits: agreement_mpfr(&p1.load.0, &p2.load.0, &p2.load.0, cap).min(tail_digits(&p2)),
+        // at most the digits F's unresolved part leaves (section 17.8, "The verified load's
+        // digits": the two runs' agreement alone overclaimed at 20 digits)
+        load_digits: agreement_mpfr(&p1.load.0, &p2.load.0, &p2.load.0, cap).min(verified_digits_mpfr(
+            &p2.tail_error.0,
+            &p2.load.0,
+            cap,
+        )),
         stick_digits: agreement_mpfr(&c1, &c2, &Float::with_val(64, 1), cap),
         load: p2.load.0.clone(),
         stick_ratio: c2,
