@@ -334,7 +334,7 @@ fn verified_load_at_lambda_1_2() {
 }
 
 /// The load's tail estimate (`LoadRate::tail_error`) never falls below the error it estimates,
-/// and is at most 3e4 times it (measured 85 .. 7600: P converges faster than F's coefficients):
+/// and is at most 3e4 times it (measured 118 .. 7600: P converges faster than F's coefficients):
 /// `f64` loads at nu = 0, mu = 1/2, lambda = 1.2 (n = 8) on N = 4, 6, 8 nodes against N = 14,
 /// both conventions (section 17.8, "The verified load's digits").
 #[test]
