@@ -154,6 +154,7 @@ impl LawCollocation {
         let inc = &self.inc;
         let x0 = Float::with_val(p, Float::with_val(p, &eta_x / &self.lambda_max) * 2u32) - 1u32;
         let dd0 = divided_difference_series(&self.gam, &x0, p);
+        let zero = Float::with_val(p, 0);
         let mut acc = Complex::new(p);
         for q in 0..rule.len() {
             let (s, w) = (&rule.s[q], &rule.w[q]);
@@ -171,7 +172,8 @@ impl LawCollocation {
                 Side::Left => (near, far),
             };
             let t = Float::with_val(p, &eta / &self.lambda_max);
-            let n = inc.ratio_at(&self.load_at(&t));
+            // n = N'(P2(eta)); the load along the loading only where the law is not linear.
+            let n = if inc.constant_ratio() { inc.ratio_at(&zero) } else { inc.ratio_at(&self.load_at(&t)) };
             let one_in = Complex::with_val(p, (1, &n));
             let mut sigma =
                 flat_punch_stress(inc.row, &d_left, &d_right, &eta, &inc.eps, &inc.cosh_pi_eps, p) * &one_in;

@@ -1,7 +1,9 @@
 //! Chebyshev interpolation on tau in [0, 1] (x = 2 tau - 1) in MPFR: nodes of the first kind,
-//! coefficients, Clenshaw evaluation, and the integral int_0^T.
+//! coefficients, Clenshaw evaluation, and the integral int_0^T. The coefficients' cosines are
+//! computed once per (n, precision) in a process ([`cosines`]: the same bits; test below).
 
 use rug::{Assign, Float};
+use std::sync::{Arc, Mutex};
 
 /// Chebyshev points of the first kind mapped to (0, 1): tau_i = (1 + cos(pi (i + 1/2)/n))/2.
 pub fn nodes(n: usize, prec: u32) -> Vec<Float> {
@@ -17,18 +19,54 @@ pub fn nodes(n: usize, prec: u32) -> Vec<Float> {
 /// Coefficients c_j of the interpolant sum_j c_j T_j(2 tau - 1) through values at [`nodes`].
 pub fn coefficients(values: &[Float], prec: u32) -> Vec<Float> {
     let n = values.len();
-    let pi = Float::with_val(prec, rug::float::Constant::Pi);
+    let cos = cosines(n, prec);
+    let mut product = Float::new(prec);
     (0..n)
         .map(|j| {
             let mut acc = Float::with_val(prec, 0);
-            for (i, v) in values.iter().enumerate() {
-                let ang = Float::with_val(prec, &pi * (j * (2 * i + 1)) as u32) / (2 * n) as u32;
-                acc += ang.cos() * v;
+            for (c, v) in cos[j * n..(j + 1) * n].iter().zip(values) {
+                // The product rounded, then the sum (no fused multiply-add).
+                product.assign(c * v);
+                acc += &product;
             }
             let scale = if j == 0 { 1u32 } else { 2u32 };
             acc * scale / n as u32
         })
         .collect()
+}
+
+/// The largest n whose [`cosines`] are kept (n^2 numbers a precision).
+const CACHED_COSINES: usize = 128;
+
+/// cos(a_ji), a_ji = pi j (2 i + 1)/(2 n) rounded as the product by pi then the quotient by 2 n
+/// (each to `prec` bits), for j, i < n (row j at j n): the matrix of [`coefficients`], which the
+/// loading law's residuals take at a few (n, prec) many times over (their 2 n^2 cosines were
+/// 2.8 % of its MPFR solve, all on the main thread). Kept for the process up to n =
+/// [`CACHED_COSINES`]: the same numbers as computing them anew.
+fn cosines(n: usize, prec: u32) -> Arc<Vec<Float>> {
+    type Table = ((usize, u32), Arc<Vec<Float>>);
+    static TABLES: Mutex<Vec<Table>> = Mutex::new(Vec::new());
+    let compute = || {
+        let pi = Float::with_val(prec, rug::float::Constant::Pi);
+        let mut out = Vec::with_capacity(n * n);
+        for j in 0..n {
+            for i in 0..n {
+                let ang = Float::with_val(prec, &pi * (j * (2 * i + 1)) as u32) / (2 * n) as u32;
+                out.push(ang.cos());
+            }
+        }
+        Arc::new(out)
+    };
+    if n > CACHED_COSINES {
+        return compute();
+    }
+    let mut tables = TABLES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some((_, t)) = tables.iter().find(|(key, _)| *key == (n, prec)) {
+        return t.clone();
+    }
+    let t = compute();
+    tables.push(((n, prec), t.clone()));
+    t
 }
 
 /// Clenshaw evaluation of sum_j c_j T_j(x).
@@ -106,6 +144,49 @@ pub fn integral(coeffs: &[Float], t_upper: &Float, prec: u32) -> Float {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The coefficients as computed before the table of [`cosines`]: each cosine anew.
+    fn coefficients_anew(values: &[Float], prec: u32) -> Vec<Float> {
+        let n = values.len();
+        let pi = Float::with_val(prec, rug::float::Constant::Pi);
+        (0..n)
+            .map(|j| {
+                let mut acc = Float::with_val(prec, 0);
+                for (i, v) in values.iter().enumerate() {
+                    let ang = Float::with_val(prec, &pi * (j * (2 * i + 1)) as u32) / (2 * n) as u32;
+                    acc += ang.cos() * v;
+                }
+                let scale = if j == 0 { 1u32 } else { 2u32 };
+                acc * scale / n as u32
+            })
+            .collect()
+    }
+
+    /// A deterministic pseudo-random number in (-1, 1) with `prec` significant bits.
+    fn random(state: &mut u64, prec: u32) -> Float {
+        let mut x = Float::with_val(prec, 0);
+        for _ in 0..prec.div_ceil(53) {
+            *state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            x += (*state >> 11) as f64;
+            x >>= 53;
+        }
+        if *state & 1 == 1 {
+            x = -x;
+        }
+        x
+    }
+
+    /// The coefficients from the kept cosines equal those with every cosine computed anew, bit
+    /// for bit, on the first call (table made) and the second (table read), and beyond the kept
+    /// sizes (n = 130); 107, 127 and 300 bits.
+    #[test]
+    fn coefficients_from_kept_cosines_equal_fresh_ones() {
+        let mut state = 7;
+        for (n, prec) in [(27, 107), (27, 107), (35, 127), (9, 300), (130, 64)] {
+            let values: Vec<Float> = (0..n).map(|_| random(&mut state, prec)).collect();
+            assert_eq!(coefficients(&values, prec), coefficients_anew(&values, prec), "n {n}, {prec} bits");
+        }
+    }
 
     #[test]
     fn chebyshev_interpolates_and_integrates_exp() {
