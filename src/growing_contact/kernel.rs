@@ -51,7 +51,7 @@ impl Row {
                 // and one sinh_cosh: a third of the complex cosine's cost).
                 let b = Float::with_val(prec, eps * eta) * 2u32;
                 let (sin, cos) = mp_rounded::sin_cos(&chi, prec);
-                let (sinh, cosh) = b.sinh_cosh(Float::new(prec));
+                let (sinh, cosh) = mp_rounded::sinh_cosh(&b, prec);
                 Complex::with_val(prec, (cos * cosh, sin * sinh))
             }
             Row::Single => Complex::with_val(prec, 1),
@@ -146,7 +146,7 @@ impl SizeFactors {
             sin_2eta = Float::with_val(prec, &sin_eta * &cos_eta) * 2u32;
             cos_2eta = 1u32 - Float::with_val(prec, sin_eta.square_ref()) * 2u32;
             let b = Float::with_val(prec, eps * eta) * 2u32;
-            (sinh_b, cosh_b) = b.sinh_cosh(Float::new(prec));
+            (sinh_b, cosh_b) = mp_rounded::sinh_cosh(&b, prec);
             sinh_2b = Float::with_val(prec, &sinh_b * &cosh_b) * 2u32;
             cosh_2b = Float::with_val(prec, sinh_b.square_ref()) * 2u32 + 1u32;
         }

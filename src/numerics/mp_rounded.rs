@@ -1,54 +1,70 @@
-//! ln x and (sin x, cos x) correctly rounded to nearest, i.e. the same bits as MPFR's `ln` and
-//! `sin_cos` (which round correctly), in about a third of MPFR's time at 100-130 bits: for the
-//! kernels of the loading law's edge integrals (`growing_contact::kernel`), whose logarithm (by
-//! AGM) and sines were 31 % of its MPFR solve (docs/performance.md "The loading law", round five).
+//! ln x, (sin x, cos x) and (sinh x, cosh x) correctly rounded to nearest, i.e. the same bits as
+//! MPFR's `ln`, `sin_cos` and `sinh_cosh` (which round correctly), in less of MPFR's time at
+//! 100-130 bits: for the kernels of the loading law's edge integrals (`growing_contact::kernel`),
+//! whose logarithm (by AGM), sines and hyperbolic functions were 38 % of its MPFR solve
+//! (docs/performance.md "The loading law", round five).
 //!
-//! Method (Ziv's): the function at q = p + [`GUARD`] bits with a proven bound E on its error, then
+//! Method (Ziv's): the function at q >= p + [`GUARD`] bits ([`working`]: MPFR's fast paths end
+//! at 127 and 191 bits) with a proven bound E on its error, then
 //! the p-bit roundings to nearest of v - E (rounded down) and v + E (rounded up): when they agree,
 //! every number in between, the exact value included, rounds to that one (rounding is monotone);
 //! when they do not (v within E of a midpoint: about 2^-7 of the arguments for ln, fewer for the
 //! sines), MPFR's own function answers. So the result never differs from MPFR's.
-//! - ln x: `mp_elementary`'s table and series at q bits, within 2^13 ulp(q) of ln x (its
-//!   module doc: 2^11 from the cancellation in z, a few from the roundings); E = 2^24 ulp(q);
+//! - ln x: `mp_elementary`'s table and series at q bits, within 2^13 ulp(q) of ln x: the
+//!   table's and the product's roundings enter z = m e^(-j/1024) - 1 at 2^-q each, the sums add
+//!   0.35 2^-q and 2^-q |ln x|, and |ln x| >= 2^-11 where j or e is not 0 (where both are, z =
+//!   m - 1 is exact and only the series' few ulps remain); E = 2^14 ulp(q);
 //! - sin x, cos x for |x| <= 8: x = j/64 + r (j the nearest integer to 64 x, r exact at q bits,
 //!   |r| <= 2^-7), sin r and cos r by their Taylor series in r^2 (Horner, truncated below
 //!   2^-(q+4) relative), then sin x = sin a cos r + cos a sin r, cos x = cos a cos r - sin a sin r
 //!   with sin a, cos a (a = j/64) from a table made by MPFR at q bits. Errors: each table value
 //!   and rounding 2^-q, so sin r within 4 2^-q relative, cos r within 3 2^-q, and for j != 0 both
 //!   results within 7 2^-q absolute; E = 2^(-q+5) absolute (j != 0), 2^5 ulp(q) (j = 0, where
-//!   sin x = sin r keeps its relative accuracy for tiny x). Beyond |x| = 8, MPFR's.
+//!   sin x = sin r keeps its relative accuracy for tiny x). Beyond |x| = 8, MPFR's;
+//! - sinh x, cosh x the same way (the series' terms all positive, the table's sinh and cosh of
+//!   j/64, cosh a cosh r + sinh a sinh r), the absolute bounds scaled by cosh a: within
+//!   7 2^-q cosh a, E = 2^(-q+5) 2^e with cosh a < 2^e.
 //!
-//! Tests: both functions equal MPFR's bit for bit at 53-200 bits over arguments of all scales,
-//! the loading law's among them, with the share that needed MPFR's fallback reported.
+//! Tests: every function equals MPFR's bit for bit at 53-200 bits over arguments of all scales,
+//! the loading law's among them, with the share that needed MPFR's fallback bounded.
 
 use crate::numerics::mp_elementary;
 use rug::ops::DivFrom;
 use rug::{Assign, Float};
 use std::cell::RefCell;
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 
-/// Guard bits of the working precision over the result's.
-pub const GUARD: u32 = 32;
+/// The least guard bits of the working precision over the result's.
+pub const GUARD: u32 = 18;
+
+/// The working precision for `prec` bits: the end of MPFR's one-, two- or three-limb fast
+/// paths (63, 127, 191 bits) when it leaves [`GUARD`] bits, else `prec` + 32.
+pub fn working(prec: u32) -> u32 {
+    [63, 127, 191].into_iter().find(|q| *q >= prec + GUARD).unwrap_or(prec + 32)
+}
 
 /// Steps 2^-STEP of the sines' table.
 const STEP: i32 = 6;
 /// The sines' table covers |j| <= RANGE, |x| <= RANGE 2^-STEP = 8.
 const RANGE: i32 = 512;
 
-/// sin and cos of j/64 and the Taylor coefficients at one working precision q.
+/// sin and cos (or sinh and cosh) of j/64 and the Taylor coefficients at one working precision q.
 struct Trig {
     q: u32,
-    /// (sin, cos) of j 2^-STEP, j = -RANGE..=RANGE (index j + RANGE).
-    table: Vec<(Float, Float)>,
-    /// (-1)^k/(2k + 1)!, k = 0..=K.
+    /// Whether these are sinh and cosh.
+    hyperbolic: bool,
+    /// (sin, cos) or (sinh, cosh) of j 2^-STEP, j = -RANGE..=RANGE (index j + RANGE), each made
+    /// on its first use.
+    table: Vec<OnceLock<(Float, Float)>>,
+    /// (-1)^k/(2k + 1)!, k = 0..=K (1/(2k + 1)! for sinh).
     sin_coef: Vec<Float>,
-    /// (-1)^k/(2k)!, k = 0..=K.
+    /// (-1)^k/(2k)!, k = 0..=K (1/(2k)! for cosh).
     cos_coef: Vec<Float>,
 }
 
 impl Trig {
-    fn new(q: u32) -> Trig {
-        let table = (-RANGE..=RANGE).map(|j| (Float::with_val(q, j) >> STEP).sin_cos(Float::new(q))).collect();
+    fn new(q: u32, hyperbolic: bool) -> Trig {
+        let table = (-RANGE..=RANGE).map(|_| OnceLock::new()).collect();
         // |r|^2 <= 2^-13.9: the first omitted terms r2^(K+1)/(2K+2)! (cos) and r2^(K+1)/(2K+3)!
         // (sin over r) below 2^-(q+4).
         let mut k = 1usize;
@@ -62,7 +78,7 @@ impl Trig {
             if n > 0 {
                 fact *= n as u32;
             }
-            let sign = if (n / 2) % 2 == 0 { 1 } else { -1 };
+            let sign = if hyperbolic || (n / 2) % 2 == 0 { 1 } else { -1 };
             let c = Float::with_val(q, 1) / Float::with_val(q + 64, &fact) * sign;
             if n % 2 == 0 {
                 cos_coef.push(c);
@@ -70,7 +86,7 @@ impl Trig {
                 sin_coef.push(c);
             }
         }
-        Trig { q, table, sin_coef, cos_coef }
+        Trig { q, hyperbolic, table, sin_coef, cos_coef }
     }
 }
 
@@ -82,18 +98,19 @@ thread_local! {
     static LOCAL: RefCell<Vec<Arc<Trig>>> = const { RefCell::new(Vec::new()) };
 }
 
-fn trig(q: u32) -> Arc<Trig> {
+fn trig(q: u32, hyperbolic: bool) -> Arc<Trig> {
+    let key = |x: &Arc<Trig>| x.q == q && x.hyperbolic == hyperbolic;
     LOCAL.with(|t| {
         let mut t = t.borrow_mut();
-        if let Some(found) = t.iter().find(|x| x.q == q) {
+        if let Some(found) = t.iter().find(|x| key(x)) {
             return found.clone();
         }
         let made = {
             let mut shared = SHARED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-            match shared.iter().find(|x| x.q == q) {
+            match shared.iter().find(|x| key(x)) {
                 Some(found) => found.clone(),
                 None => {
-                    let made = Arc::new(Trig::new(q));
+                    let made = Arc::new(Trig::new(q, hyperbolic));
                     shared.push(made.clone());
                     made
                 }
@@ -133,11 +150,11 @@ fn rounded_within(v: &Float, k: i32, p: u32) -> Option<Float> {
 /// ln x rounded to nearest at `prec` bits: MPFR's `Float::with_val(prec, x.ln_ref())`, bit for
 /// bit (module doc).
 pub fn ln(x: &Float, prec: u32) -> Float {
-    let q = prec + GUARD;
+    let q = working(prec);
     if x.is_finite() && *x > 0 && *x != 1 && x.prec() <= q {
         let v = ln_q(x, &mp_elementary::tables(q));
         if let Some(exp) = v.get_exp() {
-            if let Some(out) = rounded_within(&v, exp - q as i32 + 24, prec) {
+            if let Some(out) = rounded_within(&v, exp - q as i32 + 14, prec) {
                 return out;
             }
         }
@@ -192,9 +209,9 @@ fn ln_q(x: &Float, tb: &mp_elementary::Tables) -> Float {
 /// (sin x, cos x) rounded to nearest at `prec` bits: MPFR's `sin_cos` of x at `prec` bits, bit
 /// for bit (module doc).
 pub fn sin_cos(x: &Float, prec: u32) -> (Float, Float) {
-    let q = prec + GUARD;
+    let q = working(prec);
     if x.is_finite() && !x.is_zero() && x.prec() <= q && x.to_f64().abs() <= 8.0 {
-        if let Some(pair) = sin_cos_q(x, &trig(q), prec) {
+        if let Some(pair) = sin_cos_q(x, &trig(q, false), prec) {
             return pair;
         }
     }
@@ -204,7 +221,23 @@ pub fn sin_cos(x: &Float, prec: u32) -> (Float, Float) {
     (sin, cos)
 }
 
-/// [`sin_cos`] from the table, or None where either rounding is not decided (module doc).
+/// (sinh x, cosh x) rounded to nearest at `prec` bits: MPFR's `sinh_cosh` of x at `prec` bits,
+/// bit for bit (module doc).
+pub fn sinh_cosh(x: &Float, prec: u32) -> (Float, Float) {
+    let q = working(prec);
+    if x.is_finite() && !x.is_zero() && x.prec() <= q && x.to_f64().abs() <= 8.0 {
+        if let Some(pair) = sin_cos_q(x, &trig(q, true), prec) {
+            return pair;
+        }
+    }
+    let mut sinh = Float::new(prec);
+    let mut cosh = Float::new(prec);
+    (&mut sinh, &mut cosh).assign(x.sinh_cosh_ref());
+    (sinh, cosh)
+}
+
+/// [`sin_cos`] (or [`sinh_cosh`], by the table's kind) from the table, or None where either
+/// rounding is not decided (module doc).
 fn sin_cos_q(x: &Float, tb: &Trig, prec: u32) -> Option<(Float, Float)> {
     let q = tb.q;
     let j = (x.to_f64() * (1 << STEP) as f64).round() as i32;
@@ -236,15 +269,28 @@ fn sin_cos_q(x: &Float, tb: &Trig, prec: u32) -> Option<(Float, Float)> {
         let c = rounded_within(&cos_r, five, prec)?;
         return Some((s, c));
     }
-    let (sa, ca) = &tb.table[(j + RANGE) as usize];
-    // sin a cos r + cos a sin r, cos a cos r - sin a sin r: two products and a sum each.
+    let (sa, ca) = tb.table[(j + RANGE) as usize].get_or_init(|| {
+        let a = Float::with_val(q, j) >> STEP;
+        if tb.hyperbolic {
+            a.sinh_cosh(Float::new(q))
+        } else {
+            a.sin_cos(Float::new(q))
+        }
+    });
+    // sin a cos r + cos a sin r, cos a cos r -+ sin a sin r: two products and a sum each.
     let mut s = Float::with_val(q, sa * &cos_r);
     let mut t = Float::with_val(q, ca * &sin_r);
     s += &t;
     let mut c = Float::with_val(q, ca * &cos_r);
     t.assign(sa * &sin_r);
-    c -= &t;
-    Some((rounded_within(&s, five, prec)?, rounded_within(&c, five, prec)?))
+    if tb.hyperbolic {
+        c += &t;
+    } else {
+        c -= &t;
+    }
+    // The bound 2^5 2^-q scaled by cosh a (up to cosh 8 < 2^11) for the hyperbolic functions.
+    let bound = if tb.hyperbolic { five + ca.get_exp()? } else { five };
+    Some((rounded_within(&s, bound, prec)?, rounded_within(&c, bound, prec)?))
 }
 
 #[cfg(test)]
@@ -306,11 +352,37 @@ mod tests {
                 (&mut ws, &mut wc).assign(x.sin_cos_ref());
                 assert!(s == ws && s.is_sign_negative() == ws.is_sign_negative(), "sin {x} at {p}: {s} vs {ws}");
                 assert!(c == wc && c.is_sign_negative() == wc.is_sign_negative(), "cos {x} at {p}: {c} vs {wc}");
-                if x.clone().abs() <= 8 && x.prec() <= p + GUARD && sin_cos_q(x, &trig(p + GUARD), p).is_none() {
+                if x.clone().abs() <= 8 && x.prec() <= working(p) && sin_cos_q(x, &trig(working(p), false), p).is_none()
+                {
                     undecided += 1;
                 }
             }
             eprintln!("sin_cos at {p} bits: {undecided} of {} arguments by MPFR", args.len());
+            assert!(undecided * 50 < args.len(), "{undecided} of {}", args.len());
+        }
+    }
+
+    /// sinh and cosh equal MPFR's bit for bit at 53, 64, 107, 127, 128, 131 and 200 bits over
+    /// [`arguments`] and beyond the table (|x| = 9, 100); MPFR's fallback under 2 %.
+    #[test]
+    fn sinh_cosh_equal_mpfr_bit_for_bit() {
+        for p in [53u32, 64, 107, 127, 128, 131, 200] {
+            let mut args = arguments(p);
+            args.extend([9.0, -100.0, 1e-300].iter().map(|v| Float::with_val(p, *v)));
+            args.push(Float::with_val(40, 0.3));
+            let mut undecided = 0;
+            for x in &args {
+                let (s, c) = sinh_cosh(x, p);
+                let (mut ws, mut wc) = (Float::new(p), Float::new(p));
+                (&mut ws, &mut wc).assign(x.sinh_cosh_ref());
+                assert!(s == ws && s.is_sign_negative() == ws.is_sign_negative(), "sinh {x} at {p}: {s} vs {ws}");
+                assert!(c == wc, "cosh {x} at {p}: {c} vs {wc}");
+                if x.clone().abs() <= 8 && x.prec() <= working(p) && sin_cos_q(x, &trig(working(p), true), p).is_none()
+                {
+                    undecided += 1;
+                }
+            }
+            eprintln!("sinh_cosh at {p} bits: {undecided} of {} arguments by MPFR", args.len());
             assert!(undecided * 50 < args.len(), "{undecided} of {}", args.len());
         }
     }
@@ -336,7 +408,7 @@ mod tests {
                 args.push(Float::with_val(p, x.clone().square() * &x) * 2048u32 * 64u32 + 1u32);
             }
             args.extend([1.0, 0.0, -1.0].iter().map(|v| Float::with_val(p, *v)));
-            args.push(Float::with_val(p + GUARD + 10, 3.7));
+            args.push(Float::with_val(working(p) + 10, 3.7));
             for x in &args {
                 let got = ln(x, p);
                 let want = Float::with_val(p, x.ln_ref());
