@@ -153,10 +153,8 @@ pub fn ln(x: &Float, prec: u32) -> Float {
     let q = working(prec);
     if x.is_finite() && *x > 0 && *x != 1 && x.prec() <= q {
         let v = ln_q(x, &mp_elementary::tables(q));
-        if let Some(exp) = v.get_exp() {
-            if let Some(out) = rounded_within(&v, exp - q as i32 + 14, prec) {
-                return out;
-            }
+        if let Some(out) = v.get_exp().and_then(|exp| rounded_within(&v, exp - q as i32 + 14, prec)) {
+            return out;
         }
     }
     Float::with_val(prec, x.ln_ref())
@@ -210,10 +208,13 @@ fn ln_q(x: &Float, tb: &mp_elementary::Tables) -> Float {
 /// for bit (module doc).
 pub fn sin_cos(x: &Float, prec: u32) -> (Float, Float) {
     let q = working(prec);
-    if x.is_finite() && !x.is_zero() && x.prec() <= q && x.to_f64().abs() <= 8.0 {
-        if let Some(pair) = sin_cos_q(x, &trig(q, false), prec) {
-            return pair;
-        }
+    if x.is_finite()
+        && !x.is_zero()
+        && x.prec() <= q
+        && x.to_f64().abs() <= 8.0
+        && let Some(pair) = sin_cos_q(x, &trig(q, false), prec)
+    {
+        return pair;
     }
     let mut sin = Float::new(prec);
     let mut cos = Float::new(prec);
@@ -225,10 +226,13 @@ pub fn sin_cos(x: &Float, prec: u32) -> (Float, Float) {
 /// bit for bit (module doc).
 pub fn sinh_cosh(x: &Float, prec: u32) -> (Float, Float) {
     let q = working(prec);
-    if x.is_finite() && !x.is_zero() && x.prec() <= q && x.to_f64().abs() <= 8.0 {
-        if let Some(pair) = sin_cos_q(x, &trig(q, true), prec) {
-            return pair;
-        }
+    if x.is_finite()
+        && !x.is_zero()
+        && x.prec() <= q
+        && x.to_f64().abs() <= 8.0
+        && let Some(pair) = sin_cos_q(x, &trig(q, true), prec)
+    {
+        return pair;
     }
     let mut sinh = Float::new(prec);
     let mut cosh = Float::new(prec);
