@@ -20,6 +20,7 @@
 //! check K against the quadrature of [1.8] through it and its log derivatives against central
 //! differences.
 
+use crate::numerics::mp_rounded;
 use rug::{Assign, Complex, Float};
 
 /// The row: a periodic row (the kernels of the module doc, in chi = pi x/L), or the single punch
@@ -38,7 +39,7 @@ impl Row {
     /// sin z, or z for the single punch.
     fn sin(self, z: &Float, prec: u32) -> Float {
         match self {
-            Row::Periodic => Float::with_val(prec, z.sin_ref()),
+            Row::Periodic => mp_rounded::sin_cos(z, prec).0,
             Row::Single => Float::with_val(prec, z),
         }
     }
@@ -49,8 +50,8 @@ impl Row {
                 // cos(chi - i b) = cos chi cosh b + i sin chi sinh b, b = 2 eps eta (one sin_cos
                 // and one sinh_cosh: a third of the complex cosine's cost).
                 let b = Float::with_val(prec, eps * eta) * 2u32;
-                let (sin, cos) = chi.sin_cos(Float::new(prec));
-                let (sinh, cosh) = b.sinh_cosh(Float::new(prec));
+                let (sin, cos) = mp_rounded::sin_cos(&chi, prec);
+                let (sinh, cosh) = mp_rounded::sinh_cosh(&b, prec);
                 Complex::with_val(prec, (cos * cosh, sin * sinh))
             }
             Row::Single => Complex::with_val(prec, 1),
@@ -141,11 +142,11 @@ impl SizeFactors {
         let (mut sin_eta, mut cos_eta, mut sin_2eta, mut cos_2eta) = (zero(), one(), zero(), one());
         let (mut sinh_b, mut cosh_b, mut sinh_2b, mut cosh_2b) = (zero(), one(), zero(), one());
         if row == Row::Periodic {
-            (sin_eta, cos_eta) = Float::with_val(prec, eta).sin_cos(Float::new(prec));
+            (sin_eta, cos_eta) = mp_rounded::sin_cos(&Float::with_val(prec, eta), prec);
             sin_2eta = Float::with_val(prec, &sin_eta * &cos_eta) * 2u32;
             cos_2eta = 1u32 - Float::with_val(prec, sin_eta.square_ref()) * 2u32;
             let b = Float::with_val(prec, eps * eta) * 2u32;
-            (sinh_b, cosh_b) = b.sinh_cosh(Float::new(prec));
+            (sinh_b, cosh_b) = mp_rounded::sinh_cosh(&b, prec);
             sinh_2b = Float::with_val(prec, &sinh_b * &cosh_b) * 2u32;
             cosh_2b = Float::with_val(prec, sinh_b.square_ref()) * 2u32 + 1u32;
         }
@@ -175,7 +176,7 @@ impl SizeFactors {
         let prec = self.prec;
         let (sin_near, cos_near, sin_far, cos_far, sin_chi, cos_chi) = match self.row {
             Row::Periodic => {
-                let (sn, cn) = Float::with_val(prec, d_near).sin_cos(Float::new(prec));
+                let (sn, cn) = mp_rounded::sin_cos(&Float::with_val(prec, d_near), prec);
                 // a x + b y (sign +1) or a x - b y, each product and the sum rounded once, with
                 // one scratch value for the second product.
                 let mut scratch = Float::new(prec);
@@ -202,8 +203,7 @@ impl SizeFactors {
             }
         };
         // (sin d_far/sin d_near)^(+- i eps) = exp(+- i eps ln(ratio)).
-        let mut theta = Float::with_val(prec, &sin_far / &sin_near);
-        theta.ln_mut();
+        let mut theta = mp_rounded::ln(&Float::with_val(prec, &sin_far / &sin_near), prec);
         theta *= &self.eps;
         let mut mag = Float::with_val(prec, &sin_near * &sin_far);
         mag.sqrt_mut();
@@ -212,7 +212,7 @@ impl SizeFactors {
             theta = -theta;
             mag = -mag;
         }
-        let (sin_t, cos_t) = theta.sin_cos(Float::new(prec));
+        let (sin_t, cos_t) = mp_rounded::sin_cos(&theta, prec);
         let singular = Complex::with_val(prec, (cos_t, sin_t)) * mag;
         OutsidePoint { side, sin_near, cos_near, sin_far, cos_far, sin_chi, cos_chi, singular }
     }
@@ -281,9 +281,9 @@ pub fn flat_punch_stress(
     let (sp, sm) = (row.sin(d_left, prec), row.sin(d_right, prec));
     // sin^2 eta - sin^2 chi' = sin(eta + chi') sin(eta - chi').
     let mag = Float::with_val(prec, &sp * &sm).sqrt().recip() * cosh_pi_eps;
-    let theta = Float::with_val(prec, Float::with_val(prec, &sp / &sm).ln_ref()) * eps;
+    let theta = mp_rounded::ln(&Float::with_val(prec, &sp / &sm), prec) * eps;
     let cos = row.cos_shift(chi, eps, eta, prec);
-    let (sin_t, cos_t) = theta.sin_cos(Float::new(prec));
+    let (sin_t, cos_t) = mp_rounded::sin_cos(&theta, prec);
     let phase = Complex::with_val(prec, (cos_t, sin_t));
     cos * phase * mag
 }
@@ -444,10 +444,10 @@ impl TiltedPunch {
 
 /// r^(-1/2 + sign i eps) for r > 0.
 fn power(r: &Float, eps: &Float, sign: i32, prec: u32) -> Complex {
-    let ln = Float::with_val(prec, r.ln_ref());
+    let ln = mp_rounded::ln(r, prec);
     let mag = Float::with_val(prec, r.sqrt_ref()).recip();
     let theta = Float::with_val(prec, &ln * eps) * sign;
-    let (sin, cos) = theta.sin_cos(Float::new(prec));
+    let (sin, cos) = mp_rounded::sin_cos(&theta, prec);
     Complex::with_val(prec, (cos, sin)) * mag
 }
 

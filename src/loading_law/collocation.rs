@@ -101,6 +101,9 @@ pub(super) fn edge_integrals(
     let factors = |n: &Float| (Complex::with_val(prec, (1, n)), super::increment::periodic_factor(&inc.beta, n, prec));
     let constant = factors(&inc.ratio_at(&Float::with_val(prec, 0)));
     let mut clenshaw = chebyshev::Clenshaw::new(prec);
+    // Phi's and the divided difference's sums at every rule point ([`chebyshev::Series`]: the
+    // same bits as the MPFR loop).
+    let (phi_s, dd_s) = (chebyshev::Series::new(phi_c, prec), chebyshev::Series::new(&dd_c, prec));
     // Scratch values of the loop, assigned in place (each operation rounded once, as before).
     let [mut phi, mut dd, mut ts, mut xs, mut e, mut base, mut weight, mut d, mut eta] =
         std::array::from_fn(|_| Float::new(prec));
@@ -109,9 +112,9 @@ pub(super) fn edge_integrals(
         ts.assign(t * s);
         xs.assign(&ts * 2u32);
         xs -= 1u32;
-        clenshaw.evaluate_into(phi_c, &xs, &mut phi);
+        phi_s.evaluate_into(&xs, &mut phi, &mut clenshaw);
         // E = Gam(t) + s t DGam(t, s t); DGam in t is twice the divided difference in x.
-        clenshaw.evaluate_into(&dd_c, &xs, &mut dd);
+        dd_s.evaluate_into(&xs, &mut dd, &mut clenshaw);
         e.assign(&ts * &dd);
         e *= 2u32;
         e += &gam_t;

@@ -18,7 +18,7 @@ use super::collocation::LawCollocation;
 use super::increment::{divided_difference, divided_difference_series};
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel::{flat_punch_stress, Side, TiltedPunch};
-use crate::numerics::chebyshev;
+use crate::numerics::chebyshev::{self, Clenshaw, Series};
 use crate::numerics::gauss_jacobi_mpfr::gauss_jacobi;
 use crate::numerics::tanh_sinh::TanhSinh;
 use rug::{Complex, Float};
@@ -35,15 +35,17 @@ impl LawCollocation {
         self.at(&self.gam, &t) * eta
     }
 
-    /// (gamma(eta) - gamma(eta0))/(eta - eta0), accurate as eta -> eta0, with `dd0` the
-    /// [`divided_difference_series`] of Gam at x0 = 2 eta0/Lambda - 1.
-    fn centre_slope(&self, eta: &Float, eta0: &Float, dd0: &[Float]) -> Float {
+    /// (gamma(eta) - gamma(eta0))/(eta - eta0), accurate as eta -> eta0, at x = 2 eta/Lambda - 1,
+    /// with `gam` Gam's series and `dd0` the [`divided_difference_series`] of Gam at x0 = 2
+    /// eta0/Lambda - 1 (both [`Series`]: the bits of the MPFR Clenshaw loop).
+    fn centre_slope(&self, x: &Float, eta0: &Float, gam: &Series, dd0: &Series, scratch: &mut Clenshaw) -> Float {
         let p = self.prec;
-        let t = Float::with_val(p, eta / &self.lambda_max);
         // eta Gam(t) - eta0 Gam(t0) = (eta - eta0) Gam(t) + eta0 (Gam(t) - Gam(t0)).
-        let x = Float::with_val(p, &t * 2u32) - 1u32;
-        let dd = chebyshev::evaluate(dd0, &x, p) * 2u32 / &self.lambda_max;
-        self.at(&self.gam, &t) + dd * eta0
+        let (mut dd, mut g) = (Float::new(p), Float::new(p));
+        dd0.evaluate_into(x, &mut dd, scratch);
+        gam.evaluate_into(x, &mut g, scratch);
+        let dd = dd * 2u32 / &self.lambda_max;
+        g + dd * eta0
     }
 
     /// The side and the entry size eta_x of the point chi of the final contact (module doc), by
@@ -153,14 +155,19 @@ impl LawCollocation {
         }
         let inc = &self.inc;
         let x0 = Float::with_val(p, Float::with_val(p, &eta_x / &self.lambda_max) * 2u32) - 1u32;
-        let dd0 = divided_difference_series(&self.gam, &x0, p);
+        let dd0 = Series::new(&divided_difference_series(&self.gam, &x0, p), p);
+        let (gam, phi) = (Series::new(&self.gam, p), Series::new(&self.phi, p));
+        let mut scratch = Clenshaw::new(p);
+        let zero = Float::with_val(p, 0);
         let mut acc = Complex::new(p);
         for q in 0..rule.len() {
             let (s, w) = (&rule.s[q], &rule.w[q]);
             let h = Float::with_val(p, &span * s);
             let eta = Float::with_val(p, &eta_x + &h);
+            let t = Float::with_val(p, &eta / &self.lambda_max);
+            let x = Float::with_val(p, &t * 2u32) - 1u32;
             // Distance to the end that passed x: (eta - eta_x)(1 +- gamma slope).
-            let slope = self.centre_slope(&eta, &eta_x, &dd0);
+            let slope = self.centre_slope(&x, &eta_x, &gam, &dd0, &mut scratch);
             let near = match side {
                 Side::Right => Float::with_val(p, &h * Float::with_val(p, &slope + 1u32)),
                 Side::Left => Float::with_val(p, &h * Float::with_val(p, 1u32 - &slope)),
@@ -170,8 +177,8 @@ impl LawCollocation {
                 Side::Right => (far, near),
                 Side::Left => (near, far),
             };
-            let t = Float::with_val(p, &eta / &self.lambda_max);
-            let n = inc.ratio_at(&self.load_at(&t));
+            // n = N'(P2(eta)); the load along the loading only where the law is not linear.
+            let n = if inc.constant_ratio() { inc.ratio_at(&zero) } else { inc.ratio_at(&self.load_at(&t)) };
             let one_in = Complex::with_val(p, (1, &n));
             let mut sigma =
                 flat_punch_stress(inc.row, &d_left, &d_right, &eta, &inc.eps, &inc.cosh_pi_eps, p) * &one_in;
@@ -180,7 +187,9 @@ impl LawCollocation {
                 sigma += tilt.stress(&d_left, &d_right, &eta, &inc.eps, p)
                     * super::increment::periodic_factor(&inc.beta, &n, p);
             }
-            let dp = self.at(&self.phi, &t) * &eta;
+            let mut dp = Float::new(p);
+            phi.evaluate_into(&x, &mut dp, &mut scratch);
+            dp *= &eta;
             acc += sigma * Float::with_val(p, w * &dp);
         }
         acc * span

@@ -366,15 +366,50 @@ fn values(
     let psi_scale = Float::with_val(prec, &k * &l_over_pi) * 2u32 / &pi;
     let q_scale = Float::with_val(prec, &e_star * &k) * &l_over_pi / &pi;
     let phi_scale = Float::with_val(prec, &psi_scale * &l_over_pi);
-    // psi and sigma at the points on every CPU (one edge integral and one stress each); phi after,
-    // point by point, its Gauss–Legendre nodes on every CPU.
-    let located = crate::numerics::parallel::map(xh, |_, h| {
+    // psi and sigma at the points, the profile's stresses and the two ends: one map on every CPU
+    // (ends first, the largest items, so that the CPUs finish together); phi after, point by
+    // point, its Gauss–Legendre nodes on every CPU.
+    enum Job<'a> {
+        End(Side),
+        Point(&'a Exact),
+        Stress(&'a Exact),
+    }
+    enum Done {
+        End(Box<EndStress>),
+        Point(Float, Float, Float, Complex),
+        Stress(Float, Complex),
+    }
+    let jobs: Vec<Job> = [Job::End(Side::Right), Job::End(Side::Left)]
+        .into_iter()
+        .chain(xh.iter().map(Job::Point))
+        .chain(stress_xh.iter().map(Job::Stress))
+        .collect();
+    let at = |h: &Exact| {
         let x = Float::with_val(prec, &c + Float::with_val(prec, &l * to_float(h, prec)));
         let chi = Float::with_val(prec, &x / &l_over_pi);
-        let psi = -sol.psi_hat(&chi, &rule) * &psi_scale;
-        let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
-        (x, chi, psi, sigma)
+        (x, chi)
+    };
+    let done = crate::numerics::parallel::map(&jobs, |_, job| match job {
+        Job::End(side) => Done::End(Box::new(sol.end_stress(*side, &rule))),
+        Job::Point(h) => {
+            let (x, chi) = at(h);
+            let psi = -sol.psi_hat(&chi, &rule) * &psi_scale;
+            let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
+            Done::Point(x, chi, psi, sigma)
+        }
+        Job::Stress(h) => {
+            let (x, chi) = at(h);
+            Done::Stress(x, sol.sigma_hat(&chi, &rule) * &q_scale)
+        }
     });
+    let (mut ends, mut located, mut profile) = (Vec::new(), Vec::new(), Vec::new());
+    for d in done {
+        match d {
+            Done::End(e) => ends.push(*e),
+            Done::Point(x, chi, psi, sigma) => located.push((x, chi, psi, sigma)),
+            Done::Stress(x, sigma) => profile.push((x, sigma)),
+        }
+    }
     let mut points = Vec::with_capacity(xh.len());
     for (h, (x, chi, psi, sigma)) in xh.iter().zip(located) {
         let phi = -sol.psi_hat_integral(&chi, &rule, phi_nodes)? * &phi_scale;
@@ -382,12 +417,8 @@ fn values(
     }
     let stresses = stress_xh
         .iter()
-        .map(|h| {
-            let x = Float::with_val(prec, &c + Float::with_val(prec, &l * to_float(h, prec)));
-            let chi = Float::with_val(prec, &x / &l_over_pi);
-            let sigma: Complex = sol.sigma_hat(&chi, &rule) * &q_scale;
-            LawStress { xh: h.clone(), x, q1: sigma.imag().clone(), q2: sigma.real().clone() }
-        })
+        .zip(profile)
+        .map(|(h, (x, sigma))| LawStress { xh: h.clone(), x, q1: sigma.imag().clone(), q2: sigma.real().clone() })
         .collect();
     let path = (1..=PATH_STEPS)
         .map(|j| {
@@ -419,7 +450,7 @@ fn values(
         path,
         stresses,
         nodes: sol.phi.len(),
-        ends: crate::numerics::parallel::map(&[Side::Right, Side::Left], |_, side| sol.end_stress(*side, &rule)),
+        ends,
         eps: sol.inc.eps.clone(),
     })
 }

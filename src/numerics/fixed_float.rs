@@ -15,7 +15,8 @@
 //! sum leaving i64's range would overflow an integer, caught in debug builds).
 
 use rug::integer::Order;
-use rug::{Float, Integer};
+use rug::ops::NegAssign;
+use rug::{Assign, Float, Integer};
 
 /// A number of at most 64 L significant bits (module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -67,6 +68,23 @@ impl<const L: usize> Fixed<L> {
             -f
         } else {
             f
+        }
+    }
+
+    /// Writes the exact value into `out` (whose precision must hold this number's significant
+    /// bits), with `scratch` for the mantissa: no allocation once `scratch` holds 64 L bits
+    /// ([`Self::to_float`] allocates).
+    pub(crate) fn assign_to(&self, out: &mut Float, scratch: &mut Integer) {
+        if self.is_zero() {
+            out.assign(0);
+        } else {
+            scratch.assign_digits(&self.m, Order::Lsf);
+            // Exact: at most prec(out) significant bits, then a power of two.
+            out.assign(&*scratch);
+            *out <<= (self.exp - 64 * L as i64) as i32;
+        }
+        if self.neg {
+            out.neg_assign();
         }
     }
 
@@ -431,6 +449,7 @@ mod tests {
 
     fn check<const L: usize>(p: u32, cases: usize, seed: u64) {
         let mut rng = Rng(seed);
+        let mut digits = Integer::new();
         for case in 0..cases {
             let a = operand(&mut rng, p, None);
             let b = operand(&mut rng, p, Some(&a));
@@ -452,6 +471,9 @@ mod tests {
                     "p = {p}, case {case}, op {k}: a = {a:?}, b = {b:?}: MPFR {w:?}, fixed {g:?}"
                 );
                 assert_eq!(Fixed::<L>::from_float(w).unwrap(), got[k], "p = {p}, case {case}, op {k}: representation");
+                let mut out = Float::new(p);
+                got[k].assign_to(&mut out, &mut digits);
+                assert!(out == *w && out.is_sign_negative() == w.is_sign_negative(), "p = {p}, case {case}: assign_to");
             }
         }
     }

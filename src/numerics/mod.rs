@@ -11,6 +11,7 @@ pub(crate) mod fixed_float;
 pub mod gauss_jacobi_f64;
 pub mod gauss_jacobi_mpfr;
 pub(crate) mod mp_elementary;
+pub(crate) mod mp_rounded;
 pub mod pade;
 pub mod parallel;
 pub mod precision;

@@ -4,8 +4,9 @@
 //! where three of these per quadrature node had taken 40% of a solve (docs/theory.md section
 //! 17.8, "Where the time goes now").
 //!
-//! Method: tables at the working precision q = p + [`GUARD`] bits, built once per thread and q
-//! with MPFR: T_j = e^(j/1024), |j| <= 360, ln 2, 1/k!, 1/(2 k + 1).
+//! Method: tables at the working precision q = p + [`GUARD`] bits, built once per process and q
+//! with MPFR (shared by the threads: `numerics::parallel` starts new ones for every map): T_j =
+//! e^(j/1024), |j| <= 360, ln 2, 1/k!, 1/(2 k + 1).
 //! - e^x = 2^k T_j e^r', x = k ln 2 + j/1024 + r' (|r'| <= 2^-11), e^r' by its Taylor series
 //!   (Horner);
 //! - ln x = e ln 2 + j/1024 + ln(1 + z), x = 2^e m with 1/sqrt(2) <= m < sqrt(2), j the nearest
@@ -22,7 +23,7 @@
 //! answer. Test: every function against MPFR at 53 .. 1000 bits over arguments of all scales.
 
 use std::cell::RefCell;
-use std::rc::Rc;
+use std::sync::{Arc, Mutex};
 
 use rug::float::Constant;
 use rug::{Assign, Float};
@@ -30,21 +31,21 @@ use rug::{Assign, Float};
 /// Guard bits of the working precision over the result's.
 pub const GUARD: u32 = 32;
 /// Table step 2^-STEP of the reduced argument.
-const STEP: i32 = 10;
+pub(crate) const STEP: i32 = 10;
 /// Table half-range: |j| <= RANGE covers |j 2^-STEP| <= 0.3516 >= ln(2)/2 + 2^-STEP.
-const RANGE: i32 = 360;
+pub(crate) const RANGE: i32 = 360;
 
 /// The tables of one working precision q.
-struct Tables {
-    q: u32,
+pub(crate) struct Tables {
+    pub(crate) q: u32,
     /// e^(j/1024) for j = -RANGE ..= RANGE (index j + RANGE).
-    exp_j: Vec<Float>,
+    pub(crate) exp_j: Vec<Float>,
     /// ln 2 at q + 40 bits (exponents up to 2^30 times it).
-    ln2: Float,
+    pub(crate) ln2: Float,
     /// 1/k!, k = 0 ..= taylor terms.
     inv_fact: Vec<Float>,
     /// 1/(2 k + 1), k = 0 ..= atanh terms.
-    inv_odd: Vec<Float>,
+    pub(crate) inv_odd: Vec<Float>,
 }
 
 impl Tables {
@@ -69,18 +70,32 @@ impl Tables {
     }
 }
 
+/// The tables of the process, one per working precision.
+static SHARED: Mutex<Vec<Arc<Tables>>> = Mutex::new(Vec::new());
+
 thread_local! {
-    /// The tables built by this thread, one per working precision.
-    static TABLES: RefCell<Vec<Rc<Tables>>> = const { RefCell::new(Vec::new()) };
+    /// The tables this thread has taken from [`SHARED`] (no lock after the first use).
+    static TABLES: RefCell<Vec<Arc<Tables>>> = const { RefCell::new(Vec::new()) };
 }
 
-fn tables(q: u32) -> Rc<Tables> {
+/// The tables of working precision q.
+pub(crate) fn tables(q: u32) -> Arc<Tables> {
     TABLES.with(|t| {
         let mut t = t.borrow_mut();
         if let Some(found) = t.iter().find(|x| x.q == q) {
             return found.clone();
         }
-        let made = Rc::new(Tables::new(q));
+        let made = {
+            let mut shared = SHARED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+            match shared.iter().find(|x| x.q == q) {
+                Some(found) => found.clone(),
+                None => {
+                    let made = Arc::new(Tables::new(q));
+                    shared.push(made.clone());
+                    made
+                }
+            }
+        };
         t.push(made.clone());
         made
     })
