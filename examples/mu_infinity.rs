@@ -3,6 +3,8 @@
 //! root in ln(1 - c/a), each start the previous mu's width where the `f64` method refuses) at
 //! (n1, bits) and (n2, bits + 32), and by the `f64` increment method (n = 40, 80):
 //! `cargo run --release --example mu_infinity -- NU_NUM/NU_DEN N1 N2 BITS MU...`.
+//! A bad argument stops it with a message naming the argument, its value and the valid form,
+//! the usage line, and exit code 2.
 
 use std::time::Instant;
 
@@ -15,13 +17,55 @@ use periodic_contact::model::Material;
 use periodic_contact::params::adhesion::AdhesionParamsF64;
 use rug::Float;
 
+const USAGE: &str = "usage: cargo run --release --example mu_infinity -- NU_NUM/NU_DEN N1 N2 BITS MU...";
+
+/// The parsed command line: nu = num/den, the two n, the bits of the first, the mu as given.
+struct Args {
+    num: i64,
+    den: i64,
+    n1: usize,
+    n2: usize,
+    bits: u32,
+    mus: Vec<String>,
+}
+
+/// `what` = `text` parsed and in range (`ok`), or the error naming the argument, its value and
+/// the valid form.
+fn parse<V: std::str::FromStr>(what: &str, text: &str, valid: &str, ok: impl Fn(&V) -> bool) -> Result<V, String> {
+    match text.parse::<V>() {
+        Ok(v) if ok(&v) => Ok(v),
+        _ => Err(format!("{what} = `{text}`: expected {valid}")),
+    }
+}
+
+fn parse_args(args: &[String]) -> Result<Args, String> {
+    if args.len() < 5 {
+        return Err(format!("{} arguments; expected NU N1 N2 BITS and at least one MU", args.len()));
+    }
+    let nu_error = || format!("NU = `{}`: expected NUM/DEN, integers with DEN > 0 and 0 <= NUM/DEN < 1/2", args[0]);
+    let (num, den) = args[0]
+        .split_once('/')
+        .and_then(|(a, b)| Some((a.parse::<i64>().ok()?, b.parse::<i64>().ok()?)))
+        .filter(|&(num, den)| den > 0 && num >= 0 && 2 * num < den)
+        .ok_or_else(nu_error)?;
+    let n = |what: &str, text: &str| parse::<usize>(what, text, "polynomials per family, an integer >= 2", |n| *n >= 2);
+    let (n1, n2) = (n("N1", &args[1])?, n("N2", &args[2])?);
+    let bits = parse::<u32>("BITS", &args[3], "an MPFR precision in bits, 64 ..= 4096", |b| (64..=4096).contains(b))?;
+    for m in &args[4..] {
+        let value = Float::parse(m).map(|v| Float::with_val(64, v));
+        if !value.is_ok_and(|v| v.is_finite() && v > 0) {
+            return Err(format!("MU = `{m}`: expected a friction coefficient, a finite number > 0"));
+        }
+    }
+    Ok(Args { num, den, n1, n2, bits, mus: args[4..].to_vec() })
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let (num, den) = args[1].split_once('/').expect("NU as NUM/DEN");
-    let (num, den): (i64, i64) = (num.parse().unwrap(), den.parse().unwrap());
-    let n1: usize = args[2].parse().unwrap();
-    let n2: usize = args[3].parse().unwrap();
-    let bits: u32 = args[4].parse().unwrap();
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let Args { num, den, n1, n2, bits, mus } = parse_args(&args).unwrap_or_else(|e| {
+        eprintln!("mu_infinity: {e}\n{USAGE}");
+        std::process::exit(2)
+    });
     let material = Material::from_contact_modulus(
         Q::from_integer(num.into()) / Q::from_integer(den.into()),
         Q::from_integer(1.into()),
@@ -32,8 +76,9 @@ fn main() {
     let beta = Float::with_val(bits + 64, den - 2 * num) / Float::with_val(bits + 64, 2 * (den - num));
     println!("nu = {num}/{den}, beta = {:.6}, complete adhesion C_P = {adhesion:.12}", beta.to_f64());
     let mut start: Option<f64> = None;
-    for m in &args[5..] {
-        let mu = Float::with_val(bits + 64, Float::parse(m).unwrap());
+    for m in &mus {
+        // checked in parse_args
+        let mu = Float::with_val(bits + 64, Float::parse(m).expect("MU checked"));
         let t = Instant::now();
         let inc = [40, 80].map(|n| solve_once(beta.to_f64(), mu.to_f64(), n, Method::Increment, true));
         let f64_line = match &inc {

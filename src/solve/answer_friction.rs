@@ -85,7 +85,8 @@ pub const FRICTION_NOTE_ROW: &str = "finite friction on the periodic row (docs/t
      |q1| = mu q2 in the slip zones c < |x| < a at the ends of every punch, stick in the middle |x| < c, under \
      monotone normal loading; c/a depends on lambda = pi a/L (not constant during loading as for the single \
      punch). Solved by the spectral method in f64 (section 17.8: the unit increment bounded at the stick edge, the \
-     load from the edge-slope Volterra equation on Chebyshev nodes) on two discretisations; about 5-7 digits";
+     load from the edge-slope Volterra equation on Chebyshev nodes) on two discretisations; P2 and c to about 12 digits up to lambda = 1.2, the fields at the points \
+     to 2-4 (each printed with its own estimate)";
 
 /// The model of a friction answer at nu = 1/2, printed as its `friction_note`.
 pub const FRICTION_NOTE_INCOMPRESSIBLE: &str = "finite friction at nu = 1/2 (beta = 0; docs/theory.md section 17.3): \

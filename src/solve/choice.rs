@@ -541,7 +541,7 @@ pub fn solve_choice(scene: &crate::scene::Scene, forced: Forced) -> Result<Metho
             m,
             digits_of(m),
             "finite friction ([adhesion] friction): the f64 method by default (single punch 4-5 digits, periodic row \
-             6-7; --method mpfr verifies digits: at most 16 for the single punch, 12 for the row given its \
+             12-13 in P2 and c up to lambda = 1.2, 2-4 in the fields; --method mpfr verifies digits: at most 16 for the single punch, 12 for the row given its \
              half_width)",
         ));
     }
