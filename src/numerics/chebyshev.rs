@@ -1,7 +1,7 @@
 //! Chebyshev interpolation on tau in [0, 1] (x = 2 tau - 1) in MPFR: nodes of the first kind,
 //! coefficients, Clenshaw evaluation, and the integral int_0^T. The coefficients' cosines are
-//! computed once per (n, precision) in a process ([`cosines`]), and a [`Series`] sums in
-//! [`Fixed`] arithmetic: both give the bits of the MPFR loops they replace (tests below).
+//! computed once per (n, precision) in a process (`cosines`), and a [`Series`] sums in
+//! `Fixed` arithmetic (`numerics::fixed_float`): both give the bits of the MPFR loops they replace (tests below).
 
 use crate::numerics::fixed_float::Fixed;
 use rug::{Assign, Float, Integer};
@@ -126,8 +126,8 @@ impl Clenshaw {
 }
 
 /// A Chebyshev series for many [`Clenshaw`] sums at one precision: its coefficients converted
-/// once to [`Fixed`] of L limbs (64 (L - 1) < prec <= 64 L <= 256), whose products and sums are
-/// MPFR's roundings without MPFR's calls, so each sum gives the bits of [`Clenshaw::evaluate_into`]
+/// once to `Fixed` of L limbs (64 (L - 1) < prec <= 64 L <= 256), whose products and sums are
+/// MPFR's roundings without MPFR's calls, so each sum gives the bits of `Clenshaw::evaluate_into`
 /// (test below); beyond 256 bits, or where a coefficient is not a finite number of at most
 /// `prec` bits, the MPFR loop. For the loading law's edge integrals, two sums per rule point.
 #[derive(Debug, Clone)]

@@ -340,55 +340,47 @@ mod tests {
         out
     }
 
-    /// sin and cos equal MPFR's bit for bit (sign of zero included), at 53, 64, 107, 127, 128,
-    /// 131 and 200 bits, over [`arguments`] and beyond the table (|x| = 9, 100), and from an
-    /// argument of fewer bits than the result; MPFR's fallback took under 2 % of the arguments.
-    #[test]
-    fn sin_cos_equal_mpfr_bit_for_bit() {
+    /// The pair (sin, cos) or, `hyperbolic`, (sinh, cosh) of [`sin_cos`] / [`sinh_cosh`] equals
+    /// MPFR's bit for bit (sign of zero included) at 53, 64, 107, 127, 128, 131 and 200 bits, over
+    /// [`arguments`], beyond the table (|x| = 9, 100) and from an argument of fewer bits than the
+    /// result; MPFR's fallback takes under 2 % of the arguments.
+    fn pair_equals_mpfr_bit_for_bit(hyperbolic: bool) {
+        let name = if hyperbolic { "sinh_cosh" } else { "sin_cos" };
         for p in [53u32, 64, 107, 127, 128, 131, 200] {
             let mut args = arguments(p);
             args.extend([9.0, -100.0, 1e-300].iter().map(|v| Float::with_val(p, *v)));
             args.push(Float::with_val(40, 0.3));
             let mut undecided = 0;
             for x in &args {
-                let (s, c) = sin_cos(x, p);
+                let (s, c) = if hyperbolic { sinh_cosh(x, p) } else { sin_cos(x, p) };
                 let (mut ws, mut wc) = (Float::new(p), Float::new(p));
-                (&mut ws, &mut wc).assign(x.sin_cos_ref());
-                assert!(s == ws && s.is_sign_negative() == ws.is_sign_negative(), "sin {x} at {p}: {s} vs {ws}");
-                assert!(c == wc && c.is_sign_negative() == wc.is_sign_negative(), "cos {x} at {p}: {c} vs {wc}");
-                if x.clone().abs() <= 8 && x.prec() <= working(p) && sin_cos_q(x, &trig(working(p), false), p).is_none()
-                {
+                if hyperbolic {
+                    (&mut ws, &mut wc).assign(x.sinh_cosh_ref());
+                } else {
+                    (&mut ws, &mut wc).assign(x.sin_cos_ref());
+                }
+                assert!(s == ws && s.is_sign_negative() == ws.is_sign_negative(), "{name} {x} at {p}: {s} vs {ws}");
+                assert!(c == wc && c.is_sign_negative() == wc.is_sign_negative(), "{name} {x} at {p}: {c} vs {wc}");
+                let q = working(p);
+                if x.clone().abs() <= 8 && x.prec() <= q && sin_cos_q(x, &trig(q, hyperbolic), p).is_none() {
                     undecided += 1;
                 }
             }
-            eprintln!("sin_cos at {p} bits: {undecided} of {} arguments by MPFR", args.len());
+            eprintln!("{name} at {p} bits: {undecided} of {} arguments by MPFR", args.len());
             assert!(undecided * 50 < args.len(), "{undecided} of {}", args.len());
         }
     }
 
-    /// sinh and cosh equal MPFR's bit for bit at 53, 64, 107, 127, 128, 131 and 200 bits over
-    /// [`arguments`] and beyond the table (|x| = 9, 100); MPFR's fallback under 2 %.
+    /// sin and cos: [`pair_equals_mpfr_bit_for_bit`].
+    #[test]
+    fn sin_cos_equal_mpfr_bit_for_bit() {
+        pair_equals_mpfr_bit_for_bit(false);
+    }
+
+    /// sinh and cosh: [`pair_equals_mpfr_bit_for_bit`].
     #[test]
     fn sinh_cosh_equal_mpfr_bit_for_bit() {
-        for p in [53u32, 64, 107, 127, 128, 131, 200] {
-            let mut args = arguments(p);
-            args.extend([9.0, -100.0, 1e-300].iter().map(|v| Float::with_val(p, *v)));
-            args.push(Float::with_val(40, 0.3));
-            let mut undecided = 0;
-            for x in &args {
-                let (s, c) = sinh_cosh(x, p);
-                let (mut ws, mut wc) = (Float::new(p), Float::new(p));
-                (&mut ws, &mut wc).assign(x.sinh_cosh_ref());
-                assert!(s == ws && s.is_sign_negative() == ws.is_sign_negative(), "sinh {x} at {p}: {s} vs {ws}");
-                assert!(c == wc, "cosh {x} at {p}: {c} vs {wc}");
-                if x.clone().abs() <= 8 && x.prec() <= working(p) && sin_cos_q(x, &trig(working(p), true), p).is_none()
-                {
-                    undecided += 1;
-                }
-            }
-            eprintln!("sinh_cosh at {p} bits: {undecided} of {} arguments by MPFR", args.len());
-            assert!(undecided * 50 < args.len(), "{undecided} of {}", args.len());
-        }
+        pair_equals_mpfr_bit_for_bit(true);
     }
 
     /// ln equals MPFR's bit for bit at 53, 64, 107, 127, 128, 131 and 200 bits, over arguments

@@ -34,8 +34,8 @@
 //! eta^2 and `periodic`'s eta, n = digits + 4 polynomials per family,
 //! B = 3.33 (digits + 4 + 1.2 n) + 16 bits as for c/a in [`super::spectral_row`]) and
 //! (N + 3, n + 4, B + 24); the printed digits are where they agree (P relative, c/a on the scale
-//! 1), P's at most those its finer run's F resolves ([`LoadRate::tail_error`]: the agreement
-//! alone overclaimed at 20 digits, section 17.8). Each node's stick edge is a secant search from
+//! 1), P's at most those its finer run's F resolves ([`LoadRate::tail_error`], a second
+//! bound on the node error, conservative: section 17.8, "The tail rule"). Each node's stick edge is a secant search from
 //! the `f64` root stopped once its error is below 10^-(digits/2 + 3) ([`root_mpfr_stationary`],
 //! three solves): the outside slope is stationary in the stick edge at its root
 //! (`spectral_row_tests.rs`, `outside_slope_is_stationary_in_the_stick_edge`), so its error is
@@ -419,8 +419,8 @@ pub fn verified_mpfr_runs(
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
     let load = VerifiedRowLoad {
-        // at most the digits F's unresolved part leaves (section 17.8, "The verified load's
-        // digits": the two runs' agreement alone overclaimed at 20 digits)
+        // at most the digits F's unresolved part leaves (section 17.8, "The tail rule": a
+        // second bound on the node error beside the two runs' agreement)
         load_digits: agreement_mpfr(&p1.load.0, &p2.load.0, &p2.load.0, cap).min(verified_digits_mpfr(
             &p2.tail_error.0,
             &p2.load.0,

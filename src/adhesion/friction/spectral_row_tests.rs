@@ -305,7 +305,7 @@ fn mpfr_incompressible_load_is_kuznetsov_to_20_digits() {
 
 /// The verified MPFR load at nu = 0, mu = 1/2, lambda = 1.2, both conventions, 6 digits asked
 /// (knobs (11, 10, 90) and (14, 14, 114), in `paper`'s eta^2 nodes and `periodic`'s eta), against
-/// the `f64` run, P's 26- and 28-node values and c/a's 21-digit value of
+/// the `f64` run, P's values of 20 digits asked (`paper` 23.0 digits verified) and c/a's 21-digit value of
 /// `twenty_digits_at_lambda_1_2` (`cargo run --release --example row_load_mpfr -- paper 6`, or
 /// `cargo test -p periodic-contact --lib spectral_row_tests::verified_load -- --ignored
 /// --nocapture`; measured figures and times in docs/theory.md section 17.8: `paper` P =
@@ -325,7 +325,7 @@ fn verified_load_at_lambda_1_2() {
         );
         assert!(v.load_digits >= 8.0 && v.stick_digits >= 8.0, "periodic {periodic}: {v:?}");
         assert!((v.stick_ratio.to_f64() - stick).abs() < 10f64.powf(-v.stick_digits), "periodic {periodic}");
-        // P's claim against the 26- and 28-node loads (section 17.8, "The verified load's digits")
+        // P's claim against the 20-digit runs' loads (section 17.8, "Whether these claims hold")
         let best = if periodic { 3.559_162_313_993_339_4 } else { 3.895_118_698_690_591 };
         assert!((p / best - 1.0).abs() < 10f64.powf(-v.load_digits), "periodic {periodic}: P {p} vs {best}");
         // the f64 run: 7-10 digits (its increments' rounding, section 17.8)
@@ -336,7 +336,7 @@ fn verified_load_at_lambda_1_2() {
 /// The load's tail estimate (`LoadRate::tail_error`) never falls below the error it estimates,
 /// and is at most 3e4 times it (measured 118 .. 7600: P converges faster than F's coefficients):
 /// `f64` loads at nu = 0, mu = 1/2, lambda = 1.2 (n = 8) on N = 4, 6, 8 nodes against N = 14,
-/// both conventions (section 17.8, "The verified load's digits").
+/// both conventions (section 17.8, "The tail rule").
 #[test]
 fn load_tail_bounds_the_node_error() {
     for periodic in [false, true] {
