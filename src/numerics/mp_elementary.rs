@@ -80,17 +80,30 @@ thread_local! {
 
 /// The tables of working precision q.
 pub(crate) fn tables(q: u32) -> Arc<Tables> {
-    TABLES.with(|t| {
+    shared_table(&TABLES, &SHARED, |t| t.q == q, || Tables::new(q))
+}
+
+/// The entry of a process-wide table list for which `is` holds, made by `make` on the process's
+/// first use and kept by each thread in `local` (no lock after a thread's first use; the threads
+/// of `numerics::parallel` are new for every map, so a per-thread table alone would be rebuilt
+/// per map). Serves these tables and `mp_rounded`'s sines.
+pub(crate) fn shared_table<T>(
+    local: &'static std::thread::LocalKey<RefCell<Vec<Arc<T>>>>,
+    shared: &Mutex<Vec<Arc<T>>>,
+    is: impl Fn(&T) -> bool,
+    make: impl FnOnce() -> T,
+) -> Arc<T> {
+    local.with(|t| {
         let mut t = t.borrow_mut();
-        if let Some(found) = t.iter().find(|x| x.q == q) {
+        if let Some(found) = t.iter().find(|x| is(x)) {
             return found.clone();
         }
         let made = {
-            let mut shared = SHARED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-            match shared.iter().find(|x| x.q == q) {
+            let mut shared = shared.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+            match shared.iter().find(|x| is(x)) {
                 Some(found) => found.clone(),
                 None => {
-                    let made = Arc::new(Tables::new(q));
+                    let made = Arc::new(make());
                     shared.push(made.clone());
                     made
                 }

@@ -99,26 +99,12 @@ thread_local! {
 }
 
 fn trig(q: u32, hyperbolic: bool) -> Arc<Trig> {
-    let key = |x: &Arc<Trig>| x.q == q && x.hyperbolic == hyperbolic;
-    LOCAL.with(|t| {
-        let mut t = t.borrow_mut();
-        if let Some(found) = t.iter().find(|x| key(x)) {
-            return found.clone();
-        }
-        let made = {
-            let mut shared = SHARED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-            match shared.iter().find(|x| key(x)) {
-                Some(found) => found.clone(),
-                None => {
-                    let made = Arc::new(Trig::new(q, hyperbolic));
-                    shared.push(made.clone());
-                    made
-                }
-            }
-        };
-        t.push(made.clone());
-        made
-    })
+    mp_elementary::shared_table(
+        &LOCAL,
+        &SHARED,
+        |x| x.q == q && x.hyperbolic == hyperbolic,
+        || Trig::new(q, hyperbolic),
+    )
 }
 
 /// The p-bit rounding to nearest of `v`, if every number within 2^`k` of v has the same one (no
@@ -207,37 +193,34 @@ fn ln_q(x: &Float, tb: &mp_elementary::Tables) -> Float {
 /// (sin x, cos x) rounded to nearest at `prec` bits: MPFR's `sin_cos` of x at `prec` bits, bit
 /// for bit (module doc).
 pub fn sin_cos(x: &Float, prec: u32) -> (Float, Float) {
-    let q = working(prec);
-    if x.is_finite()
-        && !x.is_zero()
-        && x.prec() <= q
-        && x.to_f64().abs() <= 8.0
-        && let Some(pair) = sin_cos_q(x, &trig(q, false), prec)
-    {
-        return pair;
-    }
-    let mut sin = Float::new(prec);
-    let mut cos = Float::new(prec);
-    (&mut sin, &mut cos).assign(x.sin_cos_ref());
-    (sin, cos)
+    pair(x, prec, false)
 }
 
 /// (sinh x, cosh x) rounded to nearest at `prec` bits: MPFR's `sinh_cosh` of x at `prec` bits,
 /// bit for bit (module doc).
 pub fn sinh_cosh(x: &Float, prec: u32) -> (Float, Float) {
+    pair(x, prec, true)
+}
+
+/// [`sin_cos`] or, `hyperbolic`, [`sinh_cosh`]: from the table where its rounding is decided,
+/// else MPFR's.
+fn pair(x: &Float, prec: u32, hyperbolic: bool) -> (Float, Float) {
     let q = working(prec);
     if x.is_finite()
         && !x.is_zero()
         && x.prec() <= q
         && x.to_f64().abs() <= 8.0
-        && let Some(pair) = sin_cos_q(x, &trig(q, true), prec)
+        && let Some(pair) = sin_cos_q(x, &trig(q, hyperbolic), prec)
     {
         return pair;
     }
-    let mut sinh = Float::new(prec);
-    let mut cosh = Float::new(prec);
-    (&mut sinh, &mut cosh).assign(x.sinh_cosh_ref());
-    (sinh, cosh)
+    let (mut s, mut c) = (Float::new(prec), Float::new(prec));
+    if hyperbolic {
+        (&mut s, &mut c).assign(x.sinh_cosh_ref());
+    } else {
+        (&mut s, &mut c).assign(x.sin_cos_ref());
+    }
+    (s, c)
 }
 
 /// [`sin_cos`] (or [`sinh_cosh`], by the table's kind) from the table, or None where either
