@@ -419,7 +419,7 @@ pub fn row_mpfr_answer(
     };
     let incompressible = num_traits::Zero::is_zero(&p.material().beta());
     // the inputs at the finer run's bits and a guard of 64
-    let prec = finer_knobs(digits_asked, incompressible).2 + 64;
+    let prec = finer_knobs(digits_asked, incompressible, p.periodic_surface()).2 + 64;
     let (a_f, l_f) = (to_float(a, prec), to_float(period, prec));
     let pi_over_l = Float::with_val(prec, rug::float::Constant::Pi) / &l_f;
     let lambda = Float::with_val(prec, &pi_over_l * &a_f);

@@ -340,16 +340,20 @@ pub struct VerifiedRowLoad {
     pub seconds: [f64; 2],
 }
 
-/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc), the same in both
-/// conventions' node rules ([`NodeRule::of_convention`]); the finer run adds (3, 4, 24). beta = 0 needs 2 nodes
+/// The knobs (nodes, n, bits) of the coarser run for `digits` (module doc) in the convention's
+/// node rule ([`NodeRule::of_convention`]); the finer run adds (3, 4, 24). beta = 0 needs 2 nodes
 /// (F is the constant pi, section 17.8).
-pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
+pub fn knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
     // measured at lambda = 1.2 (section 17.8): successive node counts differ by a factor of
     // about 10^0.7 per node in eta (`periodic`); in eta^2 (`paper`) P converges by 10^1.05 but
     // F's Chebyshev coefficients, whose tail bounds the claim, by 10^0.7 (heuristic rates: the
     // second run and the tail check them)
     let per_node = 0.7;
     let nodes = if incompressible { 2 } else { (digits as f64 / per_node).ceil() as usize + 2 };
+    // `periodic`'s tail (`LoadRate::tail_error`) gains only about 0.5 digits per node: 8.2 digits
+    // at 14 nodes, 18.1 at 34 (section 17.8, "The tail rule"), so 20 digits need a finer run of
+    // about 38 nodes; 2 digits - 4 in the coarser run leaves the finer one a node's margin
+    let nodes = if periodic && !incompressible { nodes.max((2 * digits as usize).saturating_sub(4)) } else { nodes };
     let n = digits as usize + 4;
     let bits = (3.33 * (digits as f64 + 4.0 + 1.2 * n as f64) + 16.0).ceil() as u32;
     (nodes, n, bits)
@@ -357,8 +361,8 @@ pub fn knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
 
 /// The knobs of the finer (second) run: [`knobs`] plus (3, 4, 24), (2, 4, 24) at beta = 0; the
 /// inputs of [`verified_mpfr`] need at least its bits.
-pub fn finer_knobs(digits: u32, incompressible: bool) -> (usize, usize, u32) {
-    let (nodes, n, bits) = knobs(digits, incompressible);
+pub fn finer_knobs(digits: u32, incompressible: bool, periodic: bool) -> (usize, usize, u32) {
+    let (nodes, n, bits) = knobs(digits, incompressible, periodic);
     (nodes + if incompressible { 2 } else { 3 }, n + 4, bits + 24)
 }
 
@@ -413,8 +417,8 @@ pub fn verified_mpfr_runs(
         let ratio = physical_ratio(&inc.gamma, &Mp(Float::with_val(bits, lambda))).0;
         Ok((p, ratio, t.elapsed().as_secs_f64()))
     };
-    let coarse = knobs(digits, beta.is_zero());
-    let fine = finer_knobs(digits, beta.is_zero());
+    let coarse = knobs(digits, beta.is_zero(), periodic);
+    let fine = finer_knobs(digits, beta.is_zero(), periodic);
     let (p1, c1, s1) = run(coarse)?;
     let (p2, c2, s2) = run(fine)?;
     let cap = digits_cap_for_bits(coarse.2);
