@@ -40,11 +40,16 @@ pub fn coefficients(values: &[Float], prec: u32) -> Vec<Float> {
 /// The largest n whose [`cosines`] are kept (n^2 numbers a precision).
 const CACHED_COSINES: usize = 128;
 
+/// Most mantissa bits the kept [`cosines`] hold together (2^28, 32 MiB): a sweep over many
+/// precisions empties the tables when the next one would pass it.
+const COSINES_BITS: usize = 1 << 28;
+
 /// cos(a_ji), a_ji = pi j (2 i + 1)/(2 n) rounded as the product by pi then the quotient by 2 n
 /// (each to `prec` bits), for j, i < n (row j at j n): the matrix of [`coefficients`], which the
 /// loading law's residuals take at a few (n, prec) many times over (their 2 n^2 cosines were
 /// 2.8 % of its MPFR solve, all on the main thread). Kept for the process up to n =
-/// [`CACHED_COSINES`]: the same numbers as computing them anew.
+/// [`CACHED_COSINES`], emptied when [`COSINES_BITS`] would be passed: the same numbers as
+/// computing them anew.
 fn cosines(n: usize, prec: u32) -> Arc<Vec<Float>> {
     type Table = ((usize, u32), Arc<Vec<Float>>);
     static TABLES: Mutex<Vec<Table>> = Mutex::new(Vec::new());
@@ -67,8 +72,17 @@ fn cosines(n: usize, prec: u32) -> Arc<Vec<Float>> {
         return t.clone();
     }
     let t = compute();
-    tables.push(((n, prec), t.clone()));
+    keep_within(&mut tables, ((n, prec), t.clone()), COSINES_BITS);
     t
+}
+
+/// Adds a table of [`cosines`] to `tables`, emptied first if their mantissa bits would pass `limit`.
+fn keep_within<T>(tables: &mut Vec<((usize, u32), T)>, table: ((usize, u32), T), limit: usize) {
+    let bits = |&((n, prec), _): &((usize, u32), T)| n * n * prec as usize;
+    if tables.iter().map(bits).sum::<usize>() + bits(&table) > limit {
+        tables.clear();
+    }
+    tables.push(table);
 }
 
 /// Clenshaw evaluation of sum_j c_j T_j(x).
@@ -258,6 +272,18 @@ mod tests {
     /// The coefficients from the kept cosines equal those with every cosine computed anew, bit
     /// for bit, on the first call (table made) and the second (table read), and beyond the kept
     /// sizes (n = 130); 107, 127 and 300 bits.
+    #[test]
+    fn kept_cosines_are_emptied_before_passing_their_bound() {
+        let mut tables = Vec::new();
+        // 4 x 4 x 100 = 1600 bits a table: two fit under 4000, the third empties them
+        for (k, prec) in [100u32, 100, 100].into_iter().enumerate() {
+            keep_within(&mut tables, ((4, prec), k), 4000);
+        }
+        assert_eq!(tables.iter().map(|(_, k)| *k).collect::<Vec<_>>(), vec![2]);
+        keep_within(&mut tables, ((4, 100), 3), 4000);
+        assert_eq!(tables.len(), 2);
+    }
+
     #[test]
     fn coefficients_from_kept_cosines_equal_fresh_ones() {
         let mut state = 7;
