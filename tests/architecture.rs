@@ -365,11 +365,13 @@ fn derived_parameters_have_one_definition() {
     assert!(found.is_empty(), "derived parameters computed outside params:\n{}", found.join("\n"));
 }
 
-/// Every test marked `#[ignore = "long tier ..."]` anywhere in the workspace is named in the LONG
-/// list of `scripts/test` (so `scripts/test --long`, which CI runs, runs it: slow tests move to the
-/// long tier, never away), and every name in that list is such a test.
+/// Every ignored test in the workspace is in a tier: `#[ignore = "long tier ..."]` ones are named
+/// in the LONG list of `scripts/test` (so `scripts/test --long`, which CI runs, runs it: slow tests
+/// move to the long tier, never away), `#[ignore = "measurement tier ..."]` ones in its MEASURE
+/// list (`scripts/test --measure`), and the rest need a tool (`"needs ..."`: SymPy, Chromium) that
+/// `scripts/test` runs them with; every name in the two lists is such a test.
 #[test]
-fn every_long_tier_test_is_in_the_long_list() {
+fn every_ignored_test_is_in_a_tier() {
     let top = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut files = Vec::new();
     for dir in ["src", "tests", "series", "crates", "python/src"] {
@@ -377,31 +379,51 @@ fn every_long_tier_test_is_in_the_long_list() {
             rust_files(&top.join(dir), &mut files);
         }
     }
-    let mut marked = BTreeSet::new();
+    // every ignored test is in a tier scripts/test runs, or needs a tool scripts/test runs it with
+    let (mut long, mut measure, mut unplaced) = (BTreeSet::new(), BTreeSet::new(), Vec::new());
     for f in files.iter().filter(|f| !f.components().any(|c| c.as_os_str() == "target")) {
         let text = std::fs::read_to_string(f).unwrap();
-        let mut pending = false;
+        let mut pending: Option<&str> = None;
         for line in text.lines().map(str::trim) {
-            if line.starts_with("#[ignore = \"long tier") {
-                pending = true;
-            } else if pending && let Some(rest) = line.strip_prefix("fn ").or_else(|| line.strip_prefix("pub fn ")) {
-                marked.insert(rest.split('(').next().unwrap().to_string());
-                pending = false;
+            if let Some(reason) = line.strip_prefix("#[ignore") {
+                pending = Some(reason);
+            } else if let Some(reason) = pending
+                && let Some(rest) = line.strip_prefix("fn ").or_else(|| line.strip_prefix("pub fn "))
+            {
+                let name = rest.split('(').next().unwrap().to_string();
+                if reason.starts_with(" = \"long tier") {
+                    long.insert(name);
+                } else if reason.starts_with(" = \"measurement tier") {
+                    measure.insert(name);
+                } else if !reason.starts_with(" = \"needs ") {
+                    unplaced.push(format!("{}: {name}", f.display()));
+                }
+                pending = None;
             }
         }
     }
+    assert!(
+        unplaced.is_empty(),
+        "ignored tests in no tier (mark them \"long tier\" or \"measurement tier\"): {unplaced:?}"
+    );
     let script = std::fs::read_to_string(top.join("scripts/test")).unwrap();
-    let list = script.split("LONG=(").nth(1).and_then(|s| s.split(')').next()).expect("LONG=( ... ) in scripts/test");
-    let listed: BTreeSet<String> = list
-        .lines()
-        .filter_map(|l| l.trim().strip_prefix('"')?.strip_suffix('"').map(str::to_string))
-        .flat_map(|entry| {
-            entry.split_whitespace().skip(2).map(|n| n.rsplit("::").next().unwrap().to_string()).collect::<Vec<_>>()
-        })
-        .collect();
-    assert!(!marked.is_empty() && !listed.is_empty());
-    let missing: Vec<_> = marked.difference(&listed).collect();
-    let stale: Vec<_> = listed.difference(&marked).collect();
-    assert!(missing.is_empty(), "long-tier tests not in scripts/test LONG: {missing:?}");
-    assert!(stale.is_empty(), "scripts/test LONG names no long-tier test: {stale:?}");
+    for (tier, marked) in [("LONG", &long), ("MEASURE", &measure)] {
+        let list = script
+            .split(&format!("{tier}=("))
+            .nth(1)
+            .and_then(|s| s.split(')').next())
+            .unwrap_or_else(|| panic!("{tier}=( ... ) in scripts/test"));
+        let listed: BTreeSet<String> = list
+            .lines()
+            .filter_map(|l| l.trim().strip_prefix('"')?.strip_suffix('"').map(str::to_string))
+            .flat_map(|entry| {
+                entry.split_whitespace().skip(2).map(|n| n.rsplit("::").next().unwrap().to_string()).collect::<Vec<_>>()
+            })
+            .collect();
+        assert!(!marked.is_empty() && !listed.is_empty(), "{tier}");
+        let missing: Vec<_> = marked.difference(&listed).collect();
+        let stale: Vec<_> = listed.difference(marked).collect();
+        assert!(missing.is_empty(), "{tier}-tier tests not in scripts/test {tier}: {missing:?}");
+        assert!(stale.is_empty(), "scripts/test {tier} names no such marked test: {stale:?}");
+    }
 }

@@ -162,7 +162,7 @@ fn a_given_load_finds_the_half_width_in_periodic() {
 /// 2026-11-27 (17 s): MPFR 24.0-30.1 digits up to lambda = 1.1 and 21.2-21.3 at 1.4, agreement
 /// 14.5-15.5.
 #[test]
-#[ignore]
+#[ignore = "long tier: 17 s, the report grid of 25 cells in MPFR and f64 (scripts/test --long)"]
 fn periodic_map_grid_holds_20_digits() {
     for lam in [(1, 5), (1, 2), (4, 5), (11, 10), (7, 5)] {
         for nu in [(0, 1), (3, 20), (3, 10), (9, 20), (1, 2)] {

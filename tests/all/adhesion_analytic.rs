@@ -61,7 +61,7 @@ fn below_the_horizon_it_equals_the_default_method() {
 /// once: analytic 31.0 digits (A = 10^86), default 17.5, agreement 18.9, 261 s; again after the
 /// reach (issue 31): the same figures, 109 s (release, load 5).
 #[test]
-#[ignore]
+#[ignore = "long tier: 109 s release at load 5 (scripts/test --long)"]
 fn at_lambda_0_8_it_equals_the_default_method() {
     let a = "2546479089470325/10000000000000000";
     let (reference, ref_digits) = default_load("0", a, 20);
@@ -79,7 +79,7 @@ fn at_lambda_0_8_it_equals_the_default_method() {
 /// 7.267031970225463569118926 with 34.9 digits, A = 10^104, 1435 s (machine loaded 8 deep); again
 /// after the reach (issue 31): the same figures, 1084 s (release, load 5-6).
 #[test]
-#[ignore]
+#[ignore = "measurement tier: 1084 s release at load 5-6 (scripts/test --measure)"]
 fn at_nu_0_lambda_1_2_it_verifies_twenty_digits() {
     verifies_twenty_digits("0", 1.2);
 }

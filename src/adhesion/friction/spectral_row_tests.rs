@@ -75,7 +75,7 @@ fn agrees_with_the_march() {
 /// asked (`cargo test -p periodic-contact --lib spectral_row_tests::twenty_digits -- --ignored
 /// --nocapture`; measured figures in docs/theory.md section 17.8).
 #[test]
-#[ignore]
+#[ignore = "measurement tier: 13-14 min per convention in the test profile, n = 26 and 32 at 200 and 232 bits (scripts/test --measure)"]
 fn twenty_digits_at_lambda_1_2() {
     let half = rug::Float::with_val(256, 0.5);
     let lambda = rug::Float::with_val(256, 12) / 10u32;
@@ -312,7 +312,7 @@ fn mpfr_incompressible_load_is_kuznetsov_to_20_digits() {
 /// 3.895118698710 with 8.8 digits verified (11 and 14 nodes in eta, before the node rule),
 /// `periodic` 3.559162313997 with 10.3; 864 s and 898 s wall on a shared machine).
 #[test]
-#[ignore]
+#[ignore = "long tier: 62 s wall per convention at load 3, two MPFR runs of 11 and 14 nodes (scripts/test --long)"]
 fn verified_load_at_lambda_1_2() {
     let half = rug::Float::with_val(256, 0.5);
     let lambda = rug::Float::with_val(256, 12) / 10u32;

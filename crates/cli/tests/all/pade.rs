@@ -170,39 +170,6 @@ fn series_pade_cli() {
     assert!(!out.contains("Pade"), "{out}");
 }
 
-/// The report's table at orders 24 (Problem 1) and 16 (Problem 2), references at 30 digits,
-/// printed with its wall time (about 50 s: the sinusoid's symbolic series through Lambda^24):
-/// `cargo test --release --test all -- --ignored --nocapture pade::print_chart_rows`.
-#[test]
-#[ignore]
-fn print_chart_rows() {
-    let t0 = std::time::Instant::now();
-    // PADE_PLAN=report: the default report's plan (src/report/pade.rs).
-    let report = std::env::var("PADE_PLAN").is_ok_and(|v| v == "report");
-    let plan = periodic_contact::verification::pade::PadePlan {
-        parabola: if report { 16 } else { 24 },
-        sinusoid: if report { 12 } else { 24 },
-        adhesion: if report { 12 } else { 16 },
-        lambdas: LAMBDAS.to_vec(),
-        digits: if report { 20 } else { 30 },
-    };
-    let rows = periodic_contact::verification::pade::pade_rows(&plan);
-    for r in &rows {
-        eprintln!(
-            "{:12} {:4} w={:8.4} plain={:?} pade={:?} conformal={:?} ref={} refusal={:?}",
-            r.object,
-            r.lambda,
-            r.w,
-            r.plain.map(|x| (x * 10.0).round() / 10.0),
-            r.pade,
-            r.conformal,
-            r.reference,
-            r.refusal
-        );
-    }
-    eprintln!("wall {:.2} s", t0.elapsed().as_secs_f64());
-}
-
 /// Issue 31: `solve --method pade` maps Kuznetsov's cuts (w = +-2 pi i, conformal map) and chooses
 /// the approximant in z by its own estimate. At the default order 12 (7 coefficients in w) and
 /// lambda = 1.2: l has 7.0 true digits (estimated 5.4) against 4.9 for the series method's full
