@@ -149,12 +149,12 @@ fn series_agrees_with_collocation_at_nu_zero() {
 }
 
 /// nu = 0 at l/L = 1/8 and 1/4 (Lambda = 0.39, 0.79): how far the two MPFR methods get
-/// (`scripts/test --measure`, docs/reference.md): at n = 1/5, l/L = 1/8 the collocation and the
+/// (docs/reference.md): at n = 1/5, l/L = 1/8 the collocation and the
 /// series (24 terms) agree to >= 18.5 digits (measured 19.1); at n = 1/5, l/L = 1/4 and n = 1/2,
 /// l/L = 1/8 the collocation refuses 20 digits, naming the mode's mu* (178.3 and 31.84), or
 /// verifies at most 4 (measured 2-3 at 12-16 asked).
 #[test]
-#[ignore = "measurement tier: the MPFR collocation at nu = 0 up to its refusals (scripts/test --measure)"]
+#[ignore = "long tier: 37 s in the test profile beside an MPFR run on 2 cores (scripts/test --long)"]
 fn nu_zero_reach() {
     for (n, size, mu) in [(q(1, 5), q(1, 8), ""), (q(1, 2), q(1, 8), "mu* = 31.8"), (q(1, 5), q(1, 4), "mu* = 178")] {
         let out = series_against_collocation(n.clone(), size.clone(), 24);
