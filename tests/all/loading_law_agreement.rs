@@ -9,7 +9,7 @@
 //! - nu = 0: the f64 method (one block at small nu) agrees with the MPFR collocation at n = 1/5,
 //!   l/L = 1/16 and 1/8, and refuses where the homogeneous mode has grown (n = 1/5 at 1/4, n = 1/2
 //!   at 1/8); the MPFR collocation and the small-lambda series (`asymptotics::loading_law`), two
-//!   methods built differently, agree at n = 1/5 (CI: l/L = 1/16; ignored `nu_zero_reach`: l/L =
+//!   methods built differently, agree at n = 1/5 (CI: l/L = 1/16; long tier `nu_zero_reach`: l/L =
 //!   1/8, 1/4 and n = 1/2), where the homogeneous mode eta^mu* (`asymptotics::loading_law_modes`)
 //!   sets how far any method gets: the problem fixes its solution only up to C eta^mu*.
 //! - Limits: n = 0 is the symmetric problem (its f64 series solver), b = a; nu = 1/2 decouples
