@@ -215,8 +215,13 @@ impl KernelF64 {
     /// t = tan chi' and near, far = S(d_near), S(d_far) over cos eta cos chi',
     ///   (-1/2 + i eps) d ln t_+ + (-1/2 - i eps) d ln t_- + s B (1 + t^2)/(A + B t),
     /// d ln near = cot d_near + s t, d ln far = cot d_far + s t (t_+ = far right, near left).
+    #[cfg(test)]
     fn tilt_outside_log_derivative(&self, side: Side, d_near: f64, eta: f64) -> C64 {
-        let (a, b) = self.tilt_coefficients(eta);
+        self.tilt_outside_log_derivative_with(side, d_near, eta, self.tilt_coefficients(eta))
+    }
+
+    /// [`Self::tilt_outside_log_derivative`] with the rotation's (A, B) at eta given.
+    fn tilt_outside_log_derivative_with(&self, side: Side, d_near: f64, eta: f64, (a, b): (C64, C64)) -> C64 {
         let sg = side.sign();
         let t = (sg * (d_near + eta)).tan();
         let (near, far) = (1.0 / d_near.tan() + sg * t, 1.0 / (d_near + 2.0 * eta).tan() + sg * t);
@@ -230,6 +235,7 @@ impl KernelF64 {
     /// [`Self::increment_outside`] and its derivative in `d_near` (the closed-form Jacobian of the
     /// march, [`super::march`]): (1 + i n) (L K D_K + i beta R D_R) with D_K, D_R the log
     /// derivatives of L K ([`Self::outside_log_derivative`]) and of R.
+    #[cfg(test)]
     pub(crate) fn increment_with_derivative(
         &self,
         side: Side,
@@ -238,13 +244,27 @@ impl KernelF64 {
         n: f64,
         tilt: bool,
     ) -> (C64, C64) {
-        let k = self.outside(side, d_near, eta);
+        self.increment_with_derivative_with(&self.eta_factors(eta, tilt), side, d_near, eta, n, tilt)
+    }
+
+    /// [`Self::increment_with_derivative`] with the factors of eta given ([`Self::eta_factors`]
+    /// with the same `tilt`): the same operations, bit for bit.
+    pub(crate) fn increment_with_derivative_with(
+        &self,
+        f: &EtaFactors,
+        side: Side,
+        d_near: f64,
+        eta: f64,
+        n: f64,
+        tilt: bool,
+    ) -> (C64, C64) {
+        let k = self.outside_with(side, d_near, eta, f);
         let mut value = k;
         let mut slope = k * self.outside_log_derivative(side, d_near, eta);
         if tilt && !self.single {
-            let r = self.tilt_outside(side, d_near, eta) * C64::new(0.0, self.beta);
+            let r = self.tilt_outside_with(side, d_near, eta, f) * C64::new(0.0, self.beta);
             value += r;
-            slope += r * self.tilt_outside_log_derivative(side, d_near, eta);
+            slope += r * self.tilt_outside_log_derivative_with(side, d_near, eta, f.tilt);
         }
         let one_in = C64::new(1.0, n);
         (value * one_in, slope * one_in)

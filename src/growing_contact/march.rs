@@ -50,7 +50,7 @@ mod fields;
 mod history;
 mod jacobian;
 
-use history::HistoryNodes;
+use history::{HistoryNodes, PartialNode};
 
 /// Horner: sum_j p_j x^j (numpy order).
 fn poly(p: &[f64], x: f64) -> f64 {
@@ -241,6 +241,8 @@ pub struct March {
     /// Newton steps taken over all blocks.
     pub steps: usize,
     rules: Rules,
+    /// Per block, its history nodes on one Gauss segment, once it is final (module `history`).
+    standard: Vec<std::sync::OnceLock<std::sync::Arc<[history::HistoryNode]>>>,
 }
 
 /// Largest number of collocation points (lambda ~ 1.52).
@@ -352,6 +354,25 @@ impl March {
         Ok(self.setting.kernel.increment_outside(side, d, eta, n, self.setting.tilt) * b.p_prime(eta))
     }
 
+    /// [`Self::partial`] of the last block with its nodes at lambda tabled ([`Self::point_nodes`]).
+    fn partial_with(&self, side: Side, lambda: f64, nodes: &[PartialNode]) -> Result<C64, AdhesionError> {
+        let b = &self.blocks[self.blocks.len() - 1];
+        let sg = side.sign();
+        let span = lambda - b.start;
+        let (tilt, kernel) = (self.setting.tilt, &self.setting.kernel);
+        let mut acc = C64::new(0.0, 0.0);
+        for q in nodes {
+            let e = b.gamma_dd(lambda, q.eta);
+            let d = q.gap * (1.0 + sg * e);
+            if d.is_nan() || d <= 0.0 {
+                return Err(recedes(side, lambda));
+            }
+            let ratio = self.ratio_in(b, q.eta);
+            acc += kernel.increment_outside_with(&q.factors, side, d, q.eta, ratio, tilt) * b.p_prime(q.eta) * q.weight;
+        }
+        Ok(acc * span)
+    }
+
     /// The edge integral over (start, lambda) of block `k` (tanh-sinh in lambda - eta).
     fn partial(&self, side: Side, lambda: f64, k: usize) -> Result<C64, AdhesionError> {
         let b = &self.blocks[k];
@@ -411,7 +432,12 @@ impl March {
                     Some(hs) => hs[j][i],
                     None => self.history_at(&nodes[j], side, gl)?,
                 };
-                let total = h[i] + self.partial(side, lam, k)?;
+                let part = if nodes[j].partial.is_empty() {
+                    self.partial(side, lam, k)?
+                } else {
+                    self.partial_with(side, lam, &nodes[j].partial)?
+                };
+                let total = h[i] + part;
                 out.push((total.re - poly(&self.setting.profile, gl + side.sign() * lam)) / lam);
             }
             hist.push(h);
@@ -433,7 +459,8 @@ pub fn single_block(
     let rules = Rules::new(options)?;
     let g = vec![0.0; f.len()];
     let blocks = vec![Block::new(0.0, lambda, f, g, 0.0)];
-    Ok(March { setting: setting.clone(), options: *options, blocks, end: lambda, steps: 1, rules })
+    let standard = vec![Default::default()];
+    Ok(March { setting: setting.clone(), options: *options, blocks, end: lambda, steps: 1, rules, standard })
 }
 
 /// Marches from 0 to `end` (module doc).
@@ -450,13 +477,21 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         }
         MarchEnd::Load { limit, .. } => (options.block, (limit / options.block).ceil() as usize + 1),
     };
-    let mut mar = March { setting: setting.clone(), options: *options, blocks: Vec::new(), end: 0.0, steps: 0, rules };
+    let mut mar = March {
+        setting: setting.clone(),
+        options: *options,
+        blocks: Vec::new(),
+        end: 0.0,
+        steps: 0,
+        rules,
+        standard: Vec::new(),
+    };
     for k in 0..count {
         let start = k as f64 * h;
         let lambdas: Vec<f64> = mar.rules.radau.iter().map(|u| start + h * (1.0 + u) / 2.0).collect();
         let load_start = mar.blocks.last().map_or(0.0, |b| b.load_at(start));
         // The history's nodes at the block's points (the earlier blocks are final).
-        let nodes: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.history_nodes(l, k)).collect();
+        let nodes: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.point_nodes(l, k, start)).collect();
         // First guess: the previous block continued, or the symmetric single punch.
         let x: Vec<f64> = match mar.blocks.last() {
             Some(b) => {
@@ -470,8 +505,10 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
             let blk = Block::new(start, h, mar.rules.coefficients(&x[..m]), g, load_start);
             if mar.blocks.len() == k + 1 {
                 mar.blocks[k] = blk;
+                mar.standard[k] = Default::default();
             } else {
                 mar.blocks.push(blk);
+                mar.standard.push(Default::default());
             }
         };
         install(&mut mar, &x);

@@ -1,5 +1,6 @@
 //! The history of the edge integral ([`super`], "Quadrature"): the blocks before the current one
-//! at a size lambda, by Gauss-Legendre graded toward lambda, as a table of nodes.
+//! at a size lambda, by Gauss-Legendre graded toward lambda, as a table of nodes; and the current
+//! block's tanh-sinh nodes at that size.
 //!
 //! While a block is solved its points lambda_j do not move and the earlier blocks are final, so
 //! the nodes of each point's history, and at each node eta everything but gamma(lambda_j) (the
@@ -8,16 +9,22 @@
 //! the Jacobian's difference in gamma(lambda_j). [`HistoryNodes`] holds them once per point; each
 //! evaluation then costs the kernel's factors of the distance
 //!   d = (lambda - eta)(1 +- E),   E = (gamma(lambda) - gamma(eta))/(lambda - eta),
-//! alone. The operations and their order are those of the direct sum (per block, the graded
-//! segments' nodes in turn; then the blocks), so the values are bit for bit the same.
+//! alone. A finished block farther from lambda than its length is one Gauss segment, the same
+//! nodes for every such lambda: its table is made once per march ([`March::standard_nodes`]) and
+//! shared by every later point and every edge integral of the fields. The current block's
+//! tanh-sinh nodes (eta, the gap lambda - eta, the weight and eta's kernel factors) are tabled
+//! too ([`PartialNode`]); its polynomials change with the Newton steps and are evaluated anew.
+//! The operations and their order are those of the direct sum (per block, the graded segments'
+//! nodes in turn; then the blocks), so the values are bit for bit the same.
 
 use super::{recedes, March};
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel_f64::{EtaFactors, Side, C64};
+use std::sync::Arc;
 
 /// One node of the history at one size.
 #[derive(Debug, Clone)]
-struct HistoryNode {
+pub(super) struct HistoryNode {
     eta: f64,
     /// Gauss weight times the segment's half-length.
     weight: f64,
@@ -27,34 +34,89 @@ struct HistoryNode {
     factors: EtaFactors,
 }
 
-/// The history's nodes at the size `lambda`, block by block.
+/// One tanh-sinh node of the current block's part at one size: eta = start + span s, the gap
+/// span (1 - s), the rule's weight and eta's kernel factors.
+#[derive(Debug, Clone)]
+pub(super) struct PartialNode {
+    pub(super) eta: f64,
+    pub(super) gap: f64,
+    pub(super) weight: f64,
+    pub(super) factors: EtaFactors,
+}
+
+/// The history's nodes at the size `lambda`, block by block, and the current block's nodes.
 #[derive(Debug, Clone)]
 pub(super) struct HistoryNodes {
     lambda: f64,
-    blocks: Vec<Vec<HistoryNode>>,
+    blocks: Vec<Arc<[HistoryNode]>>,
+    /// The current block's tanh-sinh nodes (empty where the caller sums them itself).
+    pub(super) partial: Vec<PartialNode>,
 }
 
 impl March {
+    /// The nodes of block `k` on the single Gauss segment over the whole block (as
+    /// [`March::graded_nodes`] gives it for a singular point at least a block length away),
+    /// computed once per march; block `k` must be final.
+    fn standard_nodes(&self, k: usize) -> Arc<[HistoryNode]> {
+        let b = &self.blocks[k];
+        self.standard[k]
+            .get_or_init(|| {
+                let (mid, half) = (0.5 * (b.start + b.end()), 0.5 * (b.end() - b.start));
+                let nodes = self.rules.gauss.iter().map(|&(x, w)| (mid + half * x, w * half));
+                self.history_node_table(b, nodes)
+            })
+            .clone()
+    }
+
+    fn history_node_table(&self, b: &super::Block, nodes: impl Iterator<Item = (f64, f64)>) -> Arc<[HistoryNode]> {
+        let tilt = self.setting.tilt;
+        nodes
+            .map(|(eta, weight)| HistoryNode {
+                eta,
+                weight,
+                gamma: b.gamma(eta),
+                p_prime: b.p_prime(eta),
+                ratio: self.ratio_in(b, eta),
+                factors: self.setting.kernel.eta_factors(eta, tilt),
+            })
+            .collect()
+    }
+
     /// The nodes of the edge integral over the blocks before `upto` at the size `lambda`.
     pub(super) fn history_nodes(&self, lambda: f64, upto: usize) -> HistoryNodes {
-        let tilt = self.setting.tilt;
         let blocks = self.blocks[..upto]
             .iter()
-            .map(|b| {
-                self.graded_nodes(b.start, b.end(), lambda)
-                    .into_iter()
-                    .map(|(eta, weight)| HistoryNode {
-                        eta,
-                        weight,
-                        gamma: b.gamma(eta),
-                        p_prime: b.p_prime(eta),
-                        ratio: self.ratio_in(b, eta),
-                        factors: self.setting.kernel.eta_factors(eta, tilt),
-                    })
-                    .collect()
+            .enumerate()
+            .map(|(k, b)| {
+                // graded_nodes' first test: one segment over the whole block.
+                let (lo, hi) = (b.start, b.end());
+                let dist = lambda - hi;
+                if lambda >= hi && (hi - lo <= dist || dist <= 1e-13 * (hi - lo)) {
+                    self.standard_nodes(k)
+                } else {
+                    self.history_node_table(b, self.graded_nodes(lo, hi, lambda).into_iter())
+                }
             })
             .collect();
-        HistoryNodes { lambda, blocks }
+        HistoryNodes { lambda, blocks, partial: Vec::new() }
+    }
+
+    /// [`Self::history_nodes`] with the tanh-sinh nodes of the block starting at `start`
+    /// (the current one, the `upto`-th) at the same size.
+    pub(super) fn point_nodes(&self, lambda: f64, upto: usize, start: f64) -> HistoryNodes {
+        let mut nodes = self.history_nodes(lambda, upto);
+        let span = lambda - start;
+        let tilt = self.setting.tilt;
+        nodes.partial = self
+            .rules
+            .ts
+            .iter()
+            .map(|&(s, c, w)| {
+                let eta = start + span * s;
+                PartialNode { eta, gap: span * c, weight: w, factors: self.setting.kernel.eta_factors(eta, tilt) }
+            })
+            .collect();
+        nodes
     }
 
     /// The edge integral over the nodes' blocks at their size with gamma(lambda) = `gl`.
@@ -64,7 +126,7 @@ impl March {
         let mut acc = C64::new(0.0, 0.0);
         for block in &nodes.blocks {
             let mut part = C64::new(0.0, 0.0);
-            for n in block {
+            for n in block.iter() {
                 let e = (gl - n.gamma) / (lambda - n.eta);
                 let d = (lambda - n.eta) * (1.0 + sg * e);
                 if d.is_nan() || d <= 0.0 {
