@@ -368,7 +368,7 @@ impl March {
                 return Err(recedes(side, lambda));
             }
             let ratio = self.ratio_in(b, q.eta);
-            acc += kernel.increment_outside_with(&q.factors, side, d, q.eta, ratio, tilt) * b.p_prime(q.eta) * q.weight;
+            acc += kernel.increment_outside_node(&q.factors, side, d, q.eta, ratio, tilt) * b.p_prime(q.eta) * q.weight;
         }
         Ok(acc * span)
     }

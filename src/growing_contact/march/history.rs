@@ -19,7 +19,7 @@
 
 use super::{recedes, March};
 use crate::growing_contact::error::AdhesionError;
-use crate::growing_contact::kernel_f64::{EtaFactors, Side, C64};
+use crate::growing_contact::kernel_f64::{NodeFactors, Side, C64};
 use std::sync::Arc;
 
 /// One node of the history at one size.
@@ -31,7 +31,7 @@ pub(super) struct HistoryNode {
     gamma: f64,
     p_prime: f64,
     ratio: f64,
-    factors: EtaFactors,
+    factors: NodeFactors,
 }
 
 /// One tanh-sinh node of the current block's part at one size: eta = start + span s, the gap
@@ -41,7 +41,7 @@ pub(super) struct PartialNode {
     pub(super) eta: f64,
     pub(super) gap: f64,
     pub(super) weight: f64,
-    pub(super) factors: EtaFactors,
+    pub(super) factors: NodeFactors,
 }
 
 /// The history's nodes at the size `lambda`, block by block, and the current block's nodes.
@@ -77,7 +77,7 @@ impl March {
                 gamma: b.gamma(eta),
                 p_prime: b.p_prime(eta),
                 ratio: self.ratio_in(b, eta),
-                factors: self.setting.kernel.eta_factors(eta, tilt),
+                factors: self.setting.kernel.node_factors(eta, tilt),
             })
             .collect()
     }
@@ -113,7 +113,7 @@ impl March {
             .iter()
             .map(|&(s, c, w)| {
                 let eta = start + span * s;
-                PartialNode { eta, gap: span * c, weight: w, factors: self.setting.kernel.eta_factors(eta, tilt) }
+                PartialNode { eta, gap: span * c, weight: w, factors: self.setting.kernel.node_factors(eta, tilt) }
             })
             .collect();
         nodes
@@ -132,7 +132,7 @@ impl March {
                 if d.is_nan() || d <= 0.0 {
                     return Err(recedes(side, lambda));
                 }
-                part += kernel.increment_outside_with(&n.factors, side, d, n.eta, n.ratio, tilt) * n.p_prime * n.weight;
+                part += kernel.increment_outside_node(&n.factors, side, d, n.eta, n.ratio, tilt) * n.p_prime * n.weight;
             }
             acc += part;
         }

@@ -57,7 +57,7 @@ impl March {
             if d.is_nan() || d <= 0.0 {
                 return Err(recedes(side, lambda));
             }
-            let (kv, kd) = kern.increment_with_derivative_with(&q.factors, side, d, eta, n, self.setting.tilt);
+            let (kv, kd) = kern.increment_with_derivative_node(&q.factors, side, d, eta, n, self.setting.tilt);
             chebyshev_values(uq, &mut tq);
             divided_differences(ul, &tq, &mut dd);
             let pp = b.p_prime(eta);
