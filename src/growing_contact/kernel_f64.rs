@@ -18,6 +18,7 @@
 //!   R = Z(t) (A + B t)/ch outside, Z = |t + m|^(-1/2 + i eps) |t - m|^(-1/2 - i eps), times -1 left.
 //! It exists only for the periodic row (the term i beta dP/L vanishes as L -> infinity).
 
+use crate::numerics::sin_cos_f64::sin_cos;
 use nalgebra::Complex;
 
 /// Complex `f64`.
@@ -72,13 +73,21 @@ pub(crate) struct EtaFactors {
 /// ([`super::march`]) evaluate many distances at one eta, and with these each distance costs one
 /// sin_cos for sin d_near, sin d_far, cos chi' and sin chi' (the addition formulas; `outside_with`
 /// takes three sines and cosines), and the rotation's R shares K's power
-/// ([`KernelF64::increment_outside_node`]).
+/// ([`KernelF64::increment_outside_node`]). Its sines and cosines (of d_near and of the phase) are
+/// [`crate::numerics::sin_cos_f64`]'s, within 1 ulp of the correctly rounded ones.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct NodeFactors {
     base: EtaFactors,
     sin_eta: f64,
     sin_2eta: f64,
     cos_2eta: f64,
+}
+
+/// r e^(i theta) by [`sin_cos`] (the march's node kernel).
+#[inline]
+fn polar(r: f64, theta: f64) -> C64 {
+    let (s, c) = sin_cos(theta);
+    C64::new(r * c, r * s)
 }
 
 /// r^(-1/2 + i e) for r > 0.
@@ -122,7 +131,7 @@ impl KernelF64 {
     /// sin d_near, sin d_far, cos chi' and sin chi' at distance `d_near` on `side` (periodic row):
     /// one sin_cos and the addition formulas with the sines of eta and 2 eta.
     fn node_geometry(f: &NodeFactors, side: Side, d_near: f64) -> (f64, f64, f64, f64, f64) {
-        let (sn, cn) = d_near.sin_cos();
+        let (sn, cn) = sin_cos(d_near);
         let sf = sn * f.cos_2eta + cn * f.sin_2eta;
         let cos_chi = cn * f.base.cos_eta - sn * f.sin_eta;
         let sin_chi = side.sign() * (sn * f.base.cos_eta + cn * f.sin_eta);
@@ -150,7 +159,7 @@ impl KernelF64 {
         }
         let sg = side.sign();
         let (sn, _, sf, cos_chi, sin_chi) = Self::node_geometry(f, side, d_near);
-        let phase = C64::from_polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
+        let phase = polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
         let mut k = C64::new(cos_chi * f.base.cosh, -sin_chi * f.base.sinh) * phase;
         if tilt {
             k += self.node_tilt(f, phase, cos_chi, sin_chi) * C64::new(0.0, self.beta);
@@ -187,7 +196,7 @@ impl KernelF64 {
         let (sn, cn, sf, cos_chi, sin_chi) = Self::node_geometry(f, side, d_near);
         let cf = cn * f.cos_2eta - sn * f.sin_2eta;
         let (c_near, c_far) = (cn / sn, cf / sf);
-        let phase = C64::from_polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
+        let phase = polar(sg / (sn * sf).sqrt(), sg * self.eps * (sf / sn).ln());
         let (ch, sh) = (f.base.cosh, f.base.sinh);
         let cos_z = C64::new(cos_chi * ch, -sin_chi * sh);
         let sin_z = C64::new(sin_chi * ch, cos_chi * sh);
