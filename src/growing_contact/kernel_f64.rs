@@ -332,16 +332,11 @@ impl KernelF64 {
         k * C64::new(1.0, n)
     }
 
-    /// d ln R/d d_near of the rotation's slope outside (module doc), periodic row only: with
-    /// t = tan chi' and near, far = S(d_near), S(d_far) over cos eta cos chi',
+    /// d ln R/d d_near of the rotation's slope outside (module doc), periodic row only, with the
+    /// rotation's (A, B) at eta given: with t = tan chi' and near, far = S(d_near), S(d_far)
+    /// over cos eta cos chi',
     ///   (-1/2 + i eps) d ln t_+ + (-1/2 - i eps) d ln t_- + s B (1 + t^2)/(A + B t),
     /// d ln near = cot d_near + s t, d ln far = cot d_far + s t (t_+ = far right, near left).
-    #[cfg(test)]
-    fn tilt_outside_log_derivative(&self, side: Side, d_near: f64, eta: f64) -> C64 {
-        self.tilt_outside_log_derivative_with(side, d_near, eta, self.tilt_coefficients(eta))
-    }
-
-    /// [`Self::tilt_outside_log_derivative`] with the rotation's (A, B) at eta given.
     fn tilt_outside_log_derivative_with(&self, side: Side, d_near: f64, eta: f64, (a, b): (C64, C64)) -> C64 {
         let sg = side.sign();
         let t = (sg * (d_near + eta)).tan();
@@ -518,6 +513,7 @@ mod tests {
                             let (va, da) = kern.increment_with_derivative_node(&f, side, d, eta, 0.2, tilt);
                             let (vb, db) = kern.increment_with_derivative(side, d, eta, 0.2, tilt);
                             assert!((va - a).norm() <= 1e-15 * a.norm(), "value {va} vs {a}");
+                            assert!((vb - b).norm() <= 1e-15 * b.norm(), "value {vb} vs {b}");
                             let e2 = (da - db).norm() / db.norm();
                             assert!(e2 < 2e-14, "derivative {side:?} d {d} eta {eta} tilt {tilt}: {da} vs {db}");
                             worst = worst.max(e).max(e2);

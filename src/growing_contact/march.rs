@@ -243,6 +243,9 @@ pub struct March {
     rules: Rules,
     /// Per block, its history nodes on one Gauss segment, once it is final (module `history`).
     standard: Vec<std::sync::OnceLock<std::sync::Arc<[history::HistoryNode]>>>,
+    /// Per block, psi_hat at its points' leading and trailing ends as Chebyshev series in u (the
+    /// converged Newton's last residual; not for the symmetric march), for phi.
+    psi: Vec<Option<[Vec<f64>; 2]>>,
 }
 
 /// Largest number of collocation points (lambda ~ 1.52).
@@ -412,21 +415,25 @@ impl March {
         Ok(self.history(side, lambda, gl, k - 1)? + acc * span)
     }
 
-    /// The residuals (2 per point: leading, trailing) of the last block, divided by lambda, and
-    /// the history integrals (for the Jacobian).
+    /// The residuals (2 per point: leading, trailing) of the last block, divided by lambda, the
+    /// history integrals (for the Jacobian) and the edge integrals' imaginary parts, psi_hat at
+    /// the points' ends (for [`Self::psi_hat_integrals`]).
+    #[allow(clippy::type_complexity)]
     fn residual(
         &self,
         lambdas: &[f64],
         gammas: &[f64],
         with_history: Option<&[[C64; 2]]>,
         nodes: &[HistoryNodes],
-    ) -> Result<(Vec<f64>, Vec<[C64; 2]>), AdhesionError> {
+    ) -> Result<(Vec<f64>, Vec<[C64; 2]>, Vec<[f64; 2]>), AdhesionError> {
         let k = self.blocks.len() - 1;
         let sides: &[Side] = if self.setting.symmetric() { &[Side::Right] } else { &[Side::Right, Side::Left] };
         let mut out = Vec::with_capacity(sides.len() * lambdas.len());
         let mut hist = Vec::with_capacity(lambdas.len());
+        let mut ims = Vec::with_capacity(lambdas.len());
         for (j, (&lam, &gl)) in lambdas.iter().zip(gammas).enumerate() {
             let mut h = [C64::new(0.0, 0.0); 2];
+            let mut im = [0.0; 2];
             for (i, &side) in sides.iter().enumerate() {
                 h[i] = match with_history {
                     Some(hs) => hs[j][i],
@@ -438,11 +445,13 @@ impl March {
                     self.partial_with(side, lam, &nodes[j].partial)?
                 };
                 let total = h[i] + part;
+                im[i] = total.im;
                 out.push((total.re - poly(&self.setting.profile, gl + side.sign() * lam)) / lam);
             }
             hist.push(h);
+            ims.push(im);
         }
-        Ok((out, hist))
+        Ok((out, hist, ims))
     }
 }
 
@@ -460,7 +469,16 @@ pub fn single_block(
     let g = vec![0.0; f.len()];
     let blocks = vec![Block::new(0.0, lambda, f, g, 0.0)];
     let standard = vec![Default::default()];
-    Ok(March { setting: setting.clone(), options: *options, blocks, end: lambda, steps: 1, rules, standard })
+    Ok(March {
+        setting: setting.clone(),
+        options: *options,
+        blocks,
+        end: lambda,
+        steps: 1,
+        rules,
+        standard,
+        psi: vec![None],
+    })
 }
 
 /// Marches from 0 to `end` (module doc).
@@ -485,6 +503,7 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         steps: 0,
         rules,
         standard: Vec::new(),
+        psi: Vec::new(),
     };
     for k in 0..count {
         let start = k as f64 * h;
@@ -506,9 +525,11 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
             if mar.blocks.len() == k + 1 {
                 mar.blocks[k] = blk;
                 mar.standard[k] = Default::default();
+                mar.psi[k] = None;
             } else {
                 mar.blocks.push(blk);
                 mar.standard.push(Default::default());
+                mar.psi.push(None);
             }
         };
         install(&mut mar, &x);
@@ -611,17 +632,20 @@ fn newton(
     let mut done = false;
     // Near round-off the corrections stall at the noise of the residual times the
     // conditioning (small nu: ~1e-12); then the iterate of least residual is kept.
-    let mut best = (f64::INFINITY, x.clone());
+    let mut best = (f64::INFINITY, x.clone(), Vec::new());
+    // psi_hat at the points from the last residual (the iterate before the last correction).
+    let mut last_ims: Vec<[f64; 2]> = Vec::new();
     let mut stalls = 0;
     for _ in 0..40 {
         mar.steps += 1;
         let gammas: Vec<f64> =
             if symmetric { vec![0.0; m] } else { lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect() };
-        let (r, hist) = mar.residual(lambdas, &gammas, None, nodes)?;
+        let (r, hist, ims) = mar.residual(lambdas, &gammas, None, nodes)?;
         let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
         if rmax < best.0 {
-            best = (rmax, x.clone());
+            best = (rmax, x.clone(), ims.clone());
         }
+        last_ims = ims;
         if jac.is_none() {
             jac = Some(if closed {
                 jacobian::closed_form_jacobian(mar, &x, lambdas, &gammas, &hist, nodes)?
@@ -655,6 +679,7 @@ fn newton(
             }
             if stalls >= 3 {
                 x = best.1.clone();
+                last_ims = best.2.clone();
                 install(mar, &x);
                 done = true;
                 break;
@@ -663,6 +688,11 @@ fn newton(
             jac = None;
         }
         previous = size;
+    }
+    if done && !symmetric {
+        let k = mar.blocks.len() - 1;
+        let side = |i: usize| mar.rules.coefficients(&last_ims.iter().map(|v| v[i]).collect::<Vec<f64>>());
+        mar.psi[k] = Some([side(0), side(1)]);
     }
     Ok(done)
 }
@@ -693,7 +723,7 @@ fn jacobian_by_differences(
         let gp: Vec<f64> =
             if q == m { gammas.to_vec() } else { lambdas.iter().zip(&xp[m..]).map(|(l, g)| l * g).collect() };
         // The history at the unperturbed gamma: its dependence is added below.
-        let (rp, _) = mar.residual(lambdas, &gp, Some(hist), nodes)?;
+        let (rp, _, _) = mar.residual(lambdas, &gp, Some(hist), nodes)?;
         for row in 0..q {
             jac[(row, i)] = (rp[row] - r[row]) / step;
         }

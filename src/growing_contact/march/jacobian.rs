@@ -194,7 +194,7 @@ mod tests {
                 lambdas.iter().map(|l| b.p_prime(*l) / l).chain(lambdas.iter().map(|l| b.gamma(*l) / l)).collect();
             let gammas: Vec<f64> = lambdas.iter().map(|l| b.gamma(*l)).collect();
             let table: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.point_nodes(l, k, b.start)).collect();
-            let (_, hist) = mar.residual(&lambdas, &gammas, None, &table).unwrap();
+            let (_, hist, _) = mar.residual(&lambdas, &gammas, None, &table).unwrap();
             let closed = closed_form_jacobian(&mar, &x, &lambdas, &gammas, &hist, &table).unwrap();
             let (start, h, load_start) = (b.start, b.h, mar.blocks[k - 1].load_at(b.start));
             let nodes = lambdas.len();
@@ -211,7 +211,7 @@ mod tests {
                     xp[i] += sign * h;
                     install(mar, &xp);
                     let gp: Vec<f64> = lambdas.iter().zip(&xp[nodes..]).map(|(l, g)| l * g).collect();
-                    let (rp, _) = mar.residual(&lambdas, &gp, Some(&hist), &table).unwrap();
+                    let (rp, _, _) = mar.residual(&lambdas, &gp, Some(&hist), &table).unwrap();
                     for (c, v) in column.iter_mut().zip(rp) {
                         *c += sign * v / (2.0 * h);
                     }
