@@ -358,22 +358,34 @@ impl March {
     }
 
     /// [`Self::partial`] of the last block with its nodes at lambda tabled ([`Self::point_nodes`]).
-    fn partial_with(&self, side: Side, lambda: f64, nodes: &[PartialNode]) -> Result<C64, AdhesionError> {
+    /// On each of `sides` at once: the divided difference of gamma, P' and n at a node serve both
+    /// ends (the same values and sums as one side at a time; a side's result is its first error).
+    fn partial_with(&self, sides: &[Side], lambda: f64, nodes: &[PartialNode]) -> [Result<C64, AdhesionError>; 2] {
         let b = &self.blocks[self.blocks.len() - 1];
-        let sg = side.sign();
         let span = lambda - b.start;
         let (tilt, kernel) = (self.setting.tilt, &self.setting.kernel);
-        let mut acc = C64::new(0.0, 0.0);
+        let mut acc = [C64::new(0.0, 0.0); 2];
+        let mut failed = [false; 2];
         for q in nodes {
             let e = b.gamma_dd(lambda, q.eta);
-            let d = q.gap * (1.0 + sg * e);
-            if d.is_nan() || d <= 0.0 {
-                return Err(recedes(side, lambda));
+            let (ratio, pp) = (self.ratio_in(b, q.eta), b.p_prime(q.eta));
+            for (i, &side) in sides.iter().enumerate() {
+                if failed[i] {
+                    continue;
+                }
+                let d = q.gap * (1.0 + side.sign() * e);
+                if d.is_nan() || d <= 0.0 {
+                    failed[i] = true;
+                    continue;
+                }
+                acc[i] += kernel.increment_outside_node(&q.factors, side, d, q.eta, ratio, tilt) * pp * q.weight;
             }
-            let ratio = self.ratio_in(b, q.eta);
-            acc += kernel.increment_outside_node(&q.factors, side, d, q.eta, ratio, tilt) * b.p_prime(q.eta) * q.weight;
         }
-        Ok(acc * span)
+        let side_result = |i: usize| match sides.get(i) {
+            Some(&side) if failed[i] => Err(recedes(side, lambda)),
+            _ => Ok(acc[i] * span),
+        };
+        [side_result(0), side_result(1)]
     }
 
     /// The edge integral over (start, lambda) of block `k` (tanh-sinh in lambda - eta).
@@ -434,15 +446,15 @@ impl March {
         for (j, (&lam, &gl)) in lambdas.iter().zip(gammas).enumerate() {
             let mut h = [C64::new(0.0, 0.0); 2];
             let mut im = [0.0; 2];
+            let mut parts = (!nodes[j].partial.is_empty()).then(|| self.partial_with(sides, lam, &nodes[j].partial));
             for (i, &side) in sides.iter().enumerate() {
                 h[i] = match with_history {
                     Some(hs) => hs[j][i],
                     None => self.history_at(&nodes[j], side, gl)?,
                 };
-                let part = if nodes[j].partial.is_empty() {
-                    self.partial(side, lam, k)?
-                } else {
-                    self.partial_with(side, lam, &nodes[j].partial)?
+                let part = match parts.as_mut() {
+                    Some(p) => std::mem::replace(&mut p[i], Ok(C64::new(0.0, 0.0)))?,
+                    None => self.partial(side, lam, k)?,
                 };
                 let total = h[i] + part;
                 im[i] = total.im;
