@@ -24,6 +24,7 @@
 //! shipped scene: 1.27 of 1.88 million in its two marches).
 
 use super::{poly, recedes, HistoryNodes, March, PartialNode};
+use crate::growing_contact::chebyshev_f64::cheb;
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel_f64::{KernelF64, Side, C64};
 
@@ -49,11 +50,12 @@ impl March {
         // T_i(u_l).
         let mut tl = vec![0.0; m];
         chebyshev_values(ul, &mut tl);
+        let gm_l = cheb(&b.g, ul);
         let (mut tq, mut dd) = (vec![0.0; m], vec![0.0; m]);
         for q in nodes {
             let (gap, eta, w) = (q.gap, q.eta, q.weight);
             let uq = b.u(eta);
-            let d = gap * (1.0 + sg * b.gamma_dd(lambda, eta));
+            let d = gap * (1.0 + sg * b.gamma_dd_at(ul, gm_l, eta));
             if d.is_nan() || d <= 0.0 {
                 return Err(recedes(side, lambda));
             }
