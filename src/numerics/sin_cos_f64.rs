@@ -11,7 +11,10 @@
 //! near multiples of pi/2 and small ones, every result within 1 ulp (most exact). Outside
 //! |x| < 2^19 pi/2 (and for NaN, infinity) std's `sin_cos` answers.
 
-const INV_PIO2: f64 = 6.366_197_723_675_813_824_33e-1;
+// fdlibm's constants as published (each decimal rounds to the intended f64).
+#![allow(clippy::excessive_precision)]
+
+const INV_PIO2: f64 = std::f64::consts::FRAC_2_PI; // fdlibm's invpio2, 0x3FE45F306DC9C883
 const PIO2_1: f64 = 1.570_796_326_734_125_614_17; // first 33 bits of pi/2
 const PIO2_1T: f64 = 6.077_100_506_506_192_249_32e-11; // pi/2 - PIO2_1
 const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11; // second 33 bits of pi/2
@@ -62,7 +65,7 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() <= std::f64::consts::FRAC_PI_4 {
         return (kernel_sin(x, 0.0), kernel_cos(x, 0.0));
     }
-    if !(x.abs() < 823_550.0) {
+    if x.is_nan() || x.abs() >= 823_550.0 {
         return x.sin_cos();
     }
     // musl's __rem_pio2 medium case: n = round(x 2/pi), then one, two or three parts of pi/2
