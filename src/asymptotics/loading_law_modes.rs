@@ -73,6 +73,7 @@ use crate::model::OnPunchRow;
 use crate::model::{Material, ModelError};
 use crate::numerics::accuracy::{digits_cap_for_bits, verified_digits_mpfr};
 use crate::numerics::exact::to_float;
+use crate::numerics::mp_rounded;
 use crate::numerics::precision::{bits_for_digits, SOLVER_GUARD_BITS, VERIFY_EXTRA_BITS};
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsMpfr;
@@ -156,7 +157,7 @@ impl Symbol {
             }
             let (s, c) = (Float::with_val(prec, &rule.s[q]), Float::with_val(prec, &rule.c[q]));
             let ws = Float::with_val(prec, &rule.w[q] * &s);
-            let ln_c = Float::with_val(prec, c.ln_ref());
+            let ln_c = mp_rounded::ln(&c, prec);
             let zero = || Float::new(prec);
             let mut sides: [[Float; 2]; 2] = [[zero(), zero()], [zero(), zero()]];
             for (side, sigma) in [(0usize, 1i32), (1, -1)] {
@@ -165,8 +166,8 @@ impl Symbol {
                 let sg0 = Float::with_val(prec, &g0 * sigma);
                 let n0 = Float::with_val(prec, &sg0 + 1u32);
                 let d0 = Float::with_val(prec, &c * &sg0) + &s + 1u32;
-                let ln_n0 = Float::with_val(prec, n0.ln_ref());
-                let ln_d0 = Float::with_val(prec, d0.ln_ref());
+                let ln_n0 = mp_rounded::ln(&n0, prec);
+                let ln_d0 = mp_rounded::ln(&d0, prec);
                 let expo = Complex::with_val(prec, &a1 * Float::with_val(prec, &ln_c + &ln_n0))
                     + Complex::with_val(prec, &a2 * &ln_d0);
                 let k = Complex::with_val(prec, expo.exp_ref()) * sigma;
@@ -176,11 +177,7 @@ impl Symbol {
                 sides[side] = [wk.real().clone(), wg.real().clone()];
             }
             // ln s from the complement near s = 1 (s itself has lost the digits of 1 - s there).
-            let ln_s = if s > 0.5 {
-                Float::with_val(prec, (-c.clone()).ln_1p_ref())
-            } else {
-                Float::with_val(prec, s.ln_ref())
-            };
+            let ln_s = if s > 0.5 { Float::with_val(prec, (-c.clone()).ln_1p_ref()) } else { mp_rounded::ln(&s, prec) };
             let exp_ln_s = Float::with_val(prec, ln_s.exp_ref());
             nodes.push(Node { ln_s, exp_ln_s, c, sides });
         }

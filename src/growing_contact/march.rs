@@ -50,7 +50,7 @@ mod fields;
 mod history;
 mod jacobian;
 
-use history::HistoryNodes;
+use history::{HistoryNodes, PartialNode};
 
 /// Horner: sum_j p_j x^j (numpy order).
 fn poly(p: &[f64], x: f64) -> f64 {
@@ -184,8 +184,13 @@ impl Block {
     }
     /// (gamma(a) - gamma(b))/(a - b) for a, b in the block, accurate as b -> a.
     fn gamma_dd(&self, a: f64, b: f64) -> f64 {
-        let (ua, ub) = (self.u(a), self.u(b));
-        cheb(&self.g, ua) + b * cheb_dd(&self.g, ua, ub) * 2.0 / self.h
+        let ua = self.u(a);
+        self.gamma_dd_at(ua, cheb(&self.g, ua), b)
+    }
+    /// [`Self::gamma_dd`] with a's u and Gm(u) = cheb(g, u) given (the same operations: the
+    /// loops over one size's nodes evaluate Gm at the size once).
+    fn gamma_dd_at(&self, ua: f64, gm_a: f64, b: f64) -> f64 {
+        gm_a + b * cheb_dd(&self.g, ua, self.u(b)) * 2.0 / self.h
     }
 }
 
@@ -200,6 +205,11 @@ struct Rules {
     gauss: Vec<(f64, f64)>,
     /// Tanh-sinh on (0, 1): (s, 1 - s, weight).
     ts: Vec<(f64, f64, f64)>,
+    /// Gauss-Legendre rules of 0 ..= `gauss.len()` nodes for the history's far blocks (module
+    /// `history`; empty: every block with `gauss`).
+    far: Vec<Vec<(f64, f64)>>,
+    /// The bits the far blocks' rules aim at (the tanh-sinh rule's).
+    bits: u32,
 }
 
 impl Rules {
@@ -219,8 +229,18 @@ impl Rules {
         let to_cheb = v.try_inverse().ok_or_else(singular)?;
 
         let g = gauss_jacobi(o.gauss, 0.0, 0.0).map_err(quad)?;
-        let gauss = g.nodes.into_iter().zip(g.weights).collect();
-        Ok(Rules { radau, to_cheb, gauss, ts: tanh_sinh_f64(o.bits, 1.0) })
+        let gauss: Vec<(f64, f64)> = g.nodes.into_iter().zip(g.weights).collect();
+        let mut far = Vec::with_capacity(o.gauss + 1);
+        for n in 0..o.gauss {
+            far.push(if n < FAR_MIN_NODES {
+                Vec::new()
+            } else {
+                let g = gauss_jacobi(n, 0.0, 0.0).map_err(quad)?;
+                g.nodes.into_iter().zip(g.weights).collect()
+            });
+        }
+        far.push(gauss.clone());
+        Ok(Rules { radau, to_cheb, gauss, ts: tanh_sinh_f64(o.bits, 1.0), far, bits: o.bits })
     }
     fn coefficients(&self, values: &[f64]) -> Vec<f64> {
         (&self.to_cheb * nalgebra::DVector::from_column_slice(values)).iter().copied().collect()
@@ -241,6 +261,11 @@ pub struct March {
     /// Newton steps taken over all blocks.
     pub steps: usize,
     rules: Rules,
+    /// Per block, its history nodes on one Gauss segment, once it is final (module `history`).
+    standard: Vec<history::BlockTables>,
+    /// Per block, psi_hat at its points' leading and trailing ends as Chebyshev series in u (the
+    /// converged Newton's last residual; not for the symmetric march), for phi.
+    psi: Vec<Option<[Vec<f64>; 2]>>,
 }
 
 /// Largest number of collocation points (lambda ~ 1.52).
@@ -255,6 +280,9 @@ pub fn points_for(lambda: f64) -> Option<usize> {
     let m = (37.0 / rho.ln()).ceil() + 4.0;
     (m.is_finite() && m <= MAX_POINTS as f64).then_some((m as usize).max(8))
 }
+
+/// Fewest Gauss nodes on a far block of the history (module `history`).
+const FAR_MIN_NODES: usize = 4;
 
 /// A singular point closer than this fraction of a block to the block's end is integrated with
 /// the neighbouring block in one tanh-sinh piece (the graded Gauss rule needs its distance).
@@ -352,16 +380,51 @@ impl March {
         Ok(self.setting.kernel.increment_outside(side, d, eta, n, self.setting.tilt) * b.p_prime(eta))
     }
 
+    /// [`Self::partial`] of the last block with its nodes at lambda tabled ([`Self::point_nodes`]).
+    /// On each of `sides` at once: the divided difference of gamma, P' and n at a node serve both
+    /// ends (the same values and sums as one side at a time; a side's result is its first error).
+    fn partial_with(&self, sides: &[Side], lambda: f64, nodes: &[PartialNode]) -> [Result<C64, AdhesionError>; 2] {
+        let b = &self.blocks[self.blocks.len() - 1];
+        let span = lambda - b.start;
+        let (tilt, kernel) = (self.setting.tilt, &self.setting.kernel);
+        let mut acc = [C64::new(0.0, 0.0); 2];
+        let mut failed = [false; 2];
+        let ul = b.u(lambda);
+        let gm_l = cheb(&b.g, ul);
+        for q in nodes {
+            let e = b.gamma_dd_at(ul, gm_l, q.eta);
+            let (ratio, pp) = (self.ratio_in(b, q.eta), b.p_prime(q.eta));
+            for (i, &side) in sides.iter().enumerate() {
+                if failed[i] {
+                    continue;
+                }
+                let d = q.gap * (1.0 + side.sign() * e);
+                if d.is_nan() || d <= 0.0 {
+                    failed[i] = true;
+                    continue;
+                }
+                acc[i] += kernel.increment_outside_node(&q.factors, side, d, q.eta, ratio, tilt) * pp * q.weight;
+            }
+        }
+        let side_result = |i: usize| match sides.get(i) {
+            Some(&side) if failed[i] => Err(recedes(side, lambda)),
+            _ => Ok(acc[i] * span),
+        };
+        [side_result(0), side_result(1)]
+    }
+
     /// The edge integral over (start, lambda) of block `k` (tanh-sinh in lambda - eta).
     fn partial(&self, side: Side, lambda: f64, k: usize) -> Result<C64, AdhesionError> {
         let b = &self.blocks[k];
         let sg = side.sign();
         let span = lambda - b.start;
         let mut acc = C64::new(0.0, 0.0);
+        let ul = b.u(lambda);
+        let gm_l = cheb(&b.g, ul);
         for &(s, c, w) in &self.rules.ts {
             let gap = span * c;
             let eta = b.start + span * s;
-            let e = b.gamma_dd(lambda, eta);
+            let e = b.gamma_dd_at(ul, gm_l, eta);
             acc += self.edge_term(b, side, gap * (1.0 + sg * e), eta, lambda)? * w;
         }
         Ok(acc * span)
@@ -391,32 +454,43 @@ impl March {
         Ok(self.history(side, lambda, gl, k - 1)? + acc * span)
     }
 
-    /// The residuals (2 per point: leading, trailing) of the last block, divided by lambda, and
-    /// the history integrals (for the Jacobian).
+    /// The residuals (2 per point: leading, trailing) of the last block, divided by lambda, the
+    /// history integrals (for the Jacobian) and the edge integrals' imaginary parts, psi_hat at
+    /// the points' ends (for [`Self::psi_hat_integrals`]).
+    #[allow(clippy::type_complexity)]
     fn residual(
         &self,
         lambdas: &[f64],
         gammas: &[f64],
         with_history: Option<&[[C64; 2]]>,
         nodes: &[HistoryNodes],
-    ) -> Result<(Vec<f64>, Vec<[C64; 2]>), AdhesionError> {
+    ) -> Result<(Vec<f64>, Vec<[C64; 2]>, Vec<[f64; 2]>), AdhesionError> {
         let k = self.blocks.len() - 1;
         let sides: &[Side] = if self.setting.symmetric() { &[Side::Right] } else { &[Side::Right, Side::Left] };
         let mut out = Vec::with_capacity(sides.len() * lambdas.len());
         let mut hist = Vec::with_capacity(lambdas.len());
+        let mut ims = Vec::with_capacity(lambdas.len());
         for (j, (&lam, &gl)) in lambdas.iter().zip(gammas).enumerate() {
             let mut h = [C64::new(0.0, 0.0); 2];
+            let mut im = [0.0; 2];
+            let mut parts = (!nodes[j].partial.is_empty()).then(|| self.partial_with(sides, lam, &nodes[j].partial));
             for (i, &side) in sides.iter().enumerate() {
                 h[i] = match with_history {
                     Some(hs) => hs[j][i],
                     None => self.history_at(&nodes[j], side, gl)?,
                 };
-                let total = h[i] + self.partial(side, lam, k)?;
+                let part = match parts.as_mut() {
+                    Some(p) => std::mem::replace(&mut p[i], Ok(C64::new(0.0, 0.0)))?,
+                    None => self.partial(side, lam, k)?,
+                };
+                let total = h[i] + part;
+                im[i] = total.im;
                 out.push((total.re - poly(&self.setting.profile, gl + side.sign() * lam)) / lam);
             }
             hist.push(h);
+            ims.push(im);
         }
-        Ok((out, hist))
+        Ok((out, hist, ims))
     }
 }
 
@@ -433,12 +507,31 @@ pub fn single_block(
     let rules = Rules::new(options)?;
     let g = vec![0.0; f.len()];
     let blocks = vec![Block::new(0.0, lambda, f, g, 0.0)];
-    Ok(March { setting: setting.clone(), options: *options, blocks, end: lambda, steps: 1, rules })
+    let standard = vec![history::BlockTables::new(&rules)];
+    Ok(March {
+        setting: setting.clone(),
+        options: *options,
+        blocks,
+        end: lambda,
+        steps: 1,
+        rules,
+        standard,
+        psi: vec![None],
+    })
 }
 
 /// Marches from 0 to `end` (module doc).
 pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> Result<March, AdhesionError> {
-    let rules = Rules::new(options)?;
+    march_with(setting, options, end, Rules::new(options)?)
+}
+
+/// [`march`] with its rules.
+fn march_with(
+    setting: &MarchSetting,
+    options: &MarchOptions,
+    end: MarchEnd,
+    rules: Rules,
+) -> Result<March, AdhesionError> {
     let m = options.nodes;
     // Unknowns per block: the values of F, and of Gm unless the contact stays centred.
     let symmetric = setting.symmetric();
@@ -450,13 +543,22 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
         }
         MarchEnd::Load { limit, .. } => (options.block, (limit / options.block).ceil() as usize + 1),
     };
-    let mut mar = March { setting: setting.clone(), options: *options, blocks: Vec::new(), end: 0.0, steps: 0, rules };
+    let mut mar = March {
+        setting: setting.clone(),
+        options: *options,
+        blocks: Vec::new(),
+        end: 0.0,
+        steps: 0,
+        rules,
+        standard: Vec::new(),
+        psi: Vec::new(),
+    };
     for k in 0..count {
         let start = k as f64 * h;
         let lambdas: Vec<f64> = mar.rules.radau.iter().map(|u| start + h * (1.0 + u) / 2.0).collect();
         let load_start = mar.blocks.last().map_or(0.0, |b| b.load_at(start));
         // The history's nodes at the block's points (the earlier blocks are final).
-        let nodes: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.history_nodes(l, k)).collect();
+        let nodes: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.point_nodes(l, k, start)).collect();
         // First guess: the previous block continued, or the symmetric single punch.
         let x: Vec<f64> = match mar.blocks.last() {
             Some(b) => {
@@ -470,8 +572,12 @@ pub fn march(setting: &MarchSetting, options: &MarchOptions, end: MarchEnd) -> R
             let blk = Block::new(start, h, mar.rules.coefficients(&x[..m]), g, load_start);
             if mar.blocks.len() == k + 1 {
                 mar.blocks[k] = blk;
+                mar.standard[k] = history::BlockTables::new(&mar.rules);
+                mar.psi[k] = None;
             } else {
                 mar.blocks.push(blk);
+                mar.standard.push(history::BlockTables::new(&mar.rules));
+                mar.psi.push(None);
             }
         };
         install(&mut mar, &x);
@@ -569,36 +675,42 @@ fn newton(
 ) -> Result<bool, AdhesionError> {
     let m = lambdas.len();
     let symmetric = x.len() == m;
-    let mut jac: Option<nalgebra::DMatrix<f64>> = None;
+    // The Jacobian's LU factors, kept while the Jacobian is (the same factors each step).
+    let mut jac: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>> = None;
     let mut previous = f64::INFINITY;
     let mut done = false;
     // Near round-off the corrections stall at the noise of the residual times the
     // conditioning (small nu: ~1e-12); then the iterate of least residual is kept.
-    let mut best = (f64::INFINITY, x.clone());
+    let mut best = (f64::INFINITY, x.clone(), Vec::new());
+    // psi_hat at the points from the last residual (the iterate before the last correction).
+    let mut last_ims: Vec<[f64; 2]> = Vec::new();
     let mut stalls = 0;
     for _ in 0..40 {
         mar.steps += 1;
         let gammas: Vec<f64> =
             if symmetric { vec![0.0; m] } else { lambdas.iter().zip(&x[m..]).map(|(l, g)| l * g).collect() };
-        let (r, hist) = mar.residual(lambdas, &gammas, None, nodes)?;
+        let (r, hist, ims) = mar.residual(lambdas, &gammas, None, nodes)?;
         let rmax = r.iter().fold(0f64, |a, v| a.max(v.abs()));
         if rmax < best.0 {
-            best = (rmax, x.clone());
+            best = (rmax, x.clone(), ims.clone());
         }
+        last_ims = ims;
         if jac.is_none() {
-            jac = Some(if closed {
-                jacobian::closed_form_jacobian(mar, &x, lambdas, &gammas, &hist, nodes)?
-            } else {
-                jacobian_by_differences(mar, &x, lambdas, &gammas, &r, &hist, nodes, install)?
-            });
+            jac = Some(
+                if closed {
+                    jacobian::closed_form_jacobian(mar, &x, lambdas, &gammas, &hist, nodes)?
+                } else {
+                    jacobian_by_differences(mar, &x, lambdas, &gammas, &r, &hist, nodes, install)?
+                }
+                .lu(),
+            );
             install(mar, &x);
         }
-        let j = jac.as_ref().expect("set above");
-        let delta =
-            j.clone().lu().solve(&nalgebra::DVector::from_column_slice(&r)).ok_or(AdhesionError::NotConverged {
-                what: "loading-law march Newton",
-                reason: "singular Jacobian".into(),
-            })?;
+        let lu = jac.as_ref().expect("set above");
+        let delta = lu.solve(&nalgebra::DVector::from_column_slice(&r)).ok_or(AdhesionError::NotConverged {
+            what: "loading-law march Newton",
+            reason: "singular Jacobian".into(),
+        })?;
         let size = delta.iter().fold(0f64, |a, v| a.max(v.abs()));
         for (xi, d) in x.iter_mut().zip(delta.iter()) {
             *xi -= d;
@@ -618,6 +730,7 @@ fn newton(
             }
             if stalls >= 3 {
                 x = best.1.clone();
+                last_ims = best.2.clone();
                 install(mar, &x);
                 done = true;
                 break;
@@ -626,6 +739,11 @@ fn newton(
             jac = None;
         }
         previous = size;
+    }
+    if done && !symmetric {
+        let k = mar.blocks.len() - 1;
+        let side = |i: usize| mar.rules.coefficients(&last_ims.iter().map(|v| v[i]).collect::<Vec<f64>>());
+        mar.psi[k] = Some([side(0), side(1)]);
     }
     Ok(done)
 }
@@ -656,7 +774,7 @@ fn jacobian_by_differences(
         let gp: Vec<f64> =
             if q == m { gammas.to_vec() } else { lambdas.iter().zip(&xp[m..]).map(|(l, g)| l * g).collect() };
         // The history at the unperturbed gamma: its dependence is added below.
-        let (rp, _) = mar.residual(lambdas, &gp, Some(hist), nodes)?;
+        let (rp, _, _) = mar.residual(lambdas, &gp, Some(hist), nodes)?;
         for row in 0..q {
             jac[(row, i)] = (rp[row] - r[row]) / step;
         }
@@ -724,6 +842,40 @@ mod tests {
             let lam = m.end;
             assert!((m.load(lam) - 0.485_888_394_652_517_04).abs() < 2e-15, "{}", m.load(lam));
             assert!((m.gamma(lam) / lam + 0.041_809_461_737_010_47).abs() < 2e-15, "{}", m.gamma(lam) / lam);
+        }
+    }
+
+    /// The history's far blocks with fewer Gauss nodes (module `history`) against every block
+    /// with `gauss` nodes, on the march to Lambda = pi/6 (nu = 0.3, n = 1/5, both conventions,
+    /// the nominal and the check discretisation): P and gamma at the end, psi_hat and sigma_hat at
+    /// five points within 2e-15 of their largest values (measured 1.3e-16 .. 7.1e-16: where
+    /// Newton stops, < 4e-15 of the values).
+    #[test]
+    fn far_blocks_with_fewer_nodes_change_nothing() {
+        for periodic in [false, true] {
+            let s = setting((3, 10), 0.2, periodic, false);
+            for o in [MarchOptions::NOMINAL, MarchOptions::NOMINAL.refined()] {
+                let end = MarchEnd::Size(PI / 6.0);
+                let a = march(&s, &o, end).unwrap();
+                let mut rules = Rules::new(&o).unwrap();
+                rules.far.clear();
+                let b = march_with(&s, &o, end, rules).unwrap();
+                let lam = a.end;
+                let values = |m: &March| {
+                    let mut v = vec![m.load(lam), m.gamma(lam)];
+                    for h in [-0.9, -0.5, 0.0, 0.5, 0.9] {
+                        let chi = m.gamma(lam) + lam * h;
+                        let sigma = m.sigma_hat(chi).unwrap();
+                        v.extend([m.psi_hat(chi).unwrap(), sigma.re, sigma.im]);
+                    }
+                    v
+                };
+                let (va, vb) = (values(&a), values(&b));
+                let scale = vb.iter().fold(0f64, |m, x| m.max(x.abs()));
+                let err = va.iter().zip(&vb).fold(0f64, |m, (x, y)| m.max((x - y).abs()));
+                eprintln!("periodic {periodic} nodes {}: {err:e} of {scale:e}", o.nodes);
+                assert!(err <= 2e-15 * scale, "periodic {periodic} nodes {}: {err:e} of {scale:e}", o.nodes);
+            }
         }
     }
 }

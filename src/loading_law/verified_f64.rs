@@ -228,6 +228,18 @@ pub const SMALL_CONTACT_ROUNDOFF: f64 = 2e-3;
 /// and 1/8 agree with the MPFR collocation, tests/all/loading_law_agreement.rs); a given load keeps
 /// the blocks (and is refused there as before).
 pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSolutionF64, AdhesionError> {
+    solve_law_f64_beside(problem, xh, || ()).map(|(sol, ())| sol)
+}
+
+/// [`solve_law_f64`], and `beside()` after the nominal run on its CPU while the check run (the
+/// longer, about 2.7 times the nominal one at blocks of 0.05) has the other to itself
+/// ([`crate::numerics::parallel::join`]; `solve` runs the mode check there). `beside` is not run
+/// where the solve fails before or in its nominal run.
+pub fn solve_law_f64_beside<T: Send>(
+    problem: &LoadingLawProblem,
+    xh: &[Exact],
+    beside: impl FnOnce() -> T + Send,
+) -> Result<(LawSolutionF64, T), AdhesionError> {
     let eps = AdhesionParamsF64::new(problem.material()).eps;
     if let (true, LawSize::HalfLength(l)) = (eps > SMALL_NU_EPS, problem.size()) {
         let lambda = match problem.period() {
@@ -237,29 +249,22 @@ pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSol
         if let Some(m) = crate::growing_contact::march::points_for(lambda) {
             let nominal = MarchOptions { nodes: m, block: lambda, gauss: 40, bits: 60 };
             let check = MarchOptions { nodes: m + 8, block: lambda, gauss: 52, bits: 76 };
-            return solve_law_f64_runs(problem, xh, &nominal, &check);
+            return solve_law_f64_runs(problem, xh, &nominal, &check, beside);
         }
     }
-    solve_law_f64_with(problem, xh, &MarchOptions::NOMINAL)
+    let options = MarchOptions::NOMINAL;
+    solve_law_f64_runs(problem, xh, &options, &options.refined(), beside)
 }
 
-/// [`solve_law_f64`] with the nominal discretisation `options` (the check runs
-/// `options.refined()`).
-pub(crate) fn solve_law_f64_with(
-    problem: &LoadingLawProblem,
-    xh: &[Exact],
-    options: &MarchOptions,
-) -> Result<LawSolutionF64, AdhesionError> {
-    solve_law_f64_runs(problem, xh, options, &options.refined())
-}
-
-/// The nominal run with `options` and the check run with `check`.
-fn solve_law_f64_runs(
+/// The nominal run with `options` and the check run with `check`, and `beside` after the
+/// nominal run ([`solve_law_f64_beside`]).
+fn solve_law_f64_runs<T: Send>(
     problem: &LoadingLawProblem,
     xh: &[Exact],
     options: &MarchOptions,
     check: &MarchOptions,
-) -> Result<LawSolutionF64, AdhesionError> {
+    beside: impl FnOnce() -> T + Send,
+) -> Result<(LawSolutionF64, T), AdhesionError> {
     for h in xh {
         if h.abs() >= Exact::from_integer(1.into()) {
             return Err(AdhesionError::InvalidArgument {
@@ -269,14 +274,19 @@ fn solve_law_f64_runs(
             });
         }
     }
-    // The nominal and check runs are independent: on two CPUs ([`crate::numerics::parallel`];
-    // serially inside another map's worker). Each run's result is its serial one; the nominal
+    // The nominal and check runs are independent: on two CPUs ([`crate::numerics::parallel::join`];
+    // in turn inside another map's worker). Each run's result is its serial one; the nominal
     // run's error comes first, as when the check ran after it.
-    let [u, v]: [Result<LawValuesF64, AdhesionError>; 2] =
-        crate::numerics::parallel::map(&[options, check], |_, o| run(problem, xh, o))
-            .try_into()
-            .unwrap_or_else(|_| unreachable!("parallel::map returns one result per item"));
+    let ((u, extra), v) = crate::numerics::parallel::join(
+        || {
+            let u = run(problem, xh, options);
+            let extra = u.is_ok().then(beside);
+            (u, extra)
+        },
+        || run(problem, xh, check),
+    );
     let u = u?;
+    let extra = extra.unwrap_or_else(|| unreachable!("beside ran after the nominal run succeeded"));
     // Below lambda = 1e-6 the marching's P2 and a lose every digit while its check run agrees with
     // it (issue 34, fuzzing: P2 off by a factor 2 at lambda = 4e-9 and 1e-8, claiming 13 digits):
     // beyond this method's reach.
@@ -336,5 +346,5 @@ fn solve_law_f64_runs(
     // No path at l_j = j l/16, profile stresses or end stresses from this method: their digit
     // groups are the cap and describe nothing (the JSON prints them null).
     let digits = LawDigits { ends, loads, fields, path: cap, stresses: cap, headline, friction: cap, end_phases: cap };
-    Ok(LawSolutionF64 { values: u, digits })
+    Ok((LawSolutionF64 { values: u, digits }, extra))
 }

@@ -17,4 +17,5 @@ pub mod parallel;
 pub mod precision;
 pub mod real_series;
 pub mod roots;
+pub(crate) mod sin_cos_f64;
 pub mod tanh_sinh;

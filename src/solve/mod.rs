@@ -466,8 +466,10 @@ fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
 }
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
-    let (sol, mode) = with_law_mode(p, || crate::loading_law::verified_f64::solve_law_f64(p, &scene.output.points));
-    let sol = sol?;
+    // The mode check after the nominal run, on its CPU (the check run holds the other).
+    let (sol, mode) = crate::loading_law::verified_f64::solve_law_f64_beside(p, &scene.output.points, || {
+        crate::asymptotics::loading_law_modes::problem_mode(p).ok()
+    })?;
     let shown = req.digits.min(crate::numerics::accuracy::F64_PRINT_DIGITS - 1);
     let (mut m, values) = answer_law::law_answer_json_f64(p, &sol, shown, mode);
     f64_digits(&mut m, req.digits);

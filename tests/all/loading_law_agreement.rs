@@ -305,3 +305,108 @@ fn zero_ratio_in_mpfr_is_problem_2_in_both_conventions() {
         assert!(e < 1e-18, "{convention:?}: {} against {}: {e:e}", l.values.p2, m.solution.normal_load);
     }
 }
+
+/// The shipped scenes' MPFR answers (`periodic-contact solve SCENE --json`, 20 digits asked,
+/// 20.3 verified, main at 547bebb): a, b, c, P1, P2, then psi, phi, q1, q2 at the five points.
+const SHIPPED_MPFR: [(&str, [&str; 25]); 2] = [
+    (
+        include_str!("../../scenes/adhesion_loading_law.toml"),
+        [
+            "1.73634910289501745378e-1",
+            "1.59698423043831587955e-1",
+            "-6.96824362283507871157e-3",
+            "9.84615745285367350143e-3",
+            "4.92307872642683675071e-2",
+            "-3.87258496594806307329e-2",
+            "2.63859403132585757480e-3",
+            "-2.35460405772850550261e-2",
+            "7.96516504197035350675e-2",
+            "-1.83506666732923788860e-2",
+            "7.88547972480396878785e-4",
+            "-9.56159606974067744179e-3",
+            "1.65854874195023672970e-1",
+            "-1.28160507752251191982e-3",
+            "4.46391090291761537376e-6",
+            "3.33462636690005776130e-2",
+            "1.95668651388474898628e-1",
+            "-8.34059832585045482455e-2",
+            "-3.15375833418746882104e-3",
+            "7.60704741578671923195e-2",
+            "1.59829145443195948169e-1",
+            "-1.64703726859868115065e-1",
+            "-1.13518297348787131694e-2",
+            "5.71842660377072863992e-2",
+            "7.06173012018933750594e-2",
+        ],
+    ),
+    (
+        include_str!("../../scenes/adhesion_loading_law_periodic.toml"),
+        [
+            "1.70670998458906358911e-1",
+            "1.62662334874426974423e-1",
+            "-4.00433179223969224388e-3",
+            "9.62029771919112068436e-3",
+            "4.81014885959556034218e-2",
+            "7.97411778186041861464e-3",
+            "2.65997184162496473667e-4",
+            "-1.12437408177629332679e-2",
+            "8.03050135669198420810e-2",
+            "-3.82101176361105861247e-3",
+            "3.37728258397529954373e-4",
+            "3.64526058827914962842e-3",
+            "1.62020789306495085252e-1",
+            "-7.08064673876536965908e-4",
+            "1.43628385167026823536e-6",
+            "3.47488231108302138109e-2",
+            "1.89699294654908949666e-1",
+            "-7.13686026493105249337e-2",
+            "-3.00005043278529917945e-3",
+            "6.06548225055266042430e-2",
+            "1.55450713472676373268e-1",
+            "-1.13823166136952897851e-1",
+            "-9.25258347196238087043e-3",
+            "4.22813216280259530737e-2",
+            "7.14964939710510331081e-2",
+        ],
+    ),
+];
+
+/// The f64 answer of both shipped loading-law scenes (the `paper` scene and its `periodic`
+/// twin, five points each) against their MPFR answers (SHIPPED_MPFR): every value within its
+/// claimed digits of its scale (l for the ends, P2 for the loads, k l, k l^2, E* k l for psi,
+/// phi, the stresses; k = E* = 1 here), and each group to >= 13.5 digits (measured at 547bebb:
+/// ends 14.6, loads 14.1, fields 13.7; the claims 12.2-12.3 are the round-off floor of the
+/// check run, `numerics::accuracy::f64_digits_nodes`). The march's node kernel, tables and
+/// quadrature rules (docs/performance.md "The loading law", round six) move values within this.
+#[test]
+fn shipped_scenes_f64_against_mpfr() {
+    use periodic_contact::scene::parse::parse_scene;
+    use periodic_contact::scene::SceneProblem;
+    for (text, mpfr) in SHIPPED_MPFR {
+        let scene = parse_scene(text).unwrap();
+        let SceneProblem::LoadingLaw(p) = scene.problem else { panic!("a loading-law scene") };
+        let f = solve_law_f64(&p, &scene.output.points).unwrap();
+        let (u, dg) = (&f.values, &f.digits);
+        let m: Vec<f64> = mpfr.iter().map(|s| s.parse().unwrap()).collect();
+        let d = |x: f64, y: f64, s: f64| -(((x - y).abs() / s.abs()).max(1e-17)).log10();
+        let l = u.l;
+        let ends = d(u.a, m[0], l).min(d(u.b, m[1], l)).min(d(u.c, m[2], l));
+        let loads = d(u.p1, m[3], m[4]).min(d(u.p2, m[4], m[4]));
+        let mut fields = 17.0f64;
+        for (i, pt) in u.points.iter().enumerate() {
+            let r = &m[5 + 4 * i..9 + 4 * i];
+            fields = fields
+                .min(d(pt.psi, r[0], l))
+                .min(d(pt.phi, r[1], l * l))
+                .min(d(pt.q1, r[2], l))
+                .min(d(pt.q2, r[3], l));
+        }
+        eprintln!("{:?}: agree ends {ends:.1} loads {loads:.1} fields {fields:.1}; claims {dg:?}", p.convention());
+        assert_eq!(u.points.len(), 5);
+        assert!(
+            dg.ends <= ends && dg.loads <= loads && dg.fields <= fields,
+            "claims {dg:?} over {ends} {loads} {fields}"
+        );
+        assert!(ends >= 13.5 && loads >= 13.5 && fields >= 13.5, "agreement {ends} {loads} {fields}");
+    }
+}

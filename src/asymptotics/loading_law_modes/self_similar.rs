@@ -17,6 +17,7 @@
 //! Where either stage does not converge, the caller solves by `law_coefficients` (with its
 //! continuation in n).
 
+use crate::numerics::mp_rounded;
 use crate::numerics::tanh_sinh::TanhSinh;
 use crate::params::adhesion::AdhesionParamsMpfr;
 use nalgebra::Complex;
@@ -107,7 +108,7 @@ fn newton_mpfr(
         .map(|q| {
             let (s, c) = (Float::with_val(prec, &rule.s[q]), Float::with_val(prec, &rule.c[q]));
             let ws = Float::with_val(prec, &rule.w[q] * &s);
-            let ln_c = Float::with_val(prec, c.ln_ref());
+            let ln_c = mp_rounded::ln(&c, prec);
             (s, c, ws, ln_c)
         })
         .collect();
@@ -126,11 +127,11 @@ fn newton_mpfr(
             if n0 <= 0 {
                 return None;
             }
-            let ln_n0 = Float::with_val(prec, n0.ln_ref());
+            let ln_n0 = mp_rounded::ln(&n0, prec);
             let (mut acc, mut mg) = (MComplex::new(prec), MComplex::new(prec));
             for (s, c, ws, ln_c) in &pts {
                 let d0 = Float::with_val(prec, c * &sg0) + s + 1u32;
-                let ln_d0 = Float::with_val(prec, d0.ln_ref());
+                let ln_d0 = mp_rounded::ln(&d0, prec);
                 let expo = MComplex::with_val(prec, &a1 * Float::with_val(prec, ln_c + &ln_n0))
                     + MComplex::with_val(prec, &a2 * &ln_d0);
                 let k0 = MComplex::with_val(prec, expo.exp_ref()) * ws * sigma;

@@ -23,14 +23,22 @@
 //! unknown (the differences took two thirds of the f64 loading law's kernel evaluations on the
 //! shipped scene: 1.27 of 1.88 million in its two marches).
 
-use super::{poly, recedes, HistoryNodes, March};
+use super::{poly, recedes, HistoryNodes, March, PartialNode};
+use crate::growing_contact::chebyshev_f64::cheb;
 use crate::growing_contact::error::AdhesionError;
 use crate::growing_contact::kernel_f64::{KernelF64, Side, C64};
 
 impl March {
     /// d Re Q/d f_i and d Re Q/d g_i (module doc) of the last block at the size `lambda` on
     /// `side`, added into `df` and `dg` (length m each).
-    fn partial_gradient(&self, side: Side, lambda: f64, df: &mut [f64], dg: &mut [f64]) -> Result<(), AdhesionError> {
+    fn partial_gradient(
+        &self,
+        side: Side,
+        lambda: f64,
+        nodes: &[PartialNode],
+        df: &mut [f64],
+        dg: &mut [f64],
+    ) -> Result<(), AdhesionError> {
         let k = self.blocks.len() - 1;
         let b = &self.blocks[k];
         let sg = side.sign();
@@ -42,16 +50,16 @@ impl March {
         // T_i(u_l).
         let mut tl = vec![0.0; m];
         chebyshev_values(ul, &mut tl);
+        let gm_l = cheb(&b.g, ul);
         let (mut tq, mut dd) = (vec![0.0; m], vec![0.0; m]);
-        for &(s, c, w) in &self.rules.ts {
-            let gap = span * c;
-            let eta = b.start + span * s;
+        for q in nodes {
+            let (gap, eta, w) = (q.gap, q.eta, q.weight);
             let uq = b.u(eta);
-            let d = gap * (1.0 + sg * b.gamma_dd(lambda, eta));
+            let d = gap * (1.0 + sg * b.gamma_dd_at(ul, gm_l, eta));
             if d.is_nan() || d <= 0.0 {
                 return Err(recedes(side, lambda));
             }
-            let (kv, kd) = kern.increment_with_derivative(side, d, eta, n, self.setting.tilt);
+            let (kv, kd) = kern.increment_with_derivative_node(&q.factors, side, d, eta, n, self.setting.tilt);
             chebyshev_values(uq, &mut tq);
             divided_differences(ul, &tq, &mut dd);
             let pp = b.p_prime(eta);
@@ -120,7 +128,7 @@ pub(super) fn closed_form_jacobian(
     for (j, &lam) in lambdas.iter().enumerate() {
         for (i, &side) in sides.iter().enumerate() {
             df.iter_mut().chain(dg.iter_mut()).for_each(|v| *v = 0.0);
-            mar.partial_gradient(side, lam, &mut df, &mut dg)?;
+            mar.partial_gradient(side, lam, &nodes[j].partial, &mut df, &mut dg)?;
             let row = sides.len() * j + i;
             for c in 0..m {
                 by_coefficient[(row, c)] = df[c] / lam;
@@ -187,8 +195,8 @@ mod tests {
             let x: Vec<f64> =
                 lambdas.iter().map(|l| b.p_prime(*l) / l).chain(lambdas.iter().map(|l| b.gamma(*l) / l)).collect();
             let gammas: Vec<f64> = lambdas.iter().map(|l| b.gamma(*l)).collect();
-            let table: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.history_nodes(l, k)).collect();
-            let (_, hist) = mar.residual(&lambdas, &gammas, None, &table).unwrap();
+            let table: Vec<HistoryNodes> = lambdas.iter().map(|&l| mar.point_nodes(l, k, b.start)).collect();
+            let (_, hist, _) = mar.residual(&lambdas, &gammas, None, &table).unwrap();
             let closed = closed_form_jacobian(&mar, &x, &lambdas, &gammas, &hist, &table).unwrap();
             let (start, h, load_start) = (b.start, b.h, mar.blocks[k - 1].load_at(b.start));
             let nodes = lambdas.len();
@@ -205,7 +213,7 @@ mod tests {
                     xp[i] += sign * h;
                     install(mar, &xp);
                     let gp: Vec<f64> = lambdas.iter().zip(&xp[nodes..]).map(|(l, g)| l * g).collect();
-                    let (rp, _) = mar.residual(&lambdas, &gp, Some(&hist), &table).unwrap();
+                    let (rp, _, _) = mar.residual(&lambdas, &gp, Some(&hist), &table).unwrap();
                     for (c, v) in column.iter_mut().zip(rp) {
                         *c += sign * v / (2.0 * h);
                     }
