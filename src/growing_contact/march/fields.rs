@@ -161,10 +161,7 @@ impl March {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{march, MarchEnd, MarchOptions, MarchSetting};
-    use crate::growing_contact::kernel_f64::KernelF64;
-    use crate::model::{Exact, Material};
-    use crate::params::adhesion::AdhesionParamsF64;
+    use super::super::{march, MarchEnd, MarchOptions};
     use std::f64::consts::PI;
 
     /// phi from the blocks' interpolants of psi_hat against phi from an edge integral at every
@@ -173,19 +170,8 @@ mod tests {
     /// conventions: within 1e-15 of the largest |phi| (measured 0.8e-16 .. 1.9e-16).
     #[test]
     fn interpolated_phi_equals_the_edge_integrals() {
-        let m = Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
-        let c = AdhesionParamsF64::new(&m);
         for tilt in [false, true] {
-            let s = MarchSetting {
-                kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
-                tilt,
-                slope: vec![0.2],
-                p2_per_p: 1.0 / (PI * PI),
-                profile: vec![0.0, PI],
-                start: 2.0 * c.load_constant,
-                law_key: "tangential_ratio",
-                law_text: "1/5".into(),
-            };
+            let s = super::super::test_setting(tilt);
             for o in [MarchOptions::NOMINAL, MarchOptions::NOMINAL.refined()] {
                 let mar = march(&s, &o, MarchEnd::Size(PI / 6.0)).unwrap();
                 assert!(mar.psi.iter().all(Option::is_some), "every block keeps its psi_hat");

@@ -162,11 +162,8 @@ pub(super) fn closed_form_jacobian(
 
 #[cfg(test)]
 mod tests {
-    use super::super::{march, MarchEnd, MarchOptions, MarchSetting};
+    use super::super::{march, MarchEnd, MarchOptions};
     use super::*;
-    use crate::model::{Exact, Material};
-    use crate::params::adhesion::AdhesionParamsF64;
-    use std::f64::consts::PI;
 
     /// The closed form against central differences in every value (step 1e-7, the history's
     /// share by its difference in gl as the closed form takes it), at the last block of a march to
@@ -175,19 +172,8 @@ mod tests {
     /// (measured 4e-10).
     #[test]
     fn closed_form_jacobian_equals_the_differences() {
-        let m = Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
-        let c = AdhesionParamsF64::new(&m);
         for tilt in [false, true] {
-            let s = MarchSetting {
-                kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
-                tilt,
-                slope: vec![0.2],
-                p2_per_p: 1.0 / (PI * PI),
-                profile: vec![0.0, PI],
-                start: 2.0 * c.load_constant,
-                law_key: "tangential_ratio",
-                law_text: "1/5".into(),
-            };
+            let s = super::super::test_setting(tilt);
             let mut mar = march(&s, &MarchOptions::NOMINAL, MarchEnd::Size(0.3)).unwrap();
             let k = mar.blocks.len() - 1;
             let b = mar.blocks[k].clone();
