@@ -795,6 +795,26 @@ fn jacobian_by_differences(
 
 #[cfg(test)]
 mod tests {
+    /// The tests' setting: nu = 0.3, n = 1/5 (the shipped scene's law), the parabola g = pi x^2 on the
+    /// periodic row, `tilt` the punch's (`periodic` convention) or not (`paper`).
+    pub(crate) fn test_setting(tilt: bool) -> MarchSetting {
+        use crate::model::{Exact, Material};
+        use crate::params::adhesion::AdhesionParamsF64;
+        use std::f64::consts::PI;
+        let m = Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
+        let c = AdhesionParamsF64::new(&m);
+        MarchSetting {
+            kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
+            tilt,
+            slope: vec![0.2],
+            p2_per_p: 1.0 / (PI * PI),
+            profile: vec![0.0, PI],
+            start: 2.0 * c.load_constant,
+            law_key: "tangential_ratio",
+            law_text: "1/5".into(),
+        }
+    }
+
     use super::*;
     use crate::model::{Exact, Material};
     use crate::params::adhesion::AdhesionParamsF64;
@@ -877,26 +897,5 @@ mod tests {
                 assert!(err <= 2e-15 * scale, "periodic {periodic} nodes {}: {err:e} of {scale:e}", o.nodes);
             }
         }
-    }
-}
-
-/// The tests' setting: nu = 0.3, n = 1/5 (the shipped scene's law), the parabola g = pi x^2 on the
-/// periodic row, `tilt` the punch's (`periodic` convention) or not (`paper`).
-#[cfg(test)]
-pub(crate) fn test_setting(tilt: bool) -> MarchSetting {
-    use crate::model::{Exact, Material};
-    use crate::params::adhesion::AdhesionParamsF64;
-    use std::f64::consts::PI;
-    let m = Material::from_contact_modulus(Exact::new(3.into(), 10.into()), Exact::from_integer(1.into())).unwrap();
-    let c = AdhesionParamsF64::new(&m);
-    MarchSetting {
-        kernel: KernelF64 { eps: c.eps, cosh_pi_eps: c.cosh_pi_eps, beta: c.beta, single: false },
-        tilt,
-        slope: vec![0.2],
-        p2_per_p: 1.0 / (PI * PI),
-        profile: vec![0.0, PI],
-        start: 2.0 * c.load_constant,
-        law_key: "tangential_ratio",
-        law_text: "1/5".into(),
     }
 }

@@ -171,7 +171,7 @@ mod tests {
     #[test]
     fn interpolated_phi_equals_the_edge_integrals() {
         for tilt in [false, true] {
-            let s = super::super::test_setting(tilt);
+            let s = super::super::tests::test_setting(tilt);
             for o in [MarchOptions::NOMINAL, MarchOptions::NOMINAL.refined()] {
                 let mar = march(&s, &o, MarchEnd::Size(PI / 6.0)).unwrap();
                 assert!(mar.psi.iter().all(Option::is_some), "every block keeps its psi_hat");

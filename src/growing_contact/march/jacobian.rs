@@ -173,7 +173,7 @@ mod tests {
     #[test]
     fn closed_form_jacobian_equals_the_differences() {
         for tilt in [false, true] {
-            let s = super::super::test_setting(tilt);
+            let s = super::super::tests::test_setting(tilt);
             let mut mar = march(&s, &MarchOptions::NOMINAL, MarchEnd::Size(0.3)).unwrap();
             let k = mar.blocks.len() - 1;
             let b = mar.blocks[k].clone();
