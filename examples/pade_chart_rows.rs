@@ -20,12 +20,10 @@ fn main() {
         }
     };
     let t0 = std::time::Instant::now();
-    let plan = PadePlan {
-        parabola: if report { 16 } else { 24 },
-        sinusoid: if report { 12 } else { 24 },
-        adhesion: if report { 12 } else { 16 },
-        lambdas: LAMBDAS.to_vec(),
-        digits: if report { 20 } else { 30 },
+    let plan = if report {
+        PadePlan::report()
+    } else {
+        PadePlan { parabola: 24, sinusoid: 24, adhesion: 16, lambdas: LAMBDAS.to_vec(), digits: 30 }
     };
     for r in &pade_rows(&plan) {
         println!(

@@ -334,6 +334,14 @@ pub struct PadePlan {
     pub digits: u32,
 }
 
+impl PadePlan {
+    /// The default report's plan (its Pade section): orders 16, 12, 12 at [`LAMBDAS`], references
+    /// at 20 digits.
+    pub fn report() -> Self {
+        PadePlan { parabola: 16, sinusoid: 12, adhesion: 12, lambdas: LAMBDAS.to_vec(), digits: 20 }
+    }
+}
+
 /// The objects of the chart, in its order (each gives one row, or two for friction, per lambda).
 #[derive(Debug, Clone, PartialEq)]
 pub enum PadeObject {

@@ -14,15 +14,13 @@ use super::chart::{Chart, Curve, Draw, Legend};
 use super::section::{Ctx, Profile, Section};
 use periodic_contact::asymptotics::sliding::SlidingShape;
 use periodic_contact::model::Convention;
-use periodic_contact::verification::pade::{
-    pade_objects, pade_rows_at, PadeObject, PadePlan, PadeRow, PadeSeries, LAMBDAS,
-};
+use periodic_contact::verification::pade::{pade_objects, pade_rows_at, PadeObject, PadePlan, PadeRow, PadeSeries};
 use std::fmt::Write as _;
 
 /// The plan of a profile: orders, sizes, reference digits (module doc).
 fn plan(profile: Profile) -> PadePlan {
     match profile {
-        Profile::Full => PadePlan { parabola: 16, sinusoid: 12, adhesion: 12, lambdas: LAMBDAS.to_vec(), digits: 20 },
+        Profile::Full => PadePlan::report(),
         Profile::Fast => PadePlan { parabola: 8, sinusoid: 8, adhesion: 8, lambdas: vec![0.4, 1.0, 1.4], digits: 12 },
     }
 }
