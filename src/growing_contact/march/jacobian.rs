@@ -18,7 +18,7 @@
 //!
 //! Against central differences in every value (step 1e-7): equal to 4e-10 of the largest entry
 //! (test `closed_form_jacobian_equals_the_differences`); the march's forward differences
-//! ([`super::jacobian_by_differences`], kept for polynomial laws, where n moves with the block's
+//! (`newton::jacobian_by_differences`, kept for polynomial laws, where n moves with the block's
 //! load) err by about 1e-5 in the columns of Gm. The cost is about one residual instead of one per
 //! unknown (the differences took two thirds of the f64 loading law's kernel evaluations on the
 //! shipped scene: 1.27 of 1.88 million in its two marches).
