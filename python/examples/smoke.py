@@ -1,5 +1,5 @@
 """A first use of the installed module: one solve and one series, each checked against a closed
-form. Run by scripts/test in a fresh venv where only the wheel (and numpy) is installed."""
+form. Run by `scripts/test --long` in a fresh venv where only the wheel (and numpy) is installed."""
 
 from fractions import Fraction
 from pathlib import Path

@@ -1,6 +1,6 @@
 """pytest tests of the Python module. They compare with the command line itself: the
 binary `periodic-contact` of this repository (env PERIODIC_CONTACT_CLI, else target/debug or
-target/release; `cargo build` makes it, scripts/test runs these after `cargo test`)."""
+target/release; `cargo build` makes it, `scripts/test --long` runs these after `cargo test`)."""
 
 import json
 import os
