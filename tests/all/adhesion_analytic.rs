@@ -79,7 +79,7 @@ fn at_lambda_0_8_it_equals_the_default_method() {
 /// 7.267031970225463569118926 with 34.9 digits, A = 10^104, 1435 s (machine loaded 8 deep); again
 /// after the reach (issue 31): the same figures, 1084 s (release, load 5-6).
 #[test]
-#[ignore = "measurement tier: 1084 s release at load 5-6 (scripts/test --measure)"]
+#[ignore = "measurement tier: 621 s in the test profile on 2026-11-28, machine otherwise idle (1084 s release at load 5-6 before; scripts/test --measure)"]
 fn at_nu_0_lambda_1_2_it_verifies_twenty_digits() {
     verifies_twenty_digits("0", 1.2);
 }

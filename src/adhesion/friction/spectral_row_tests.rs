@@ -75,7 +75,7 @@ fn agrees_with_the_march() {
 /// asked (`cargo test -p periodic-contact --lib spectral_row_tests::twenty_digits -- --ignored
 /// --nocapture`; measured figures in docs/theory.md section 17.8).
 #[test]
-#[ignore = "measurement tier: 13-14 min per convention in the test profile, n = 26 and 32 at 200 and 232 bits (scripts/test --measure)"]
+#[ignore = "long tier: 183 s for both conventions in the test profile on 2026-11-28 (13-14 min per convention before), n = 26 and 32 at 200 and 232 bits (scripts/test --long)"]
 fn twenty_digits_at_lambda_1_2() {
     let half = rug::Float::with_val(256, 0.5);
     let lambda = rug::Float::with_val(256, 12) / 10u32;
