@@ -2,11 +2,11 @@
 //! (`loading_law::verified_f64`) meets the limits.
 //! - Against the MPFR collocation (`verified::solve_law`, asked at 16 digits): a, b, c, P1, P2,
 //!   psi, phi, q1, q2 to >= 12 digits of their scales, and the f64 method never claims more than
-//!   the agreement + 0.5. In CI two cases without points (the MPFR fields are nested quadratures,
-//!   ~100 s a point at 16 digits when this was written); the whole matrix n = 1/5, 1/2 x l/L =
-//!   1/8, 1/4 (Lambda = pi/8, pi/4) x both conventions at nu = 0.3 with five points is
-//!   `agreement_matrix_nu_03` (3.5 s in the test profile since the MPFR fields' speed-ups: in the
-//!   default run).
+//!   the agreement + 0.5: the whole matrix n = 1/5, 1/2 x l/L = 1/8, 1/4 (Lambda = pi/8, pi/4) x
+//!   both conventions at nu = 0.3 with five points, `agreement_matrix_nu_03` (every run: 3.45 s in
+//!   the test profile since the MPFR fields' speed-ups; it was about 20 minutes, when the MPFR
+//!   fields were nested quadratures, and the long tier's `f64_marching_agrees_with_mpfr_collocation`
+//!   ran two of its cases without points in its place).
 //! - nu = 0: the f64 method (one block at small nu) agrees with the MPFR collocation at n = 1/5,
 //!   l/L = 1/16 and 1/8, and refuses where the homogeneous mode has grown (n = 1/5 at 1/4, n = 1/2
 //!   at 1/8); the MPFR collocation and the small-lambda series (`asymptotics::loading_law`), two
@@ -91,9 +91,9 @@ fn f64_marching_agrees_with_mpfr_collocation() {
 }
 
 /// The whole nu = 0.3 matrix with five points (module doc). About 20 min when it was written; 3.45
-/// s in the test profile on 2026-11-28 (`cargo test --workspace --locked --test all -- --ignored
-/// --exact loading_law_agreement::agreement_matrix_nu_03`, machine otherwise idle), so it left the
-/// measurement tier for the default run.
+/// s in the test profile on 2026-11-28 (then ignored: `cargo test --workspace --locked --test all
+/// -- --ignored --exact loading_law_agreement::agreement_matrix_nu_03`, machine otherwise idle), so
+/// it left the measurement tier for the default run.
 #[test]
 fn agreement_matrix_nu_03() {
     for n in [q(1, 5), q(1, 2)] {
