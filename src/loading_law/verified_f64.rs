@@ -1,7 +1,7 @@
 //! The loading-law problem by the f64 marching method ([`crate::growing_contact::march`]) in dimensional form,
-//! with digits from a second run: the nominal march ([`MarchOptions::NOMINAL`]) and a finer one
-//! ([`MarchOptions::refined`]: blocks two thirds as long, two more points per block, finer rules);
-//! digits = -log10 of their difference over the quantity's scale, capped at
+//! with digits from a second run: the nominal march ([`MarchOptions::NOMINAL`]) and a check run
+//! discretised differently ([`MarchOptions::check`]: blocks twice as long, two more points per
+//! block, finer rules); digits = -log10 of their difference over the quantity's scale, capped at
 //! [`F64_DIGITS_CAP`], with the scales of [`super::verified`] (l for a, b, c; P2 for the loads;
 //! k l for psi, k l^2 for phi, E* k l for the stresses). The values are the nominal run's.
 //! Scalings (chi = pi x/L): P2 = E* k (L/pi)^2 P(Lambda), P1 = N(P2), l = L Lambda/pi,
@@ -231,10 +231,10 @@ pub fn solve_law_f64(problem: &LoadingLawProblem, xh: &[Exact]) -> Result<LawSol
     solve_law_f64_beside(problem, xh, || ()).map(|(sol, ())| sol)
 }
 
-/// [`solve_law_f64`], and `beside()` after the nominal run on its CPU while the check run (the
-/// longer, about 2.7 times the nominal one at blocks of 0.05) has the other to itself
+/// [`solve_law_f64`], and `beside()` after the check run on its CPU while the nominal run (the
+/// longer: the check run is about 0.7 of it) has the other to itself
 /// ([`crate::numerics::parallel::join`]; `solve` runs the mode check there). `beside` is not run
-/// where the solve fails before or in its nominal run.
+/// where the solve fails before the runs; its result is dropped where a run fails.
 pub fn solve_law_f64_beside<T: Send>(
     problem: &LoadingLawProblem,
     xh: &[Exact],
@@ -253,11 +253,11 @@ pub fn solve_law_f64_beside<T: Send>(
         }
     }
     let options = MarchOptions::NOMINAL;
-    solve_law_f64_runs(problem, xh, &options, &options.refined(), beside)
+    solve_law_f64_runs(problem, xh, &options, &options.check(), beside)
 }
 
 /// The nominal run with `options` and the check run with `check`, and `beside` after the
-/// nominal run ([`solve_law_f64_beside`]).
+/// check run ([`solve_law_f64_beside`]).
 fn solve_law_f64_runs<T: Send>(
     problem: &LoadingLawProblem,
     xh: &[Exact],
@@ -277,16 +277,14 @@ fn solve_law_f64_runs<T: Send>(
     // The nominal and check runs are independent: on two CPUs ([`crate::numerics::parallel::join`];
     // in turn inside another map's worker). Each run's result is its serial one; the nominal
     // run's error comes first, as when the check ran after it.
-    let ((u, extra), v) = crate::numerics::parallel::join(
+    let (u, (v, extra)) = crate::numerics::parallel::join(
+        || run(problem, xh, options),
         || {
-            let u = run(problem, xh, options);
-            let extra = u.is_ok().then(beside);
-            (u, extra)
+            let v = run(problem, xh, check);
+            (v, beside())
         },
-        || run(problem, xh, check),
     );
     let u = u?;
-    let extra = extra.unwrap_or_else(|| unreachable!("beside ran after the nominal run succeeded"));
     // Below lambda = 1e-6 the marching's P2 and a lose every digit while its check run agrees with
     // it (issue 34, fuzzing: P2 off by a factor 2 at lambda = 4e-9 and 1e-8, claiming 13 digits):
     // beyond this method's reach.

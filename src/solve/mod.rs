@@ -466,7 +466,7 @@ fn f64_digits(m: &mut Map<String, Value>, requested: u32) {
 }
 
 fn law_f64(p: &LoadingLawProblem, scene: &Scene, req: SolveRequest) -> Result<Rendered, Error> {
-    // The mode check after the nominal run, on its CPU (the check run holds the other).
+    // The mode check after the check run, on its CPU (the nominal run holds the other).
     let (sol, mode) = crate::loading_law::verified_f64::solve_law_f64_beside(p, &scene.output.points, || {
         crate::asymptotics::loading_law_modes::problem_mode(p).ok()
     })?;

@@ -172,7 +172,7 @@ mod tests {
     fn interpolated_phi_equals_the_edge_integrals() {
         for tilt in [false, true] {
             let s = super::super::tests::test_setting(tilt);
-            for o in [MarchOptions::NOMINAL, MarchOptions::NOMINAL.refined()] {
+            for o in [MarchOptions::NOMINAL, MarchOptions::NOMINAL.check()] {
                 let mar = march(&s, &o, MarchEnd::Size(PI / 6.0)).unwrap();
                 assert!(mar.psi.iter().all(Option::is_some), "every block keeps its psi_hat");
                 let (lam, g) = (mar.end, mar.gamma(mar.end));
