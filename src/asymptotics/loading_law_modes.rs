@@ -80,9 +80,9 @@ use crate::params::adhesion::AdhesionParamsMpfr;
 use num_traits::Signed;
 use rug::float::Constant;
 use rug::{Complex, Float};
-use scan::Scan;
 use screen::Screen;
 
+mod quick;
 mod scan;
 mod screen;
 mod self_similar;
@@ -91,6 +91,17 @@ type Q = num_rational::BigRational;
 
 /// Largest mu scanned for a zero of det M(mu).
 pub const MU_MAX: u32 = 2000;
+
+/// The scan's grid on [0, `mu_max`]: steps of 1 to 100, then 2 % per step ([`Symbol::first_zero`]).
+fn scan_grid(mu_max: u32) -> Vec<f64> {
+    let mut grid = Vec::new();
+    let mut m = 0.0f64;
+    while m <= mu_max as f64 {
+        grid.push(m);
+        m = if m < 100.0 { m + 1.0 } else { (m * 1.02).round() };
+    }
+    grid
+}
 
 /// The symbol's mu-independent part at one precision: per quadrature node, ln s, 1 - s and the
 /// two real weights of each side.
@@ -282,36 +293,13 @@ impl Symbol {
     /// as at n = 0, where det M = 2 M_f M_g and both factors vanish near mu = 604 at nu = 0), the
     /// two steps around it are rescanned 64 times finer, twice.
     pub fn first_zero(&self, mu_max: u32) -> Option<Float> {
-        let mut grid = Vec::new();
-        let mut m = 0.0f64;
-        while m <= mu_max as f64 {
-            grid.push(m);
-            m = if m < 100.0 { m + 1.0 } else { (m * 1.02).round() };
-        }
-        self.zero_on(&grid, 2)
-    }
-
-    /// The first sign change of det M on `grid` (values computed as the scan reaches them: the
-    /// f64 screen where its bound decides, MPFR where it does not; the same decisions as MPFR at
-    /// every point, see [`Scan`]), refined; else the finer rescans at local minima of |det M|.
-    fn zero_on(&self, grid: &[f64], depth: u32) -> Option<Float> {
-        let mut scan = Scan::new(self, grid);
-        for k in 1..grid.len() {
-            if scan.negative(k - 1) != scan.negative(k) {
-                let p = self.prec;
-                let (lo, hi) = (scan.exact(k - 1), scan.exact(k));
-                return Some(self.refine(Float::with_val(p, grid[k - 1]), lo, Float::with_val(p, grid[k]), hi));
-            }
-            // |det| smallest at grid[k] among its neighbours: a close pair may hide there.
-            if depth > 0 && k + 1 < grid.len() && scan.abs_less(k, k - 1) && scan.abs_less(k, k + 1) {
-                let (x0, x1) = (grid[k - 1], grid[k + 1]);
-                let fine: Vec<f64> = (0..=128).map(|j| x0 + (x1 - x0) * j as f64 / 128.0).collect();
-                if let Some(z) = self.zero_on(&fine, depth - 1) {
-                    return Some(z);
-                }
-            }
-        }
-        None
+        let grid = scan_grid(mu_max);
+        // With the symbol every question has an answer.
+        let (lo, hi) = scan::first_change(Some(self), self.screen.as_ref(), &grid, 2).flatten()?;
+        let p = self.prec;
+        let (lo, hi) = (Float::with_val(p, lo), Float::with_val(p, hi));
+        let (f_lo, f_hi) = (self.det(&lo), self.det(&hi));
+        Some(self.refine(lo, f_lo, hi, f_hi))
     }
 
     fn refine(&self, mut a: Float, mut fa: Float, mut b: Float, mut fb: Float) -> Float {
@@ -371,9 +359,14 @@ pub struct ModeExponent {
 pub const MODE_DIGITS: u32 = 12;
 
 /// The mode of a loading-law problem: at its nu and n = N'(0) (the self-similar start's ratio),
-/// to [`MODE_DIGITS`] digits.
+/// to [`MODE_DIGITS`] digits: [`mode_exponent`]'s answer, from the f64 screens where they prove
+/// that its runs find no zero (module `quick`; then `g0` and `det_at_zero` are f64 values).
 pub(crate) fn problem_mode(problem: &crate::model::LoadingLawProblem) -> Result<ModeExponent, Error> {
-    mode_exponent(problem.material().poisson_ratio(), &problem.law().initial_ratio(), MODE_DIGITS)
+    let (nu, ratio) = (problem.material().poisson_ratio(), problem.law().initial_ratio());
+    match quick::no_zero(nu, &ratio, MODE_DIGITS) {
+        Some(mode) => Ok(mode),
+        None => mode_exponent(nu, &ratio, MODE_DIGITS),
+    }
 }
 
 /// The mode exponent at Poisson's ratio `nu` and n = `ratio` to `digits` digits (two runs, the

@@ -78,6 +78,18 @@ impl TanhSinh {
 
 /// The same rule in `f64`: (s, 1 - s, weight) triples.
 pub(crate) fn tanh_sinh_f64(bits: u32, refine: f64) -> Vec<(f64, f64, f64)> {
+    tanh_sinh_f64_bounded(bits, refine).into_iter().map(|(s, c, w, _)| (s, c, w)).collect()
+}
+
+/// [`tanh_sinh_f64`] with a bound on the relative error of each of s, 1 - s and the weight
+/// against the exact rule (the nodes of [`TanhSinh::new`] in exact arithmetic; h and t = h j
+/// are exact there). With u = 2^-53 and every libm call (sinh, cosh, exp) within 2 ulp = 4 u of
+/// its result: t = h j carries u, so sinh t carries (1 + |t|) u + 4 u (|t coth t| <= 1 + |t|)
+/// and sh = pi sinh t (|t| + 7) u; exp(-+ sh) then |sh| (|t| + 7) u + 4 u, and s, 1 - s two
+/// roundings more; the weight adds cosh t ((|t| + 4) u), pi and four products to both. The sum of
+/// these first-order terms, with 1 % for the second order.
+pub(crate) fn tanh_sinh_f64_bounded(bits: u32, refine: f64) -> Vec<(f64, f64, f64, f64)> {
+    const U: f64 = f64::EPSILON / 2.0;
     let (h, t_max) = step(bits, refine);
     let n = (t_max / h).ceil() as i64;
     let pi = std::f64::consts::PI;
@@ -87,7 +99,9 @@ pub(crate) fn tanh_sinh_f64(bits: u32, refine: f64) -> Vec<(f64, f64, f64)> {
             let sh = pi * t.sinh();
             let s = 1.0 / (1.0 + (-sh).exp());
             let c = 1.0 / (1.0 + sh.exp());
-            (s, c, h * pi * t.cosh() * s * c)
+            let e_s = sh.abs() * (t.abs() + 7.0) * U + 6.0 * U;
+            let e_w = 2.0 * e_s + (t.abs() + 4.0) * U + 5.0 * U;
+            (s, c, h * pi * t.cosh() * s * c, 1.01 * e_w)
         })
         .collect()
 }

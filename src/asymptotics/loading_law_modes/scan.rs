@@ -5,49 +5,47 @@
 //! is below |det M| at another (as `to_f64` of the MPFR values compares them). A screened answer is
 //! given only where the bound proves it equal to the answer from the MPFR values, so the scan
 //! decides as the all-MPFR scan did, on fewer MPFR evaluations (the MPFR determinant costs three
-//! transcendental calls per node; the screen two f64 ones).
+//! transcendental calls per node; the screen two f64 ones). Without a symbol (the f64 mode check,
+//! [`super::quick`]) a question the screen leaves open has no answer ([`first_change`] gives None).
 
-use super::screen::Approx;
+use super::screen::{Approx, Screen};
 use super::Symbol;
 use rug::Float;
 
 /// A scan over `grid` (lazily evaluated).
-pub(super) struct Scan<'a> {
-    sym: &'a Symbol,
+struct Scan<'a> {
+    sym: Option<&'a Symbol>,
+    screen: Option<&'a Screen>,
     grid: &'a [f64],
     screened: Vec<Option<Approx>>,
     exact: Vec<Option<Float>>,
 }
 
 impl<'a> Scan<'a> {
-    pub(super) fn new(sym: &'a Symbol, grid: &'a [f64]) -> Self {
-        Scan { sym, grid, screened: vec![None; grid.len()], exact: vec![None; grid.len()] }
-    }
-
     fn screened(&mut self, k: usize) -> Approx {
-        let (sym, mu) = (self.sym, self.grid[k]);
-        *self.screened[k].get_or_insert_with(|| match &sym.screen {
+        let (screen, mu) = (self.screen, self.grid[k]);
+        *self.screened[k].get_or_insert_with(|| match screen {
             Some(s) => s.det(mu),
             None => Approx { value: 0.0, bound: f64::INFINITY },
         })
     }
 
-    /// det M at grid point `k` in MPFR (as the all-MPFR scan computed it).
-    pub(super) fn exact(&mut self, k: usize) -> Float {
-        let (sym, mu) = (self.sym, self.grid[k]);
-        self.exact[k].get_or_insert_with(|| sym.det(&Float::with_val(sym.prec, mu))).clone()
+    /// det M at grid point `k` in MPFR (as the all-MPFR scan computed it); None without a symbol.
+    fn exact(&mut self, k: usize) -> Option<Float> {
+        let (sym, mu) = (self.sym?, self.grid[k]);
+        Some(self.exact[k].get_or_insert_with(|| sym.det(&Float::with_val(sym.prec, mu))).clone())
     }
 
     /// The MPFR value's `is_sign_negative` at point `k`.
-    pub(super) fn negative(&mut self, k: usize) -> bool {
+    fn negative(&mut self, k: usize) -> Option<bool> {
         match self.screened(k).negative() {
-            Some(n) => n,
-            None => self.exact(k).is_sign_negative(),
+            Some(n) => Some(n),
+            None => Some(self.exact(k)?.is_sign_negative()),
         }
     }
 
     /// `to_f64().abs()` of the MPFR value at `i` below that at `j`.
-    pub(super) fn abs_less(&mut self, i: usize, j: usize) -> bool {
+    fn abs_less(&mut self, i: usize, j: usize) -> Option<bool> {
         let (a, b) = (self.screened(i), self.screened(j));
         // Where the MPFR values' to_f64 can lie: within 2 bounds of the screened value (the exact
         // value within one, the MPFR value within one more), widened by the final rounding.
@@ -57,12 +55,40 @@ impl<'a> Scan<'a> {
         };
         let ((alo, ahi), (blo, bhi)) = (range(a), range(b));
         if ahi < blo {
-            return true;
+            return Some(true);
         }
         if alo > bhi {
-            return false;
+            return Some(false);
         }
         let abs = |v: Float| v.to_f64().abs();
-        abs(self.exact(i)) < abs(self.exact(j))
+        Some(abs(self.exact(i)?) < abs(self.exact(j)?))
     }
+}
+
+/// Where the scan of [`super::Symbol::first_zero`] over `grid` finds det M's first sign change:
+/// Some(Some((mu_lo, mu_hi))) the grid step where it changes, Some(None) no change (the finer
+/// rescans at local minima of |det M| included, `depth` levels deep), None where a question the
+/// screen leaves open has no MPFR answer (`sym` None). With `sym`, the decisions of the all-MPFR
+/// scan of that symbol.
+pub(super) fn first_change(
+    sym: Option<&Symbol>,
+    screen: Option<&Screen>,
+    grid: &[f64],
+    depth: u32,
+) -> Option<Option<(f64, f64)>> {
+    let mut scan = Scan { sym, screen, grid, screened: vec![None; grid.len()], exact: vec![None; grid.len()] };
+    for k in 1..grid.len() {
+        if scan.negative(k - 1)? != scan.negative(k)? {
+            return Some(Some((grid[k - 1], grid[k])));
+        }
+        // |det| smallest at grid[k] among its neighbours: a close pair may hide there.
+        if depth > 0 && k + 1 < grid.len() && scan.abs_less(k, k - 1)? && scan.abs_less(k, k + 1)? {
+            let (x0, x1) = (grid[k - 1], grid[k + 1]);
+            let fine: Vec<f64> = (0..=128).map(|j| x0 + (x1 - x0) * j as f64 / 128.0).collect();
+            if let Some(change) = first_change(sym, screen, &fine, depth - 1)? {
+                return Some(Some(change));
+            }
+        }
+    }
+    Some(None)
 }

@@ -20,6 +20,11 @@
 //! slack. The MPFR evaluation at p >= [`MIN_PREC`] bits of the same stored data errs by the same
 //! expression with 2^-p for u, at most 2^-11 of this bound, so where |det_f64| > 2 bound the exact
 //! determinant and the MPFR value both have the sign of det_f64 (module [`super::scan`]).
+//!
+//! Data computed in f64 ([`super::quick`]) carry their own bounds: a relative error of ln s moves
+//! s^mu, x and h(x) by at most |x| times it, one of r moves e_mu by itself, and the weights'
+//! absolute errors enter times |s^mu| and |e_mu|; their sum (with 1 % for the second order) is
+//! added to each entry's error. For the MPFR data they are zero and the bound is as above.
 
 use super::Node;
 
@@ -29,19 +34,27 @@ pub const MIN_PREC: u32 = 64;
 
 const U: f64 = f64::EPSILON / 2.0;
 
-/// f64 copies of one node's data.
+/// f64 copies of one node's data, with bounds on their errors beyond rounding once (zero for
+/// the copies of MPFR data; set by the f64 mode check, [`super::quick`]).
 #[derive(Debug, Clone)]
-struct ScreenNode {
-    ln_s: f64,
-    /// ln s/(1 - s), from MPFR.
-    r: f64,
-    sides: [[f64; 2]; 2],
+pub(super) struct ScreenNode {
+    pub(super) ln_s: f64,
+    /// ln s/(1 - s).
+    pub(super) r: f64,
+    /// [wf_+, wg_+], [wf_-, wg_-] (as [`super::Node`]).
+    pub(super) sides: [[f64; 2]; 2],
+    /// Relative error of `ln_s`.
+    pub(super) ln_s_err: f64,
+    /// Relative error of `r`.
+    pub(super) r_err: f64,
+    /// Absolute errors of `sides`.
+    pub(super) sides_err: [[f64; 2]; 2],
 }
 
 /// The f64 copy of the symbol's nodes.
 #[derive(Debug, Clone)]
 pub struct Screen {
-    nodes: Vec<ScreenNode>,
+    pub(super) nodes: Vec<ScreenNode>,
 }
 
 /// det M(mu) in f64 and a bound on |det_f64 - det|.
@@ -72,8 +85,16 @@ impl Screen {
                     [n.sides[0][0].to_f64(), n.sides[0][1].to_f64()],
                     [n.sides[1][0].to_f64(), n.sides[1][1].to_f64()],
                 ],
+                ln_s_err: 0.0,
+                r_err: 0.0,
+                sides_err: [[0.0; 2]; 2],
             })
             .collect();
+        Screen { nodes }
+    }
+
+    /// From node data computed in f64 with their error bounds ([`super::quick`]).
+    pub(super) fn from_f64(nodes: Vec<ScreenNode>) -> Self {
         Screen { nodes }
     }
 
@@ -83,16 +104,21 @@ impl Screen {
             return Approx { value: 0.0, bound: f64::INFINITY };
         }
         let mu1 = mu + 1.0;
-        // Per entry: the sum, the sum of |terms| and the sum of |term| (|x| + 8).
+        // Per entry: the sum, the sum of |terms|, the sum of |term| (|x| + 8), and the data's
+        // own errors (beyond rounding once) carried into the terms.
         let mut m = [[0.0f64; 2]; 2];
         let mut abs = [[0.0f64; 2]; 2];
         let mut rel = [[0.0f64; 2]; 2];
+        let mut data = [[0.0f64; 2]; 2];
         for n in &self.nodes {
             let x = n.ln_s * mu1;
             let s_mu = (n.ln_s * mu).exp();
             let h = if x == 0.0 { 1.0 } else { x.exp_m1() / x };
             let e = -mu1 * n.r * h;
             let grow = x.abs() + 8.0;
+            // An error of ln s relative to itself moves x, mu ln s (|mu ln s| <= |x|) and h
+            // (|x h'/h| <= |x|) by |x| times it; r's moves e_mu by itself.
+            let moved = x.abs() * n.ln_s_err;
             for k in 0..2 {
                 let (tf, tg) = (n.sides[k][0] * s_mu, n.sides[k][1] * e);
                 m[k][0] += tf;
@@ -101,6 +127,8 @@ impl Screen {
                 abs[k][1] += tg.abs();
                 rel[k][0] += tf.abs() * grow;
                 rel[k][1] += tg.abs() * grow;
+                data[k][0] += tf.abs() * moved + n.sides_err[k][0] * s_mu;
+                data[k][1] += tg.abs() * (moved + n.r_err) + n.sides_err[k][1] * e.abs();
             }
         }
         let pi = std::f64::consts::PI;
@@ -110,7 +138,8 @@ impl Screen {
             m[k][1] -= pi;
             for j in 0..2 {
                 let extra = if j == 1 { pi } else { 0.0 };
-                err[k][j] = 4.0 * U * rel[k][j] + count * U * (abs[k][j] + extra) + 1e-290;
+                // The data's errors to first order, with 1 % for the second.
+                err[k][j] = 4.0 * U * rel[k][j] + count * U * (abs[k][j] + extra) + 1e-290 + 1.01 * data[k][j];
             }
         }
         let (a, b, c, d) = (m[0][0], m[0][1], m[1][0], m[1][1]);

@@ -45,16 +45,20 @@ fn nodes(rule: &TanhSinh) -> impl Iterator<Item = usize> + '_ {
 
 /// The order-0 system in f64 from the first-order start; steps halved while |g_0| would reach 1.
 fn newton_f64(params: &AdhesionParamsMpfr, n: f64, rule: &TanhSinh) -> Option<(f64, f64)> {
-    let eps = params.eps.to_f64();
     let pts: Vec<(f64, f64, f64, f64)> = nodes(rule)
         .map(|q| {
             let (s, c) = (rule.s[q].to_f64(), rule.c[q].to_f64());
             (s, c, rule.w[q].to_f64() * s, c.ln())
         })
         .collect();
+    newton_f64_on(params.eps.to_f64(), params.load_constant.to_f64(), n, &pts)
+}
+
+/// [`newton_f64`] on the nodes `pts` = (s, 1 - s, w s, ln(1 - s)), with eps, C_P and n in f64.
+pub(super) fn newton_f64_on(eps: f64, load_constant: f64, n: f64, pts: &[(f64, f64, f64, f64)]) -> Option<(f64, f64)> {
     let one_in = C64::new(1.0, n);
     let pi = std::f64::consts::PI;
-    let (mut f, mut g) = (2.0 * params.load_constant.to_f64(), -2.0 * eps * n / (1.0 - 4.0 * eps * eps));
+    let (mut f, mut g) = (2.0 * load_constant, -2.0 * eps * n / (1.0 - 4.0 * eps * eps));
     for _ in 0..60 {
         let mut r = [0.0; 2];
         let mut m = [[0.0; 2]; 2];
@@ -63,7 +67,7 @@ fn newton_f64(params: &AdhesionParamsMpfr, n: f64, rule: &TanhSinh) -> Option<(f
             let n0 = 1.0 + sigma * g;
             let ln_n0 = n0.ln();
             let (mut acc, mut mg) = (C64::new(0.0, 0.0), C64::new(0.0, 0.0));
-            for &(s, c, ws, ln_c) in &pts {
+            for &(s, c, ws, ln_c) in pts {
                 let d0 = c * sigma * g + s + 1.0;
                 let k0 = (a1 * (ln_c + ln_n0) + a2 * d0.ln()).exp() * (sigma * ws);
                 acc += k0;
