@@ -231,10 +231,10 @@ mod tests {
     }
 
     /// Every f64 datum of both runs' screens within its bound of the MPFR symbol's (the MPFR
-    /// values rounded once: one more u), f_0 and g_0 within theirs of the MPFR self-similar
-    /// solution, and det M within the screen's bound of the MPFR determinant along the scan, at
-    /// nu = 0, 1/10, 3/10, 1/2 and n = 0, 1/5, 1, the mode check's precisions (76 bits, and
-    /// 108 on the finer rule).
+    /// values rounded once: one more u): the rule's nodes and weights, f_0 and g_0 (against the
+    /// MPFR self-similar solution), the weights, ln s and r; and det M within the screen's bound
+    /// of the MPFR determinant along the scan. At nu = 0, 1/10, 3/10, 1/2 and n = 0, 1/5, 1, the
+    /// mode check's precisions (76 bits, and 108 on the finer rule).
     #[test]
     fn the_f64_data_lie_within_their_bounds() {
         let bits = bits_for_digits(12) + SOLVER_GUARD_BITS;
@@ -259,6 +259,14 @@ mod tests {
                         start(&set, &r).unwrap()
                     };
                     let case = format!("nu = {nu}, n = {n}, {prec} bits");
+                    let bounded = tanh_sinh_f64_bounded(prec, refine);
+                    assert_eq!(bounded.len(), rule.len(), "{case}");
+                    for (j, &(s, c, w, err)) in bounded.iter().enumerate() {
+                        for (x, y) in [(s, &rule.s[j]), (c, &rule.c[j]), (w, &rule.w[j])] {
+                            let y = y.to_f64();
+                            assert!((x - y).abs() <= (err + U) * y.abs(), "{case}: node {j}: {x} vs {y}, {err}");
+                        }
+                    }
                     assert!((f - sym.f0.to_f64()).abs() <= df + U * f.abs(), "{case}: f0");
                     assert!((g0 - sym.g0.to_f64()).abs() <= dg + U * g0.abs(), "{case}: g0");
                     worst = worst.max((g0 - sym.g0.to_f64()).abs() / dg);
