@@ -418,9 +418,9 @@ fn shipped_scenes_f64_against_mpfr() {
 /// 2/5, 1/2; n = 0, 1/5, 1/2 and the quadratic law N = P2/5 + P2^2/2; l/L = 1/32, 1/8, 1/4,
 /// 2/5 and the given loads P2 = 1/20, 1/1000; both conventions; five points (240 cases, of which
 /// the MPFR method answers 232). Wherever both answer, no group claims more than its agreement
-/// + 0.5 (measured: the smallest margin, agreement less claim, 0.95; docs/performance.md, round
-/// eight, where it chose the check run's discretisation), and the f64 method answers every case
-/// the MPFR one does except where its own check run leaves less than one digit.
+/// plus 0.5 (measured: the smallest margin, agreement less claim, 0.95; docs/performance.md,
+/// round eight, where it chose the check run's discretisation), and the f64 method answers every
+/// case the MPFR one does except where its own check run leaves less than one digit.
 #[test]
 #[ignore = "long tier: 111 s in the test profile on 2 free CPUs (scripts/test --long)"]
 fn f64_claims_over_a_sweep() {
