@@ -330,4 +330,27 @@ mod tests {
         }
         assert!(no_zero(&q(3, 5), &q(1, 5), 12).is_none() && no_zero(&q(0, 1), &q(-1, 5), 12).is_none());
     }
+
+    /// The same over a grid, nu = 0, 1/20, .., 1/2 and n = 0, 1/10, .., 1 (121 cases): wherever
+    /// the f64 answer is given, the MPFR runs find no zero either, with the same JSON; it is given
+    /// in most cases without a zero (measured: 51 of 62, all but the 11 at nu = 1/2; 7.1 s in the
+    /// test profile).
+    #[test]
+    fn answers_as_the_mpfr_runs_on_a_grid() {
+        let (mut given, mut none) = (0, 0);
+        for j in 0..=10 {
+            for k in 0..=10 {
+                let (nu, n) = (q(j, 20), q(k, 10));
+                let mpfr = mode_exponent(&nu, &n, 12).unwrap();
+                none += usize::from(mpfr.mu.is_none());
+                if let Some(m) = no_zero(&nu, &n, 12) {
+                    given += 1;
+                    assert!(mpfr.mu.is_none(), "nu = {nu}, n = {n}: MPFR finds {:?}", mpfr.mu);
+                    assert_eq!(m.json(0), mpfr.json(0), "nu = {nu}, n = {n}");
+                }
+            }
+        }
+        eprintln!("the f64 answer given in {given} of the {none} cases without a zero");
+        assert!(4 * given >= 3 * none, "{given} of {none}");
+    }
 }
