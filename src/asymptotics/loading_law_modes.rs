@@ -369,9 +369,9 @@ pub(crate) fn problem_mode(problem: &crate::model::LoadingLawProblem) -> Result<
     }
 }
 
-/// The mode exponent at Poisson's ratio `nu` and n = `ratio` to `digits` digits (two runs, the
-/// second with more bits and a finer rule).
-pub fn mode_exponent(nu: &Q, ratio: &Q, digits: u32) -> Result<ModeExponent, Error> {
+/// The material (E* = 1) of the mode check at `nu`, and `ratio` checked: the refusals of
+/// [`mode_exponent`] (module `quick` takes its f64 path only where there is none).
+fn mode_material(nu: &Q, ratio: &Q) -> Result<Material, Error> {
     let half = Q::new(1.into(), 2.into());
     if nu.is_negative() || *nu > half {
         return Err(Error::input("nu", nu, "must lie in [0, 1/2]"));
@@ -379,8 +379,14 @@ pub fn mode_exponent(nu: &Q, ratio: &Q, digits: u32) -> Result<ModeExponent, Err
     if ratio.is_negative() {
         return Err(Error::input("ratio", ratio, "n = P1/P2 >= 0 (the mirror image x -> -x gives n < 0)"));
     }
-    let material = Material::from_contact_modulus(nu.clone(), Q::from_integer(1.into()))
-        .map_err(|e| Error::Input(ModelError { parameter: "nu".into(), ..e }))?;
+    Material::from_contact_modulus(nu.clone(), Q::from_integer(1.into()))
+        .map_err(|e| Error::Input(ModelError { parameter: "nu".into(), ..e }))
+}
+
+/// The mode exponent at Poisson's ratio `nu` and n = `ratio` to `digits` digits (two runs, the
+/// second with more bits and a finer rule).
+pub fn mode_exponent(nu: &Q, ratio: &Q, digits: u32) -> Result<ModeExponent, Error> {
+    let material = mode_material(nu, ratio)?;
     let bits = bits_for_digits(digits) + SOLVER_GUARD_BITS;
     let run = |extra: u32, refine: f64| -> Result<(Symbol, Option<Float>), Error> {
         let prec = bits + extra;

@@ -22,14 +22,12 @@
 
 use super::screen::{Screen, ScreenNode};
 use super::{scan, scan_grid, self_similar, ModeExponent, MU_MAX};
-use crate::model::Material;
 use crate::numerics::accuracy::digits_cap_for_bits;
 use crate::numerics::exact::to_f64;
 use crate::numerics::precision::{bits_for_digits, SOLVER_GUARD_BITS, VERIFY_EXTRA_BITS};
 use crate::numerics::tanh_sinh::tanh_sinh_f64_bounded;
 use crate::params::adhesion::AdhesionParamsF64;
 use nalgebra::Complex;
-use num_traits::Signed;
 use rug::Float;
 
 type C64 = Complex<f64>;
@@ -109,10 +107,23 @@ fn side_data(set: &Setting, q: &RuleNode, sigma: f64, f: f64, g: f64) -> SideDat
     }
 }
 
-/// f_0, g_0 on `rule` and bounds on their errors (module doc), or None.
-fn start(set: &Setting, rule: &[RuleNode]) -> Option<(f64, f64, f64, f64)> {
+/// The rule of one run (`bits`, `refine`) with its bounds, on the nodes the MPFR symbol keeps.
+fn rule(bits: u32, refine: f64) -> Vec<RuleNode> {
+    tanh_sinh_f64_bounded(bits, refine)
+        .into_iter()
+        .map(|(s, c, w, err)| RuleNode { s, c, w, err })
+        .filter(|q| q.c > 0.0 && q.s > 0.0)
+        .collect()
+}
+
+/// f_0, g_0 on `rule` with their bounds: (f_0, g_0, df_0, dg_0) and each node's data on both
+/// sides at them (module doc), or None.
+#[allow(clippy::type_complexity)]
+fn start(set: &Setting, rule: &[RuleNode]) -> Option<((f64, f64, f64, f64), Vec<[SideData; 2]>)> {
     let pts: Vec<(f64, f64, f64, f64)> = rule.iter().map(|q| (q.s, q.c, q.w * q.s, q.c.ln())).collect();
     let (f, g) = self_similar::newton_f64_on(set.eps, set.load_constant, set.n, &pts)?;
+    let data: Vec<[SideData; 2]> =
+        rule.iter().map(|q| [side_data(set, q, 1.0, f, g), side_data(set, q, -1.0, f, g)]).collect();
     let pi = std::f64::consts::PI;
     let count = rule.len() as f64 + 4.0;
     // Per side: R = f sum wf - pi (sigma + g), its error bound, and the Jacobian's row.
@@ -121,8 +132,7 @@ fn start(set: &Setting, rule: &[RuleNode]) -> Option<(f64, f64, f64, f64)> {
     let mut jac = [[0.0; 2]; 2];
     for (row, sigma) in [1.0f64, -1.0].into_iter().enumerate() {
         let (mut sf, mut sf_abs, mut sf_err, mut sg) = (0.0, 0.0, 0.0, 0.0);
-        for q in rule {
-            let d = side_data(set, q, sigma, f, g);
+        for d in data.iter().map(|sides| &sides[row]) {
             sf += d.wf;
             sf_abs += d.wf.abs();
             sf_err += d.wf_err;
@@ -140,24 +150,21 @@ fn start(set: &Setting, rule: &[RuleNode]) -> Option<(f64, f64, f64, f64)> {
     let dg = 2.0 * (inv[1][0].abs() * size[0] + inv[1][1].abs() * size[1]);
     // Far beyond the f64 Newton's 1e-14: not this path's case.
     (df.is_finite() && dg.is_finite() && df <= 1e-10 * f.abs() && dg <= 1e-10 && g.abs() + dg < 1.0)
-        .then_some((f, g, df, dg))
+        .then_some(((f, g, df, dg), data))
 }
 
-/// The screen of one run (`bits` and `refine` of its rule) and g_0, or None.
-fn screen(set: &Setting, bits: u32, refine: f64) -> Option<(Screen, f64)> {
-    let rule: Vec<RuleNode> = tanh_sinh_f64_bounded(bits, refine)
-        .into_iter()
-        .map(|(s, c, w, err)| RuleNode { s, c, w, err })
-        .filter(|q| q.c > 0.0 && q.s > 0.0)
-        .collect();
-    let (f, g, df, dg) = start(set, &rule)?;
+/// The screen of one run (`bits` and `refine` of its rule) and its start (f_0, g_0, df_0, dg_0),
+/// or None.
+fn screen(set: &Setting, bits: u32, refine: f64) -> Option<(Screen, (f64, f64, f64, f64))> {
+    let rule = rule(bits, refine);
+    let ((f, g, df, dg), data) = start(set, &rule)?;
     let nodes = rule
         .iter()
-        .map(|q| {
+        .zip(&data)
+        .map(|(q, both)| {
             let mut sides = [[0.0; 2]; 2];
             let mut sides_err = [[0.0; 2]; 2];
-            for (k, sigma) in [1.0f64, -1.0].into_iter().enumerate() {
-                let d = side_data(set, q, sigma, f, g);
+            for (k, d) in both.iter().enumerate() {
                 sides[k] = [d.wf, d.wg];
                 let moved_k = d.dlnk_dg * dg;
                 sides_err[k] = [
@@ -180,7 +187,7 @@ fn screen(set: &Setting, bits: u32, refine: f64) -> Option<(Screen, f64)> {
             ScreenNode { ln_s, r: ln_s / q.c, sides, ln_s_err, r_err: ln_s_err + q.err + U, sides_err }
         })
         .collect();
-    Some((Screen::from_f64(nodes), g))
+    Some((Screen::from_f64(nodes), (f, g, df, dg)))
 }
 
 /// The answer of [`super::mode_exponent`]`(nu, ratio, digits)` where both its runs find no zero
@@ -188,11 +195,7 @@ fn screen(set: &Setting, bits: u32, refine: f64) -> Option<(Screen, f64)> {
 /// f64 (53 bits). None where that is not proved (the MPFR runs then decide), also for input
 /// they refuse.
 pub(super) fn no_zero(nu: &Q, ratio: &Q, digits: u32) -> Option<ModeExponent> {
-    let half = Q::new(1.into(), 2.into());
-    if nu.is_negative() || *nu > half || ratio.is_negative() {
-        return None;
-    }
-    let material = Material::from_contact_modulus(nu.clone(), Q::from_integer(1.into())).ok()?;
+    let material = super::mode_material(nu, ratio).ok()?;
     let params = AdhesionParamsF64::new(&material);
     let set = Setting { eps: params.eps, load_constant: params.load_constant, n: to_f64(ratio)? };
     let bits = bits_for_digits(digits) + SOLVER_GUARD_BITS;
@@ -202,7 +205,7 @@ pub(super) fn no_zero(nu: &Q, ratio: &Q, digits: u32) -> Option<ModeExponent> {
     let grid = scan_grid(MU_MAX);
     let mut first = None;
     for (extra, refine) in [(0, 1.0), (VERIFY_EXTRA_BITS, 1.25)] {
-        let (screen, g0) = screen(&set, bits + extra, refine)?;
+        let (screen, (_, g0, _, _)) = screen(&set, bits + extra, refine)?;
         if scan::first_change(None, Some(&screen), &grid, 2)?.is_some() {
             return None;
         }
@@ -223,6 +226,7 @@ pub(super) fn no_zero(nu: &Q, ratio: &Q, digits: u32) -> Option<ModeExponent> {
 mod tests {
     use super::super::{mode_exponent, Symbol};
     use super::*;
+    use crate::model::Material;
     use crate::numerics::tanh_sinh::TanhSinh;
     use crate::params::adhesion::AdhesionParamsMpfr;
 
@@ -249,15 +253,7 @@ mod tests {
                     let params = AdhesionParamsMpfr::new(&material, prec);
                     let rule = TanhSinh::new(prec, refine, prec);
                     let sym = Symbol::new_fast(&params, &Float::with_val(prec, set.n), &rule, prec).unwrap();
-                    let (screen, g0) = screen(&set, prec, refine).expect("the f64 start converges");
-                    let (f, _, df, dg) = {
-                        let r: Vec<RuleNode> = tanh_sinh_f64_bounded(prec, refine)
-                            .into_iter()
-                            .map(|(s, c, w, err)| RuleNode { s, c, w, err })
-                            .filter(|x| x.c > 0.0 && x.s > 0.0)
-                            .collect();
-                        start(&set, &r).unwrap()
-                    };
+                    let (screen, (f, g0, df, dg)) = screen(&set, prec, refine).expect("the f64 start converges");
                     let case = format!("nu = {nu}, n = {n}, {prec} bits");
                     let bounded = tanh_sinh_f64_bounded(prec, refine);
                     assert_eq!(bounded.len(), rule.len(), "{case}");
